@@ -1,0 +1,295 @@
+//! From a triangle list to a CHE: validate, drop degenerate triangles, match half-edges,
+//! orient, split non-manifold vertices, then build the requested level.
+
+use super::matching::{Groups, half_edge};
+use super::report::{BuildReport, push_example};
+use super::{Che, level2, level3, orient, split};
+use crate::NONE;
+use crate::error::{Error, Result};
+use crate::rank::RankBits;
+use glam::DVec3;
+
+/// How to build: the level (0..=3) and whether non-manifold input is an error.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BuildOptions {
+    pub level: u8,
+    /// Reject non-manifold edges, non-manifold vertices and duplicate triangles instead of
+    /// repairing them.
+    pub strict: bool,
+}
+
+impl Default for BuildOptions {
+    fn default() -> Self {
+        BuildOptions {
+            level: 2,
+            strict: false,
+        }
+    }
+}
+
+impl BuildOptions {
+    pub fn level(level: u8) -> Self {
+        BuildOptions {
+            level,
+            ..Self::default()
+        }
+    }
+}
+
+/// Largest triangle count whose half-edge ids fit below `NONE`.
+pub const MAX_TRIANGLES: usize = (u32::MAX as usize) / 3;
+
+pub(crate) fn build(
+    triangles: &[[u32; 3]],
+    n_vertices: usize,
+    positions: &[DVec3],
+    options: BuildOptions,
+) -> Result<Che> {
+    if options.level > 3 {
+        return Err(Error::out_of_range(format!(
+            "level {} is not in 0..=3",
+            options.level
+        )));
+    }
+    if n_vertices >= NONE as usize {
+        return Err(Error::too_large(format!(
+            "{n_vertices} vertices: ids must fit below 2^32 - 1"
+        )));
+    }
+    if triangles.len() > MAX_TRIANGLES {
+        return Err(Error::too_large(format!(
+            "{} triangles: half-edge ids must fit below 2^32 - 1 (at most {MAX_TRIANGLES} triangles)",
+            triangles.len()
+        )));
+    }
+    if !positions.is_empty() && positions.len() != n_vertices {
+        return Err(Error::invalid(format!(
+            "{} positions given for {n_vertices} vertices",
+            positions.len()
+        )));
+    }
+    let mut report = BuildReport {
+        input_triangles: triangles.len(),
+        input_vertices: n_vertices,
+        ..BuildReport::default()
+    };
+
+    // Soup: range check, degenerate triangles dropped.
+    let mut v: Vec<u32> = Vec::with_capacity(3 * triangles.len());
+    let mut triangle_origin: Vec<u32> = Vec::new();
+    for (t, tri) in triangles.iter().enumerate() {
+        for (i, &x) in tri.iter().enumerate() {
+            if x as usize >= n_vertices {
+                return Err(Error::out_of_range(format!(
+                    "triangle {t}, corner {i}: vertex {x} out of range (there are {n_vertices} vertices)"
+                )));
+            }
+        }
+        let [a, b, c] = *tri;
+        if a == b || b == c || a == c {
+            if triangle_origin.is_empty() {
+                triangle_origin.extend(0..t as u32);
+            }
+            report.dropped_degenerate += 1;
+            push_example(&mut report.degenerate_examples, t as u32);
+            continue;
+        }
+        if !triangle_origin.is_empty() {
+            triangle_origin.push(t as u32);
+        }
+        v.extend_from_slice(tri);
+    }
+    let origin_of = |t: u32| {
+        if triangle_origin.is_empty() { t } else { triangle_origin[t as usize] }
+    };
+
+    // Match on unordered vertex pairs; pairs of exactly two are partners.
+    let mut partner = vec![NONE; v.len()];
+    let mut non_manifold: Vec<u32> = Vec::new();
+    let groups = Groups::new(&v, n_vertices);
+    groups.for_each(|a, b, group| {
+        report.input_edges += 1;
+        match group.len() {
+            1 => report.boundary_edges += 1,
+            2 => {
+                let (h, g) = (half_edge(group[0]), half_edge(group[1]));
+                partner[h as usize] = g;
+                partner[g as usize] = h;
+            }
+            _ => {
+                report.non_manifold_edges += 1;
+                push_example(&mut report.non_manifold_edge_examples, [a, b]);
+                non_manifold.extend(group.iter().map(|&k| half_edge(k)));
+            }
+        }
+        count_duplicates(&v, b, group, &mut report, &origin_of);
+    });
+    drop(groups);
+    if options.strict {
+        strict_checks(&report, &v, &non_manifold, &origin_of)?;
+    }
+
+    let oriented = orient::orient(&mut v, &partner);
+    drop(partner);
+    report.flipped_triangles = oriented.flipped_count;
+    report.non_orientable_components = oriented.non_orientable_components;
+    report.non_orientable_examples = oriented
+        .non_orientable_examples
+        .iter()
+        .map(|&t| origin_of(t))
+        .collect();
+    report.seam_edges = oriented.seams.len() / 2;
+    let renumber = |h: u32| {
+        if oriented.flipped[(h / 3) as usize] { orient::flipped_id(h) } else { h }
+    };
+    for h in non_manifold.iter_mut() {
+        *h = renumber(*h);
+    }
+    non_manifold.sort_unstable();
+    let o = oriented.o;
+    let seams = oriented.seams;
+    drop(oriented.flipped);
+
+    let split = split::split(&mut v, &o, n_vertices, &seams);
+    report.split_vertices = split.split_vertices;
+    report.split_vertex_examples = split.split_examples;
+    report.seam_split_vertices = split.seam_split_vertices;
+    report.added_vertices = split.copies.len();
+    if options.strict && report.split_vertices > 0 {
+        return Err(Error::non_manifold(format!(
+            "non-manifold vertex {} (its star is several fans); {} such vertices",
+            report.split_vertex_examples[0], report.split_vertices
+        )));
+    }
+    let n_total = n_vertices + split.copies.len();
+    let vertex_origin: Vec<u32> = if split.copies.is_empty() {
+        Vec::new()
+    } else {
+        (0..n_vertices as u32).chain(split.copies.iter().copied()).collect()
+    };
+    let mut positions = positions.to_vec();
+    if !positions.is_empty() {
+        for &c in &split.copies {
+            positions.push(positions[c as usize]);
+        }
+    }
+    let num_edges = o
+        .iter()
+        .enumerate()
+        .filter(|&(h, &g)| g == NONE || (h as u32) < g)
+        .count();
+
+    let mut che = Che {
+        level: 1,
+        n_input_vertices: n_vertices,
+        n_vertices: n_total,
+        v,
+        o,
+        vh: Vec::new(),
+        edge_bits: RankBits::default(),
+        eh: Vec::new(),
+        ch: Vec::new(),
+        boundary_bits: RankBits::default(),
+        curve_of: Vec::new(),
+        num_edges,
+        positions,
+        vertex_origin,
+        triangle_origin,
+        non_manifold,
+        seams,
+        report,
+    };
+    if options.level == 0 {
+        che.o = Vec::new();
+        che.level = 0;
+    }
+    if options.level >= 2 {
+        level2::build(&mut che);
+        che.level = 2;
+    }
+    if options.level >= 3 {
+        level3::build(&mut che);
+        che.level = 3;
+    }
+    Ok(che)
+}
+
+/// Two triangles with the same three vertices share all three vertex pairs; count each
+/// such pair once, on the pair made of the triangle's two smallest vertices.
+fn count_duplicates(
+    v: &[u32],
+    max: u32,
+    group: &[u64],
+    report: &mut BuildReport,
+    origin_of: &impl Fn(u32) -> u32,
+) {
+    if group.len() < 2 {
+        return;
+    }
+    let third = |k: u64| v[super::ids::prev(half_edge(k)) as usize];
+    let mut record = |a: u64, b: u64| {
+        report.duplicate_triangles += 1;
+        push_example(
+            &mut report.duplicate_examples,
+            [origin_of(half_edge(a) / 3), origin_of(half_edge(b) / 3)],
+        );
+    };
+    if group.len() <= 16 {
+        for (i, &a) in group.iter().enumerate() {
+            let c = third(a);
+            if c < max {
+                continue;
+            }
+            for &b in &group[i + 1..] {
+                if third(b) == c {
+                    record(a, b);
+                }
+            }
+        }
+        return;
+    }
+    // A long non-manifold edge: sort by third vertex instead of comparing all pairs.
+    let mut by_third: Vec<(u32, u64)> = group
+        .iter()
+        .map(|&k| (third(k), k))
+        .filter(|&(c, _)| c > max)
+        .collect();
+    by_third.sort_unstable();
+    for run in by_third.chunk_by(|x, y| x.0 == y.0) {
+        for (i, &(_, a)) in run.iter().enumerate() {
+            for &(_, b) in &run[i + 1..] {
+                record(a, b);
+            }
+        }
+    }
+}
+
+fn strict_checks(
+    report: &BuildReport,
+    v: &[u32],
+    non_manifold: &[u32],
+    origin_of: &impl Fn(u32) -> u32,
+) -> Result<()> {
+    if let Some(&[a, b]) = report.non_manifold_edge_examples.first() {
+        let tris: Vec<String> = non_manifold
+            .iter()
+            .filter(|&&h| {
+                let (x, y) = (v[h as usize], v[super::ids::next(h) as usize]);
+                (x.min(y), x.max(y)) == (a, b)
+            })
+            .map(|&h| origin_of(h / 3).to_string())
+            .collect();
+        return Err(Error::non_manifold(format!(
+            "non-manifold edge ({a}, {b}) is shared by triangles {}; {} such edges",
+            tris.join(", "),
+            report.non_manifold_edges
+        )));
+    }
+    if let Some(&[s, t]) = report.duplicate_examples.first() {
+        return Err(Error::non_manifold(format!(
+            "triangles {s} and {t} have the same vertices; {} duplicate pairs",
+            report.duplicate_triangles
+        )));
+    }
+    Ok(())
+}

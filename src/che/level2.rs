@@ -1,0 +1,28 @@
+//! Level 2: `VH` (boundary vertices store their outgoing boundary half-edge, so one
+//! counter-clockwise rotation sweeps the whole fan) and edge ids (rank over the canonical
+//! half-edges, `O[h] == NONE || h < O[h]`, at 1.5 bits per half-edge, plus `EH`).
+
+use super::Che;
+use crate::NONE;
+use crate::rank::RankBits;
+
+pub(crate) fn build(che: &mut Che) {
+    let (v, o) = (&che.v, &che.o);
+    let mut vh = vec![NONE; che.n_vertices];
+    for (h, (&x, &opp)) in v.iter().zip(o).enumerate() {
+        let slot = &mut vh[x as usize];
+        if *slot == NONE || opp == NONE {
+            *slot = h as u32;
+        }
+    }
+    let edge_bits = RankBits::from_fn(v.len(), |h| {
+        let g = o[h];
+        g == NONE || (h as u32) < g
+    });
+    let mut eh = Vec::with_capacity(edge_bits.ones());
+    eh.extend((0..v.len() as u32).filter(|&h| edge_bits.get(h as usize)));
+    debug_assert_eq!(eh.len(), che.num_edges);
+    che.vh = vh;
+    che.edge_bits = edge_bits;
+    che.eh = eh;
+}

@@ -1,0 +1,270 @@
+//! CHE, the Compact Half-Edge for triangle surfaces, in levels:
+//! - 0: `V[3T]`, the (oriented, manifold-split) triangle soup;
+//! - 1: `O[3T]`, opposite half-edges (`NONE` on the boundary);
+//! - 2: `VH[V]` (a boundary vertex stores its outgoing boundary half-edge), edge ids;
+//! - 3: boundary curves.
+//!
+//! Every query works at every level; a higher level only answers faster. The build always
+//! canonicalises the input (degenerate triangles dropped, components oriented, non-manifold
+//! vertices split) so that the half-edge and edge ids are the same at every level.
+
+mod build;
+mod curves;
+pub mod ids;
+mod level2;
+mod level3;
+mod matching;
+mod memory;
+mod orient;
+mod queries;
+mod report;
+mod split;
+mod star;
+mod summary;
+
+pub use build::{BuildOptions, MAX_TRIANGLES};
+pub use curves::BoundaryWalk;
+pub use queries::Ids;
+pub use ids::{first, next, prev, tri};
+pub use memory::Memory;
+pub use report::BuildReport;
+pub use star::{Rotation, StarStep};
+pub use summary::Summary;
+
+use crate::error::{Error, Result};
+use crate::rank::RankBits;
+use crate::NONE;
+use glam::DVec3;
+
+/// A triangle surface in the Compact Half-Edge structure.
+#[derive(Clone, Debug)]
+pub struct Che {
+    level: u8,
+    n_input_vertices: usize,
+    n_vertices: usize,
+    /// `V[h]`: origin of half-edge `h`.
+    v: Vec<u32>,
+    /// Level 1: `O[h]`.
+    o: Vec<u32>,
+    /// Level 2: one outgoing half-edge per vertex, the boundary one on the boundary.
+    vh: Vec<u32>,
+    /// Level 2: bit `h` set when `h` is the canonical half-edge of its edge
+    /// (`O[h] == NONE || h < O[h]`); the edge id is the rank.
+    edge_bits: RankBits,
+    /// Level 2: the canonical half-edge of each edge.
+    eh: Vec<u32>,
+    /// Level 3: one boundary half-edge per boundary curve.
+    ch: Vec<u32>,
+    /// Level 3: bit `h` set when `O[h] == NONE`; rank indexes `curve_of`.
+    boundary_bits: RankBits,
+    /// Level 3: the curve of each boundary half-edge, in half-edge order.
+    curve_of: Vec<u32>,
+    /// Edge count, the same at every level.
+    num_edges: usize,
+    positions: Vec<DVec3>,
+    /// Structure vertex -> input vertex; empty when the identity.
+    vertex_origin: Vec<u32>,
+    /// Structure triangle -> input triangle; empty when the identity.
+    triangle_origin: Vec<u32>,
+    /// Sorted half-edges of non-manifold edges (3+ triangles), kept unpaired.
+    non_manifold: Vec<u32>,
+    /// Sorted half-edges on the seams of non-orientable components, kept unpaired.
+    seams: Vec<u32>,
+    report: BuildReport,
+}
+
+impl Che {
+    /// Builds from a triangle list over vertices `0..n_vertices`; `positions` is empty or
+    /// holds `n_vertices` points.
+    pub fn from_triangles(
+        triangles: &[[u32; 3]],
+        n_vertices: usize,
+        positions: &[DVec3],
+        options: BuildOptions,
+    ) -> Result<Che> {
+        build::build(triangles, n_vertices, positions, options)
+    }
+
+    /// Builds from a flat array of `3 * n` vertex ids.
+    pub fn from_flat(
+        triangles: &[u32],
+        n_vertices: usize,
+        positions: &[DVec3],
+        options: BuildOptions,
+    ) -> Result<Che> {
+        if triangles.len() % 3 != 0 {
+            return Err(Error::invalid(format!(
+                "triangle array has {} ids, not a multiple of 3",
+                triangles.len()
+            )));
+        }
+        let tris: &[[u32; 3]] = as_triples(triangles);
+        Self::from_triangles(tris, n_vertices, positions, options)
+    }
+
+    pub fn level(&self) -> u8 {
+        self.level
+    }
+
+    /// Raises (or lowers) the level in place. Ids do not change.
+    pub fn build_level(&mut self, level: u8) -> Result<()> {
+        if level > 3 {
+            return Err(Error::out_of_range(format!("level {level} is not in 0..=3")));
+        }
+        if level < self.level {
+            if level < 3 {
+                self.ch = Vec::new();
+                self.boundary_bits = RankBits::default();
+                self.curve_of = Vec::new();
+            }
+            if level < 2 {
+                self.vh = Vec::new();
+                self.edge_bits = RankBits::default();
+                self.eh = Vec::new();
+            }
+            if level < 1 {
+                self.o = Vec::new();
+            }
+            self.level = level;
+            return Ok(());
+        }
+        if self.level < 1 && level >= 1 {
+            self.o = matching::opposites_by_rule(&self.v, self.n_vertices, &self.non_manifold);
+            self.level = 1;
+        }
+        if self.level < 2 && level >= 2 {
+            level2::build(self);
+            self.level = 2;
+        }
+        if self.level < 3 && level >= 3 {
+            level3::build(self);
+            self.level = 3;
+        }
+        Ok(())
+    }
+
+    /// Vertices of the structure: the input vertices, then copies made by splitting.
+    pub fn num_vertices(&self) -> usize {
+        self.n_vertices
+    }
+    pub fn num_input_vertices(&self) -> usize {
+        self.n_input_vertices
+    }
+    pub fn num_triangles(&self) -> usize {
+        self.v.len() / 3
+    }
+    pub fn num_half_edges(&self) -> usize {
+        self.v.len()
+    }
+    pub fn num_edges(&self) -> usize {
+        self.num_edges
+    }
+
+    /// `V`: the origin of every half-edge.
+    pub fn half_edge_vertices(&self) -> &[u32] {
+        &self.v
+    }
+    /// `O`, from level 1.
+    pub fn opposites(&self) -> Option<&[u32]> {
+        (self.level >= 1).then_some(&self.o[..])
+    }
+    /// `VH`, from level 2.
+    pub fn vertex_half_edges(&self) -> Option<&[u32]> {
+        (self.level >= 2).then_some(&self.vh[..])
+    }
+    /// `EH`: the canonical half-edge of every edge, from level 2.
+    pub fn edge_half_edges(&self) -> Option<&[u32]> {
+        (self.level >= 2).then_some(&self.eh[..])
+    }
+    /// `CH`: one boundary half-edge per curve, at level 3.
+    pub fn curve_half_edges(&self) -> Option<&[u32]> {
+        (self.level >= 3).then_some(&self.ch[..])
+    }
+    /// Positions of the structure's vertices (copies repeat their origin); may be empty.
+    pub fn positions(&self) -> &[DVec3] {
+        &self.positions
+    }
+
+    /// The input vertex a structure vertex comes from.
+    pub fn vertex_origin(&self, v: u32) -> u32 {
+        if self.vertex_origin.is_empty() { v } else { self.vertex_origin[v as usize] }
+    }
+    /// The input triangle a structure triangle comes from.
+    pub fn triangle_origin(&self, t: u32) -> u32 {
+        if self.triangle_origin.is_empty() { t } else { self.triangle_origin[t as usize] }
+    }
+    /// The vertex origin map, or `None` when it is the identity.
+    pub fn vertex_origins(&self) -> Option<&[u32]> {
+        (!self.vertex_origin.is_empty()).then_some(&self.vertex_origin[..])
+    }
+    /// The triangle origin map, or `None` when it is the identity.
+    pub fn triangle_origins(&self) -> Option<&[u32]> {
+        (!self.triangle_origin.is_empty()).then_some(&self.triangle_origin[..])
+    }
+
+    pub fn report(&self) -> &BuildReport {
+        &self.report
+    }
+
+    /// Half-edges of non-manifold edges (sorted); they are unpaired at every level.
+    pub fn non_manifold_half_edges(&self) -> &[u32] {
+        &self.non_manifold
+    }
+    /// Half-edges on non-orientable seams (sorted); they are unpaired at every level.
+    pub fn seam_half_edges(&self) -> &[u32] {
+        &self.seams
+    }
+
+    pub fn check_vertex(&self, v: u32) -> Result<()> {
+        if (v as usize) < self.n_vertices {
+            Ok(())
+        } else {
+            Err(Error::out_of_range(format!(
+                "vertex {v} out of range (the mesh has {} vertices)",
+                self.n_vertices
+            )))
+        }
+    }
+    pub fn check_triangle(&self, t: u32) -> Result<()> {
+        if (t as usize) < self.num_triangles() {
+            Ok(())
+        } else {
+            Err(Error::out_of_range(format!(
+                "triangle {t} out of range (the mesh has {} triangles)",
+                self.num_triangles()
+            )))
+        }
+    }
+    pub fn check_half_edge(&self, h: u32) -> Result<()> {
+        if (h as usize) < self.v.len() {
+            Ok(())
+        } else {
+            Err(Error::out_of_range(format!(
+                "half-edge {h} out of range (the mesh has {} half-edges)",
+                self.v.len()
+            )))
+        }
+    }
+    pub fn check_edge(&self, e: u32) -> Result<()> {
+        if (e as usize) < self.num_edges {
+            Ok(())
+        } else {
+            Err(Error::out_of_range(format!(
+                "edge {e} out of range (the mesh has {} edges)",
+                self.num_edges
+            )))
+        }
+    }
+}
+
+/// Views a flat id array as triples without copying (the caller checked the length).
+pub(crate) fn as_triples(flat: &[u32]) -> &[[u32; 3]] {
+    flat.as_chunks::<3>().0
+}
+
+const _: () = {
+    // Queries are `&self` and lock-free: the structure is plain data.
+    const fn assert_send_sync<T: Send + Sync>() {}
+    assert_send_sync::<Che>();
+    assert!(NONE == u32::MAX);
+};

@@ -1,0 +1,56 @@
+//! What a build did to its input: nothing is dropped or changed without being listed here.
+
+use crate::REPORT_EXAMPLES;
+
+/// Counts, plus the first [`REPORT_EXAMPLES`] offending ids of each kind (input ids).
+#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct BuildReport {
+    /// Triangles given.
+    pub input_triangles: usize,
+    /// Vertices given (the structure may hold more after splitting).
+    pub input_vertices: usize,
+    /// Triangles with a repeated vertex id, dropped.
+    pub dropped_degenerate: usize,
+    pub degenerate_examples: Vec<u32>,
+    /// Pairs of triangles with the same three vertices (kept).
+    pub duplicate_triangles: usize,
+    pub duplicate_examples: Vec<[u32; 2]>,
+    /// Unique input edges, and how many carry one triangle (boundary) or 3+ (non-manifold).
+    pub input_edges: usize,
+    pub boundary_edges: usize,
+    pub non_manifold_edges: usize,
+    /// Vertex pairs (input ids) of non-manifold edges; their half-edges stay unpaired.
+    pub non_manifold_edge_examples: Vec<[u32; 2]>,
+    /// Input vertices whose star is several fans in the input (non-manifold vertices).
+    pub split_vertices: usize,
+    pub split_vertex_examples: Vec<u32>,
+    /// Input vertices split only because a non-orientable seam crosses them.
+    pub seam_split_vertices: usize,
+    /// Vertex copies appended after the input vertices (by both kinds of split).
+    pub added_vertices: usize,
+    /// Triangles whose orientation was reversed to agree with their neighbours.
+    pub flipped_triangles: usize,
+    /// Components that cannot be oriented; one input triangle of each.
+    pub non_orientable_components: usize,
+    pub non_orientable_examples: Vec<u32>,
+    /// Half-edges left unpaired on the seams of non-orientable components.
+    pub seam_edges: usize,
+}
+
+impl BuildReport {
+    /// True when the build changed nothing but orientation.
+    pub fn is_clean(&self) -> bool {
+        self.dropped_degenerate == 0
+            && self.duplicate_triangles == 0
+            && self.non_manifold_edges == 0
+            && self.split_vertices == 0
+            && self.non_orientable_components == 0
+    }
+}
+
+/// Keeps the first few examples of a kind.
+pub(crate) fn push_example<T>(list: &mut Vec<T>, item: T) {
+    if list.len() < REPORT_EXAMPLES {
+        list.push(item);
+    }
+}

@@ -1,0 +1,1 @@
+//! CHF, the Compact Half-Face for tetrahedral meshes (being written).

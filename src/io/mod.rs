@@ -1,0 +1,113 @@
+//! Mesh files: one reader (and writer) per format, chosen by the file's extension.
+//! A parse error names the file and the line (or byte offset); no reader panics.
+
+mod gmsh;
+mod medit;
+mod obj;
+mod off;
+mod ply;
+mod stl;
+mod tetgen;
+mod vtk;
+
+use crate::error::{Error, Result};
+use glam::DVec3;
+use std::path::Path;
+
+/// What a file holds: points, and triangles and/or tetrahedra over them (0-based ids).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeshData {
+    pub positions: Vec<DVec3>,
+    pub triangles: Vec<[u32; 3]>,
+    pub tetrahedra: Vec<[u32; 4]>,
+}
+
+impl MeshData {
+    pub fn num_vertices(&self) -> usize {
+        self.positions.len()
+    }
+    /// A volume file is one with tetrahedra; anything else is read as a surface.
+    pub fn is_volume(&self) -> bool {
+        !self.tetrahedra.is_empty()
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Off,
+    Obj,
+    Ply,
+    Stl,
+    /// TetGen `.node` + `.ele` (either path, or the stem).
+    TetGen,
+    /// Medit `.mesh`.
+    Medit,
+    /// Gmsh `.msh` 2.2 and 4.1, ASCII.
+    Gmsh,
+    /// VTK legacy unstructured grid `.vtk`.
+    Vtk,
+}
+
+impl Format {
+    pub fn from_path(path: &Path) -> Result<Format> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(|e| e.to_ascii_lowercase())
+            .unwrap_or_default();
+        Ok(match ext.as_str() {
+            "off" => Format::Off,
+            "obj" => Format::Obj,
+            "ply" => Format::Ply,
+            "stl" => Format::Stl,
+            "node" | "ele" => Format::TetGen,
+            "mesh" => Format::Medit,
+            "msh" => Format::Gmsh,
+            "vtk" => Format::Vtk,
+            _ => {
+                return Err(Error::invalid(format!(
+                    "{}: unknown mesh format (extension '{ext}'; known: off obj ply stl node ele mesh msh vtk)",
+                    path.display()
+                )));
+            }
+        })
+    }
+}
+
+/// Reads a mesh file, the format chosen by its extension.
+pub fn read(path: &Path) -> Result<MeshData> {
+    match Format::from_path(path)? {
+        Format::Off => off::read(path),
+        Format::Obj => obj::read(path),
+        Format::Ply => ply::read(path),
+        Format::Stl => stl::read(path),
+        Format::TetGen => tetgen::read(path),
+        Format::Medit => medit::read(path),
+        Format::Gmsh => gmsh::read(path),
+        Format::Vtk => vtk::read(path),
+    }
+}
+
+/// Writes a mesh file, the format chosen by its extension.
+pub fn write(path: &Path, data: &MeshData) -> Result<()> {
+    match Format::from_path(path)? {
+        Format::Off => off::write(path, data),
+        Format::Medit => medit::write(path, data),
+        Format::Vtk => vtk::write(path, data),
+        other => Err(Error::invalid(format!(
+            "{}: writing {other:?} is not supported (write .off, .mesh or .vtk)",
+            path.display()
+        ))),
+    }
+}
+
+/// Reads a whole file, naming it in the error.
+#[allow(dead_code)]
+pub(crate) fn read_to_string(path: &Path) -> Result<String> {
+    std::fs::read_to_string(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
+}
+
+#[allow(dead_code)]
+pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
+    std::fs::read(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
+}

@@ -1,0 +1,20 @@
+//! topomesh: the Compact Half-Edge (CHE) for triangle surfaces and the Compact Half-Face (CHF)
+//! for tetrahedral meshes (Lage, Lewiner, Lopes and Velho), built in levels, with a C ABI.
+//!
+//! Ids are `u32` positions in flat arrays; [`NONE`] (`u32::MAX`) means "none" or "boundary".
+
+pub mod che;
+pub mod chf;
+pub mod error;
+pub mod ffi;
+pub mod io;
+mod rank;
+
+pub use che::{BuildOptions, BuildReport, Che, Summary};
+pub use error::{Error, ErrorKind};
+
+/// "No element": the opposite of a boundary half-edge, the start of an isolated vertex, ...
+pub const NONE: u32 = u32::MAX;
+
+/// How many offending ids a build report keeps of each kind.
+pub const REPORT_EXAMPLES: usize = 16;

@@ -1,0 +1,76 @@
+//! A bit vector with O(1) rank: 64 bits of payload plus a 32-bit running count per word,
+//! 1.5 bits per element. Used for edge ids (rank over canonical half-edges) and boundary
+//! curve lookup (rank over boundary half-edges) without a full per-element map.
+
+#[derive(Clone, Debug, Default)]
+pub struct RankBits {
+    words: Vec<u64>,
+    before: Vec<u32>,
+    ones: usize,
+}
+
+impl RankBits {
+    pub fn from_fn(len: usize, mut bit: impl FnMut(usize) -> bool) -> Self {
+        let n_words = len.div_ceil(64);
+        let mut words = Vec::with_capacity(n_words);
+        let mut before = Vec::with_capacity(n_words);
+        let mut ones = 0usize;
+        for w in 0..n_words {
+            let base = w * 64;
+            let end = (base + 64).min(len);
+            let mut word = 0u64;
+            for i in base..end {
+                word |= (bit(i) as u64) << (i - base);
+            }
+            before.push(ones as u32);
+            ones += word.count_ones() as usize;
+            words.push(word);
+        }
+        RankBits {
+            words,
+            before,
+            ones,
+        }
+    }
+
+    pub fn ones(&self) -> usize {
+        self.ones
+    }
+
+    #[inline]
+    pub fn get(&self, i: usize) -> bool {
+        (self.words[i >> 6] >> (i & 63)) & 1 == 1
+    }
+
+    /// Number of set bits strictly before `i`.
+    #[inline]
+    pub fn rank(&self, i: usize) -> usize {
+        let w = i >> 6;
+        let mask = (1u64 << (i & 63)) - 1;
+        self.before[w] as usize + (self.words[w] & mask).count_ones() as usize
+    }
+
+    pub fn memory_bytes(&self) -> usize {
+        self.words.len() * 8 + self.before.len() * 4
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rank_matches_prefix_count() {
+        let pattern = |i: usize| (i * 7 + i / 3) % 5 < 2;
+        for len in [0usize, 1, 63, 64, 65, 200, 1000] {
+            let bits = RankBits::from_fn(len, pattern);
+            let mut count = 0;
+            for i in 0..len {
+                assert_eq!(bits.rank(i), count, "len {len} i {i}");
+                assert_eq!(bits.get(i), pattern(i));
+                count += pattern(i) as usize;
+            }
+            assert_eq!(bits.ones(), count);
+        }
+    }
+}

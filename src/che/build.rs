@@ -77,6 +77,7 @@ pub(crate) fn build(
     // Soup: range check, degenerate triangles dropped.
     let mut v: Vec<u32> = Vec::with_capacity(3 * triangles.len());
     let mut triangle_origin: Vec<u32> = Vec::new();
+    let mut dropped_any = false;
     for (t, tri) in triangles.iter().enumerate() {
         for (i, &x) in tri.iter().enumerate() {
             if x as usize >= n_vertices {
@@ -87,20 +88,21 @@ pub(crate) fn build(
         }
         let [a, b, c] = *tri;
         if a == b || b == c || a == c {
-            if triangle_origin.is_empty() {
+            if !dropped_any {
+                dropped_any = true;
                 triangle_origin.extend(0..t as u32);
             }
             report.dropped_degenerate += 1;
             push_example(&mut report.degenerate_examples, t as u32);
             continue;
         }
-        if !triangle_origin.is_empty() {
+        if dropped_any {
             triangle_origin.push(t as u32);
         }
         v.extend_from_slice(tri);
     }
     let origin_of = |t: u32| {
-        if triangle_origin.is_empty() { t } else { triangle_origin[t as usize] }
+        if dropped_any { triangle_origin[t as usize] } else { t }
     };
 
     // Match on unordered vertex pairs; pairs of exactly two are partners.

@@ -38,7 +38,8 @@ pub fn torus(nu: u32, nv: u32) -> Surface {
         for i in 0..nu {
             let (u, v) = (TAU * i as f64 / nu as f64, TAU * j as f64 / nv as f64);
             let r = 2.0 + v.cos();
-            s.positions.push(DVec3::new(r * u.cos(), r * u.sin(), v.sin()));
+            s.positions
+                .push(DVec3::new(r * u.cos(), r * u.sin(), v.sin()));
         }
     }
     for j in 0..nv {
@@ -75,13 +76,19 @@ pub fn sphere(nu: u32, nv: u32) -> Surface {
     }
     for j in 1..nv - 1 {
         for i in 0..nu {
-            let (a, b, c, d) = (ring(j, i), ring(j + 1, i), ring(j + 1, i + 1), ring(j, i + 1));
+            let (a, b, c, d) = (
+                ring(j, i),
+                ring(j + 1, i),
+                ring(j + 1, i + 1),
+                ring(j, i + 1),
+            );
             s.triangles.push([a, b, c]);
             s.triangles.push([a, c, d]);
         }
     }
     for i in 0..nu {
-        s.triangles.push([south, ring(nv - 1, i + 1), ring(nv - 1, i)]);
+        s.triangles
+            .push([south, ring(nv - 1, i + 1), ring(nv - 1, i)]);
     }
     s
 }
@@ -105,8 +112,13 @@ mod tests {
     use crate::{BuildOptions, Che};
 
     fn chi(s: &Surface) -> (i64, i64, u64) {
-        let che = Che::from_triangles(&s.triangles, s.positions.len(), &s.positions, BuildOptions::level(3))
-            .unwrap();
+        let che = Che::from_triangles(
+            &s.triangles,
+            s.positions.len(),
+            &s.positions,
+            BuildOptions::level(3),
+        )
+        .unwrap();
         let sum = che.summary();
         (sum.euler_characteristic, sum.genus, sum.boundary_curves)
     }

@@ -102,7 +102,11 @@ pub(crate) fn build(
         v.extend_from_slice(tri);
     }
     let origin_of = |t: u32| {
-        if dropped_any { triangle_origin[t as usize] } else { t }
+        if dropped_any {
+            triangle_origin[t as usize]
+        } else {
+            t
+        }
     };
 
     // Match on unordered vertex pairs; pairs of exactly two are partners.
@@ -142,7 +146,11 @@ pub(crate) fn build(
         .collect();
     report.seam_edges = oriented.seams.len() / 2;
     let renumber = |h: u32| {
-        if oriented.flipped[(h / 3) as usize] { orient::flipped_id(h) } else { h }
+        if oriented.flipped[(h / 3) as usize] {
+            orient::flipped_id(h)
+        } else {
+            h
+        }
     };
     for h in non_manifold.iter_mut() {
         *h = renumber(*h);
@@ -167,7 +175,9 @@ pub(crate) fn build(
     let vertex_origin: Vec<u32> = if split.copies.is_empty() {
         Vec::new()
     } else {
-        (0..n_vertices as u32).chain(split.copies.iter().copied()).collect()
+        (0..n_vertices as u32)
+            .chain(split.copies.iter().copied())
+            .collect()
     };
     let mut positions = positions.to_vec();
     if !positions.is_empty() {

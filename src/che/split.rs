@@ -73,7 +73,11 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
         still_split(v, n_vertices, &copies, &split_origins, seams)
     };
     let mut split_examples = Vec::new();
-    for (&x, _) in split_origins.iter().zip(&non_manifold).filter(|(_, nm)| **nm) {
+    for (&x, _) in split_origins
+        .iter()
+        .zip(&non_manifold)
+        .filter(|(_, nm)| **nm)
+    {
         push_example(&mut split_examples, x);
     }
     let split_vertices = non_manifold.iter().filter(|&&nm| nm).count();
@@ -112,7 +116,11 @@ fn still_split(
     // Seams come in pairs (h, g) of half-edges on one vertex pair running the same way.
     let mut by_pair: Vec<(u32, u32, u32)> = Vec::with_capacity(seams.len());
     let origin = |x: u32| {
-        if (x as usize) < n_vertices { x } else { copies[x as usize - n_vertices] }
+        if (x as usize) < n_vertices {
+            x
+        } else {
+            copies[x as usize - n_vertices]
+        }
     };
     for &h in seams {
         by_pair.push((origin(v[h as usize]), origin(v[next(h) as usize]), h));

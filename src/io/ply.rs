@@ -5,5 +5,8 @@ use crate::error::{Error, Result};
 use std::path::Path;
 
 pub fn read(path: &Path) -> Result<MeshData> {
-    Err(Error::invalid(format!("{}: ply reader not written yet", path.display())))
+    Err(Error::invalid(format!(
+        "{}: ply reader not written yet",
+        path.display()
+    )))
 }

@@ -140,13 +140,21 @@ pub fn check_all(tris: &[[u32; 3]], n: usize, levels: &[u8]) -> Che {
     for &level in levels {
         let che = Che::from_triangles(tris, n, &[], BuildOptions::level(level)).expect("build");
         assert_eq!(che.level(), level);
-        assert_eq!(che.half_edge_vertices(), top.half_edge_vertices(), "level {level}: V");
+        assert_eq!(
+            che.half_edge_vertices(),
+            top.half_edge_vertices(),
+            "level {level}: V"
+        );
         let got = answers(&che);
         assert_eq!(got, expected, "level {level} answers differ from level 3");
         // Raising the level in place gives the same structure as building it directly.
         let mut raised = che.clone();
         raised.build_level(3).unwrap();
-        assert_eq!(raised.opposites(), top.opposites(), "raised from {level}: O");
+        assert_eq!(
+            raised.opposites(),
+            top.opposites(),
+            "raised from {level}: O"
+        );
         assert_eq!(raised.vertex_half_edges(), top.vertex_half_edges());
         assert_eq!(raised.curve_half_edges(), top.curve_half_edges());
     }
@@ -184,7 +192,10 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
     // O: an involution between half-edges running opposite ways, exactly the brute rule.
     let mut by_pair: BTreeMap<(u32, u32), Vec<u32>> = BTreeMap::new();
     for h in 0..nh {
-        by_pair.entry(key(v[h as usize], v[next(h) as usize])).or_default().push(h);
+        by_pair
+            .entry(key(v[h as usize], v[next(h) as usize]))
+            .or_default()
+            .push(h);
     }
     let nm: BTreeSet<u32> = che.non_manifold_half_edges().iter().copied().collect();
     for h in 0..nh {
@@ -192,7 +203,11 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
         let group = &by_pair[&key(v[h as usize], v[next(h) as usize])];
         let expected = if group.len() == 2 && !nm.contains(&h) {
             let other = if group[0] == h { group[1] } else { group[0] };
-            if v[other as usize] != v[h as usize] { other } else { NONE }
+            if v[other as usize] != v[h as usize] {
+                other
+            } else {
+                NONE
+            }
         } else {
             NONE
         };
@@ -204,7 +219,10 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
         }
         let input_edge = &r.edges[&key(org(v[h as usize]), org(v[next(h) as usize]))];
         if input_edge.len() == 2 && che.seam_half_edges().binary_search(&h).is_err() {
-            assert_ne!(g, NONE, "input edge with two triangles left unpaired at {h}");
+            assert_ne!(
+                g, NONE,
+                "input edge with two triangles left unpaired at {h}"
+            );
         }
         if input_edge.len() != 2 {
             assert_eq!(g, NONE, "boundary or non-manifold input edge paired at {h}");
@@ -221,19 +239,35 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
             continue;
         }
         assert_eq!(v[h as usize], x);
-        let boundary_out: Vec<u32> = out.iter().copied().filter(|&g| o[g as usize] == NONE).collect();
+        let boundary_out: Vec<u32> = out
+            .iter()
+            .copied()
+            .filter(|&g| o[g as usize] == NONE)
+            .collect();
         assert!(boundary_out.len() <= 1, "vertex {x} has several fans");
         if let Some(&b) = boundary_out.first() {
-            assert_eq!(h, b, "boundary vertex {x} must store its boundary half-edge");
+            assert_eq!(
+                h, b,
+                "boundary vertex {x} must store its boundary half-edge"
+            );
         }
         let star: Vec<StarStep> = che.vertex_star(x).collect();
         let outs: Vec<u32> = star
             .iter()
-            .filter_map(|s| if let StarStep::Out(h) = s { Some(*h) } else { None })
+            .filter_map(|s| {
+                if let StarStep::Out(h) = s {
+                    Some(*h)
+                } else {
+                    None
+                }
+            })
             .collect();
         let mut sorted = outs.clone();
         sorted.sort_unstable();
-        assert_eq!(sorted, out, "the rotation of {x} reaches every outgoing half-edge");
+        assert_eq!(
+            sorted, out,
+            "the rotation of {x} reaches every outgoing half-edge"
+        );
         // Counter-clockwise: each step crosses the previous corner's edge.
         for w in outs.windows(2) {
             assert_eq!(o[prev(w[0]) as usize], w[1]);
@@ -260,20 +294,30 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
             let [a, b] = che.edge_vertices(e);
             assert_eq!(key(a, b), key(x, w), "VE and VV agree at {x}");
         }
-        vv.entry(org(x)).or_default().extend(ring.iter().map(|&w| org(w)));
-        vf.entry(org(x)).or_default().extend(che.vertex_triangles(x).map(|t| che.triangle_origin(t)));
-        ve.entry(org(x))
+        vv.entry(org(x))
             .or_default()
-            .extend(edges.iter().map(|&e| {
-                let [a, b] = che.edge_vertices(e);
-                key(org(a), org(b))
-            }));
+            .extend(ring.iter().map(|&w| org(w)));
+        vf.entry(org(x))
+            .or_default()
+            .extend(che.vertex_triangles(x).map(|t| che.triangle_origin(t)));
+        ve.entry(org(x)).or_default().extend(edges.iter().map(|&e| {
+            let [a, b] = che.edge_vertices(e);
+            key(org(a), org(b))
+        }));
     }
     for x in 0..r.n as u32 {
         let expected = r.neighbours(x);
-        assert_eq!(vv.get(&x).cloned().unwrap_or_default(), expected, "VV of input vertex {x}");
+        assert_eq!(
+            vv.get(&x).cloned().unwrap_or_default(),
+            expected,
+            "VV of input vertex {x}"
+        );
         let expected_edges: BTreeSet<(u32, u32)> = expected.iter().map(|&w| key(x, w)).collect();
-        assert_eq!(ve.get(&x).cloned().unwrap_or_default(), expected_edges, "VE of {x}");
+        assert_eq!(
+            ve.get(&x).cloned().unwrap_or_default(),
+            expected_edges,
+            "VE of {x}"
+        );
         let mut got = vf.get(&x).cloned().unwrap_or_default();
         got.sort_unstable();
         let mut want: Vec<u32> = r
@@ -287,7 +331,12 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
     }
 
     // Edges: ids cover every canonical half-edge once; EV, EF, EE, FE, FF consistent.
-    assert_eq!(che.num_edges(), (0..nh).filter(|&h| o[h as usize] == NONE || h < o[h as usize]).count());
+    assert_eq!(
+        che.num_edges(),
+        (0..nh)
+            .filter(|&h| o[h as usize] == NONE || h < o[h as usize])
+            .count()
+    );
     let mut ef_union: BTreeMap<(u32, u32), BTreeSet<u32>> = BTreeMap::new();
     for e in 0..che.num_edges() as u32 {
         let h = che.edge_half_edge(e);
@@ -300,12 +349,18 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
         let k = key(org(a), org(b));
         let tris_of_edge = che.edge_triangles(e);
         assert_eq!(che.is_boundary_edge(e), tris_of_edge.len() == 1);
-        ef_union.entry(k).or_default().extend(tris_of_edge.iter().map(|&t| che.triangle_origin(t)));
+        ef_union
+            .entry(k)
+            .or_default()
+            .extend(tris_of_edge.iter().map(|&t| che.triangle_origin(t)));
         let wings = che.edge_edges(e);
         assert_eq!(wings.len(), 2 * tris_of_edge.len());
         for &w in wings.iter() {
             let [c, d] = che.edge_vertices(w);
-            assert!(c == a || c == b || d == a || d == b, "wing {w} of {e} touches it");
+            assert!(
+                c == a || c == b || d == a || d == b,
+                "wing {w} of {e} touches it"
+            );
         }
     }
     for (k, ts) in &r.edges {
@@ -344,11 +399,19 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
             seen[h as usize] = true;
             assert_eq!(che.curve_of(h), c as u32);
             let following = walk[(i + 1) % walk.len()];
-            assert_eq!(v[next(h) as usize], v[following as usize], "curve {c} is a chain");
+            assert_eq!(
+                v[next(h) as usize],
+                v[following as usize],
+                "curve {c} is a chain"
+            );
         }
     }
     for h in 0..nh {
-        assert_eq!(seen[h as usize], o[h as usize] == NONE, "boundary half-edge {h} in a curve");
+        assert_eq!(
+            seen[h as usize],
+            o[h as usize] == NONE,
+            "boundary half-edge {h} in a curve"
+        );
     }
 
     // Summary against the input complex.
@@ -357,8 +420,14 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
     assert_eq!(s.vertices as usize, r.n);
     assert_eq!(s.edges as usize, r.edges.len());
     assert_eq!(s.triangles as usize, r.kept.len());
-    assert_eq!(s.boundary_edges as usize, r.edges.values().filter(|t| t.len() == 1).count());
-    assert_eq!(s.non_manifold_edges as usize, r.edges.values().filter(|t| t.len() > 2).count());
+    assert_eq!(
+        s.boundary_edges as usize,
+        r.edges.values().filter(|t| t.len() == 1).count()
+    );
+    assert_eq!(
+        s.non_manifold_edges as usize,
+        r.edges.values().filter(|t| t.len() > 2).count()
+    );
     assert_eq!(s.isolated_vertices as usize, r.n - used.len());
     assert_eq!(
         s.euler_characteristic,

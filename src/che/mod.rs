@@ -9,6 +9,7 @@
 //! vertices split) so that the half-edge and edge ids are the same at every level.
 
 mod build;
+mod bulk;
 mod curves;
 pub mod ids;
 mod level2;
@@ -23,6 +24,7 @@ mod star;
 mod summary;
 
 pub use build::{BuildOptions, MAX_TRIANGLES};
+pub use bulk::Csr;
 pub use curves::BoundaryWalk;
 pub use ids::{first, next, prev, tri};
 pub use memory::Memory;

@@ -111,3 +111,11 @@ pub(crate) fn read_to_string(path: &Path) -> Result<String> {
 pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
     std::fs::read(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
 }
+
+/// Parses a mesh held in memory (`name` appears in errors).
+pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
+    let _ = bytes;
+    Err(Error::invalid(format!(
+        "{name}: parsing {format:?} from memory is not wired yet"
+    )))
+}

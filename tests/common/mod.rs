@@ -147,6 +147,7 @@ pub fn check_all(tris: &[[u32; 3]], n: usize, levels: &[u8]) -> Che {
         );
         let got = answers(&che);
         assert_eq!(got, expected, "level {level} answers differ from level 3");
+        check_bulk(&che, &got);
         // Raising the level in place gives the same structure as building it directly.
         let mut raised = che.clone();
         raised.build_level(3).unwrap();
@@ -159,6 +160,30 @@ pub fn check_all(tris: &[[u32; 3]], n: usize, levels: &[u8]) -> Che {
         assert_eq!(raised.curve_half_edges(), top.curve_half_edges());
     }
     top
+}
+
+/// The CSR sweeps give the per-element answers.
+fn check_bulk(che: &Che, a: &Answers) {
+    let as_lists = |csr: &topomesh::che::Csr| {
+        (0..csr.len())
+            .map(|i| csr.get(i).to_vec())
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(as_lists(&che.all_vertex_vertices()), a.vv, "bulk VV");
+    assert_eq!(as_lists(&che.all_vertex_edges()), a.ve, "bulk VE");
+    assert_eq!(as_lists(&che.all_vertex_triangles()), a.vf, "bulk VF");
+    let ff: Vec<[u32; 3]> = che
+        .all_triangle_triangles()
+        .chunks(3)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect();
+    assert_eq!(ff, a.ff, "bulk FF");
+    let fe: Vec<[u32; 3]> = che
+        .all_triangle_edges()
+        .chunks(3)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect();
+    assert_eq!(fe, a.fe, "bulk FE");
 }
 
 /// Structural invariants plus the relations against the input complex.

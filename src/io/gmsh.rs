@@ -3,7 +3,7 @@
 //! they are numbered 0.. in order of appearance.
 
 use super::MeshData;
-use super::medit::text::{self, Lexer};
+use super::text::{self, Lexer};
 use crate::error::Result;
 use glam::DVec3;
 use std::collections::HashMap;

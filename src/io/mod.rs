@@ -8,6 +8,7 @@ mod off;
 mod ply;
 mod stl;
 mod tetgen;
+mod text;
 mod vtk;
 
 use crate::error::{Error, Result};

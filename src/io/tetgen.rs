@@ -2,7 +2,7 @@
 //! first point says). Given either file, both are read.
 
 use super::MeshData;
-use super::medit::text::{self, Lexer};
+use super::text::{self, Lexer};
 use crate::error::{Error, Result};
 use glam::DVec3;
 use std::path::{Path, PathBuf};

@@ -4,7 +4,7 @@
 //! `CONNECTIVITY`) are both read; point and cell data are ignored.
 
 use super::MeshData;
-use super::medit::text::{self, Lexer};
+use super::text::{self, Lexer};
 use crate::error::Result;
 use glam::DVec3;
 use std::io::Write;

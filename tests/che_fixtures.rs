@@ -53,7 +53,7 @@ fn moebius(n: u32) -> Vec<[u32; 3]> {
 fn klein(m: u32, n: u32) -> Vec<[u32; 3]> {
     let id = |i: u32, j: u32| {
         if j == n {
-            ((m - i % m) % m) + 0
+            (m - i % m) % m
         } else {
             j * m + i % m
         }
@@ -225,6 +225,18 @@ fn degenerate_and_duplicate_triangles() {
         },
     );
     assert_eq!(strict.unwrap_err().kind, ErrorKind::NonManifold);
+}
+
+#[test]
+fn duplicate_with_one_non_manifold_edge() {
+    // Triangle (0, 1, 2) twice, and a third triangle on edge {1, 2} only.
+    let che = build(&[[0, 1, 2], [3, 2, 1], [0, 1, 2]], 4);
+    let r = che.report();
+    assert_eq!(
+        (r.duplicate_triangles, r.duplicate_examples.clone()),
+        (1, vec![[0, 2]])
+    );
+    assert_eq!(r.non_manifold_edges, 1);
 }
 
 #[test]

@@ -94,7 +94,7 @@ impl Che {
         positions: &[DVec3],
         options: BuildOptions,
     ) -> Result<Che> {
-        if triangles.len() % 3 != 0 {
+        if !triangles.len().is_multiple_of(3) {
             return Err(Error::invalid(format!(
                 "triangle array has {} ids, not a multiple of 3",
                 triangles.len()

@@ -31,20 +31,6 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
             continue;
         }
         let vertex = v[h as usize];
-        // Clockwise to the start of the fan: its boundary half-edge, or `h` when closed.
-        let mut start = h;
-        loop {
-            let back = o[start as usize];
-            if back == NONE {
-                break;
-            }
-            let g = next(back);
-            if g == h {
-                start = h;
-                break;
-            }
-            start = g;
-        }
         let id = if test(&has_fan, vertex as usize) {
             copies.push(vertex);
             (n_vertices + copies.len() - 1) as u32
@@ -52,15 +38,36 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
             set(&mut has_fan, vertex as usize);
             vertex
         };
-        let mut g = start;
-        loop {
+        // Counter-clockwise from `h` until back at `h` (a closed fan, the common case) or
+        // the boundary; then clockwise from `h` for the rest of an open fan.
+        let mut g = h;
+        let closed = loop {
             set(&mut visited, g as usize);
-            v[g as usize] = id;
+            if id != vertex {
+                v[g as usize] = id;
+            }
             let around = o[prev(g) as usize];
-            if around == NONE || around == start {
-                break;
+            if around == NONE {
+                break false;
+            }
+            if around == h {
+                break true;
             }
             g = around;
+        };
+        if !closed {
+            let mut g = h;
+            loop {
+                let back = o[g as usize];
+                if back == NONE {
+                    break;
+                }
+                g = next(back);
+                set(&mut visited, g as usize);
+                if id != vertex {
+                    v[g as usize] = id;
+                }
+            }
         }
     }
 

@@ -113,10 +113,24 @@ pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
     std::fs::read(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
 }
 
-/// Parses a mesh held in memory (`name` appears in errors).
+/// Parses a mesh held in memory (`name` appears in errors). TetGen needs two files, so
+/// it is read from paths only.
 pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
-    let _ = bytes;
-    Err(Error::invalid(format!(
-        "{name}: parsing {format:?} from memory is not wired yet"
-    )))
+    let text = || {
+        std::str::from_utf8(bytes).map_err(|e| {
+            Error::parse(format!("{name}: not UTF-8 text (byte {})", e.valid_up_to()))
+        })
+    };
+    match format {
+        Format::Off => off::parse(bytes, name),
+        Format::Obj => obj::parse(bytes.to_vec(), name),
+        Format::Ply => ply::parse(bytes, name),
+        Format::Stl => stl::parse(bytes, name),
+        Format::Medit => medit::parse(text()?, name),
+        Format::Gmsh => gmsh::parse(text()?, name),
+        Format::Vtk => vtk::parse(text()?, name),
+        Format::TetGen => Err(Error::invalid(format!(
+            "{name}: TetGen meshes are two files (.node and .ele): read them from a path"
+        ))),
+    }
 }

@@ -1,7 +1,7 @@
 //! From a triangle list to a CHE: validate, drop degenerate triangles, match half-edges,
 //! orient, split non-manifold vertices, then build the requested level.
 
-use super::matching::{Groups, half_edge};
+use super::matching::{for_each_group, half_edge};
 use super::report::{BuildReport, push_example};
 use super::{Che, level2, level3, orient, split};
 use crate::NONE;
@@ -114,8 +114,7 @@ pub(crate) fn build(
     let mut non_manifold: Vec<u32> = Vec::new();
     let mut same_direction = false;
     let mut duplicates: Vec<[u32; 2]> = Vec::new();
-    let groups = Groups::new(&v, n_vertices);
-    groups.for_each(|a, b, group| {
+    for_each_group(&v, n_vertices, |a, b, group| {
         report.input_edges += 1;
         match group.len() {
             1 => report.boundary_edges += 1,
@@ -134,7 +133,6 @@ pub(crate) fn build(
             }
         }
     });
-    drop(groups);
     if options.strict {
         strict_checks(&report, &v, &non_manifold, &origin_of)?;
     }

@@ -117,9 +117,8 @@ pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
 /// it is read from paths only.
 pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
     let text = || {
-        std::str::from_utf8(bytes).map_err(|e| {
-            Error::parse(format!("{name}: not UTF-8 text (byte {})", e.valid_up_to()))
-        })
+        std::str::from_utf8(bytes)
+            .map_err(|e| Error::parse(format!("{name}: not UTF-8 text (byte {})", e.valid_up_to())))
     };
     match format {
         Format::Off => off::parse(bytes, name),

@@ -101,10 +101,10 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
     let prefixed = parse_header(head).map_err(|msg| tk.err_at(name, line, &msg))?;
     if tk.token_on_this_line() {
         let save = (tk.pos, tk.line);
-        if let Some((word, line)) = tk.next() {
-            if word.eq_ignore_ascii_case(b"BINARY") {
-                return Err(tk.err_at(name, line, "binary OFF ('OFF BINARY') is not supported"));
-            }
+        if let Some((word, line)) = tk.next()
+            && word.eq_ignore_ascii_case(b"BINARY")
+        {
+            return Err(tk.err_at(name, line, "binary OFF ('OFF BINARY') is not supported"));
         }
         (tk.pos, tk.line) = save;
     }

@@ -31,7 +31,7 @@ fn checked_in_header_matches_the_ffi_module() {
             .lines()
             .zip(fresh.lines())
             .position(|(a, b)| a != b)
-            .map_or_else(|| current.lines().count().min(fresh.lines().count()), |i| i);
+            .unwrap_or_else(|| current.lines().count().min(fresh.lines().count()));
         panic!(
             "include/topomesh.h is out of date with src/ffi (first difference at line {}).\n\
              Regenerate it with: TOPOMESH_BLESS=1 cargo test --test header_drift",

@@ -1,6 +1,8 @@
 /* The stack star iterator, the bulk CSR calls and the zero-copy views. */
 #include "check.h"
 
+#include <pthread.h>
+
 /* The star of every vertex equals VV / VE / VF. */
 static void star_matches_relations(const che_mesh *m) {
     for (uint32_t v = 0; v < che_mesh_num_vertices(m); v++) {
@@ -227,7 +229,56 @@ static void test_views(void) {
     che_mesh_free(m);
 }
 
+/* Any number of threads may query one const mesh at once, including the first request of
+   an identity origin map (materialised once). */
+#define N_THREADS 4
+typedef struct {
+    const che_mesh *m;
+    const uint32_t *origins;
+    size_t vv_total;
+    int failed;
+} job;
+
+static void *query_everything(void *arg) {
+    job *j = arg;
+    size_t len = 0;
+    j->origins = che_mesh_vertex_origins(j->m, &len);
+    if (!j->origins || len != che_mesh_num_vertices(j->m)) j->failed = 1;
+    for (int round = 0; round < 50; round++) {
+        size_t total = 0;
+        for (uint32_t v = 0; v < che_mesh_num_vertices(j->m); v++) {
+            che_star_iter it;
+            che_star_step s;
+            if (che_star_begin(j->m, v, &it) != TOPOMESH_STATUS_OK) j->failed = 1;
+            while (che_star_next(&it, &s)) total++;
+        }
+        size_t no = 0, ni = 0;
+        if (che_mesh_vertex_vertices_csr(j->m, NULL, 0, NULL, 0, &no, &ni) != TOPOMESH_STATUS_OK ||
+            ni != total)
+            j->failed = 1;
+        j->vv_total = total;
+    }
+    return NULL;
+}
+
+static void test_threads(void) {
+    che_mesh *m = make(MOEBIUS, 6, 6, NULL, 1);
+    pthread_t th[N_THREADS];
+    job jobs[N_THREADS];
+    for (int i = 0; i < N_THREADS; i++) {
+        jobs[i] = (job){m, NULL, 0, 0};
+        CHECK(pthread_create(&th[i], NULL, query_everything, &jobs[i]) == 0);
+    }
+    for (int i = 0; i < N_THREADS; i++) CHECK(pthread_join(th[i], NULL) == 0);
+    for (int i = 0; i < N_THREADS; i++) {
+        CHECK(!jobs[i].failed);
+        CHECK(jobs[i].origins == jobs[0].origins && jobs[i].vv_total == jobs[0].vv_total);
+    }
+    che_mesh_free(m);
+}
+
 int main(void) {
+    test_threads();
     test_star();
     test_csr();
     test_views();

@@ -2,6 +2,8 @@
    and the same answers at every level. */
 #include "check.h"
 
+#include <stdint.h>
+
 typedef topomesh_status (*relation_fn)(const che_mesh *, uint32_t, uint32_t *, size_t, size_t *);
 
 static const struct {
@@ -173,6 +175,9 @@ static void test_buffer_rules(void) {
         CHECK_DETAIL("needed");
         /* Exactly enough. */
         CHECK_OK(f(mm, 0, b, n, &need));
+        CHECK(need == n && memcmp(b, full, n * sizeof *b) == 0);
+        /* A capacity larger than any buffer (SIZE_MAX as "enough"). */
+        CHECK_OK(f(mm, 0, b, SIZE_MAX, &need));
         CHECK(need == n && memcmp(b, full, n * sizeof *b) == 0);
         /* NULL handle, NULL buffer with a capacity, NULL out_len. */
         CHECK_STATUS(f(NULL, 0, b, 16, &n), TOPOMESH_STATUS_NULL_ARGUMENT);

@@ -241,6 +241,9 @@ impl<'a, T> Sink<'a, T> {
         let buf: &mut [MaybeUninit<T>] = if query {
             &mut []
         } else {
+            // No object is larger than isize::MAX bytes, so a larger `cap` (say SIZE_MAX for
+            // "unbounded") cannot be the real size: clamp it rather than build an invalid slice.
+            let cap = cap.min(isize::MAX as usize / std::mem::size_of::<T>().max(1));
             // SAFETY: non-NULL, valid for `cap` writes (contract); viewed as uninitialised.
             unsafe { std::slice::from_raw_parts_mut(buf.cast::<MaybeUninit<T>>(), cap) }
         };

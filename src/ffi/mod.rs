@@ -33,6 +33,8 @@ pub mod che_info;
 pub mod che_relations;
 pub mod che_star;
 pub mod che_views;
+#[cfg(test)]
+mod tests;
 
 pub use che::{CheBuildOptions, CheMesh};
 pub use che_info::{CheBuildReport, CheMemory, CheReportKind, CheSummary};

@@ -49,7 +49,7 @@ pub(crate) fn build(
     positions: &[DVec3],
     options: ChfBuildOptions,
 ) -> Result<Chf> {
-    validate(tets, n_vertices, positions, options)?;
+    check_sizes(tets.len(), n_vertices, positions.len(), options.level)?;
     let mut report = ChfBuildReport {
         input_tetrahedra: tets.len(),
         input_vertices: n_vertices,
@@ -58,7 +58,9 @@ pub(crate) fn build(
 
     // Soup: range check, degenerate tetrahedra dropped, determinant signs.
     let mut v: Vec<u32> = Vec::with_capacity(4 * tets.len());
+    // Stays empty (the identity) until the first dropped tetrahedron.
     let mut tet_origin: Vec<u32> = Vec::new();
+    let mut remapped = false;
     let mut sign: Vec<i8> = Vec::new();
     for (t, tet) in tets.iter().enumerate() {
         for (i, &x) in tet.iter().enumerate() {
@@ -70,14 +72,15 @@ pub(crate) fn build(
         }
         let [a, b, c, d] = *tet;
         if a == b || a == c || a == d || b == c || b == d || c == d {
-            if tet_origin.is_empty() {
+            if !remapped {
+                remapped = true;
                 tet_origin.extend(0..t as u32);
             }
             report.dropped_degenerate += 1;
             push_example(&mut report.degenerate_examples, t as u32);
             continue;
         }
-        if !tet_origin.is_empty() {
+        if remapped {
             tet_origin.push(t as u32);
         }
         v.extend_from_slice(tet);
@@ -234,16 +237,11 @@ pub(crate) fn build(
     Ok(chf)
 }
 
-fn validate(
-    tets: &[[u32; 4]],
-    n_vertices: usize,
-    positions: &[DVec3],
-    options: ChfBuildOptions,
-) -> Result<()> {
-    if options.level > 3 {
+/// Level, counts and lengths, before anything is allocated.
+fn check_sizes(n_tets: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
+    if level > 3 {
         return Err(Error::out_of_range(format!(
-            "level {} is not in 0..=3",
-            options.level
+            "level {level} is not in 0..=3"
         )));
     }
     if n_vertices >= NONE as usize {
@@ -251,16 +249,14 @@ fn validate(
             "{n_vertices} vertices: ids must fit below 2^32 - 1"
         )));
     }
-    if tets.len() > MAX_TETRAHEDRA {
+    if n_tets > MAX_TETRAHEDRA {
         return Err(Error::too_large(format!(
-            "tetrahedron {MAX_TETRAHEDRA} (of {}): half-face ids must fit below 2^32 - 1, so at most {MAX_TETRAHEDRA} tetrahedra",
-            tets.len()
+            "tetrahedron {MAX_TETRAHEDRA} (of {n_tets}): half-face ids must fit below 2^32 - 1, so at most {MAX_TETRAHEDRA} tetrahedra"
         )));
     }
-    if !positions.is_empty() && positions.len() != n_vertices {
+    if n_positions != 0 && n_positions != n_vertices {
         return Err(Error::invalid(format!(
-            "{} positions given for {n_vertices} vertices",
-            positions.len()
+            "{n_positions} positions given for {n_vertices} vertices"
         )));
     }
     Ok(())
@@ -371,4 +367,30 @@ fn strict_after_split(
         )));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ErrorKind;
+
+    #[test]
+    fn sizes_are_checked_before_allocating() {
+        assert!(check_sizes(MAX_TETRAHEDRA, 10, 0, 3).is_ok());
+        let e = check_sizes(MAX_TETRAHEDRA + 1, 10, 0, 2).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::TooLarge);
+        assert!(e.message.contains(&format!("tetrahedron {MAX_TETRAHEDRA}")));
+        assert!(4 * MAX_TETRAHEDRA < NONE as usize);
+        assert!(4 * (MAX_TETRAHEDRA + 1) > NONE as usize);
+        let e = check_sizes(1, NONE as usize, 0, 2).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::TooLarge);
+        assert_eq!(
+            check_sizes(1, 4, 3, 2).unwrap_err().kind,
+            ErrorKind::InvalidInput
+        );
+        assert_eq!(
+            check_sizes(1, 4, 0, 4).unwrap_err().kind,
+            ErrorKind::OutOfRange
+        );
+    }
 }

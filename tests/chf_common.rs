@@ -105,7 +105,7 @@ pub fn cube(nx: u32, ny: u32, nz: u32, five: bool) -> Mesh {
 pub struct Rng(pub u64);
 
 impl Rng {
-    pub fn next(&mut self) -> u64 {
+    pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -113,7 +113,7 @@ impl Rng {
         z ^ (z >> 31)
     }
     pub fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
+        (self.next_u64() % n as u64) as usize
     }
     pub fn shuffle<T>(&mut self, xs: &mut [T]) {
         for i in (1..xs.len()).rev() {
@@ -130,7 +130,7 @@ pub fn scramble(mesh: &Mesh, seed: u64, keep_percent: u64) -> Mesh {
         .tets
         .iter()
         .copied()
-        .filter(|_| rng.next() % 100 < keep_percent)
+        .filter(|_| rng.next_u64() % 100 < keep_percent)
         .collect();
     let mut relabel: Vec<u32> = (0..mesh.n() as u32).collect();
     rng.shuffle(&mut relabel);
@@ -233,7 +233,13 @@ impl Reference {
             .map(|t| chf.tetrahedron_vertices(t))
             .collect();
         let origin = |f: [u32; 3]| sorted(f.map(|x| chf.vertex_origin(x)));
-        let glued = |f: [u32; 3]| counts[&origin(f)] == 2;
+        // Faces the build could not glue without breaking the orientation (its choice).
+        let seams: BTreeSet<[u32; 3]> = chf
+            .seam_half_faces()
+            .iter()
+            .map(|&hf| origin(chf.half_face_vertices_of(hf)))
+            .collect();
+        let glued = |f: [u32; 3]| counts[&origin(f)] == 2 && !seams.contains(&origin(f));
         // Faces.
         let mut by_triple: BTreeMap<[u32; 3], Vec<u32>> = BTreeMap::new();
         for (t, &q) in tv.iter().enumerate() {

@@ -107,7 +107,12 @@ impl Chf {
                 tets.len()
             )));
         }
-        Self::from_tetrahedra(tets.as_chunks::<4>().0, n_vertices, positions, options)
+        // A copy (the build copies the ids anyway): `as_chunks` is newer than our MSRV.
+        let quads: Vec<[u32; 4]> = tets
+            .chunks_exact(4)
+            .map(|q| [q[0], q[1], q[2], q[3]])
+            .collect();
+        Self::from_tetrahedra(&quads, n_vertices, positions, options)
     }
 
     pub fn level(&self) -> u8 {

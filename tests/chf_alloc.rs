@@ -1,8 +1,7 @@
 //! At level 2 and up, queries do not allocate (stars of up to 64 tetrahedra): counted with
 //! a global allocator wrapper, in a test binary of its own.
 
-#[path = "chf_common.rs"]
-mod common;
+mod chf_common;
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -25,8 +24,8 @@ unsafe impl GlobalAlloc for Counting {
 static GLOBAL: Counting = Counting;
 
 #[test]
-fn level_2_queries_do_not_allocate() {
-    let mesh = common::scramble(&common::cube(4, 3, 3, false), 3, 85);
+fn chf_level_2_queries_do_not_allocate() {
+    let mesh = chf_common::scramble(&chf_common::cube(4, 3, 3, false), 3, 85);
     for level in [2, 3] {
         let chf = mesh.build(level, true);
         let before = ALLOCATIONS.load(Ordering::Relaxed);

@@ -1,16 +1,15 @@
 //! The build loses nothing, memory per level is what the containers hold, big stars spill
 //! to the heap and stay exact.
 
-#[path = "chf_common.rs"]
-mod common;
+mod chf_common;
 
-use common::*;
+use chf_common::*;
 use glam::DVec3;
 use topomesh::REPORT_EXAMPLES;
 use topomesh::chf::{Chf, ChfBuildOptions};
 
 #[test]
-fn nothing_disappears() {
+fn chf_nothing_disappears() {
     // Random tetrahedra over a few vertices: degenerate ones, duplicates, shared faces of
     // every kind. Every input tetrahedron is in the structure (mapped back) or dropped.
     let mut rng = Rng(7);
@@ -19,7 +18,7 @@ fn nothing_disappears() {
         .map(|_| [0; 4].map(|_| rng.below(n) as u32))
         .collect();
     let degenerate: Vec<u32> = (0..tets.len() as u32)
-        .filter(|&t| common::degenerate(tets[t as usize]))
+        .filter(|&t| chf_common::degenerate(tets[t as usize]))
         .collect();
     assert!(degenerate.len() > REPORT_EXAMPLES);
     for level in 0..=3 {
@@ -47,7 +46,7 @@ fn nothing_disappears() {
 }
 
 #[test]
-fn soups_of_random_tetrahedra_match_the_reference() {
+fn chf_soups_of_random_tetrahedra_match_the_reference() {
     let mut seams = 0;
     for seed in 0..40 {
         let mut rng = Rng(seed);
@@ -115,7 +114,7 @@ fn cone(lat: u32, lon: u32) -> Mesh {
 }
 
 #[test]
-fn large_star_spills_and_stays_exact() {
+fn chf_large_star_spills_and_stays_exact() {
     let mesh = scramble(&cone(6, 16), 5, 100);
     let n_tets = mesh.tets.len();
     assert!(n_tets > 2 * 64);
@@ -135,7 +134,7 @@ fn large_star_spills_and_stays_exact() {
 }
 
 #[test]
-fn memory_per_level() {
+fn chf_memory_per_level() {
     let mesh = cube(10, 10, 10, false);
     let t = mesh.tets.len();
     let mut per_tet = Vec::new();

@@ -1,10 +1,9 @@
 //! Small pathological meshes, each with its exact summary and build report, checked at
 //! every level against the brute-force reference too.
 
-#[path = "chf_common.rs"]
-mod common;
+mod chf_common;
 
-use common::*;
+use chf_common::*;
 use glam::DVec3;
 use topomesh::chf::{Chf, ChfBuildOptions, ChfBuildReport, ChfSummary};
 use topomesh::{ErrorKind, NONE};
@@ -74,7 +73,7 @@ fn report(tets: usize, vertices: usize, faces: [usize; 2], edges: usize) -> ChfB
 }
 
 #[test]
-fn single_tetrahedron() {
+fn chf_single_tetrahedron() {
     let chf = build_checked(&[[0, 1, 2, 3]], &corner_points(&[]), true);
     assert_eq!(chf.summary(), summary([4, 6, 4, 1], [4, 6, 4, 1], 1, 0, 1));
     assert_eq!(*chf.report(), report(1, 4, [4, 4], 6));
@@ -88,7 +87,7 @@ fn single_tetrahedron() {
 }
 
 #[test]
-fn two_tetrahedra_sharing_a_face() {
+fn chf_two_tetrahedra_sharing_a_face() {
     // The second is given inside out: the build flips it.
     let pts = corner_points(&[p(1., 1., 1.)]);
     let chf = build_checked(&[[0, 1, 2, 3], [1, 3, 2, 4]], &pts, true);
@@ -112,7 +111,7 @@ fn two_tetrahedra_sharing_a_face() {
 }
 
 #[test]
-fn two_tetrahedra_sharing_an_edge() {
+fn chf_two_tetrahedra_sharing_an_edge() {
     let pts = corner_points(&[p(0., -1., 0.), p(0., 0., -1.)]);
     let chf = build_checked(&[[0, 1, 2, 3], [0, 1, 4, 5]], &pts, true);
     assert_eq!(
@@ -154,7 +153,7 @@ fn two_tetrahedra_sharing_an_edge() {
 }
 
 #[test]
-fn two_tetrahedra_sharing_a_vertex() {
+fn chf_two_tetrahedra_sharing_a_vertex() {
     let pts = corner_points(&[p(-1., 0., 0.), p(0., -1., 0.), p(0., 0., -1.)]);
     let tets = [[0, 1, 2, 3], [0, 4, 6, 5]];
     let chf = build_checked(&tets, &pts, true);
@@ -192,7 +191,7 @@ fn two_tetrahedra_sharing_a_vertex() {
 }
 
 #[test]
-fn three_tetrahedra_on_one_face() {
+fn chf_three_tetrahedra_on_one_face() {
     let pts = corner_points(&[p(0., 0., -1.), p(0.2, 0.2, 2.)]);
     let tets = [[0, 1, 2, 3], [0, 2, 1, 4], [0, 1, 2, 5]];
     let chf = build_checked(&tets, &pts, true);
@@ -243,7 +242,7 @@ fn three_tetrahedra_on_one_face() {
 }
 
 #[test]
-fn cavity_has_two_boundary_components() {
+fn chf_cavity_has_two_boundary_components() {
     // A 3x3x3 box of cells without its middle cell.
     let full = cube(3, 3, 3, false);
     let middle: Vec<usize> = (0..6).map(|k| 13 * 6 + k).collect();
@@ -266,7 +265,7 @@ fn cavity_has_two_boundary_components() {
 }
 
 #[test]
-fn solid_torus() {
+fn chf_solid_torus() {
     // A ring of 3x3x1 cells without the middle one.
     let full = cube(3, 3, 1, false);
     let tets: Vec<[u32; 4]> = full
@@ -291,7 +290,7 @@ fn solid_torus() {
 }
 
 #[test]
-fn degenerate_tetrahedra_are_dropped() {
+fn chf_degenerate_tetrahedra_are_dropped() {
     // The first one is degenerate too: the origin map must not read as the identity.
     let tets = [[0, 0, 1, 2], [0, 1, 2, 3], [1, 1, 2, 3]];
     let chf = build_checked(&tets, &corner_points(&[]), false);
@@ -315,7 +314,7 @@ fn degenerate_tetrahedra_are_dropped() {
 }
 
 #[test]
-fn zero_volume_tetrahedron_is_kept_and_oriented_by_its_neighbour() {
+fn chf_zero_volume_tetrahedron_is_kept_and_oriented_by_its_neighbour() {
     // Point 4 lies in the plane of face (1, 2, 3); the flat tetrahedron is given with that
     // face running the same way as in tetrahedron 0, so it must be flipped.
     let pts = corner_points(&[p(1., 1., -1.)]);
@@ -340,7 +339,7 @@ fn zero_volume_tetrahedron_is_kept_and_oriented_by_its_neighbour() {
 }
 
 #[test]
-fn folded_tetrahedron_is_reported_inverted() {
+fn chf_folded_tetrahedron_is_reported_inverted() {
     // Tetrahedra 0 and 1 share face (0, 1, 2) and lie on the same side of it; 2 is glued
     // to 0 properly. Topology wins: 1 is flipped and reported inverted.
     let pts = corner_points(&[p(0.1, 0.1, 0.5), p(1., 1., 1.)]);
@@ -367,7 +366,7 @@ fn folded_tetrahedron_is_reported_inverted() {
 }
 
 #[test]
-fn duplicate_tetrahedra_glue_into_a_sphere() {
+fn chf_duplicate_tetrahedra_glue_into_a_sphere() {
     let tets = [[0, 1, 2, 3], [0, 1, 3, 2]];
     let chf = build_checked(&tets, &corner_points(&[]), false);
     assert_eq!(
@@ -400,7 +399,7 @@ fn duplicate_tetrahedra_glue_into_a_sphere() {
 }
 
 #[test]
-fn edge_with_two_fans_that_the_split_keeps() {
+fn chf_edge_with_two_fans_that_the_split_keeps() {
     // Edge (0, 1) lies in tetrahedra 0 and 1 only, which share no face; but the stars of
     // 0 and of 1 are each connected through other tetrahedra, so nothing is split and the
     // edge keeps two fans: two edge ids with the same ends. Consistently oriented input.
@@ -459,7 +458,7 @@ fn edge_with_two_fans_that_the_split_keeps() {
 }
 
 #[test]
-fn empty_meshes() {
+fn chf_empty_meshes() {
     for n in [0usize, 3] {
         for level in 0..=3 {
             let chf = Chf::from_tetrahedra(&[], n, &[], ChfBuildOptions::level(level)).unwrap();
@@ -484,7 +483,7 @@ fn empty_meshes() {
 }
 
 #[test]
-fn isolated_vertices_are_kept() {
+fn chf_isolated_vertices_are_kept() {
     // Vertex 1 is in no tetrahedron.
     let pts = vec![
         p(0., 0., 0.),
@@ -500,7 +499,7 @@ fn isolated_vertices_are_kept() {
 }
 
 #[test]
-fn bad_input_is_an_error_naming_the_tetrahedron() {
+fn chf_bad_input_is_an_error_naming_the_tetrahedron() {
     let e = Chf::from_tetrahedra(
         &[[0, 1, 2, 3], [0, 1, 2, 9]],
         4,

@@ -3,10 +3,9 @@
 //! components, non-manifold vertices and edges), duplicated (non-manifold faces) and
 //! degenerate ones added, vertices relabelled, tetrahedra shuffled and locally permuted.
 
-#[path = "chf_common.rs"]
-mod common;
+mod chf_common;
 
-use common::*;
+use chf_common::*;
 use proptest::prelude::*;
 use topomesh::chf::Chf;
 
@@ -62,10 +61,10 @@ fn check_all_levels(mesh: &Mesh, with_positions: bool) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 32, ..ProptestConfig::default() })]
 
     #[test]
-    fn relations_match_brute_force(
+    fn chf_relations_match_brute_force(
         dims in (1u32..=3, 1u32..=2, 1u32..=2),
         five in any::<bool>(),
         seed in any::<u64>(),
@@ -77,7 +76,7 @@ proptest! {
     }
 
     #[test]
-    fn duplicates_and_degenerate_tetrahedra(
+    fn chf_duplicates_and_degenerate_tetrahedra(
         five in any::<bool>(),
         seed in any::<u64>(),
         keep in 50u64..=100,
@@ -92,7 +91,7 @@ proptest! {
 }
 
 #[test]
-fn whole_boxes_at_every_level() {
+fn chf_whole_boxes_at_every_level() {
     for five in [false, true] {
         let mesh = cube(3, 2, 2, five);
         check_all_levels(&mesh, true);

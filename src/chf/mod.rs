@@ -24,6 +24,7 @@ mod queries;
 mod report;
 mod split;
 mod star;
+mod strict;
 mod summary;
 mod view;
 

@@ -109,8 +109,8 @@ impl Chf {
         self.boundary.as_ref().map(|b| &b.che)
     }
 
-    /// Builds the boundary surface (a level-3 CHE, laid out as level 3 stores it) at any
-    /// level. O(T).
+    /// The boundary surface as a new level-3 CHE, at any level (a copy of the stored one at
+    /// level 3). O(T).
     pub fn boundary_surface(&self) -> Result<Che> {
         if let Some(b) = &self.boundary {
             return Ok(b.che.clone());

@@ -9,7 +9,29 @@
 //! [`ids`]. Every query works at every level; a higher level only answers faster. The build
 //! always canonicalises the input (degenerate tetrahedra dropped, components oriented,
 //! non-manifold vertices split) so that half-face, edge and face ids are the same at every
-//! level.
+//! level, and so are the answers, in the same order.
+//!
+//! Ids: a face is named by its canonical half-face (`O[hf] == NONE || hf < O[hf]`), face
+//! `f` being the `f`-th; an edge is a fan of tetrahedra around a vertex pair (see
+//! `edges.rs`), edge `e` the `e`-th canonical edge slot. Below level 2 the ranks are
+//! computed for the query (O(T)); level 0 also computes `O` (the rule level 1 stores).
+//!
+//! The 16 relations (k = tetrahedra around an edge, S = tetrahedra around a vertex):
+//!
+//! | relation | answer | cost at level 2 |
+//! |---|---|---|
+//! | VV, VE, VF, VT | each once, breadth-first over the star | O(S) |
+//! | EV | the canonical half-edge's origin and target | O(1) |
+//! | ET, EF | rotation order, from the boundary on a boundary edge | O(k) |
+//! | EE | the two other edges of each face of EF, each once | O(k) walks |
+//! | FV, FE | the canonical half-face's order; edge `j` from vertex `j` to `j + 1` | O(1), O(k) per edge |
+//! | FF | the other faces of the face's one or two tetrahedra ("wings"), each once | O(1) |
+//! | FT | the canonical half-face's tetrahedron, then its twin's | O(1) (level 1 on half-faces) |
+//! | TV, TF, TT | local order; `TT[i]` across face `i`, `NONE` on the boundary | O(1) (TT from level 1) |
+//! | TE | local pairs (0,1) (0,2) (0,3) (1,2) (1,3) (2,3) | O(k) per edge |
+//!
+//! Naming an edge from a half-edge walks around the edge to its canonical slot (O(k)); a
+//! per-slot edge array would make it O(1) for 24 bytes per tetrahedron (see `edges.rs`).
 
 mod build;
 mod edges;
@@ -34,7 +56,7 @@ pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use memory::ChfMemory;
 pub use queries::Ids;
 pub use report::ChfBuildReport;
-pub use star::VertexIds;
+pub use star::{INLINE as STAR_INLINE, VertexIds};
 pub use summary::ChfSummary;
 
 use crate::error::{Error, Result};
@@ -202,7 +224,7 @@ impl Chf {
         (self.level >= 2).then_some(&self.fh[..])
     }
     /// The tetrahedron holding the canonical slot of every edge, from level 2.
-    pub fn edge_tetrahedra_table(&self) -> Option<&[u32]> {
+    pub fn edge_slot_tetrahedra(&self) -> Option<&[u32]> {
         (self.level >= 2).then_some(&self.eh[..])
     }
     /// Positions of the structure's vertices (copies repeat their origin); may be empty.

@@ -155,7 +155,7 @@ enum Kind {
 
 /// The vertices, edges, faces or tetrahedra around a vertex, each once, in the
 /// breadth-first order of its star (there is no rotation order around a vertex in 3D).
-/// Allocation-free at level 2 and up for stars of up to [`INLINE`] tetrahedra.
+/// Allocation-free at level 2 and up for stars of up to [`super::STAR_INLINE`] tetrahedra.
 #[derive(Clone, Debug)]
 pub struct VertexIds<'a> {
     view: View<'a>,

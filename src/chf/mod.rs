@@ -50,11 +50,11 @@ mod strict;
 mod summary;
 mod view;
 
+pub use crate::Ids;
 pub use build::{ChfBuildOptions, MAX_TETRAHEDRA};
 pub use fan::EdgeIds;
 pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use memory::ChfMemory;
-pub use queries::Ids;
 pub use report::ChfBuildReport;
 pub use star::{INLINE as STAR_INLINE, VertexIds};
 pub use summary::ChfSummary;
@@ -124,7 +124,7 @@ impl Chf {
         positions: &[DVec3],
         options: ChfBuildOptions,
     ) -> Result<Chf> {
-        if tets.len() % 4 != 0 {
+        if !tets.len().is_multiple_of(4) {
             return Err(Error::invalid(format!(
                 "tetrahedron array has {} ids, not a multiple of 4",
                 tets.len()

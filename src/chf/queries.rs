@@ -7,42 +7,7 @@ use super::ids::{
     self, HalfEdge, first, half_edge, he_face, he_origin, he_target, slot_half_edges, tet,
 };
 use super::view::Need;
-use crate::NONE;
-
-/// Up to `N` ids without allocation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Ids<const N: usize> {
-    ids: [u32; N],
-    len: u8,
-}
-
-impl<const N: usize> Ids<N> {
-    fn new() -> Self {
-        Ids {
-            ids: [NONE; N],
-            len: 0,
-        }
-    }
-    fn push(&mut self, id: u32) {
-        self.ids[self.len as usize] = id;
-        self.len += 1;
-    }
-}
-
-impl<const N: usize> std::ops::Deref for Ids<N> {
-    type Target = [u32];
-    fn deref(&self) -> &[u32] {
-        &self.ids[..self.len as usize]
-    }
-}
-
-impl<const N: usize> IntoIterator for Ids<N> {
-    type Item = u32;
-    type IntoIter = std::iter::Take<std::array::IntoIter<u32, N>>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.ids.into_iter().take(self.len as usize)
-    }
-}
+use crate::{Ids, NONE};
 
 impl Chf {
     /// The twin of half-face `hf`, `NONE` on the boundary. O(1) from level 1, a scan at

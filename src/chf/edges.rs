@@ -57,7 +57,9 @@ pub(crate) fn walk(
     }
 }
 
-/// One bit per edge slot: set on the canonical slot of each fan. O(T).
+/// One bit per edge slot: set on the canonical slot of each fan, by walking from every
+/// slot. The builds use the star pass (`stars.rs`); this is its reference in tests.
+#[cfg(test)]
 pub(crate) fn canonical_slots(v: &[u32], o: &[u32]) -> RankBits {
     let n_slots = 6 * (v.len() / 4);
     let mut visited = vec![0u64; n_slots.div_ceil(64)];

@@ -51,6 +51,18 @@ impl RankBits {
         }
     }
 
+    /// The positions of the set bits, in increasing order, each mapped by `f`.
+    pub fn ones_map<T>(&self, out: &mut Vec<T>, f: impl Fn(usize) -> T) {
+        out.reserve(self.ones);
+        for (w, &word) in self.words.iter().enumerate() {
+            let mut bits = word;
+            while bits != 0 {
+                out.push(f(64 * w + bits.trailing_zeros() as usize));
+                bits &= bits - 1;
+            }
+        }
+    }
+
     pub fn ones(&self) -> usize {
         self.ones
     }
@@ -58,6 +70,19 @@ impl RankBits {
     #[inline]
     pub fn get(&self, i: usize) -> bool {
         (self.words[i >> 6] >> (i & 63)) & 1 == 1
+    }
+
+    /// Reads what [`RankBits::rank`] of bit `i` reads (to have it in cache ahead of
+    /// time); the value means nothing.
+    #[inline]
+    pub fn word(&self, i: usize) -> u32 {
+        self.bits_word(i) ^ self.before.get(i >> 6).map_or(0, |&b| b)
+    }
+
+    /// Reads what [`RankBits::get`] of bit `i` reads; the value means nothing.
+    #[inline]
+    pub fn bits_word(&self, i: usize) -> u32 {
+        self.words.get(i >> 6).map_or(0, |&w| w as u32)
     }
 
     /// Number of set bits strictly before `i`.

@@ -14,18 +14,13 @@ pub(crate) fn build(chf: &mut Chf, edge_bits: RankBits, vh: Vec<u32>) {
     let (v, o) = (&chf.v, &chf.o);
     debug_assert_eq!(vh.len(), chf.n_vertices);
     let faces = face_bits(o);
-    let mut fh = Vec::with_capacity(faces.ones());
-    fh.extend((0..v.len() as u32).filter(|&hf| faces.get(hf as usize)));
+    let mut fh = Vec::new();
+    faces.ones_map(&mut fh, |hf| hf as u32);
     debug_assert_eq!(fh.len(), chf.num_faces);
-    let mut eh = Vec::with_capacity(edge_bits.ones());
-    for t in 0..(v.len() / 4) as u32 {
-        for k in 0..6 {
-            if edge_bits.get(6 * t as usize + k) {
-                eh.push(t);
-            }
-        }
-    }
+    let mut eh = Vec::new();
+    edge_bits.ones_map(&mut eh, |s| (s / 6) as u32);
     debug_assert_eq!(eh.len(), chf.num_edges);
+    debug_assert_eq!(v.len() % 4, 0);
     chf.vh = vh;
     chf.face_bits = faces;
     chf.fh = fh;

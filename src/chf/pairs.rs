@@ -60,13 +60,16 @@ impl Opposites {
         }
     }
 
-    pub(crate) fn finish(mut self) -> Vec<u32> {
+    /// `O`, in `buffer`'s memory (its contents are dropped).
+    pub(crate) fn finish(mut self, buffer: Vec<u32>) -> Vec<u32> {
         for w in 0..self.fill.len() {
             let (at, len) = (self.fill[w] as usize, self.staged_len[w] as usize);
             self.records[at..at + len].copy_from_slice(&self.staged[w][..len]);
             self.fill[w] += len as u32;
         }
-        let mut o = vec![NONE; self.n_hf];
+        let mut o = buffer;
+        o.clear();
+        o.resize(self.n_hf, NONE);
         for (w, &end) in self.fill.iter().enumerate() {
             for &r in &self.records[w << self.shift..end as usize] {
                 o[(r >> 32) as usize] = r as u32;
@@ -96,7 +99,7 @@ mod tests {
                 expected[h as usize] = g;
                 expected[g as usize] = h;
             }
-            assert_eq!(o.finish(), expected, "n = {n}");
+            assert_eq!(o.finish(vec![7; 3]), expected, "n = {n}");
         }
     }
 }

@@ -1,10 +1,17 @@
 //! The star of a vertex: its tetrahedra, breadth-first from the start half-face (`VH`),
 //! crossing the three half-faces of each that hold the vertex. Every tetrahedron is met
-//! three times or so, so the walk keeps a visited set: a small open-addressing table and
-//! queue inline in the iterator (no global hash set, no allocation for stars of up to
-//! [`INLINE`] tetrahedra). A larger star moves both to the heap once, doubling as it grows:
-//! the one allocation a vertex query may make. (A star cannot be enumerated without
-//! marks in general: its dual is the link of the vertex, an arbitrary surface.)
+//! three times or so, so the walk keeps a visited set inline in the iterator: the
+//! tetrahedra met so far, checked by a branch-free scan while there are at most [`INLINE`]
+//! (no allocation, no hash), then a hash set on the heap, doubling as it grows: the one
+//! allocation a vertex query may make. (A star cannot be enumerated without marks in
+//! general: its dual is the link of the vertex, an arbitrary surface.)
+//!
+//! Why the walk goes a breadth-first level at a time: on a large mesh the tetrahedra of a
+//! star are far apart in memory, and each one read is a cache miss (its `V` and its `O`).
+//! Read one after the other, with the next one's address known only once the previous
+//! has arrived, a star costs its size in memory latencies; so when a level starts, every
+//! tetrahedron of it is read once at the same time (the misses overlap) and then visited
+//! from the cache. The order is the plain breadth-first one.
 
 use super::Chf;
 use super::ids::{edge_index, first, tet};
@@ -14,11 +21,11 @@ use crate::NONE;
 /// Stars up to this many tetrahedra are walked without allocation.
 pub const INLINE: usize = 64;
 
-/// The tetrahedra met so far, in breadth-first order, and a hash set of them.
+/// The tetrahedra met so far, in breadth-first order, and past [`INLINE`] a hash set of
+/// them.
 #[derive(Clone, Debug)]
 struct Visited {
     items: [u32; INLINE],
-    table: [u32; 2 * INLINE],
     len: usize,
     heap_items: Vec<u32>,
     heap_table: Vec<u32>,
@@ -51,7 +58,6 @@ impl Visited {
     fn new() -> Self {
         Visited {
             items: [NONE; INLINE],
-            table: [NONE; 2 * INLINE],
             len: 0,
             heap_items: Vec::new(),
             heap_table: Vec::new(),
@@ -68,9 +74,13 @@ impl Visited {
     }
 
     /// Adds `t` unless already there; false if it was.
+    #[inline(always)]
     fn add(&mut self, t: u32) -> bool {
         if self.heap_items.is_empty() {
-            if !insert(&mut self.table, t) {
+            // A scan of the whole array (unused entries are `NONE`, never a tetrahedron)
+            // with no early exit: a few vector compares and no branch to mispredict.
+            let seen = self.items.iter().fold(false, |seen, &x| seen | (x == t));
+            if seen {
                 return false;
             }
             if self.len < INLINE {
@@ -78,15 +88,9 @@ impl Visited {
                 self.len += 1;
                 return true;
             }
-            // Spill: the star is larger than the inline capacity.
-            self.heap_items.reserve(4 * INLINE);
-            self.heap_items.extend_from_slice(&self.items);
-            self.heap_table = vec![NONE; 8 * INLINE];
-            for &x in &self.heap_items {
-                insert(&mut self.heap_table, x);
-            }
-            insert(&mut self.heap_table, t);
-        } else if !insert(&mut self.heap_table, t) {
+            self.spill();
+        }
+        if !insert(&mut self.heap_table, t) {
             return false;
         }
         self.heap_items.push(t);
@@ -101,6 +105,17 @@ impl Visited {
         }
         true
     }
+
+    /// The star is larger than the inline capacity: items and a hash set to the heap.
+    #[cold]
+    fn spill(&mut self) {
+        self.heap_items.reserve(4 * INLINE);
+        self.heap_items.extend_from_slice(&self.items);
+        self.heap_table = vec![NONE; 8 * INLINE];
+        for &x in &self.heap_items {
+            insert(&mut self.heap_table, x);
+        }
+    }
 }
 
 /// Breadth-first walk over the star of one vertex.
@@ -109,6 +124,10 @@ pub(crate) struct Star {
     vertex: u32,
     seen: Visited,
     head: usize,
+    /// End of the breadth-first level being visited.
+    level_end: usize,
+    /// What the reads ahead of each level loaded (kept so they are not optimized away).
+    touched: u32,
 }
 
 impl Star {
@@ -121,20 +140,39 @@ impl Star {
             vertex,
             seen,
             head: 0,
+            level_end: 0,
+            touched: 0,
         }
     }
 
-    /// The next tetrahedron and the local index of the vertex in it.
-    pub(crate) fn next(&mut self, view: &View) -> Option<(u32, u32)> {
+    /// The next tetrahedron and the local index of the vertex in it. `ahead` reads what
+    /// the caller will need of each tetrahedron besides `V` and `O` (see the module doc).
+    #[inline]
+    pub(crate) fn next(&mut self, view: &View, ahead: impl Fn(u32) -> u32) -> Option<(u32, u32)> {
         if self.head == self.seen.len {
             return None;
+        }
+        if self.head == self.level_end {
+            // A new level: read all of it at once.
+            self.level_end = self.seen.len;
+            let mut touched = self.touched;
+            for k in self.head..self.level_end {
+                let t = self.seen.get(k) as usize;
+                touched ^= view.v[4 * t] ^ view.o[4 * t] ^ ahead(t as u32);
+            }
+            self.touched = touched;
         }
         let t = self.seen.get(self.head);
         self.head += 1;
         let base = first(t);
-        let i = (0..4)
-            .find(|&i| view.v[(base + i) as usize] == self.vertex)
-            .expect("a star tetrahedron holds its vertex");
+        let q = &view.v[base as usize..base as usize + 4];
+        let i = (q[1] == self.vertex) as u32
+            + 2 * (q[2] == self.vertex) as u32
+            + 3 * (q[3] == self.vertex) as u32;
+        debug_assert_eq!(
+            q[i as usize], self.vertex,
+            "a star tetrahedron holds its vertex"
+        );
         for hf in base..base + 4 {
             let g = view.o[hf as usize];
             if hf != base + i && g != NONE {
@@ -175,7 +213,15 @@ impl Iterator for VertexIds<'_> {
                 self.pos += 1;
                 return Some(self.pending[self.pos as usize - 1]);
             }
-            let (t, i) = self.star.next(&self.view)?;
+            let view = &self.view;
+            let (t, i) = match self.kind {
+                Kind::Tetrahedra => self.star.next(view, |_| 0),
+                Kind::Faces => self.star.next(view, |t| view.faces.word(4 * t as usize)),
+                Kind::Edges => self.star.next(view, |t| view.edges.word(6 * t as usize)),
+                Kind::Vertices => self
+                    .star
+                    .next(view, |t| view.edges.bits_word(6 * t as usize)),
+            }?;
             self.pos = 0;
             self.len = 0;
             if self.kind == Kind::Tetrahedra {
@@ -275,6 +321,8 @@ mod tests {
 
     #[test]
     fn visited_spills_and_keeps_order() {
+        let mut seen = Visited::new();
+        assert!(seen.add(5) && !seen.add(5) && seen.len == 1);
         let mut seen = Visited::new();
         for t in 0..1000u32 {
             assert!(seen.add(t * 7919 % 1009));

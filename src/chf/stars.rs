@@ -74,14 +74,17 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], pairs: Pairs)
         multi_fan: Vec::new(),
     };
     let mut link = Link::new(n_vertices);
-    // Rounds of coarse buckets, so that the records stay under 20 bytes per tetrahedron
-    // (all of them would take 80).
-    let budget = (v.len() / 4).max(1 << 16);
+    // Rounds of coarse buckets, so that the records stay under 16 bytes per tetrahedron
+    // (all of them would take 80): as many `u32` as `O` has entries, so that `O` can then
+    // take over the buffer (fresh memory costs a page fault per 4 KB).
+    let budget = (v.len() / 5).max(1 << 16);
     let n_fine = 1usize << shift;
     let mask = (n_fine - 1) as u32;
     let mut fine_start = vec![0u32; n_fine + 1];
     let mut cursor = vec![0u32; n_fine];
-    let mut records: Vec<Record> = Vec::new();
+    // Flat records, five `u32` each; one spare record at the end takes the writes of the
+    // occurrences outside the round (so that the scatter has no branch).
+    let mut records: Vec<u32> = Vec::with_capacity(v.len().max(5 * (budget + 1)));
     let mut local: Vec<Record> = Vec::new();
     let mut first = 0;
     while first < n_coarse {
@@ -91,48 +94,56 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], pairs: Pairs)
             total += count[last] as usize;
             last += 1;
         }
-        let mut start = vec![0u32; last - first + 1];
+        let span = (last - first) as u32;
+        let mut start = vec![0u32; last - first + 2];
         for c in first..last {
             start[c - first + 1] = start[c - first] + count[c];
         }
         let mut fill = start.clone();
+        // The spare record, never advanced.
+        fill[span as usize] = total as u32;
         // Grown once to the largest round; never cleared (every record is overwritten).
-        if records.len() < total {
-            records.resize(total, [0; 5]);
+        if records.len() < 5 * (total + 1) {
+            records.resize(5 * (total + 1), 0);
         }
-        let (lo, hi) = ((first as u32) << shift, (last as u64) << shift);
         for (t, q) in v.chunks_exact(4).enumerate() {
             for i in 0..4u32 {
                 let x = q[i as usize];
-                if x < lo || x as u64 >= hi {
-                    continue;
-                }
+                let c = (x >> shift).wrapping_sub(first as u32);
+                let inside = c < span;
+                let bucket = if inside { c } else { span } as usize;
                 let [a, b, c] = super::link::OTHERS[i as usize].map(|j| q[j as usize]);
-                let slot = &mut fill[((x >> shift) - first as u32) as usize];
-                records[*slot as usize] = [4 * t as u32 + i, x, a, b, c];
-                *slot += 1;
+                let at = 5 * fill[bucket] as usize;
+                records[at..at + 5].copy_from_slice(&[4 * t as u32 + i, x, a, b, c]);
+                fill[bucket] += inside as u32;
             }
         }
         drop(fill);
         for c in first..last {
-            let bucket = &records[start[c - first] as usize..start[c - first + 1] as usize];
+            let bucket = &records[5 * start[c - first] as usize..5 * start[c - first + 1] as usize];
             if bucket.is_empty() {
                 continue;
             }
+            let bucket = || {
+                bucket
+                    .chunks_exact(5)
+                    .map(|r| [r[0], r[1], r[2], r[3], r[4]])
+            };
             fine_start.fill(0);
-            for r in bucket {
+            for r in bucket() {
                 fine_start[(r[1] & mask) as usize + 1] += 1;
             }
             for i in 0..n_fine {
                 fine_start[i + 1] += fine_start[i];
             }
-            if local.len() < bucket.len() {
-                local.resize(bucket.len(), [0; 5]);
+            let size = fine_start[n_fine] as usize;
+            if local.len() < size {
+                local.resize(size, [0; 5]);
             }
             cursor.copy_from_slice(&fine_start[..n_fine]);
-            for r in bucket {
+            for r in bucket() {
                 let slot = &mut cursor[(r[1] & mask) as usize];
-                local[*slot as usize] = *r;
+                local[*slot as usize] = r;
                 *slot += 1;
             }
             for i in 0..n_fine {
@@ -157,7 +168,7 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], pairs: Pairs)
         multi_fan,
     };
     let (vh, split_needed) = (sums.vh, sums.split_needed);
-    let faces_out = faces.then(|| (census, opposites.finish()));
+    let faces_out = faces.then(|| (census, opposites.finish(records)));
     Stars {
         split_needed,
         vh,

@@ -116,10 +116,18 @@ impl Chf {
 
 /// One bit per half-face, set on canonical ones.
 pub(crate) fn face_bits(o: &[u32]) -> RankBits {
-    RankBits::from_fn(o.len(), |hf| {
-        let g = o[hf];
-        g == NONE || (hf as u32) < g
-    })
+    // A word at a time: 64 independent compares the compiler can vectorize.
+    let words = o
+        .chunks(64)
+        .enumerate()
+        .map(|(w, chunk)| {
+            let base = 64 * w as u32;
+            chunk.iter().enumerate().fold(0u64, |word, (i, &g)| {
+                word | (((g == NONE) | (base + (i as u32) < g)) as u64) << i
+            })
+        })
+        .collect();
+    RankBits::from_words(words, o.len())
 }
 
 /// The position of the `k`-th set bit (binary search on the rank): O(log n).

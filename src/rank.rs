@@ -43,7 +43,7 @@ impl RankBits {
             before.push(ones as u32);
             ones += w.count_ones() as usize;
         }
-        debug_assert!(len % 64 == 0 || words.last().is_none_or(|w| w >> (len % 64) == 0));
+        debug_assert!(len.is_multiple_of(64) || words.last().is_none_or(|w| w >> (len % 64) == 0));
         RankBits {
             words,
             before,

@@ -66,9 +66,24 @@ pub(crate) fn build(
         }
     };
 
-    // One pass over the vertex stars: faces and their pairs, pieces, `VH`, edges.
-    let mut stars = stars::stars(&soup.v, n_vertices, &[], Pairs::Partners);
-    let (faces, partner) = stars.faces.take().expect("faces were asked for");
+    // One pass over the vertex stars: faces and their pairs, pieces, edges, and `VH` and the
+    // edge bits for level 2. Level 0 keeps no pairs unless it must orient or split.
+    let tables = options.level >= 2;
+    let first_pairs = if options.level == 0 {
+        Pairs::Census
+    } else {
+        Pairs::Partners
+    };
+    let mut stars = stars::stars(&soup.v, n_vertices, &[], first_pairs, tables);
+    let (faces, mut partner) = stars.faces.take().expect("faces were asked for");
+    if partner.is_empty() && (faces.same_direction || stars.split_needed) {
+        partner = stars::stars(&soup.v, n_vertices, &[], Pairs::Partners, false)
+            .faces
+            .expect("faces were asked for")
+            .1;
+    }
+    // Triples of two half-faces: all of them are pairs unless there are seams.
+    let pairs = faces.input_faces - faces.boundary_faces - faces.non_manifold_faces;
     report.input_faces = faces.input_faces;
     report.boundary_faces = faces.boundary_faces;
     report.non_manifold_faces = faces.non_manifold_faces;
@@ -130,7 +145,7 @@ pub(crate) fn build(
                 *hf = flipped_id(*hf);
             }
         }
-        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, Pairs::No);
+        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, Pairs::No, tables);
         (oriented.o, oriented.seams, oriented.links)
     };
     non_manifold.sort_unstable();
@@ -165,7 +180,7 @@ pub(crate) fn build(
     } else {
         // Every star is one piece now; the census groups by input pair.
         let flagged = merged(&non_manifold, &seams);
-        stars = stars::stars(&v, n_total, &flagged, Pairs::No);
+        stars = stars::stars(&v, n_total, &flagged, Pairs::No, true);
         debug_assert!(!stars.split_needed);
         edges::census(&v, &stars.edge_bits, n_vertices, |x| {
             vertex_origin[x as usize]
@@ -183,11 +198,15 @@ pub(crate) fn build(
             positions.push(positions[c as usize]);
         }
     }
-    let num_faces = o
-        .iter()
-        .enumerate()
-        .filter(|&(hf, &g)| g == NONE || (hf as u32) < g)
-        .count();
+    // Canonical half-faces: the unpaired ones and one per pair.
+    let num_faces = if seams.is_empty() {
+        v.len() - pairs
+    } else {
+        o.iter()
+            .enumerate()
+            .filter(|&(hf, &g)| g == NONE || (hf as u32) < g)
+            .count()
+    };
 
     let mut chf = Chf {
         level: 1,
@@ -201,7 +220,7 @@ pub(crate) fn build(
         edge_bits: RankBits::default(),
         eh: Vec::new(),
         boundary: None,
-        num_edges: edge_bits.ones(),
+        num_edges: stars.num_edges,
         num_faces,
         positions,
         vertex_origin,

@@ -175,7 +175,7 @@ impl Chf {
         }
         if self.level < 2 && level >= 2 {
             let flagged = build::merged(&self.non_manifold, &self.seams);
-            let stars = stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::No);
+            let stars = stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::No, true);
             debug_assert!(!stars.split_needed, "the build split every vertex");
             level2::build(self, stars.edge_bits, stars.vh);
             self.level = 2;

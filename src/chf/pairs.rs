@@ -60,8 +60,9 @@ impl Opposites {
         }
     }
 
-    /// `O`, in `buffer`'s memory (its contents are dropped).
-    pub(crate) fn finish(mut self, buffer: Vec<u32>) -> Vec<u32> {
+    /// `O`, in `buffer`'s memory (its contents are dropped), and the records' memory for
+    /// the caller to reuse.
+    pub(crate) fn finish(mut self, buffer: Vec<u32>) -> (Vec<u32>, Vec<u64>) {
         for w in 0..self.fill.len() {
             let (at, len) = (self.fill[w] as usize, self.staged_len[w] as usize);
             self.records[at..at + len].copy_from_slice(&self.staged[w][..len]);
@@ -75,7 +76,7 @@ impl Opposites {
                 o[(r >> 32) as usize] = r as u32;
             }
         }
-        o
+        (o, self.records)
     }
 }
 
@@ -99,7 +100,7 @@ mod tests {
                 expected[h as usize] = g;
                 expected[g as usize] = h;
             }
-            assert_eq!(o.finish(vec![7; 3]), expected, "n = {n}");
+            assert_eq!(o.finish(vec![7; 3]).0, expected, "n = {n}");
         }
     }
 }

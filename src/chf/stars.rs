@@ -28,12 +28,15 @@ pub(crate) struct Stars {
     /// Some star is in several pieces: the vertex split must run (then the pass again),
     /// and `VH`, the edges and the census are incomplete.
     pub split_needed: bool,
+    /// The number of edges (fans).
+    pub num_edges: usize,
+    /// With `tables`: `VH` and the canonical edge slots (else empty).
     pub vh: Vec<u32>,
-    /// Canonical edge slots.
     pub edge_bits: RankBits,
     /// The fans grouped by vertex pair (the ids of `V`).
     pub census: EdgeCensus,
-    /// With pairs asked for: the face counts and the pairs, as a table like `O`.
+    /// With pairs asked for: the face counts and the pairs, as a table like `O` (empty
+    /// for the counts only).
     pub faces: Option<(FaceCensus, Vec<u32>)>,
 }
 
@@ -41,6 +44,8 @@ pub(crate) struct Stars {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Pairs {
     No,
+    /// The face counts only.
+    Census,
     /// Every triple of exactly two half-faces, whatever their direction (the build's
     /// partners, on the input's `V`).
     Partners,
@@ -49,9 +54,17 @@ pub(crate) enum Pairs {
 }
 
 /// The pass over `V`. `flagged` (sorted) are half-faces never to pair: the build's
-/// non-manifold faces and seams once `V` is split or oriented.
-pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], pairs: Pairs) -> Stars {
+/// non-manifold faces and seams once `V` is split or oriented. With `tables`, also `VH` and
+/// the edge bits (level 2); without, the build keeps less memory at levels 0 and 1.
+pub(crate) fn stars(
+    v: &[u32],
+    n_vertices: usize,
+    flagged: &[u32],
+    pairs: Pairs,
+    tables: bool,
+) -> Stars {
     let faces = pairs != Pairs::No;
+    let collect = matches!(pairs, Pairs::Partners | Pairs::Opposites);
     let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
     let shift = bits.saturating_sub(COARSE_BITS);
     let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
@@ -60,14 +73,21 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], pairs: Pairs)
         count[(x >> shift) as usize] += 1;
     }
     let mut census = FaceCensus::default();
-    let mut opposites = Opposites::new(if faces { v.len() } else { 0 });
+    let mut opposites = Opposites::new(if collect { v.len() } else { 0 });
     let mut sums = Sums {
         flagged,
         faces: faces.then_some((&mut census, &mut opposites)),
+        collect,
         partners: pairs == Pairs::Partners,
+        tables,
         split_needed: false,
-        vh: vec![NONE; n_vertices],
+        vh: if tables {
+            vec![NONE; n_vertices]
+        } else {
+            Vec::new()
+        },
         edge_slots: Vec::new(),
+        num_edges: 0,
         input_edges: 0,
         non_manifold_edges: 0,
         non_manifold_edge_examples: Vec::new(),
@@ -155,22 +175,43 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], pairs: Pairs)
         }
         first = last;
     }
-    let edge_bits = bits_from_slots(&sums.edge_slots, 6 * (v.len() / 4));
-    let mut multi_fan = sums.multi_fan;
+    let Sums {
+        split_needed,
+        vh,
+        edge_slots,
+        num_edges,
+        input_edges,
+        non_manifold_edges,
+        non_manifold_edge_examples,
+        mut multi_fan,
+        ..
+    } = sums;
+    // The pairs' memory then serves the edge bits.
+    let (o, scratch) = if collect {
+        let (o, scratch) = opposites.finish(records);
+        (o, scratch)
+    } else {
+        (Vec::new(), Vec::new())
+    };
+    let edge_bits = if tables {
+        bits_from_slots(&edge_slots, 6 * (v.len() / 4), scratch)
+    } else {
+        RankBits::default()
+    };
     multi_fan.sort_unstable();
     let edge_census = EdgeCensus {
-        input_edges: sums.input_edges,
-        non_manifold: sums.non_manifold_edges,
-        non_manifold_examples: sums.non_manifold_edge_examples.clone(),
+        input_edges,
+        non_manifold: non_manifold_edges,
+        non_manifold_examples: non_manifold_edge_examples.clone(),
         // Without a split the structure pairs are the input pairs.
-        kept: sums.non_manifold_edges,
-        kept_examples: sums.non_manifold_edge_examples,
+        kept: non_manifold_edges,
+        kept_examples: non_manifold_edge_examples,
         multi_fan,
     };
-    let (vh, split_needed) = (sums.vh, sums.split_needed);
-    let faces_out = faces.then(|| (census, opposites.finish(records)));
+    let faces_out = faces.then_some((census, o));
     Stars {
         split_needed,
+        num_edges,
         vh,
         edge_bits,
         census: edge_census,
@@ -179,8 +220,9 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], pairs: Pairs)
 }
 
 /// The rank bits of `n` slots with `slots` set: the slots are bucketed by window of bits
-/// first (at most 512 windows), then each window's bits are set in cache.
-pub(crate) fn bits_from_slots(slots: &[u64], n: usize) -> RankBits {
+/// first (at most 512 windows), then each window's bits are set in cache. `scratch` is
+/// memory to reuse.
+pub(crate) fn bits_from_slots(slots: &[u64], n: usize, scratch: Vec<u64>) -> RankBits {
     let bits = u64::BITS - (n as u64).saturating_sub(1).leading_zeros();
     // Windows of at least one word, so that each word is written by one window.
     let shift = bits.saturating_sub(COARSE_BITS).max(6);
@@ -193,10 +235,12 @@ pub(crate) fn bits_from_slots(slots: &[u64], n: usize) -> RankBits {
         start[w + 1] += start[w];
     }
     let mut fill = start.clone();
-    let mut low = vec![0u32; slots.len()];
+    let mut low = scratch;
+    low.clear();
+    low.resize(slots.len(), 0);
     for &s in slots {
         let f = &mut fill[(s >> shift) as usize];
-        low[*f as usize] = (s & ((1 << shift) - 1)) as u32;
+        low[*f as usize] = s & ((1 << shift) - 1);
         *f += 1;
     }
     let mut words = vec![0u64; n.div_ceil(64)];
@@ -220,7 +264,7 @@ mod tests {
                 .filter(|s| s % 7 == 3 || s % 11 == 0)
                 .rev()
                 .collect();
-            let bits = bits_from_slots(&slots, n);
+            let bits = bits_from_slots(&slots, n, Vec::new());
             for s in 0..n {
                 assert_eq!(bits.get(s), s % 7 == 3 || s % 11 == 0, "n = {n}, slot {s}");
             }
@@ -267,7 +311,7 @@ mod against_walks {
                 .collect();
             let chf = Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(1)).unwrap();
             let flagged = crate::chf::build::merged(&chf.non_manifold, &chf.seams);
-            let stars = stars(&chf.v, chf.n_vertices, &flagged, Pairs::Opposites);
+            let stars = stars(&chf.v, chf.n_vertices, &flagged, Pairs::Opposites, true);
             assert!(!stars.split_needed);
             let walked = edges::canonical_slots(&chf.v, &chf.o);
             let n_slots = 6 * chf.num_tetrahedra();

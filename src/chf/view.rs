@@ -65,7 +65,8 @@ impl Chf {
             (false, true) => {
                 let flagged = super::build::merged(&self.non_manifold, &self.seams);
                 Cow::Owned(
-                    stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::No).edge_bits,
+                    stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::No, true)
+                        .edge_bits,
                 )
             }
             (false, false) => Cow::Owned(RankBits::default()),
@@ -87,7 +88,14 @@ impl Chf {
     /// non-manifold nor seam. Level 1 stores it; level 0 queries compute it.
     pub(crate) fn opposites_by_rule(&self) -> Vec<u32> {
         let flagged = super::build::merged(&self.non_manifold, &self.seams);
-        let faces = stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::Opposites).faces;
+        let faces = stars::stars(
+            &self.v,
+            self.n_vertices,
+            &flagged,
+            stars::Pairs::Opposites,
+            false,
+        )
+        .faces;
         faces.expect("faces were asked for").1
     }
 

@@ -76,7 +76,9 @@ impl Link {
         }
         // `VH`: the first unpaired half-face, else the first half-face.
         let c = if first_open == NONE { 0 } else { first_open };
-        sums.vh[x as usize] = hf_of(&star[(c / 3) as usize], (c % 3) as usize);
+        if sums.tables {
+            sums.vh[x as usize] = hf_of(&star[(c / 3) as usize], (c % 3) as usize);
+        }
 
         let edges = (3 * k - unpaired) / 2 + unpaired;
         let euler = m as i64 - edges as i64 + k as i64;
@@ -88,7 +90,10 @@ impl Link {
                     self.best[l]
                 };
                 if self.verts[l] > x {
-                    sums.edge_slots.push(slot_of_corner(star, c));
+                    if sums.tables {
+                        sums.edge_slots.push(slot_of_corner(star, c));
+                    }
+                    sums.num_edges += 1;
                     sums.input_edges += 1;
                 }
             }
@@ -240,7 +245,7 @@ impl Link {
         let r = &star[p];
         let [s1, s2] = OTHER_CORNERS[s];
         let (y, z) = (r[2 + s1], r[2 + s2]);
-        let partners = sums.partners;
+        let (collect, partners) = (sums.collect, sums.partners);
         let (census, opposites) = sums.faces.as_mut().expect("checked");
         census.input_faces += 1;
         match count {
@@ -249,7 +254,7 @@ impl Link {
                 let h = hf_of(r, s);
                 let (q, t) = ((other / 3) as usize, (other % 3) as usize);
                 let g = hf_of(&star[q], t);
-                if mated || partners {
+                if collect && (mated || partners) {
                     opposites.pair(h, g);
                 }
                 census.same_direction |= same_direction;
@@ -350,7 +355,10 @@ impl Link {
         }
         self.fans.sort_unstable();
         for run in self.fans.chunk_by(|a, b| a.0 == b.0) {
-            sums.edge_slots.extend(run.iter().map(|&(_, s)| s));
+            if sums.tables {
+                sums.edge_slots.extend(run.iter().map(|&(_, s)| s));
+            }
+            sums.num_edges += run.len();
             sums.input_edges += 1;
             if run.len() > 1 {
                 let y = run[0].0;

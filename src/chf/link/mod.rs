@@ -84,12 +84,17 @@ pub(crate) struct Sums<'a> {
     /// Record the faces and their pairs (only right on the build's first pass, before any
     /// split).
     pub faces: Option<(&'a mut FaceCensus, &'a mut super::pairs::Opposites)>,
-    /// Pair every face of two half-faces (else only the mates).
+    /// Collect the pairs (else count the faces only), and all pairs of two half-faces
+    /// (else only the mates).
+    pub collect: bool,
     pub partners: bool,
+    /// Fill `vh` and `edge_slots` (else count the edges only).
+    pub tables: bool,
     pub split_needed: bool,
     pub vh: Vec<u32>,
-    /// Canonical edge slots, in no order.
+    /// Canonical edge slots, in no order, and how many.
     pub edge_slots: Vec<u64>,
+    pub num_edges: usize,
     pub input_edges: usize,
     pub non_manifold_edges: usize,
     pub non_manifold_edge_examples: Vec<[u32; 2]>,

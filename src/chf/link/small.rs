@@ -109,6 +109,7 @@ impl Link {
             return false;
         }
         let three = |c: u8| 3 * (c as u32 >> 2) + (c as u32 & 3);
+        let collect = sums.collect;
         if let Some((census, opposites)) = sums.faces.as_mut() {
             census.input_faces += n_faces;
             for &[c, other, back] in &small.faces[..n_faces] {
@@ -120,7 +121,9 @@ impl Link {
                 let (q, t) = ((other >> 2) as usize, (other & 3) as usize);
                 let (r, r2) = (&star[p], &star[q]);
                 let (h, g) = (hf_of(r, s), hf_of(r2, t));
-                opposites.pair(h, g);
+                if collect {
+                    opposites.pair(h, g);
+                }
                 // Duplicate tetrahedra: the same fourth vertex, above the face.
                 let [s1, s2] = OTHER_CORNERS[s];
                 let (y, z) = (r[2 + s1], r[2 + s2]);
@@ -152,7 +155,9 @@ impl Link {
         } else {
             first_open as usize
         };
-        sums.vh[x as usize] = hf_of(&star[c >> 2], c & 3);
+        if sums.tables {
+            sums.vh[x as usize] = hf_of(&star[c >> 2], c & 3);
+        }
 
         let edges = (3 * k - unpaired) / 2 + unpaired;
         let euler = m as i64 - edges as i64 + k as i64;
@@ -189,7 +194,10 @@ impl Link {
                 } else {
                     self.first_corner[l]
                 };
-                sums.edge_slots.push(slot_of_corner(star, c));
+                if sums.tables {
+                    sums.edge_slots.push(slot_of_corner(star, c));
+                }
+                sums.num_edges += 1;
                 sums.input_edges += 1;
             }
         }

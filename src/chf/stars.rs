@@ -1,7 +1,7 @@
 //! One pass over the star of every vertex, from `V` alone: the faces and their pairs (`O`
 //! and the face counts of the build report), whether every star is one piece (else the
 //! vertex split must run), `VH`, the canonical slot of every fan (edge ids) and the edge
-//! census. `link.rs` does the work on one star.
+//! census. `link/` does the work on one star.
 //!
 //! Why one bucketed pass and no walks: on a large mesh the neighbours of a tetrahedron are
 //! far away in memory, so every step of a walk through `O` misses the cache (and a random
@@ -11,7 +11,7 @@
 //! and the TLB), the second sorts one coarse bucket at a time, in cache, by the low bits of
 //! the vertex. The records of a vertex are then in tetrahedron order, hence half-face
 //! order. Large meshes run in rounds over ranges of coarse buckets (each round rescans
-//! `V`) so that the records never take more than about 20 bytes per tetrahedron.
+//! `V`) so that the records never take more than 16 bytes per tetrahedron.
 //! The pairs found and the canonical slots are written in place the same way, through
 //! windows (`pairs.rs`, [`bits_from_slots`]).
 
@@ -66,7 +66,9 @@ pub(crate) fn stars(
     let faces = pairs != Pairs::No;
     let collect = matches!(pairs, Pairs::Partners | Pairs::Opposites);
     let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
-    let shift = bits.saturating_sub(COARSE_BITS);
+    // At most 2^16 vertices per coarse bucket, so that the second pass's counts stay small
+    // (past 2^25 vertices there are more than 512 coarse buckets).
+    let shift = bits.saturating_sub(COARSE_BITS).min(16);
     let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
     let mut count = vec![0u32; n_coarse + 1];
     for &x in v {

@@ -20,23 +20,9 @@ DIR="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 SUBDIVIDE_SRC="$HERE/../c-tests/diff/subdivide.cpp"
 
-# The selection (see c-tests/diff/meshes.txt for what each one is for).
-MESHES=(
-  # closed, genus 0
-  bunny00 armadillo blobby
-  # closed, higher genus
-  refined_elephant knot1 cheese double-torus-example
-  # open, several boundary curves
-  holes mech-holes-shark ChineseDragon-10kv elephant-with-holes
-  # several components
-  blobby_3cc
-  # non-manifold
-  polygon_mesh
-  # inconsistent orientation
-  blobby-shuffled oblong-shuffled cube-shuffled tet-shuffled cube4-shuffled
-  # odd files: COFF with vertex colours, face colours, polygons up to 10 sides
-  cactus quint_tris mpi
-)
+# The selection: c-tests/diff/meshes.txt (one name a line, with what each one is for).
+LIST="$HERE/../c-tests/diff/meshes.txt"
+mapfile -t MESHES < <(sed 's/#.*//; s/[[:space:]]//g; /^$/d' "$LIST")
 GENERATED=(bunny00-sub2 bunny00-sub3)
 TETS=0
 for a in "$@"; do

@@ -1,1 +1,45 @@
-//! The extern "C" layer (being written).
+//! The C ABI. The header `include/topomesh.h` is generated from this module by cbindgen
+//! (see `tests/header_drift.rs`); the C++ wrapper is `include/topomesh.hpp`.
+//!
+//! Layout (the pattern the CHF exports follow):
+//! - `boundary`: the one helper every export runs behind (null checks, `catch_unwind`,
+//!   error -> status + thread-local detail), caller-buffer and CSR sinks, handle boxing;
+//! - `status`: `topomesh_status`, `topomesh_status_str`, `topomesh_last_error`,
+//!   `topomesh_version`;
+//! - `che`: the `che_mesh` handle and build options; `che_build` (create, load, free,
+//!   level, counts), `che_relations` (one element at a time), `che_star` (stack
+//!   iterator), `che_csr` (bulk), `che_views` (zero-copy), `che_info` (summary, report,
+//!   memory).
+//!
+//! Safety contract of every export (written once here and in the header): each pointer
+//! argument is NULL or valid for the access its documentation states (a handle from this
+//! library that is not freed; a buffer of at least `cap` elements; a NUL-terminated path);
+//! a `const che_mesh*` may be shared between threads, a `che_mesh*` passed to
+//! `che_mesh_build_level` or `che_mesh_free` may not. NULL where a value is required gives
+//! `TOPOMESH_STATUS_NULL_ARGUMENT`; nothing panics or unwinds across the boundary.
+#![allow(
+    clippy::missing_safety_doc,
+    reason = "every export has the same safety contract, documented once in the module docs and the header preamble"
+)]
+
+// The header lists items in this order: shared things first.
+pub mod status;
+
+pub(crate) mod boundary;
+pub mod che;
+pub mod che_build;
+pub mod che_csr;
+pub mod che_info;
+pub mod che_relations;
+pub mod che_star;
+pub mod che_views;
+#[cfg(test)]
+mod tests;
+
+pub use che::{CheBuildOptions, CheMesh};
+pub use che_info::{CheBuildReport, CheMemory, CheReportKind, CheSummary};
+pub use che_star::{CheStarIter, CheStarStep};
+pub use status::Status;
+
+/// `TOPOMESH_NONE` in C: no element (boundary, none, invalid).
+pub const TOPOMESH_NONE: u32 = crate::NONE;

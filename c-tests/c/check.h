@@ -1,0 +1,143 @@
+/* Tiny test harness and mesh fixtures shared by the C tests. */
+#ifndef TOPOMESH_CHECK_H
+#define TOPOMESH_CHECK_H
+
+#include <topomesh/topomesh.h>
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#if defined(__GNUC__)
+#define UNUSED_ __attribute__((unused))
+#else
+#define UNUSED_
+#endif
+
+static int check_failures UNUSED_ = 0;
+
+static inline const char *last_error(void) {
+    static char buf[1024];
+    size_t len = 0;
+    if (topomesh_last_error(buf, sizeof buf, &len) > TOPOMESH_STATUS_BUFFER_TOO_SMALL) buf[0] = 0;
+    return buf;
+}
+
+#define CHECK(cond)                                                                        \
+    do {                                                                                   \
+        if (!(cond)) {                                                                     \
+            fprintf(stderr, "%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #cond);      \
+            check_failures++;                                                              \
+        }                                                                                  \
+    } while (0)
+
+/* Expects a status; prints the detail on a mismatch. */
+#define CHECK_STATUS(expr, want)                                                           \
+    do {                                                                                   \
+        topomesh_status got_ = (expr);                                                     \
+        topomesh_status want_ = (want);                                                    \
+        if (got_ != want_) {                                                               \
+            fprintf(stderr, "%s:%d: %s gave %s (%u), expected %s (%u); detail: %s\n",      \
+                    __FILE__, __LINE__, #expr, topomesh_status_str(got_), (unsigned)got_,  \
+                    topomesh_status_str(want_), (unsigned)want_, last_error());            \
+            check_failures++;                                                              \
+        }                                                                                  \
+    } while (0)
+
+#define CHECK_OK(expr) CHECK_STATUS(expr, TOPOMESH_STATUS_OK)
+
+/* The last error detail contains `needle`. */
+#define CHECK_DETAIL(needle)                                                               \
+    do {                                                                                   \
+        const char *d_ = last_error();                                                     \
+        if (!strstr(d_, (needle))) {                                                       \
+            fprintf(stderr, "%s:%d: detail \"%s\" lacks \"%s\"\n", __FILE__, __LINE__, d_, \
+                    (needle));                                                             \
+            check_failures++;                                                              \
+        }                                                                                  \
+    } while (0)
+
+/* Compares got[0..n) with the expected list. */
+static inline int ids_equal_(const uint32_t *got, size_t n, int count, ...) {
+    va_list ap;
+    int ok = (size_t)count == n;
+    va_start(ap, count);
+    for (int i = 0; i < count; i++) {
+        uint32_t want = va_arg(ap, uint32_t);
+        if (ok && got[i] != want) ok = 0;
+    }
+    va_end(ap);
+    return ok;
+}
+
+static inline void print_ids_(const char *what, const uint32_t *got, size_t n) {
+    fprintf(stderr, "    %s = [", what);
+    for (size_t i = 0; i < n; i++) fprintf(stderr, i ? ", %u" : "%u", (unsigned)got[i]);
+    fprintf(stderr, "]\n");
+}
+
+#define NARGS_(...) NARGS_IMPL_(__VA_ARGS__, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0)
+#define NARGS_IMPL_(_1, _2, _3, _4, _5, _6, _7, _8, _9, _10, _11, _12, N, ...) N
+
+/* CHECK_IDS(buf, len, a, b, c): buf[0..len) == {a, b, c}. */
+#define CHECK_IDS(got, n, ...)                                                             \
+    do {                                                                                   \
+        if (!ids_equal_((got), (n), NARGS_(__VA_ARGS__), __VA_ARGS__)) {                   \
+            fprintf(stderr, "%s:%d: %s[0..%s) != {%s}\n", __FILE__, __LINE__, #got, #n,    \
+                    #__VA_ARGS__);                                                         \
+            print_ids_(#got, (got), (n));                                                  \
+            check_failures++;                                                              \
+        }                                                                                  \
+    } while (0)
+
+#define CHECK_EMPTY(n) CHECK((n) == 0)
+
+static inline int finish(const char *name) {
+    if (check_failures) {
+        fprintf(stderr, "%s: %d check(s) failed\n", name, check_failures);
+        return 1;
+    }
+    printf("%s: all checks passed\n", name);
+    return 0;
+}
+
+/* ---- Fixtures ----------------------------------------------------------------------- */
+
+#define N_ (TOPOMESH_NONE)
+
+/* The surface of a tetrahedron, outward (counter-clockwise seen from outside). */
+static const uint32_t TETRA[] UNUSED_ = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+static const double TETRA_POS[] UNUSED_ = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+
+/* An open strip: the unit square split along 1-2, facing +z. */
+static const uint32_t STRIP[] UNUSED_ = {0, 1, 2, 1, 3, 2};
+static const double STRIP_POS[] UNUSED_ = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+
+/* Two triangles touching at vertex 0 only: a non-manifold vertex. */
+static const uint32_t BOWTIE[] UNUSED_ = {0, 1, 2, 0, 3, 4};
+static const double BOWTIE_POS[] UNUSED_ = {0, 0, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, -1, 0};
+
+/* Three triangles on the edge 0-1: a non-manifold edge. */
+static const uint32_t FIN[] UNUSED_ = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+
+/* A Moebius strip: 6 vertices, 6 triangles, one twisted band. */
+static const uint32_t MOEBIUS[] UNUSED_ = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4, 2, 3, 0, 2, 0, 5};
+
+/* A degenerate triangle (1, 1, 2) between two good ones, and isolated vertex 4. */
+static const uint32_t DEGEN[] UNUSED_ = {0, 1, 2, 1, 1, 2, 2, 1, 3};
+
+#define NTRI(a) (sizeof(a) / sizeof((a)[0]) / 3)
+
+static inline che_mesh *make(const uint32_t *tris, size_t n_tris, size_t n_verts, const double *pos,
+                      uint32_t level) {
+    che_mesh *m = NULL;
+    topomesh_status s = che_mesh_from_triangles(tris, n_tris, n_verts, pos, level, &m);
+    if (s != TOPOMESH_STATUS_OK || !m) {
+        fprintf(stderr, "fixture build failed: %s: %s\n", topomesh_status_str(s), last_error());
+        exit(2);
+    }
+    return m;
+}
+
+#endif

@@ -1,0 +1,286 @@
+/* The stack star iterator, the bulk CSR calls and the zero-copy views. */
+#include "check.h"
+
+#include <pthread.h>
+
+/* The star of every vertex equals VV / VE / VF. */
+static void star_matches_relations(const che_mesh *m) {
+    for (uint32_t v = 0; v < che_mesh_num_vertices(m); v++) {
+        uint32_t vv[64], ve[64], vf[64];
+        size_t nvv = 0, nve = 0, nvf = 0;
+        CHECK_OK(che_vertex_vertices(m, v, vv, 64, &nvv));
+        CHECK_OK(che_vertex_edges(m, v, ve, 64, &nve));
+        CHECK_OK(che_vertex_triangles(m, v, vf, 64, &nvf));
+        che_star_iter it;
+        che_star_step s;
+        CHECK_OK(che_star_begin(m, v, &it));
+        size_t i = 0, t = 0;
+        const uint32_t *V = che_mesh_half_edge_vertices(m, NULL);
+        while (che_star_next(&it, &s)) {
+            CHECK(i < nvv && s.vertex == vv[i] && s.edge == ve[i]);
+            if (s.triangle != TOPOMESH_NONE) {
+                CHECK(t < nvf && s.triangle == vf[t]);
+                CHECK(che_tri(s.half_edge) == s.triangle);
+                CHECK(V[s.half_edge] == v && V[che_next(s.half_edge)] == s.vertex);
+                t++;
+            } else {
+                /* The closing incoming boundary half-edge u -> v. */
+                uint32_t o = 0;
+                CHECK(V[s.half_edge] == s.vertex && V[che_next(s.half_edge)] == v);
+                CHECK_OK(che_half_edge_opposite(m, s.half_edge, &o));
+                CHECK(o == TOPOMESH_NONE);
+            }
+            i++;
+        }
+        CHECK(i == nvv && t == nvf);
+        /* Exhausted stays exhausted. */
+        CHECK(!che_star_next(&it, &s));
+    }
+}
+
+static void test_star(void) {
+    che_mesh *m = make(STRIP, 2, 4, NULL, 2);
+    che_star_iter it;
+    che_star_step s;
+    CHECK_OK(che_star_begin(m, 1, &it));
+    CHECK(che_star_next(&it, &s));
+    CHECK(s.half_edge == 3 && s.vertex == 3 && s.edge == 3 && s.triangle == 1);
+    CHECK(che_star_next(&it, &s));
+    CHECK(s.half_edge == 1 && s.vertex == 2 && s.edge == 1 && s.triangle == 0);
+    CHECK(che_star_next(&it, &s));
+    CHECK(s.half_edge == 0 && s.vertex == 0 && s.edge == 0 && s.triangle == TOPOMESH_NONE);
+    CHECK(!che_star_next(&it, &s));
+
+    CHECK_STATUS(che_star_begin(NULL, 0, &it), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(che_star_begin(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(che_star_begin(m, 4, &it), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_DETAIL("vertex 4");
+    CHECK(!che_star_next(NULL, &s));
+    CHECK_OK(che_star_begin(m, 0, &it));
+    CHECK(!che_star_next(&it, NULL));
+    for (uint32_t level = 0; level <= 3; level++) {
+        CHECK_OK(che_mesh_build_level(m, level));
+        star_matches_relations(m);
+    }
+    che_mesh_free(m);
+
+    const uint32_t *fixtures[] = {TETRA, BOWTIE, FIN, MOEBIUS, DEGEN};
+    const size_t nt[] = {4, 2, 3, 6, 3}, nv[] = {4, 5, 5, 6, 5};
+    for (int f = 0; f < 5; f++) {
+        for (uint32_t level = 0; level <= 3; level++) {
+            m = make(fixtures[f], nt[f], nv[f], NULL, level);
+            star_matches_relations(m);
+            che_mesh_free(m);
+        }
+    }
+}
+
+typedef topomesh_status (*csr_fn)(const che_mesh *, uint32_t *, size_t, uint32_t *, size_t,
+                                  size_t *, size_t *);
+typedef topomesh_status (*relation_fn)(const che_mesh *, uint32_t, uint32_t *, size_t, size_t *);
+
+/* A CSR call agrees with the one-element relation, row by row. */
+static void csr_matches(const che_mesh *m, csr_fn csr, relation_fn rel, size_t rows) {
+    size_t no = 0, ni = 0;
+    CHECK_OK(csr(m, NULL, 0, NULL, 0, &no, &ni));
+    CHECK(no == rows + 1);
+    uint32_t *off = malloc((no + 1) * sizeof *off), *idx = malloc((ni + 1) * sizeof *idx);
+    size_t no2 = 0, ni2 = 0;
+    CHECK_OK(csr(m, off, no, idx, ni, &no2, &ni2));
+    CHECK(no2 == no && ni2 == ni);
+    CHECK(off[0] == 0 && off[rows] == ni);
+    for (uint32_t r = 0; r < rows; r++) {
+        uint32_t b[64];
+        size_t n = 0;
+        CHECK_OK(rel(m, r, b, 64, &n));
+        CHECK(off[r + 1] - off[r] == n);
+        if (off[r + 1] - off[r] == n) CHECK(memcmp(idx + off[r], b, n * sizeof *b) == 0);
+    }
+    free(off);
+    free(idx);
+}
+
+static void test_csr(void) {
+    const uint32_t *fixtures[] = {TETRA, STRIP, BOWTIE, FIN, MOEBIUS, DEGEN};
+    const size_t nt[] = {4, 2, 2, 3, 6, 3}, nv[] = {4, 4, 5, 5, 6, 5};
+    for (int f = 0; f < 6; f++) {
+        for (uint32_t level = 0; level <= 3; level++) {
+            che_mesh *m = make(fixtures[f], nt[f], nv[f], NULL, level);
+            size_t V = che_mesh_num_vertices(m), T = che_mesh_num_triangles(m);
+            csr_matches(m, che_mesh_vertex_vertices_csr, che_vertex_vertices, V);
+            csr_matches(m, che_mesh_vertex_edges_csr, che_vertex_edges, V);
+            csr_matches(m, che_mesh_vertex_triangles_csr, che_vertex_triangles, V);
+            csr_matches(m, che_mesh_triangle_triangles_csr, che_triangle_triangles, T);
+            /* The bulk calls do not change the level. */
+            CHECK(che_mesh_level(m) == level);
+            che_mesh_free(m);
+        }
+    }
+
+    /* The strip's VV in full, and the buffer rules. */
+    che_mesh *m = make(STRIP, 2, 4, NULL, 2);
+    uint32_t off[8], idx[16];
+    size_t no = 0, ni = 0;
+    CHECK_OK(che_mesh_vertex_vertices_csr(m, off, 8, idx, 16, &no, &ni));
+    CHECK_IDS(off, no, 0, 2, 5, 8, 10);
+    CHECK_IDS(idx, ni, 1, 2, 3, 2, 0, 0, 1, 3, 2, 1);
+    CHECK_OK(che_mesh_triangle_triangles_csr(m, off, 8, idx, 16, &no, &ni));
+    CHECK_IDS(off, no, 0, 3, 6);
+    CHECK_IDS(idx, ni, N_, 1, N_, N_, N_, 0);
+    /* Too small: both needed lengths reported. */
+    no = ni = 0;
+    CHECK_STATUS(che_mesh_vertex_vertices_csr(m, off, 8, idx, 3, &no, &ni),
+                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+    CHECK(no == 5 && ni == 10);
+    CHECK_DETAIL("indices");
+    CHECK_STATUS(che_mesh_vertex_edges_csr(m, off, 2, idx, 16, &no, &ni),
+                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+    CHECK(no == 5 && ni == 10);
+    CHECK_DETAIL("offsets");
+    /* One NULL buffer, NULL lengths, NULL handle. */
+    CHECK_STATUS(che_mesh_vertex_triangles_csr(m, NULL, 0, idx, 16, &no, &ni),
+                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("offsets");
+    CHECK_STATUS(che_mesh_vertex_triangles_csr(m, off, 8, NULL, 0, &no, &ni),
+                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("indices");
+    CHECK_STATUS(che_mesh_vertex_triangles_csr(m, off, 8, idx, 16, NULL, &ni),
+                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(che_mesh_vertex_triangles_csr(m, off, 8, idx, 16, &no, NULL),
+                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(che_mesh_triangle_triangles_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
+                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    che_mesh_free(m);
+}
+
+static void test_views(void) {
+    che_mesh *m = make(STRIP, 2, 4, STRIP_POS, 0);
+    size_t len = 99;
+    const uint32_t *V = che_mesh_half_edge_vertices(m, &len);
+    CHECK(V != NULL && len == 6);
+    if (V) CHECK_IDS(V, len, 0, 1, 2, 1, 3, 2);
+    /* Containers that do not exist at this level. */
+    len = 99;
+    CHECK(che_mesh_opposites(m, &len) == NULL && len == 0);
+    CHECK(che_mesh_vertex_half_edges(m, &len) == NULL && len == 0);
+    CHECK(che_mesh_edge_half_edges(m, &len) == NULL && len == 0);
+    CHECK(che_mesh_curve_half_edges(m, &len) == NULL && len == 0);
+    const double *P = che_mesh_positions(m, &len);
+    CHECK(P != NULL && len == 12);
+    if (P) CHECK(memcmp(P, STRIP_POS, sizeof STRIP_POS) == 0);
+    /* Identity origins are materialised on demand. */
+    const uint32_t *vo = che_mesh_vertex_origins(m, &len);
+    CHECK(vo != NULL);
+    if (vo) CHECK_IDS(vo, len, 0, 1, 2, 3);
+    const uint32_t *to = che_mesh_triangle_origins(m, &len);
+    CHECK(to != NULL);
+    if (to) CHECK_IDS(to, len, 0, 1);
+    CHECK(che_mesh_vertex_origins(m, NULL) == vo); /* the same storage on every call */
+
+    CHECK_OK(che_mesh_build_level(m, 1));
+    const uint32_t *O = che_mesh_opposites(m, &len);
+    CHECK(O != NULL && len == 6);
+    if (O) CHECK_IDS(O, len, N_, 5, N_, N_, N_, 1);
+    CHECK(che_mesh_vertex_half_edges(m, &len) == NULL);
+
+    CHECK_OK(che_mesh_build_level(m, 2));
+    const uint32_t *VH = che_mesh_vertex_half_edges(m, &len);
+    CHECK(VH != NULL && len == 4);
+    if (VH) CHECK_IDS(VH, len, 0, 3, 2, 4);
+    const uint32_t *EH = che_mesh_edge_half_edges(m, &len);
+    CHECK(EH != NULL && len == 5);
+    if (EH) CHECK_IDS(EH, len, 0, 1, 2, 3, 4);
+    CHECK(che_mesh_curve_half_edges(m, &len) == NULL);
+
+    CHECK_OK(che_mesh_build_level(m, 3));
+    const uint32_t *CH = che_mesh_curve_half_edges(m, &len);
+    CHECK(CH != NULL && len == 1);
+    if (CH) CHECK_IDS(CH, len, 0);
+
+    /* Going down drops them again. */
+    CHECK_OK(che_mesh_build_level(m, 1));
+    CHECK(che_mesh_vertex_half_edges(m, &len) == NULL && len == 0);
+    CHECK(che_mesh_opposites(m, &len) != NULL && len == 6);
+
+    /* NULL handle: NULL and 0; a NULL len is allowed. */
+    len = 99;
+    CHECK(che_mesh_half_edge_vertices(NULL, &len) == NULL && len == 0);
+    CHECK(che_mesh_opposites(NULL, NULL) == NULL);
+    CHECK(che_mesh_positions(NULL, &len) == NULL && len == 0);
+    CHECK(che_mesh_vertex_origins(NULL, &len) == NULL && len == 0);
+    CHECK(che_mesh_triangle_origins(NULL, &len) == NULL && len == 0);
+    CHECK(che_mesh_vertex_half_edges(NULL, &len) == NULL);
+    CHECK(che_mesh_edge_half_edges(NULL, &len) == NULL);
+    CHECK(che_mesh_curve_half_edges(NULL, &len) == NULL);
+    che_mesh_free(m);
+
+    /* The O invariants, walked with the inline arithmetic, on a closed mesh. */
+    m = make(TETRA, 4, 4, NULL, 2);
+    size_t n = 0;
+    V = che_mesh_half_edge_vertices(m, &n);
+    O = che_mesh_opposites(m, NULL);
+    for (uint32_t h = 0; h < n; h++) {
+        CHECK(O[h] != TOPOMESH_NONE && O[O[h]] == h);
+        CHECK(V[O[h]] == V[che_next(h)] && V[che_next(O[h])] == V[h]);
+        CHECK(che_prev(che_next(h)) == h && che_tri(h) == h / 3 && che_first(che_tri(h)) <= h);
+    }
+    VH = che_mesh_vertex_half_edges(m, &n);
+    for (uint32_t v = 0; v < n; v++) CHECK(V[VH[v]] == v);
+    che_mesh_free(m);
+}
+
+/* Any number of threads may query one const mesh at once, including the first request of
+   an identity origin map (materialised once). */
+#define N_THREADS 4
+typedef struct {
+    const che_mesh *m;
+    const uint32_t *origins;
+    size_t vv_total;
+    int failed;
+} job;
+
+static void *query_everything(void *arg) {
+    job *j = arg;
+    size_t len = 0;
+    j->origins = che_mesh_vertex_origins(j->m, &len);
+    if (!j->origins || len != che_mesh_num_vertices(j->m)) j->failed = 1;
+    for (int round = 0; round < 50; round++) {
+        size_t total = 0;
+        for (uint32_t v = 0; v < che_mesh_num_vertices(j->m); v++) {
+            che_star_iter it;
+            che_star_step s;
+            if (che_star_begin(j->m, v, &it) != TOPOMESH_STATUS_OK) j->failed = 1;
+            while (che_star_next(&it, &s)) total++;
+        }
+        size_t no = 0, ni = 0;
+        if (che_mesh_vertex_vertices_csr(j->m, NULL, 0, NULL, 0, &no, &ni) != TOPOMESH_STATUS_OK ||
+            ni != total)
+            j->failed = 1;
+        j->vv_total = total;
+    }
+    return NULL;
+}
+
+static void test_threads(void) {
+    che_mesh *m = make(MOEBIUS, 6, 6, NULL, 1);
+    pthread_t th[N_THREADS];
+    job jobs[N_THREADS];
+    for (int i = 0; i < N_THREADS; i++) {
+        jobs[i] = (job){m, NULL, 0, 0};
+        CHECK(pthread_create(&th[i], NULL, query_everything, &jobs[i]) == 0);
+    }
+    for (int i = 0; i < N_THREADS; i++) CHECK(pthread_join(th[i], NULL) == 0);
+    for (int i = 0; i < N_THREADS; i++) {
+        CHECK(!jobs[i].failed);
+        CHECK(jobs[i].origins == jobs[0].origins && jobs[i].vv_total == jobs[0].vv_total);
+    }
+    che_mesh_free(m);
+}
+
+int main(void) {
+    test_threads();
+    test_star();
+    test_csr();
+    test_views();
+    return finish("test_iter");
+}

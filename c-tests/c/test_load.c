@@ -1,0 +1,109 @@
+/* che_mesh_load and che_mesh_load_ex.
+   `test_load args`: argument errors, independent of the file readers.
+   `test_load readers`: needs the OFF and Medit readers (src/io). */
+#include "check.h"
+
+static void write_file(const char *path, const char *text) {
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(text, f) < 0 || fclose(f) != 0) {
+        fprintf(stderr, "cannot write %s\n", path);
+        exit(2);
+    }
+}
+
+static void test_args(void) {
+    che_mesh *m = (che_mesh *)&m;
+    CHECK_STATUS(che_mesh_load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK(m == NULL);
+    CHECK_DETAIL("path");
+    CHECK_STATUS(che_mesh_load("x.off", 2, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(che_mesh_load("x.off", 4, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(che_mesh_load_ex(NULL, NULL, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(che_mesh_load_ex("x.off", NULL, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    /* An unknown extension is not a mesh format. */
+    write_file("not-a-mesh.xyz", "hello\n");
+    m = (che_mesh *)&m;
+    CHECK_STATUS(che_mesh_load("not-a-mesh.xyz", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK(m == NULL);
+    CHECK_DETAIL("not-a-mesh.xyz");
+}
+
+static const char *TETRA_OFF = "OFF\n"
+                               "# the surface of a tetrahedron\n"
+                               "4 4 6\n"
+                               "0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                               "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+static void test_readers(void) {
+    /* Success. */
+    write_file("tetra.off", TETRA_OFF);
+    che_mesh *m = NULL;
+    CHECK_OK(che_mesh_load("tetra.off", 3, &m));
+    if (m) {
+        CHECK(che_mesh_level(m) == 3);
+        CHECK(che_mesh_num_vertices(m) == 4 && che_mesh_num_triangles(m) == 4);
+        CHECK(che_mesh_num_edges(m) == 6);
+        size_t len = 0;
+        const double *p = che_mesh_positions(m, &len);
+        CHECK(p != NULL && len == 12);
+        if (p && len == 12) CHECK(memcmp(p, TETRA_POS, sizeof TETRA_POS) == 0);
+        const uint32_t *V = che_mesh_half_edge_vertices(m, &len);
+        CHECK(len == 12 && memcmp(V, TETRA, sizeof TETRA) == 0);
+        che_summary s;
+        CHECK_OK(che_mesh_summary(m, &s));
+        CHECK(s.genus == 0 && s.euler_characteristic == 2 && s.manifold && s.orientable);
+        che_mesh_free(m);
+    }
+    che_build_options o = {1, true};
+    m = NULL;
+    CHECK_OK(che_mesh_load_ex("tetra.off", &o, &m));
+    CHECK(m != NULL && che_mesh_level(m) == 1);
+    che_mesh_free(m);
+
+    /* A missing file. */
+    m = (che_mesh *)&m;
+    CHECK_STATUS(che_mesh_load("does-not-exist.off", 2, &m), TOPOMESH_STATUS_IO);
+    CHECK(m == NULL);
+    CHECK_DETAIL("does-not-exist.off");
+
+    /* A malformed file: the detail names the file and the line. */
+    write_file("malformed.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1\n3 0 1 2\n");
+    CHECK_STATUS(che_mesh_load("malformed.off", 2, &m), TOPOMESH_STATUS_PARSE);
+    CHECK(m == NULL);
+    CHECK_DETAIL("malformed.off");
+    write_file("bad-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+    CHECK(che_mesh_load("bad-index.off", 2, &m) != TOPOMESH_STATUS_OK);
+    CHECK(m == NULL);
+
+    /* Strict mode on a file with a non-manifold vertex. */
+    write_file("bowtie.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n"
+                             "3 0 1 2\n3 0 3 4\n");
+    o.strict = true;
+    CHECK_STATUS(che_mesh_load_ex("bowtie.off", &o, &m), TOPOMESH_STATUS_NON_MANIFOLD);
+    CHECK(m == NULL);
+    o.strict = false;
+    CHECK_OK(che_mesh_load_ex("bowtie.off", &o, &m));
+    CHECK(che_mesh_num_vertices(m) == 6);
+    che_mesh_free(m);
+
+    /* A volume file is not a surface. */
+    write_file("tet.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
+                           "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+                           "Tetrahedra\n1\n1 2 3 4 0\nEnd\n");
+    CHECK_STATUS(che_mesh_load("tet.mesh", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK(m == NULL);
+    CHECK_DETAIL("tetrahedra");
+}
+
+int main(int argc, char **argv) {
+    const char *what = argc > 1 ? argv[1] : "args";
+    if (strcmp(what, "args") == 0) {
+        test_args();
+    } else if (strcmp(what, "readers") == 0) {
+        test_readers();
+    } else {
+        fprintf(stderr, "usage: test_load args|readers\n");
+        return 2;
+    }
+    return finish(what);
+}

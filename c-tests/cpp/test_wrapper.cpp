@@ -1,0 +1,205 @@
+// The C++17 wrapper: RAII, moves, strong ids, ranges, spans, CSR, errors.
+#include <topomesh/topomesh.hpp>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+static int failures = 0;
+#define CHECK(cond)                                                                        \
+    do {                                                                                   \
+        if (!(cond)) {                                                                     \
+            std::fprintf(stderr, "%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #cond); \
+            failures++;                                                                    \
+        }                                                                                  \
+    } while (0)
+
+// Expects `expr` to throw topomesh::Error with `status` and a detail containing `needle`.
+#define CHECK_THROWS(expr, want, needle)                                                   \
+    do {                                                                                   \
+        bool thrown_ = false;                                                              \
+        try {                                                                              \
+            (void)(expr);                                                                  \
+        } catch (const topomesh::Error &e) {                                               \
+            thrown_ = true;                                                                \
+            CHECK(e.status() == (want));                                                   \
+            CHECK(e.detail().find(needle) != std::string::npos);                           \
+            CHECK(std::string(e.what()).find(e.detail()) != std::string::npos);           \
+        }                                                                                  \
+        CHECK(thrown_);                                                                    \
+    } while (0)
+
+using namespace topomesh;
+
+static_assert(!std::is_copy_constructible<Surface>::value, "move-only");
+static_assert(!std::is_copy_assignable<Surface>::value, "move-only");
+static_assert(std::is_nothrow_move_constructible<Surface>::value, "movable");
+static_assert(std::is_nothrow_move_assignable<Surface>::value, "movable");
+static_assert(std::is_base_of<std::runtime_error, Error>::value, "Error is a runtime_error");
+static_assert(!std::is_convertible<VertexId, EdgeId>::value, "strong ids");
+static_assert(!std::is_convertible<std::uint32_t, VertexId>::value, "explicit ids");
+static_assert(std::is_same<Che, Surface>::value, "alias");
+
+template <class T> static std::vector<std::uint32_t> raw(const T &range) {
+    std::vector<std::uint32_t> out;
+    for (auto id : range) out.push_back(id.value());
+    return out;
+}
+
+static const std::vector<std::uint32_t> STRIP = {0, 1, 2, 1, 3, 2};
+static const std::vector<double> STRIP_POS = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+static const std::vector<std::uint32_t> TETRA = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+
+static void test_build_and_counts() {
+    Surface s = Surface::from_triangles(STRIP, 4, STRIP_POS);
+    CHECK(s.level() == 2);
+    CHECK(s.num_vertices() == 4 && s.num_input_vertices() == 4 && s.num_triangles() == 2);
+    CHECK(s.num_edges() == 5 && s.num_half_edges() == 6 && s.num_boundary_curves() == 1);
+    s.build_level(3);
+    CHECK(s.level() == 3);
+    CHECK_THROWS(s.build_level(9), TOPOMESH_STATUS_OUT_OF_RANGE, "level 9");
+
+    Surface t = Surface::from_triangles(TETRA.data(), 4, 4, nullptr, {0, true});
+    CHECK(t.level() == 0 && t.num_edges() == 6);
+
+    CHECK_THROWS(Surface::from_triangles(std::vector<std::uint32_t>{0, 1}, 3),
+                 TOPOMESH_STATUS_INVALID_INPUT, "multiple of 3");
+    CHECK_THROWS(Surface::from_triangles(STRIP, 4, std::vector<double>{0, 0}),
+                 TOPOMESH_STATUS_INVALID_INPUT, "coordinates");
+    CHECK_THROWS(Surface::from_triangles(STRIP, 3), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex 3");
+    CHECK_THROWS(Surface::from_triangles({0, 1, 2, 0, 3, 4}, 5, {}, {2, true}),
+                 TOPOMESH_STATUS_NON_MANIFOLD, "vertex 0");
+    CHECK_THROWS(Surface::load("missing-file.xyz"), TOPOMESH_STATUS_INVALID_INPUT,
+                 "missing-file.xyz");
+}
+
+static void test_moves() {
+    Surface a = Surface::from_triangles(STRIP, 4);
+    const che_mesh *h = a.handle();
+    Surface b = std::move(a);
+    CHECK(b.handle() == h && a.handle() == nullptr);
+    CHECK(a.num_vertices() == 0); // a moved-from surface is empty
+    CHECK_THROWS(a.summary(), TOPOMESH_STATUS_NULL_ARGUMENT, "'m'");
+    Surface c = Surface::from_triangles(TETRA, 4);
+    c = std::move(b); // frees c's tetrahedron
+    CHECK(c.handle() == h && c.num_triangles() == 2);
+    che_mesh *released = c.release();
+    CHECK(released == h && c.handle() == nullptr);
+    Surface d(released); // adopt again
+    CHECK(d.num_edges() == 5);
+}
+
+static void test_relations_and_ranges() {
+    Surface s = Surface::from_triangles(STRIP, 4);
+    CHECK((raw(s.vertices_around(VertexId{1})) == std::vector<std::uint32_t>{3, 2, 0}));
+    CHECK((raw(s.edges_around(VertexId{1})) == std::vector<std::uint32_t>{3, 1, 0}));
+    CHECK((raw(s.triangles_around(VertexId{1})) == std::vector<std::uint32_t>{1, 0}));
+    CHECK((raw(s.vertices_around(VertexId{1}).to_vector()) == std::vector<std::uint32_t>{3, 2, 0}));
+    int steps = 0, closing = 0;
+    for (const StarStep &st : s.star(VertexId{1})) {
+        steps++;
+        closing += st.closing();
+        CHECK(st.half_edge.valid() && st.edge.valid());
+        if (!st.closing()) CHECK(triangle_of(st.half_edge) == st.triangle);
+    }
+    CHECK(steps == 3 && closing == 1);
+    CHECK_THROWS(s.star(VertexId{4}).begin(), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex 4");
+    CHECK_THROWS(s.vertices_around(VertexId{}).to_vector(), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+
+    auto ev = s.edge_vertices(EdgeId{1});
+    CHECK(ev[0] == VertexId{1} && ev[1] == VertexId{2});
+    auto ef = s.edge_triangles(EdgeId{1});
+    CHECK(ef.size() == 2 && ef[0] == TriangleId{0} && ef[1] == TriangleId{1});
+    CHECK(s.edge_triangles(EdgeId{0}).size() == 1);
+    CHECK((raw(s.edge_edges(EdgeId{1})) == std::vector<std::uint32_t>{2, 0, 3, 4}));
+    auto fv = s.triangle_vertices(TriangleId{1});
+    CHECK(fv[0] == VertexId{1} && fv[1] == VertexId{3} && fv[2] == VertexId{2});
+    auto fe = s.triangle_edges(TriangleId{1});
+    CHECK(fe[0] == EdgeId{3} && fe[1] == EdgeId{4} && fe[2] == EdgeId{1});
+    auto ff = s.triangle_triangles(TriangleId{0});
+    CHECK(!ff[0].valid() && ff[1] == TriangleId{1} && !ff[2].valid());
+    CHECK_THROWS(s.triangle_vertices(TriangleId{2}), TOPOMESH_STATUS_OUT_OF_RANGE, "triangle 2");
+    CHECK_THROWS(s.edge_vertices(EdgeId{5}), TOPOMESH_STATUS_OUT_OF_RANGE, "edge 5");
+    CHECK((raw(s.boundary_curve_vertices(0)) == std::vector<std::uint32_t>{0, 1, 3, 2}));
+    CHECK_THROWS(s.boundary_curve_vertices(1), TOPOMESH_STATUS_OUT_OF_RANGE, "curve 1");
+
+    CHECK(s.opposite(HalfEdgeId{1}) == HalfEdgeId{5});
+    CHECK(!s.opposite(HalfEdgeId{0}).valid());
+    CHECK(s.edge(HalfEdgeId{5}) == EdgeId{1});
+    CHECK(s.half_edge(VertexId{1}) == HalfEdgeId{3});
+    CHECK(s.half_edge(EdgeId{4}) == HalfEdgeId{4});
+    CHECK(s.curve(HalfEdgeId{0}) == 0 && s.curve(HalfEdgeId{1}) == none);
+    CHECK(s.origin(HalfEdgeId{4}) == VertexId{3} && s.target(HalfEdgeId{4}) == VertexId{2});
+    CHECK(s.is_boundary(VertexId{0}) && !s.is_boundary(EdgeId{1}) && s.is_boundary(EdgeId{0}));
+    CHECK_THROWS(s.opposite(HalfEdgeId{6}), TOPOMESH_STATUS_OUT_OF_RANGE, "half-edge 6");
+    CHECK(next(HalfEdgeId{2}) == HalfEdgeId{0} && prev(HalfEdgeId{3}) == HalfEdgeId{5});
+    CHECK(first_half_edge(TriangleId{2}) == HalfEdgeId{6});
+}
+
+static void test_views_csr_summary() {
+    Surface s = Surface::from_triangles(STRIP, 4, STRIP_POS, {1});
+    CHECK((s.half_edge_vertices().to_vector() == STRIP));
+    CHECK(s.opposites().size() == 6 && s.opposites()[1] == 5);
+    CHECK(s.vertex_half_edges().empty() && s.edge_half_edges().empty());
+    CHECK(s.curve_half_edges().empty());
+    CHECK((s.positions().to_vector() == STRIP_POS));
+    CHECK((s.vertex_origins().to_vector() == std::vector<std::uint32_t>{0, 1, 2, 3}));
+    CHECK((s.triangle_origins().to_vector() == std::vector<std::uint32_t>{0, 1}));
+    std::uint32_t sum = 0;
+    for (std::uint32_t v : s.half_edge_vertices()) sum += v;
+    CHECK(sum == 9);
+    s.build_level(3);
+    CHECK((s.vertex_half_edges().to_vector() == std::vector<std::uint32_t>{0, 3, 2, 4}));
+    CHECK(s.edge_half_edges().size() == 5 && s.curve_half_edges().size() == 1);
+    bool out_of_range = false;
+    try {
+        (void)s.half_edge_vertices().at(6);
+    } catch (const std::out_of_range &) {
+        out_of_range = true;
+    }
+    CHECK(out_of_range);
+
+    Csr vv = s.vertex_vertices_csr();
+    CHECK(vv.rows() == 4);
+    CHECK((vv.offsets == std::vector<std::uint32_t>{0, 2, 5, 8, 10}));
+    CHECK((vv.row(1).to_vector() == std::vector<std::uint32_t>{3, 2, 0}));
+    CHECK(s.vertex_edges_csr().indices.size() == 10);
+    CHECK(s.vertex_triangles_csr().indices.size() == 6);
+    Csr ff = s.triangle_triangles_csr();
+    CHECK((ff.indices == std::vector<std::uint32_t>{none, 1, none, none, none, 0}));
+
+    che_summary sum2 = s.summary();
+    CHECK(sum2.vertices == 4 && sum2.edges == 5 && sum2.euler_characteristic == 1);
+    CHECK(sum2.genus == 0 && sum2.boundary_curves == 1 && sum2.manifold && sum2.orientable);
+    che_build_report r = s.report();
+    CHECK(r.input_triangles == 2 && r.boundary_edges == 4);
+    CHECK(s.report_examples(CHE_REPORT_KIND_DEGENERATE).empty());
+    che_memory m = s.memory();
+    CHECK(m.half_edge_vertices == 24 && m.positions == 96);
+
+    Surface bow = Surface::from_triangles({0, 1, 2, 0, 3, 4}, 5);
+    CHECK(bow.num_vertices() == 6 && bow.vertex_origins()[5] == 0);
+    CHECK((bow.report_examples(CHE_REPORT_KIND_SPLIT_VERTEX) == std::vector<std::uint32_t>{0}));
+    CHECK(version() == topomesh_version());
+}
+
+int main() {
+    try {
+        test_build_and_counts();
+        test_moves();
+        test_relations_and_ranges();
+        test_views_csr_summary();
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "unexpected exception: %s\n", e.what());
+        return 1;
+    }
+    if (failures) {
+        std::fprintf(stderr, "test_wrapper: %d check(s) failed\n", failures);
+        return 1;
+    }
+    std::printf("test_wrapper: all checks passed\n");
+    return 0;
+}

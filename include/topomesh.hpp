@@ -1,0 +1,498 @@
+// topomesh: header-only C++17 wrapper over the C API (topomesh.h).
+//
+//   topomesh::Surface s = topomesh::Surface::load("bunny.off");
+//   for (topomesh::VertexId w : s.vertices_around(topomesh::VertexId{0})) { ... }
+//
+// - topomesh::Surface owns a che_mesh (move-only RAII); every failing call throws
+//   topomesh::Error (a std::runtime_error carrying the status and the detail).
+// - Ids are strong types (VertexId, EdgeId, TriangleId, HalfEdgeId); an invalid id
+//   (TOPOMESH_NONE) has valid() == false.
+// - Stars are ranges over the C stack iterator: no allocation.
+// - Views are Span<T> (pointer + size) into the structure, valid until the surface is
+//   destroyed or its level changes.
+// - Thread safety is the C API's: const member functions may run concurrently;
+//   build_level() and destruction need exclusive access.
+#ifndef TOPOMESH_HPP
+#define TOPOMESH_HPP
+
+#include "topomesh.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace topomesh {
+
+/// No element: boundary, none, invalid.
+inline constexpr std::uint32_t none = TOPOMESH_NONE;
+
+/// A failed call: the status and the detail of topomesh_last_error().
+class Error : public std::runtime_error {
+public:
+    Error(topomesh_status status, const std::string &detail)
+        : std::runtime_error(std::string(topomesh_status_str(status)) + ": " + detail),
+          status_(status), detail_(detail) {}
+    topomesh_status status() const noexcept { return status_; }
+    const std::string &detail() const noexcept { return detail_; }
+
+private:
+    topomesh_status status_;
+    std::string detail_;
+};
+
+namespace detail {
+
+/// The detail of the last failure on this thread.
+inline std::string last_error() {
+    std::size_t len = 0;
+    if (topomesh_last_error(nullptr, 0, &len) != TOPOMESH_STATUS_OK || len == 0) return {};
+    std::string s(len, '\0');
+    if (topomesh_last_error(&s[0], s.size(), &len) != TOPOMESH_STATUS_OK) return {};
+    s.resize(len - 1);
+    return s;
+}
+
+/// Throws Error unless `s` is OK.
+inline void check(topomesh_status s) {
+    if (s != TOPOMESH_STATUS_OK) throw Error(s, last_error());
+}
+
+} // namespace detail
+
+/// A strongly typed id; `Tag` keeps vertex, edge, triangle and half-edge ids apart.
+template <class Tag> class Id {
+public:
+    constexpr Id() noexcept = default;
+    constexpr explicit Id(std::uint32_t value) noexcept : value_(value) {}
+    constexpr std::uint32_t value() const noexcept { return value_; }
+    constexpr bool valid() const noexcept { return value_ != none; }
+    friend constexpr bool operator==(Id a, Id b) noexcept { return a.value_ == b.value_; }
+    friend constexpr bool operator!=(Id a, Id b) noexcept { return a.value_ != b.value_; }
+    friend constexpr bool operator<(Id a, Id b) noexcept { return a.value_ < b.value_; }
+
+private:
+    std::uint32_t value_ = none;
+};
+
+using VertexId = Id<struct VertexTag>;
+using EdgeId = Id<struct EdgeTag>;
+using TriangleId = Id<struct TriangleTag>;
+using HalfEdgeId = Id<struct HalfEdgeTag>;
+
+/// Half-edge arithmetic (all levels): triangle t owns half-edges 3t, 3t+1, 3t+2.
+constexpr TriangleId triangle_of(HalfEdgeId h) noexcept { return TriangleId{h.value() / 3u}; }
+constexpr HalfEdgeId next(HalfEdgeId h) noexcept {
+    return HalfEdgeId{h.value() % 3u == 2u ? h.value() - 2u : h.value() + 1u};
+}
+constexpr HalfEdgeId prev(HalfEdgeId h) noexcept {
+    return HalfEdgeId{h.value() % 3u == 0u ? h.value() + 2u : h.value() - 1u};
+}
+constexpr HalfEdgeId first_half_edge(TriangleId t) noexcept { return HalfEdgeId{3u * t.value()}; }
+
+/// A read-only view: pointer + size (C++17 has no std::span).
+template <class T> class Span {
+public:
+    using value_type = T;
+    using iterator = const T *;
+    constexpr Span() noexcept = default;
+    constexpr Span(const T *data, std::size_t size) noexcept : data_(data), size_(size) {}
+    constexpr const T *data() const noexcept { return data_; }
+    constexpr std::size_t size() const noexcept { return size_; }
+    constexpr bool empty() const noexcept { return size_ == 0; }
+    constexpr const T *begin() const noexcept { return data_; }
+    constexpr const T *end() const noexcept { return data_ + size_; }
+    constexpr const T &operator[](std::size_t i) const noexcept { return data_[i]; }
+    const T &at(std::size_t i) const {
+        if (i >= size_) throw std::out_of_range("topomesh::Span::at");
+        return data_[i];
+    }
+    std::vector<T> to_vector() const { return std::vector<T>(begin(), end()); }
+
+private:
+    const T *data_ = nullptr;
+    std::size_t size_ = 0;
+};
+
+/// Up to N ids without allocation (edge triangles, edge wings).
+template <class T, std::size_t N> class SmallIds {
+public:
+    const T *begin() const noexcept { return ids_.data(); }
+    const T *end() const noexcept { return ids_.data() + size_; }
+    std::size_t size() const noexcept { return size_; }
+    bool empty() const noexcept { return size_ == 0; }
+    const T &operator[](std::size_t i) const noexcept { return ids_[i]; }
+    void push_back(T id) noexcept { ids_[size_++] = id; }
+
+private:
+    std::array<T, N> ids_{};
+    std::size_t size_ = 0;
+};
+
+/// One step of a rotation around a vertex v (see che_star_step): the outgoing half-edge
+/// v -> vertex, its edge and triangle; on a boundary vertex, a last step for the incoming
+/// boundary half-edge (vertex -> v) with an invalid triangle.
+struct StarStep {
+    HalfEdgeId half_edge;
+    VertexId vertex;
+    EdgeId edge;
+    TriangleId triangle;
+    /// The closing step of a boundary vertex (no triangle).
+    bool closing() const noexcept { return !triangle.valid(); }
+};
+
+/// A range over the star of a vertex, on the C stack iterator. `Proj` picks what each
+/// step yields; steps without a triangle are skipped when `SkipClosing`.
+template <class Proj, bool SkipClosing> class StarRange {
+public:
+    using value_type = decltype(Proj{}(StarStep{}));
+
+    struct Sentinel {};
+
+    class Iterator {
+    public:
+        using iterator_category = std::input_iterator_tag;
+        using value_type = StarRange::value_type;
+        using difference_type = std::ptrdiff_t;
+        using pointer = void;
+        using reference = value_type;
+
+        value_type operator*() const { return Proj{}(current_); }
+        Iterator &operator++() {
+            advance();
+            return *this;
+        }
+        void operator++(int) { advance(); }
+        friend bool operator==(const Iterator &it, Sentinel) noexcept { return it.done_; }
+        friend bool operator!=(const Iterator &it, Sentinel) noexcept { return !it.done_; }
+        friend bool operator==(Sentinel, const Iterator &it) noexcept { return it.done_; }
+        friend bool operator!=(Sentinel, const Iterator &it) noexcept { return !it.done_; }
+
+    private:
+        friend class StarRange;
+        Iterator(const che_mesh *m, VertexId v) {
+            detail::check(che_star_begin(m, v.value(), &it_));
+            advance();
+        }
+        void advance() {
+            che_star_step s;
+            do {
+                if (!che_star_next(&it_, &s)) {
+                    done_ = true;
+                    return;
+                }
+            } while (SkipClosing && s.triangle == none);
+            current_ = StarStep{HalfEdgeId{s.half_edge}, VertexId{s.vertex}, EdgeId{s.edge},
+                                TriangleId{s.triangle}};
+        }
+        che_star_iter it_{};
+        StarStep current_{};
+        bool done_ = false;
+    };
+
+    StarRange(const che_mesh *m, VertexId v) noexcept : m_(m), v_(v) {}
+    /// Throws Error when the vertex is out of range.
+    Iterator begin() const { return Iterator(m_, v_); }
+    Sentinel end() const noexcept { return {}; }
+
+    /// The whole range as a vector.
+    std::vector<value_type> to_vector() const {
+        std::vector<value_type> out;
+        for (auto it = begin(); it != end(); ++it) out.push_back(*it);
+        return out;
+    }
+
+private:
+    const che_mesh *m_;
+    VertexId v_;
+};
+
+namespace detail {
+struct StepOf {
+    StarStep operator()(const StarStep &s) const noexcept { return s; }
+};
+struct VertexOf {
+    VertexId operator()(const StarStep &s) const noexcept { return s.vertex; }
+};
+struct EdgeOf {
+    EdgeId operator()(const StarStep &s) const noexcept { return s.edge; }
+};
+struct TriangleOf {
+    TriangleId operator()(const StarStep &s) const noexcept { return s.triangle; }
+};
+} // namespace detail
+
+using Star = StarRange<detail::StepOf, false>;
+using VerticesAround = StarRange<detail::VertexOf, false>;
+using EdgesAround = StarRange<detail::EdgeOf, false>;
+using TrianglesAround = StarRange<detail::TriangleOf, true>;
+
+/// A bulk relation in compressed sparse rows: row i is indices[offsets[i] .. offsets[i+1]].
+struct Csr {
+    std::vector<std::uint32_t> offsets;
+    std::vector<std::uint32_t> indices;
+    std::size_t rows() const noexcept { return offsets.empty() ? 0 : offsets.size() - 1; }
+    Span<std::uint32_t> row(std::size_t i) const {
+        return Span<std::uint32_t>(indices.data() + offsets.at(i), offsets.at(i + 1) - offsets[i]);
+    }
+};
+
+/// Build options: the level (0..3) and strict mode (non-manifold input is an error).
+struct Options {
+    std::uint32_t level = 2;
+    bool strict = false;
+};
+
+/// A triangle surface in the Compact Half-Edge structure (owns a che_mesh).
+class Surface {
+public:
+    using Options = topomesh::Options;
+
+    /// From a flat triangle array (3 ids per triangle) over `n_vertices` vertices;
+    /// `positions` is NULL or 3 doubles per vertex.
+    static Surface from_triangles(const std::uint32_t *triangles, std::size_t n_triangles,
+                                  std::size_t n_vertices, const double *positions = nullptr,
+                                  Options options = {}) {
+        che_build_options o{options.level, options.strict};
+        che_mesh *m = nullptr;
+        detail::check(che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions,
+                                                 &o, &m));
+        return Surface(m);
+    }
+
+    /// From vectors: `triangles.size()` a multiple of 3; `positions` empty or 3 per vertex.
+    static Surface from_triangles(const std::vector<std::uint32_t> &triangles,
+                                  std::size_t n_vertices,
+                                  const std::vector<double> &positions = {},
+                                  Options options = {}) {
+        if (triangles.size() % 3 != 0)
+            throw Error(TOPOMESH_STATUS_INVALID_INPUT,
+                        "triangle array has " + std::to_string(triangles.size()) +
+                            " ids, not a multiple of 3");
+        if (!positions.empty() && positions.size() != 3 * n_vertices)
+            throw Error(TOPOMESH_STATUS_INVALID_INPUT,
+                        std::to_string(positions.size()) + " coordinates given for " +
+                            std::to_string(n_vertices) + " vertices");
+        return from_triangles(triangles.data(), triangles.size() / 3, n_vertices,
+                              positions.empty() ? nullptr : positions.data(), options);
+    }
+
+    /// Reads a surface file (.off .obj .ply .stl ...).
+    static Surface load(const std::string &path, Options options = {}) {
+        che_build_options o{options.level, options.strict};
+        che_mesh *m = nullptr;
+        detail::check(che_mesh_load_ex(path.c_str(), &o, &m));
+        return Surface(m);
+    }
+
+    /// Takes ownership of a handle from the C API.
+    explicit Surface(che_mesh *adopt) noexcept : m_(adopt) {}
+    Surface(const Surface &) = delete;
+    Surface &operator=(const Surface &) = delete;
+    Surface(Surface &&other) noexcept : m_(std::exchange(other.m_, nullptr)) {}
+    Surface &operator=(Surface &&other) noexcept {
+        if (this != &other) {
+            che_mesh_free(m_);
+            m_ = std::exchange(other.m_, nullptr);
+        }
+        return *this;
+    }
+    ~Surface() { che_mesh_free(m_); }
+
+    const che_mesh *handle() const noexcept { return m_; }
+    che_mesh *handle() noexcept { return m_; }
+    /// Gives up ownership; the caller frees with che_mesh_free.
+    che_mesh *release() noexcept { return std::exchange(m_, nullptr); }
+
+    // Level and counts.
+    std::uint32_t level() const noexcept { return che_mesh_level(m_); }
+    /// Raises or lowers the level; invalidates views.
+    void build_level(std::uint32_t level) { detail::check(che_mesh_build_level(m_, level)); }
+    std::size_t num_vertices() const noexcept { return che_mesh_num_vertices(m_); }
+    std::size_t num_input_vertices() const noexcept { return che_mesh_num_input_vertices(m_); }
+    std::size_t num_triangles() const noexcept { return che_mesh_num_triangles(m_); }
+    std::size_t num_edges() const noexcept { return che_mesh_num_edges(m_); }
+    std::size_t num_half_edges() const noexcept { return che_mesh_num_half_edges(m_); }
+    std::size_t num_boundary_curves() const noexcept { return che_mesh_num_boundary_curves(m_); }
+
+    // Stars: ranges over the C stack iterator (counter-clockwise seen from outside).
+    Star star(VertexId v) const noexcept { return Star(m_, v); }
+    VerticesAround vertices_around(VertexId v) const noexcept { return VerticesAround(m_, v); }
+    EdgesAround edges_around(VertexId v) const noexcept { return EdgesAround(m_, v); }
+    TrianglesAround triangles_around(VertexId v) const noexcept {
+        return TrianglesAround(m_, v);
+    }
+
+    // Fixed-size relations.
+    std::array<VertexId, 2> edge_vertices(EdgeId e) const {
+        auto ids = fixed<2>(che_edge_vertices, e.value());
+        return {VertexId{ids[0]}, VertexId{ids[1]}};
+    }
+    SmallIds<TriangleId, 2> edge_triangles(EdgeId e) const {
+        return small<TriangleId, 2>(che_edge_triangles, e.value());
+    }
+    SmallIds<EdgeId, 4> edge_edges(EdgeId e) const {
+        return small<EdgeId, 4>(che_edge_edges, e.value());
+    }
+    std::array<VertexId, 3> triangle_vertices(TriangleId t) const {
+        auto ids = fixed<3>(che_triangle_vertices, t.value());
+        return {VertexId{ids[0]}, VertexId{ids[1]}, VertexId{ids[2]}};
+    }
+    std::array<EdgeId, 3> triangle_edges(TriangleId t) const {
+        auto ids = fixed<3>(che_triangle_edges, t.value());
+        return {EdgeId{ids[0]}, EdgeId{ids[1]}, EdgeId{ids[2]}};
+    }
+    /// The triangle across each edge; invalid across a boundary edge.
+    std::array<TriangleId, 3> triangle_triangles(TriangleId t) const {
+        auto ids = fixed<3>(che_triangle_triangles, t.value());
+        return {TriangleId{ids[0]}, TriangleId{ids[1]}, TriangleId{ids[2]}};
+    }
+    /// The vertices of boundary curve `curve`, in order.
+    std::vector<VertexId> boundary_curve_vertices(std::uint32_t curve) const {
+        std::size_t len = 0;
+        detail::check(che_boundary_curve_vertices(m_, curve, nullptr, 0, &len));
+        std::vector<std::uint32_t> raw(len);
+        detail::check(che_boundary_curve_vertices(m_, curve, raw.data(), raw.size(), &len));
+        std::vector<VertexId> out;
+        out.reserve(len);
+        for (std::uint32_t x : raw) out.emplace_back(x);
+        return out;
+    }
+
+    // Half-edge helpers and boundary tests.
+    HalfEdgeId opposite(HalfEdgeId h) const {
+        return HalfEdgeId{value(che_half_edge_opposite, h.value())};
+    }
+    EdgeId edge(HalfEdgeId h) const { return EdgeId{value(che_half_edge_edge, h.value())}; }
+    /// The boundary curve of h, or `none`.
+    std::uint32_t curve(HalfEdgeId h) const { return value(che_half_edge_curve, h.value()); }
+    HalfEdgeId half_edge(VertexId v) const {
+        return HalfEdgeId{value(che_vertex_half_edge, v.value())};
+    }
+    HalfEdgeId half_edge(EdgeId e) const {
+        return HalfEdgeId{value(che_edge_half_edge, e.value())};
+    }
+    VertexId origin(HalfEdgeId h) const {
+        Span<std::uint32_t> v = half_edge_vertices();
+        return VertexId{v.at(h.value())};
+    }
+    VertexId target(HalfEdgeId h) const { return origin(next(h)); }
+    bool is_boundary(VertexId v) const {
+        bool b = false;
+        detail::check(che_vertex_is_boundary(m_, v.value(), &b));
+        return b;
+    }
+    bool is_boundary(EdgeId e) const {
+        bool b = false;
+        detail::check(che_edge_is_boundary(m_, e.value(), &b));
+        return b;
+    }
+
+    // Zero-copy views (empty below the level that stores them).
+    Span<std::uint32_t> half_edge_vertices() const { return view(che_mesh_half_edge_vertices); }
+    Span<std::uint32_t> opposites() const { return view(che_mesh_opposites); }
+    Span<std::uint32_t> vertex_half_edges() const { return view(che_mesh_vertex_half_edges); }
+    Span<std::uint32_t> edge_half_edges() const { return view(che_mesh_edge_half_edges); }
+    Span<std::uint32_t> curve_half_edges() const { return view(che_mesh_curve_half_edges); }
+    Span<std::uint32_t> vertex_origins() const { return view(che_mesh_vertex_origins); }
+    Span<std::uint32_t> triangle_origins() const { return view(che_mesh_triangle_origins); }
+    /// x, y, z per vertex; empty without positions.
+    Span<double> positions() const {
+        std::size_t len = 0;
+        const double *p = che_mesh_positions(m_, &len);
+        return Span<double>(p, p ? len : 0);
+    }
+
+    // Bulk relations.
+    Csr vertex_vertices_csr() const { return csr(che_mesh_vertex_vertices_csr); }
+    Csr vertex_edges_csr() const { return csr(che_mesh_vertex_edges_csr); }
+    Csr vertex_triangles_csr() const { return csr(che_mesh_vertex_triangles_csr); }
+    Csr triangle_triangles_csr() const { return csr(che_mesh_triangle_triangles_csr); }
+
+    // Summary, build report, memory.
+    che_summary summary() const {
+        che_summary s{};
+        detail::check(che_mesh_summary(m_, &s));
+        return s;
+    }
+    che_build_report report() const {
+        che_build_report r{};
+        detail::check(che_mesh_report(m_, &r));
+        return r;
+    }
+    std::vector<std::uint32_t> report_examples(che_report_kind kind) const {
+        std::size_t len = 0;
+        detail::check(che_mesh_report_examples(m_, kind, nullptr, 0, &len));
+        std::vector<std::uint32_t> out(len);
+        detail::check(che_mesh_report_examples(m_, kind, out.data(), out.size(), &len));
+        return out;
+    }
+    che_memory memory() const {
+        che_memory mem{};
+        detail::check(che_mesh_memory(m_, &mem));
+        return mem;
+    }
+
+private:
+    using RelationFn = topomesh_status (*)(const che_mesh *, std::uint32_t, std::uint32_t *,
+                                           std::size_t, std::size_t *);
+    using ValueFn = topomesh_status (*)(const che_mesh *, std::uint32_t, std::uint32_t *);
+    using ViewFn = const std::uint32_t *(*)(const che_mesh *, std::size_t *);
+    using CsrFn = topomesh_status (*)(const che_mesh *, std::uint32_t *, std::size_t,
+                                      std::uint32_t *, std::size_t, std::size_t *,
+                                      std::size_t *);
+
+    template <std::size_t N> std::array<std::uint32_t, N> fixed(RelationFn f, std::uint32_t id) const {
+        std::array<std::uint32_t, N> ids{};
+        std::size_t len = 0;
+        detail::check(f(m_, id, ids.data(), N, &len));
+        return ids;
+    }
+    template <class T, std::size_t N> SmallIds<T, N> small(RelationFn f, std::uint32_t id) const {
+        std::array<std::uint32_t, N> ids{};
+        std::size_t len = 0;
+        detail::check(f(m_, id, ids.data(), N, &len));
+        SmallIds<T, N> out;
+        for (std::size_t i = 0; i < len; i++) out.push_back(T{ids[i]});
+        return out;
+    }
+    std::uint32_t value(ValueFn f, std::uint32_t id) const {
+        std::uint32_t out = none;
+        detail::check(f(m_, id, &out));
+        return out;
+    }
+    Span<std::uint32_t> view(ViewFn f) const {
+        std::size_t len = 0;
+        const std::uint32_t *p = f(m_, &len);
+        return Span<std::uint32_t>(p, p ? len : 0);
+    }
+    Csr csr(CsrFn f) const {
+        std::size_t n_offsets = 0, n_indices = 0;
+        detail::check(f(m_, nullptr, 0, nullptr, 0, &n_offsets, &n_indices));
+        Csr out;
+        out.offsets.resize(n_offsets);
+        out.indices.resize(n_indices);
+        // A NULL data() of an empty vector is fine: the capacities say 0 is enough.
+        std::uint32_t dummy = 0;
+        detail::check(f(m_, out.offsets.empty() ? &dummy : out.offsets.data(), n_offsets,
+                        out.indices.empty() ? &dummy : out.indices.data(), n_indices,
+                        &n_offsets, &n_indices));
+        return out;
+    }
+
+    che_mesh *m_ = nullptr;
+};
+
+/// The structure's name in the papers.
+using Che = Surface;
+
+/// The library version ("0.1.0").
+inline std::string version() { return topomesh_version(); }
+
+} // namespace topomesh
+
+#endif // TOPOMESH_HPP

@@ -1,0 +1,254 @@
+//! Making, freeing and re-levelling `che_mesh` handles, and their counts.
+
+use super::boundary::{
+    cstr_arg, free_handle, guard, guard_or, handle, handle_mut, handle_out, new_handle, slice_arg,
+};
+use super::che::{CheBuildOptions, CheMesh, level_arg};
+use super::status::Status;
+use crate::che::{BuildOptions, Che, MAX_TRIANGLES};
+use crate::error::{Error, Result};
+use glam::DVec3;
+use std::ffi::c_char;
+
+// Positions arrive as `3 * n` doubles and are viewed as `n` `DVec3` without a copy.
+const _: () = {
+    assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
+    assert!(std::mem::align_of::<DVec3>() == std::mem::align_of::<f64>());
+};
+
+/// Builds from C arrays (sizes checked before any slice is made).
+///
+/// # Safety
+/// `triangles` is NULL or holds `3 * n_triangles` ids; `positions` is NULL or holds
+/// `3 * n_vertices` doubles.
+unsafe fn build(
+    triangles: *const u32,
+    n_triangles: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    options: BuildOptions,
+) -> Result<CheMesh> {
+    if n_triangles > MAX_TRIANGLES {
+        return Err(Error::too_large(format!(
+            "{n_triangles} triangles: half-edge ids must fit below 2^32 - 1 \
+             (at most {MAX_TRIANGLES} triangles)"
+        )));
+    }
+    if n_vertices >= u32::MAX as usize {
+        return Err(Error::too_large(format!(
+            "{n_vertices} vertices: ids must fit below 2^32 - 1"
+        )));
+    }
+    // SAFETY: sizes bounded above (far below isize::MAX bytes); the caller contract covers
+    // the pointers. `DVec3` is `repr(C)` with three `f64` (asserted above).
+    let (flat, points) = unsafe {
+        let flat = slice_arg(triangles, 3 * n_triangles, "triangles")?;
+        let points: &[DVec3] = if positions.is_null() {
+            &[]
+        } else {
+            slice_arg(positions.cast::<DVec3>(), n_vertices, "positions")?
+        };
+        (flat, points)
+    };
+    Ok(CheMesh::new(Che::from_flat(
+        flat, n_vertices, points, options,
+    )?))
+}
+
+/// Builds a CHE at `level` (0..3) from `n_triangles` triangles (3 vertex ids each, over
+/// vertices `0..n_vertices`). `positions` may be NULL; otherwise it holds 3 doubles (x, y,
+/// z) per input vertex. `triangles` may be NULL when `n_triangles == 0`.
+///
+/// Input vertex ids are kept; copies made by splitting non-manifold vertices are appended
+/// after them (see `che_mesh_vertex_origins`). Input triangle order is kept; degenerate
+/// triangles (a repeated id) are dropped (see `che_mesh_triangle_origins`). Every
+/// component is oriented consistently; `che_mesh_report` says what was changed.
+/// Non-manifold input is repaired (see `che_mesh_from_triangles_ex` for strict mode).
+/// A triangle naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`; more
+/// than 2^32 - 2 vertices or 1431655765 triangles `TOPOMESH_STATUS_TOO_LARGE`. `*out` is
+/// NULL on failure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_from_triangles(
+    triangles: *const u32,
+    n_triangles: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    level: u32,
+    out: *mut *mut CheMesh,
+) -> Status {
+    let options = CheBuildOptions {
+        level,
+        ..CheBuildOptions::default()
+    };
+    // SAFETY: the same contract as the `_ex` variant; `options` is a local.
+    unsafe {
+        che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &options, out)
+    }
+}
+
+/// `che_mesh_from_triangles` with options (NULL: `che_build_options_default()`). With
+/// `strict`, non-manifold input fails with `TOPOMESH_STATUS_NON_MANIFOLD`, the detail
+/// naming the offending edge and triangles, or vertex.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_from_triangles_ex(
+    triangles: *const u32,
+    n_triangles: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    options: *const CheBuildOptions,
+    out: *mut *mut CheMesh,
+) -> Status {
+    guard(|| {
+        // SAFETY: caller contract: `out` is NULL or writable, `options` NULL or readable,
+        // the arrays NULL or of the stated sizes.
+        unsafe {
+            let out = handle_out(out, "out")?;
+            let options = options.as_ref().copied().unwrap_or_default().to_core()?;
+            let mesh = build(triangles, n_triangles, n_vertices, positions, options)?;
+            new_handle(mesh, &out);
+        }
+        Ok(())
+    })
+}
+
+/// Reads a surface file (the format from the extension: .off .obj .ply .stl; also .mesh
+/// .msh .vtk when they hold triangles only) and builds it at `level`. A missing or
+/// unreadable file gives `TOPOMESH_STATUS_IO`, a malformed one `TOPOMESH_STATUS_PARSE`
+/// (the detail names the file and line), a file holding tetrahedra
+/// `TOPOMESH_STATUS_INVALID_INPUT`. `*out` is NULL on failure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_load(
+    path: *const c_char,
+    level: u32,
+    out: *mut *mut CheMesh,
+) -> Status {
+    let options = CheBuildOptions {
+        level,
+        ..CheBuildOptions::default()
+    };
+    // SAFETY: the same contract as the `_ex` variant; `options` is a local.
+    unsafe { che_mesh_load_ex(path, &options, out) }
+}
+
+/// `che_mesh_load` with options (NULL: `che_build_options_default()`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_load_ex(
+    path: *const c_char,
+    options: *const CheBuildOptions,
+    out: *mut *mut CheMesh,
+) -> Status {
+    guard(|| {
+        // SAFETY: caller contract: `out` NULL or writable, `options` NULL or readable,
+        // `path` NULL or NUL-terminated.
+        let (out, options, path) = unsafe {
+            (
+                handle_out(out, "out")?,
+                options.as_ref().copied().unwrap_or_default().to_core()?,
+                cstr_arg(path, "path")?,
+            )
+        };
+        let path = std::path::Path::new(
+            <std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(path.to_bytes()),
+        );
+        let data = crate::io::read(path)?;
+        if data.is_volume() {
+            return Err(Error::invalid(format!(
+                "{}: holds {} tetrahedra (a volume mesh), not a surface",
+                path.display(),
+                data.tetrahedra.len()
+            )));
+        }
+        let che = Che::from_triangles(
+            &data.triangles,
+            data.num_vertices(),
+            &data.positions,
+            options,
+        )?;
+        new_handle(CheMesh::new(che), &out);
+        Ok(())
+    })
+}
+
+/// Frees a mesh; NULL is a no-op. Needs exclusive access.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_free(m: *mut CheMesh) {
+    // Dropping plain vectors cannot panic; guard anyway so that nothing ever unwinds.
+    guard(|| {
+        // SAFETY: caller contract: NULL or a live handle, freed once.
+        unsafe { free_handle(m) };
+        Ok(())
+    });
+}
+
+/// Raises or lowers the level (0..3) in place. Ids never change with the level; views
+/// obtained before are invalid afterwards. Needs exclusive access.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_build_level(m: *mut CheMesh, level: u32) -> Status {
+    guard(|| {
+        // SAFETY: caller contract: NULL or a live handle, not shared during the call.
+        let m = unsafe { handle_mut(m, "m")? };
+        m.che.build_level(level_arg(level)?)
+    })
+}
+
+/// Runs a count on a handle; NULL gives 0.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+unsafe fn count(m: *const CheMesh, f: impl FnOnce(&Che) -> usize) -> usize {
+    guard_or(0, || {
+        // SAFETY: forwarded contract.
+        let m = unsafe { handle(m, "m")? };
+        Ok(f(&m.che))
+    })
+}
+
+/// The current level (0..3); 0 for NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_level(m: *const CheMesh) -> u32 {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, |c| c.level() as usize) as u32 }
+}
+
+/// Vertices of the structure: the input vertices, then the copies made by splitting
+/// non-manifold vertices. 0 for NULL (and likewise for the other counts).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_vertices(m: *const CheMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Che::num_vertices) }
+}
+
+/// Vertices given as input (ids `0..n` of the structure are the same vertices).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_input_vertices(m: *const CheMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Che::num_input_vertices) }
+}
+
+/// Triangles kept (degenerate input triangles are dropped).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_triangles(m: *const CheMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Che::num_triangles) }
+}
+
+/// Edges of the structure (the edges of a non-manifold edge count once per triangle).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_edges(m: *const CheMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Che::num_edges) }
+}
+
+/// Half-edges: 3 per triangle.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_half_edges(m: *const CheMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Che::num_half_edges) }
+}
+
+/// Boundary curves of the structure (O(1) at level 3, O(T) below).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_boundary_curves(m: *const CheMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Che::num_boundary_curves) }
+}

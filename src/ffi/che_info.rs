@@ -1,0 +1,238 @@
+//! What a mesh is (topology summary), what its build did (report) and what it costs
+//! (memory per container).
+
+use super::boundary::{ids_answer, value_answer};
+use super::che::CheMesh;
+use super::status::Status;
+use crate::che::{BuildReport, Memory, Summary};
+use crate::error::Error;
+
+/// The topology of the input complex as given (input vertices, unique input edges, kept
+/// triangles), and what the build did. Field names match the CLI's JSON.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CheSummary {
+    pub vertices: u64,
+    pub edges: u64,
+    pub triangles: u64,
+    /// Edges with exactly one triangle.
+    pub boundary_edges: u64,
+    /// Connected components of the boundary edges (for a manifold, the boundary loops).
+    pub boundary_curves: u64,
+    /// Connected components of the triangles (joined through shared vertices).
+    pub components: u64,
+    pub isolated_vertices: u64,
+    /// V - E + F of the input complex (isolated vertices count).
+    pub euler_characteristic: i64,
+    /// Sum of the component genera; -1 where undefined (non-manifold or non-orientable).
+    pub genus: i64,
+    pub orientable: bool,
+    pub manifold: bool,
+    pub dropped_degenerate: u64,
+    pub non_manifold_edges: u64,
+    pub split_vertices: u64,
+    pub flipped_triangles: u64,
+    pub non_orientable_components: u64,
+}
+
+impl From<Summary> for CheSummary {
+    fn from(s: Summary) -> Self {
+        CheSummary {
+            vertices: s.vertices,
+            edges: s.edges,
+            triangles: s.triangles,
+            boundary_edges: s.boundary_edges,
+            boundary_curves: s.boundary_curves,
+            components: s.components,
+            isolated_vertices: s.isolated_vertices,
+            euler_characteristic: s.euler_characteristic,
+            genus: s.genus,
+            orientable: s.orientable,
+            manifold: s.manifold,
+            dropped_degenerate: s.dropped_degenerate,
+            non_manifold_edges: s.non_manifold_edges,
+            split_vertices: s.split_vertices,
+            flipped_triangles: s.flipped_triangles,
+            non_orientable_components: s.non_orientable_components,
+        }
+    }
+}
+
+/// The topology summary into `*out`. O(T) at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_summary(m: *const CheMesh, out: *mut CheSummary) -> Status {
+    // SAFETY: caller contract.
+    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.summary().into())) }
+}
+
+/// What the build did to its input (counts; `che_mesh_report_examples` gives ids).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CheBuildReport {
+    /// Triangles given.
+    pub input_triangles: u64,
+    /// Vertices given (the structure may hold more after splitting).
+    pub input_vertices: u64,
+    /// Triangles with a repeated vertex id, dropped.
+    pub dropped_degenerate: u64,
+    /// Pairs of triangles with the same three vertices (kept).
+    pub duplicate_triangles: u64,
+    /// Unique input edges.
+    pub input_edges: u64,
+    /// Input edges with one triangle.
+    pub boundary_edges: u64,
+    /// Input edges with three or more triangles (their half-edges stay unpaired).
+    pub non_manifold_edges: u64,
+    /// Input vertices whose star is several fans (split into one copy per fan).
+    pub split_vertices: u64,
+    /// Input vertices split only because a non-orientable seam crosses them.
+    pub seam_split_vertices: u64,
+    /// Vertex copies appended after the input vertices.
+    pub added_vertices: u64,
+    /// Triangles whose orientation was reversed to agree with their neighbours.
+    pub flipped_triangles: u64,
+    /// Components that cannot be oriented.
+    pub non_orientable_components: u64,
+    /// Edges left unpaired on the seams of non-orientable components.
+    pub seam_edges: u64,
+}
+
+impl From<&BuildReport> for CheBuildReport {
+    fn from(r: &BuildReport) -> Self {
+        let n = |x: usize| x as u64;
+        CheBuildReport {
+            input_triangles: n(r.input_triangles),
+            input_vertices: n(r.input_vertices),
+            dropped_degenerate: n(r.dropped_degenerate),
+            duplicate_triangles: n(r.duplicate_triangles),
+            input_edges: n(r.input_edges),
+            boundary_edges: n(r.boundary_edges),
+            non_manifold_edges: n(r.non_manifold_edges),
+            split_vertices: n(r.split_vertices),
+            seam_split_vertices: n(r.seam_split_vertices),
+            added_vertices: n(r.added_vertices),
+            flipped_triangles: n(r.flipped_triangles),
+            non_orientable_components: n(r.non_orientable_components),
+            seam_edges: n(r.seam_edges),
+        }
+    }
+}
+
+/// The build report into `*out`. O(1).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_report(m: *const CheMesh, out: *mut CheBuildReport) -> Status {
+    // SAFETY: caller contract.
+    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.report().into())) }
+}
+
+/// Which offending ids `che_mesh_report_examples` returns (at most 16 items of each kind,
+/// input ids).
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheReportKind {
+    /// Input triangles dropped as degenerate (one id each).
+    Degenerate = 0,
+    /// Pairs of input triangles with the same vertices (two ids each).
+    Duplicate = 1,
+    /// Non-manifold edges as input vertex pairs (two ids each, smaller first).
+    NonManifoldEdge = 2,
+    /// Input vertices split because their star is several fans (one id each).
+    SplitVertex = 3,
+    /// One input triangle of each non-orientable component (one id each).
+    NonOrientable = 4,
+}
+
+impl CheReportKind {
+    fn from_raw(k: u32) -> Option<Self> {
+        use CheReportKind::*;
+        [
+            Degenerate,
+            Duplicate,
+            NonManifoldEdge,
+            SplitVertex,
+            NonOrientable,
+        ]
+        .into_iter()
+        .find(|&x| x as u32 == k)
+    }
+}
+
+/// The first offending ids of one kind (a `che_report_kind` value), flattened, into `buf`
+/// (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_report_examples(
+    m: *const CheMesh,
+    kind: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract.
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m, s| {
+            let r = m.che.report();
+            let kind = CheReportKind::from_raw(kind).ok_or_else(|| {
+                Error::out_of_range(format!(
+                    "report kind {kind} is not a che_report_kind (0..4)"
+                ))
+            })?;
+            match kind {
+                CheReportKind::Degenerate => s.extend(r.degenerate_examples.iter().copied()),
+                CheReportKind::Duplicate => {
+                    s.extend(r.duplicate_examples.iter().flatten().copied())
+                }
+                CheReportKind::NonManifoldEdge => {
+                    s.extend(r.non_manifold_edge_examples.iter().flatten().copied())
+                }
+                CheReportKind::SplitVertex => s.extend(r.split_vertex_examples.iter().copied()),
+                CheReportKind::NonOrientable => s.extend(r.non_orientable_examples.iter().copied()),
+            }
+            Ok(())
+        })
+    }
+}
+
+/// Bytes held by each container (lengths, not capacities).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CheMemory {
+    /// `V`, level 0.
+    pub half_edge_vertices: u64,
+    /// `O`, level 1.
+    pub opposites: u64,
+    /// `VH`, level 2.
+    pub vertex_half_edges: u64,
+    /// `EH` and the edge rank bits, level 2.
+    pub edges: u64,
+    /// `CH` and the curve lookup, level 3.
+    pub curves: u64,
+    /// The sum of the above: the topology.
+    pub topology: u64,
+    /// Positions (not topology).
+    pub positions: u64,
+    /// Origin maps and non-manifold and seam flags kept by the core (not topology).
+    pub maps: u64,
+}
+
+impl From<Memory> for CheMemory {
+    fn from(m: Memory) -> Self {
+        let n = |x: usize| x as u64;
+        CheMemory {
+            half_edge_vertices: n(m.half_edge_vertices),
+            opposites: n(m.opposites),
+            vertex_half_edges: n(m.vertex_half_edges),
+            edges: n(m.edges),
+            curves: n(m.curves),
+            topology: n(m.topology),
+            positions: n(m.positions),
+            maps: n(m.maps),
+        }
+    }
+}
+
+/// Memory per container into `*out`. O(1).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_memory(m: *const CheMesh, out: *mut CheMemory) -> Status {
+    // SAFETY: caller contract.
+    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.memory_bytes().into())) }
+}

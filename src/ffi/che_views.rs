@@ -1,0 +1,123 @@
+//! Zero-copy views of the containers. Each returns a pointer to the first element and
+//! writes the element count to `*len` (when `len` is not NULL); NULL (and `*len = 0`) when
+//! the handle is NULL or the container does not exist at the current level. A view is
+//! valid until the mesh is freed or its level changes (`che_mesh_build_level`). An empty
+//! container may be returned as a non-NULL pointer with `*len == 0`.
+
+use super::boundary::{guard_or, handle};
+use super::che::CheMesh;
+use glam::DVec3;
+use std::ptr;
+
+/// Points as their coordinates.
+fn flat(points: &[DVec3]) -> &[f64] {
+    const _: () = assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
+    // SAFETY: `DVec3` is `repr(C)` with three `f64` fields and no padding (asserted), so `n`
+    // points are `3 n` contiguous, aligned doubles borrowed for the same lifetime.
+    unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f64>(), 3 * points.len()) }
+}
+
+/// Shared body of the views.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `len` NULL or valid for one write.
+unsafe fn view<T>(
+    m: *const CheMesh,
+    len: *mut usize,
+    f: impl FnOnce(&CheMesh) -> Option<&[T]>,
+) -> *const T {
+    let (p, n) = guard_or((ptr::null(), 0), || {
+        // SAFETY: forwarded contract.
+        let m = unsafe { handle(m, "m")? };
+        Ok(f(m).map_or((ptr::null(), 0), |s| (s.as_ptr(), s.len())))
+    });
+    if !len.is_null() {
+        // SAFETY: non-NULL, valid for one write (contract).
+        unsafe { len.write(n) };
+    }
+    p
+}
+
+/// `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
+/// `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_half_edge_vertices(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| Some(m.che.half_edge_vertices())) }
+}
+
+/// `O`: the opposite of every half-edge (`TOPOMESH_NONE` on the boundary). NULL below
+/// level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_opposites(m: *const CheMesh, len: *mut usize) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.che.opposites()) }
+}
+
+/// `VH`: one outgoing half-edge per vertex, the boundary one on a boundary vertex,
+/// `TOPOMESH_NONE` for an isolated vertex. NULL below level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_vertex_half_edges(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.che.vertex_half_edges()) }
+}
+
+/// `EH`: the canonical half-edge of every edge (the boundary one on a boundary edge).
+/// NULL below level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_edge_half_edges(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.che.edge_half_edges()) }
+}
+
+/// `CH`: one boundary half-edge per boundary curve (its smallest). NULL below level 3.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_curve_half_edges(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.che.curve_half_edges()) }
+}
+
+/// Positions: x, y, z per structure vertex (copies repeat their origin's position);
+/// `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_positions(m: *const CheMesh, len: *mut usize) -> *const f64 {
+    // SAFETY: caller contract.
+    unsafe {
+        view(m, len, |m| {
+            let p = m.che.positions();
+            (!p.is_empty()).then(|| flat(p))
+        })
+    }
+}
+
+/// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
+/// vertices, then the origin of each split copy). Materialised on first use when it is the
+/// identity; then kept with the mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_vertex_origins(m: *const CheMesh, len: *mut usize) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| Some(m.vertex_origins())) }
+}
+
+/// Structure triangle -> input triangle (`num_triangles` entries; increasing, with gaps
+/// where degenerate triangles were dropped).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_triangle_origins(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| Some(m.triangle_origins())) }
+}

@@ -1,0 +1,122 @@
+//! Status codes, the thread-local last-error detail and the library version.
+
+use super::boundary::{self, Out};
+use std::ffi::c_char;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+/// What a call did. `TOPOMESH_STATUS_OK` (0) is success; every other value is an error
+/// whose detail (file, line, element id, sizes) `topomesh_last_error` gives.
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Status {
+    /// Success.
+    Ok = 0,
+    /// A required pointer argument was NULL.
+    NullArgument = 1,
+    /// An id (vertex, edge, triangle, half-edge, curve) or a level was out of range.
+    OutOfRange = 2,
+    /// The input is not acceptable (unknown file format, a volume file where a surface was
+    /// expected, positions not matching the vertices, ...).
+    InvalidInput = 3,
+    /// Strict mode: the input has a non-manifold edge or vertex, or duplicate triangles.
+    NonManifold = 4,
+    /// A caller buffer is too small; the needed length was written to `*out_len`.
+    BufferTooSmall = 5,
+    /// A file could not be opened or read.
+    Io = 6,
+    /// A file could not be parsed.
+    Parse = 7,
+    /// The input does not fit 32-bit ids.
+    TooLarge = 8,
+    /// An internal error (a Rust panic) was caught at the boundary. Please report it.
+    Panic = 9,
+}
+
+impl Status {
+    /// A static, NUL-terminated description.
+    pub(crate) fn as_cstr(self) -> &'static std::ffi::CStr {
+        match self {
+            Status::Ok => c"ok",
+            Status::NullArgument => c"null argument",
+            Status::OutOfRange => c"out of range",
+            Status::InvalidInput => c"invalid input",
+            Status::NonManifold => c"non-manifold input (strict mode)",
+            Status::BufferTooSmall => c"buffer too small",
+            Status::Io => c"input/output error",
+            Status::Parse => c"parse error",
+            Status::TooLarge => c"too large for 32-bit ids",
+            Status::Panic => c"internal error (panic caught)",
+        }
+    }
+}
+
+/// A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
+/// the `topomesh_status` values.
+#[unsafe(no_mangle)]
+pub extern "C" fn topomesh_status_str(s: Status) -> *const c_char {
+    s.as_cstr().as_ptr()
+}
+
+/// The detail of the last failed call on this thread (for example
+/// "vertex 12 out of range (the mesh has 8 vertices)"), NUL-terminated, into `buf`.
+///
+/// `*out_len` receives the needed capacity in bytes, terminating NUL included (1 when no
+/// call has failed yet on this thread). `buf == NULL` with `cap == 0` is a size query
+/// (returns OK). A `buf` shorter than needed receives a truncated, NUL-terminated message
+/// and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. Successful calls do not clear
+/// the detail; this function never changes it.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn topomesh_last_error(
+    buf: *mut c_char,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // Not behind `boundary::guard`: reading the detail must not overwrite it.
+    let run = || {
+        // SAFETY: the caller passes NULL or a pointer valid for one write.
+        let Some(out_len) = (unsafe { Out::new(out_len) }) else {
+            return Status::NullArgument;
+        };
+        if buf.is_null() && cap != 0 {
+            return Status::NullArgument;
+        }
+        boundary::with_last_error(|msg| {
+            let bytes = msg.as_bytes();
+            let needed = bytes.len() + 1;
+            out_len.set(needed);
+            if cap == 0 {
+                // A size query (`buf == NULL`), or a buffer that cannot hold even the NUL.
+                return if buf.is_null() {
+                    Status::Ok
+                } else {
+                    Status::BufferTooSmall
+                };
+            }
+            let n = bytes.len().min(cap - 1);
+            // SAFETY: `buf` is valid for `cap >= 1` byte writes (caller contract), `n < cap`,
+            // and `bytes` is a Rust string that cannot overlap the caller's buffer.
+            unsafe {
+                std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
+                *buf.add(n) = 0;
+            }
+            if n < bytes.len() {
+                Status::BufferTooSmall
+            } else {
+                Status::Ok
+            }
+        })
+    };
+    catch_unwind(AssertUnwindSafe(run)).unwrap_or(Status::Panic)
+}
+
+/// The library version, "MAJOR.MINOR.PATCH" (static, NUL-terminated).
+#[unsafe(no_mangle)]
+pub extern "C" fn topomesh_version() -> *const c_char {
+    const VERSION: &std::ffi::CStr = match std::ffi::CStr::from_bytes_with_nul(
+        concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
+    ) {
+        Ok(v) => v,
+        Err(_) => panic!("version has a NUL"),
+    };
+    VERSION.as_ptr()
+}

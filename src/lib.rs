@@ -7,6 +7,7 @@ pub mod che;
 pub mod chf;
 pub mod error;
 pub mod ffi;
+pub mod generate;
 pub mod io;
 mod rank;
 

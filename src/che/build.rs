@@ -1,7 +1,7 @@
 //! From a triangle list to a CHE: validate, drop degenerate triangles, match half-edges,
 //! orient, split non-manifold vertices, then build the requested level.
 
-use super::matching::{Groups, half_edge};
+use super::matching::{for_each_group, half_edge};
 use super::report::{BuildReport, push_example};
 use super::{Che, level2, level3, orient, split};
 use crate::NONE;
@@ -77,6 +77,7 @@ pub(crate) fn build(
     // Soup: range check, degenerate triangles dropped.
     let mut v: Vec<u32> = Vec::with_capacity(3 * triangles.len());
     let mut triangle_origin: Vec<u32> = Vec::new();
+    let mut dropped_any = false;
     for (t, tri) in triangles.iter().enumerate() {
         for (i, &x) in tri.iter().enumerate() {
             if x as usize >= n_vertices {
@@ -87,27 +88,33 @@ pub(crate) fn build(
         }
         let [a, b, c] = *tri;
         if a == b || b == c || a == c {
-            if triangle_origin.is_empty() {
+            if !dropped_any {
+                dropped_any = true;
                 triangle_origin.extend(0..t as u32);
             }
             report.dropped_degenerate += 1;
             push_example(&mut report.degenerate_examples, t as u32);
             continue;
         }
-        if !triangle_origin.is_empty() {
+        if dropped_any {
             triangle_origin.push(t as u32);
         }
         v.extend_from_slice(tri);
     }
     let origin_of = |t: u32| {
-        if triangle_origin.is_empty() { t } else { triangle_origin[t as usize] }
+        if dropped_any {
+            triangle_origin[t as usize]
+        } else {
+            t
+        }
     };
 
     // Match on unordered vertex pairs; pairs of exactly two are partners.
     let mut partner = vec![NONE; v.len()];
     let mut non_manifold: Vec<u32> = Vec::new();
-    let groups = Groups::new(&v, n_vertices);
-    groups.for_each(|a, b, group| {
+    let mut same_direction = false;
+    let mut duplicates: Vec<[u32; 2]> = Vec::new();
+    for_each_group(&v, n_vertices, |a, b, group| {
         report.input_edges += 1;
         match group.len() {
             1 => report.boundary_edges += 1,
@@ -115,40 +122,57 @@ pub(crate) fn build(
                 let (h, g) = (half_edge(group[0]), half_edge(group[1]));
                 partner[h as usize] = g;
                 partner[g as usize] = h;
+                same_direction |= v[h as usize] == v[g as usize];
             }
             _ => {
                 report.non_manifold_edges += 1;
                 push_example(&mut report.non_manifold_edge_examples, [a, b]);
                 non_manifold.extend(group.iter().map(|&k| half_edge(k)));
+                // Duplicates on a non-manifold edge; paired ones are found on `O` below.
+                duplicates_on_edge(&v, group, &mut duplicates);
             }
         }
-        count_duplicates(&v, b, group, &mut report, &origin_of);
     });
-    drop(groups);
     if options.strict {
         strict_checks(&report, &v, &non_manifold, &origin_of)?;
     }
 
-    let oriented = orient::orient(&mut v, &partner);
-    drop(partner);
-    report.flipped_triangles = oriented.flipped_count;
-    report.non_orientable_components = oriented.non_orientable_components;
-    report.non_orientable_examples = oriented
-        .non_orientable_examples
-        .iter()
-        .map(|&t| origin_of(t))
-        .collect();
-    report.seam_edges = oriented.seams.len() / 2;
-    let renumber = |h: u32| {
-        if oriented.flipped[(h / 3) as usize] { orient::flipped_id(h) } else { h }
+    // Orient only when some pair runs the same way: otherwise the partners are opposites.
+    let (o, seams) = if same_direction {
+        let oriented = orient::orient(&mut v, &partner);
+        drop(partner);
+        report.flipped_triangles = oriented.flipped_count;
+        report.non_orientable_components = oriented.non_orientable_components;
+        report.non_orientable_examples = oriented
+            .non_orientable_examples
+            .iter()
+            .map(|&t| origin_of(t))
+            .collect();
+        report.seam_edges = oriented.seams.len() / 2;
+        for h in non_manifold.iter_mut() {
+            if oriented.flipped[(*h / 3) as usize] {
+                *h = orient::flipped_id(*h);
+            }
+        }
+        (oriented.o, oriented.seams)
+    } else {
+        (partner, Vec::new())
     };
-    for h in non_manifold.iter_mut() {
-        *h = renumber(*h);
-    }
     non_manifold.sort_unstable();
-    let o = oriented.o;
-    let seams = oriented.seams;
-    drop(oriented.flipped);
+    count_pillows(&o, &mut duplicates);
+    duplicates.sort_unstable();
+    duplicates.dedup();
+    report.duplicate_triangles = duplicates.len();
+    for &[s, t] in &duplicates {
+        push_example(&mut report.duplicate_examples, [origin_of(s), origin_of(t)]);
+    }
+    drop(duplicates);
+    if let (true, Some(&[s, t])) = (options.strict, report.duplicate_examples.first()) {
+        return Err(Error::non_manifold(format!(
+            "triangles {s} and {t} have the same vertices; {} duplicate pairs",
+            report.duplicate_triangles
+        )));
+    }
 
     let split = split::split(&mut v, &o, n_vertices, &seams);
     report.split_vertices = split.split_vertices;
@@ -165,7 +189,9 @@ pub(crate) fn build(
     let vertex_origin: Vec<u32> = if split.copies.is_empty() {
         Vec::new()
     } else {
-        (0..n_vertices as u32).chain(split.copies.iter().copied()).collect()
+        (0..n_vertices as u32)
+            .chain(split.copies.iter().copied())
+            .collect()
     };
     let mut positions = positions.to_vec();
     if !positions.is_empty() {
@@ -214,51 +240,37 @@ pub(crate) fn build(
     Ok(che)
 }
 
-/// Two triangles with the same three vertices share all three vertex pairs; count each
-/// such pair once, on the pair made of the triangle's two smallest vertices.
-fn count_duplicates(
-    v: &[u32],
-    max: u32,
-    group: &[u64],
-    report: &mut BuildReport,
-    origin_of: &impl Fn(u32) -> u32,
-) {
-    if group.len() < 2 {
-        return;
-    }
-    let third = |k: u64| v[super::ids::prev(half_edge(k)) as usize];
-    let mut record = |a: u64, b: u64| {
-        report.duplicate_triangles += 1;
-        push_example(
-            &mut report.duplicate_examples,
-            [origin_of(half_edge(a) / 3), origin_of(half_edge(b) / 3)],
-        );
-    };
-    if group.len() <= 16 {
-        for (i, &a) in group.iter().enumerate() {
-            let c = third(a);
-            if c < max {
-                continue;
-            }
-            for &b in &group[i + 1..] {
-                if third(b) == c {
-                    record(a, b);
-                }
-            }
+/// Two triangles with the same three vertices whose edges are all paired to each other
+/// (a closed "pillow"): found with one sequential pass over `O`.
+fn count_pillows(o: &[u32], out: &mut Vec<[u32; 2]>) {
+    for (t, opp) in o.chunks_exact(3).enumerate() {
+        let other = opp[0] / 3;
+        if opp[0] != NONE
+            && opp[1] != NONE
+            && opp[2] != NONE
+            && opp[1] / 3 == other
+            && opp[2] / 3 == other
+            && other > t as u32
+        {
+            out.push([t as u32, other]);
         }
-        return;
     }
-    // A long non-manifold edge: sort by third vertex instead of comparing all pairs.
-    let mut by_third: Vec<(u32, u64)> = group
+}
+
+/// Pairs of triangles with the same three vertices among the half-edges of one
+/// non-manifold vertex pair (such a pair is seen on each of its non-manifold pairs:
+/// deduplicated by the caller).
+fn duplicates_on_edge(v: &[u32], group: &[u64], out: &mut Vec<[u32; 2]>) {
+    let third = |k: u64| v[super::ids::prev(half_edge(k)) as usize];
+    let mut by_third: Vec<(u32, u32)> = group
         .iter()
-        .map(|&k| (third(k), k))
-        .filter(|&(c, _)| c > max)
+        .map(|&k| (third(k), half_edge(k) / 3))
         .collect();
     by_third.sort_unstable();
     for run in by_third.chunk_by(|x, y| x.0 == y.0) {
-        for (i, &(_, a)) in run.iter().enumerate() {
-            for &(_, b) in &run[i + 1..] {
-                record(a, b);
+        for (i, &(_, s)) in run.iter().enumerate() {
+            for &(_, t) in &run[i + 1..] {
+                out.push([s.min(t), s.max(t)]);
             }
         }
     }
@@ -283,12 +295,6 @@ fn strict_checks(
             "non-manifold edge ({a}, {b}) is shared by triangles {}; {} such edges",
             tris.join(", "),
             report.non_manifold_edges
-        )));
-    }
-    if let Some(&[s, t]) = report.duplicate_examples.first() {
-        return Err(Error::non_manifold(format!(
-            "triangles {s} and {t} have the same vertices; {} duplicate pairs",
-            report.duplicate_triangles
         )));
     }
     Ok(())

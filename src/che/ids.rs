@@ -18,7 +18,7 @@ pub fn next(h: u32) -> u32 {
 /// The previous half-edge in the same triangle.
 #[inline]
 pub fn prev(h: u32) -> u32 {
-    if h % 3 == 0 { h + 2 } else { h - 1 }
+    if h.is_multiple_of(3) { h + 2 } else { h - 1 }
 }
 
 /// The first half-edge of triangle `t`.

@@ -5,57 +5,44 @@
 use super::ids::next;
 use crate::NONE;
 
-/// Half-edges in groups of equal unordered vertex pair, in increasing (min, max) order.
-pub(crate) struct Groups {
-    /// `(max << 32) | h`, bucketed by min vertex and sorted inside each bucket.
-    keys: Vec<u64>,
-    /// Bucket `v` is `keys[start[v]..start[v + 1]]`.
-    start: Vec<u32>,
-}
-
-impl Groups {
-    pub(crate) fn new(v: &[u32], n_vertices: usize) -> Groups {
-        let mut start = vec![0u32; n_vertices + 1];
-        for h in 0..v.len() as u32 {
-            let (a, b) = (v[h as usize], v[next(h) as usize]);
-            start[a.min(b) as usize + 1] += 1;
-        }
-        for i in 0..n_vertices {
-            start[i + 1] += start[i];
-        }
-        let mut fill = start.clone();
-        let mut keys = vec![0u64; v.len()];
-        for h in 0..v.len() as u32 {
-            let (a, b) = (v[h as usize], v[next(h) as usize]);
-            let slot = &mut fill[a.min(b) as usize];
-            keys[*slot as usize] = ((a.max(b) as u64) << 32) | h as u64;
-            *slot += 1;
-        }
-        drop(fill);
-        for w in start.windows(2) {
-            let bucket = &mut keys[w[0] as usize..w[1] as usize];
-            if bucket.len() > 1 {
-                bucket.sort_unstable();
-            }
-        }
-        Groups { keys, start }
+/// Calls `f(min, max, group)` for every unordered vertex pair of `v`, in increasing
+/// (min, max) order; `group` holds packed keys `(max << 32) | h` whose low 32 bits are the
+/// half-edges on that pair, in increasing order. Each bucket is sorted just before its
+/// groups are visited, while it is in cache.
+pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, mut f: impl FnMut(u32, u32, &[u64])) {
+    // Counting pass: bucket `m` ends at `end[m]`; the scatter fills buckets backwards.
+    let mut end = vec![0u32; n_vertices + 1];
+    for h in 0..v.len() as u32 {
+        let (a, b) = (v[h as usize], v[next(h) as usize]);
+        end[a.min(b) as usize] += 1;
     }
-
-    /// Calls `f(min, max, half_edges)` for every unordered vertex pair; `half_edges` holds
-    /// the packed keys (the low 32 bits are the half-edges, in increasing order).
-    pub(crate) fn for_each(&self, mut f: impl FnMut(u32, u32, &[u64])) {
-        for (min, w) in self.start.windows(2).enumerate() {
-            let bucket = &self.keys[w[0] as usize..w[1] as usize];
-            let mut i = 0;
-            while i < bucket.len() {
-                let max = bucket[i] >> 32;
-                let mut j = i + 1;
-                while j < bucket.len() && bucket[j] >> 32 == max {
-                    j += 1;
-                }
-                f(min as u32, max as u32, &bucket[i..j]);
-                i = j;
+    let mut total = 0u32;
+    for e in end.iter_mut() {
+        total += *e;
+        *e = total;
+    }
+    let mut keys = vec![0u64; v.len()];
+    for h in (0..v.len() as u32).rev() {
+        let (a, b) = (v[h as usize], v[next(h) as usize]);
+        let slot = &mut end[a.min(b) as usize];
+        *slot -= 1;
+        keys[*slot as usize] = ((a.max(b) as u64) << 32) | h as u64;
+    }
+    // Now `end[m]` is where bucket `m` starts.
+    for min in 0..n_vertices {
+        let bucket = &mut keys[end[min] as usize..end[min + 1] as usize];
+        if bucket.len() > 1 {
+            bucket.sort_unstable();
+        }
+        let mut i = 0;
+        while i < bucket.len() {
+            let max = bucket[i] >> 32;
+            let mut j = i + 1;
+            while j < bucket.len() && bucket[j] >> 32 == max {
+                j += 1;
             }
+            f(min as u32, max as u32, &bucket[i..j]);
+            i = j;
         }
     }
 }
@@ -71,7 +58,7 @@ pub(crate) fn half_edge(key: u64) -> u32 {
 /// flagged non-manifold. Level 0 queries answer with the same rule by scanning.
 pub(crate) fn opposites_by_rule(v: &[u32], n_vertices: usize, non_manifold: &[u32]) -> Vec<u32> {
     let mut o = vec![NONE; v.len()];
-    Groups::new(v, n_vertices).for_each(|_, _, group| {
+    for_each_group(v, n_vertices, |_, _, group| {
         if let [a, b] = *group {
             let (h, g) = (half_edge(a), half_edge(b));
             if v[h as usize] != v[g as usize] && non_manifold.binary_search(&h).is_err() {
@@ -92,7 +79,7 @@ mod tests {
         // Two triangles sharing edge {1, 2}: (0,1,2) and (2,1,3).
         let v = [0, 1, 2, 2, 1, 3];
         let mut seen = Vec::new();
-        Groups::new(&v, 4).for_each(|a, b, g| {
+        for_each_group(&v, 4, |a, b, g| {
             seen.push((a, b, g.iter().map(|&k| half_edge(k)).collect::<Vec<_>>()))
         });
         assert_eq!(

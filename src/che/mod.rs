@@ -9,6 +9,7 @@
 //! vertices split) so that the half-edge and edge ids are the same at every level.
 
 mod build;
+mod bulk;
 mod curves;
 pub mod ids;
 mod level2;
@@ -23,17 +24,18 @@ mod star;
 mod summary;
 
 pub use build::{BuildOptions, MAX_TRIANGLES};
+pub use bulk::Csr;
 pub use curves::BoundaryWalk;
-pub use queries::Ids;
 pub use ids::{first, next, prev, tri};
 pub use memory::Memory;
+pub use queries::Ids;
 pub use report::BuildReport;
 pub use star::{Rotation, StarStep};
 pub use summary::Summary;
 
+use crate::NONE;
 use crate::error::{Error, Result};
 use crate::rank::RankBits;
-use crate::NONE;
 use glam::DVec3;
 
 /// A triangle surface in the Compact Half-Edge structure.
@@ -92,7 +94,7 @@ impl Che {
         positions: &[DVec3],
         options: BuildOptions,
     ) -> Result<Che> {
-        if triangles.len() % 3 != 0 {
+        if !triangles.len().is_multiple_of(3) {
             return Err(Error::invalid(format!(
                 "triangle array has {} ids, not a multiple of 3",
                 triangles.len()
@@ -109,7 +111,9 @@ impl Che {
     /// Raises (or lowers) the level in place. Ids do not change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
         if level > 3 {
-            return Err(Error::out_of_range(format!("level {level} is not in 0..=3")));
+            return Err(Error::out_of_range(format!(
+                "level {level} is not in 0..=3"
+            )));
         }
         if level < self.level {
             if level < 3 {
@@ -187,11 +191,19 @@ impl Che {
 
     /// The input vertex a structure vertex comes from.
     pub fn vertex_origin(&self, v: u32) -> u32 {
-        if self.vertex_origin.is_empty() { v } else { self.vertex_origin[v as usize] }
+        if self.vertex_origin.is_empty() {
+            v
+        } else {
+            self.vertex_origin[v as usize]
+        }
     }
     /// The input triangle a structure triangle comes from.
     pub fn triangle_origin(&self, t: u32) -> u32 {
-        if self.triangle_origin.is_empty() { t } else { self.triangle_origin[t as usize] }
+        if self.triangle_origin.is_empty() {
+            t
+        } else {
+            self.triangle_origin[t as usize]
+        }
     }
     /// The vertex origin map, or `None` when it is the identity.
     pub fn vertex_origins(&self) -> Option<&[u32]> {

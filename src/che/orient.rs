@@ -91,7 +91,13 @@ pub(crate) fn orient(v: &mut [u32], partner: &[u32]) -> Oriented {
             v.swap(3 * t + 1, 3 * t + 2);
         }
     }
-    let renumber = |h: u32| if flipped[tri(h) as usize] { flipped_id(h) } else { h };
+    let renumber = |h: u32| {
+        if flipped[tri(h) as usize] {
+            flipped_id(h)
+        } else {
+            h
+        }
+    };
     let mut is_seam = vec![false; 0];
     if !seam_pairs.is_empty() {
         is_seam = vec![false; v.len()];

@@ -31,20 +31,6 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
             continue;
         }
         let vertex = v[h as usize];
-        // Clockwise to the start of the fan: its boundary half-edge, or `h` when closed.
-        let mut start = h;
-        loop {
-            let back = o[start as usize];
-            if back == NONE {
-                break;
-            }
-            let g = next(back);
-            if g == h {
-                start = h;
-                break;
-            }
-            start = g;
-        }
         let id = if test(&has_fan, vertex as usize) {
             copies.push(vertex);
             (n_vertices + copies.len() - 1) as u32
@@ -52,15 +38,36 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
             set(&mut has_fan, vertex as usize);
             vertex
         };
-        let mut g = start;
-        loop {
+        // Counter-clockwise from `h` until back at `h` (a closed fan, the common case) or
+        // the boundary; then clockwise from `h` for the rest of an open fan.
+        let mut g = h;
+        let closed = loop {
             set(&mut visited, g as usize);
-            v[g as usize] = id;
+            if id != vertex {
+                v[g as usize] = id;
+            }
             let around = o[prev(g) as usize];
-            if around == NONE || around == start {
-                break;
+            if around == NONE {
+                break false;
+            }
+            if around == h {
+                break true;
             }
             g = around;
+        };
+        if !closed {
+            let mut g = h;
+            loop {
+                let back = o[g as usize];
+                if back == NONE {
+                    break;
+                }
+                g = next(back);
+                set(&mut visited, g as usize);
+                if id != vertex {
+                    v[g as usize] = id;
+                }
+            }
         }
     }
 
@@ -73,7 +80,11 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
         still_split(v, n_vertices, &copies, &split_origins, seams)
     };
     let mut split_examples = Vec::new();
-    for (&x, _) in split_origins.iter().zip(&non_manifold).filter(|(_, nm)| **nm) {
+    for (&x, _) in split_origins
+        .iter()
+        .zip(&non_manifold)
+        .filter(|(_, nm)| **nm)
+    {
         push_example(&mut split_examples, x);
     }
     let split_vertices = non_manifold.iter().filter(|&&nm| nm).count();
@@ -112,7 +123,11 @@ fn still_split(
     // Seams come in pairs (h, g) of half-edges on one vertex pair running the same way.
     let mut by_pair: Vec<(u32, u32, u32)> = Vec::with_capacity(seams.len());
     let origin = |x: u32| {
-        if (x as usize) < n_vertices { x } else { copies[x as usize - n_vertices] }
+        if (x as usize) < n_vertices {
+            x
+        } else {
+            copies[x as usize - n_vertices]
+        }
     };
     for &h in seams {
         by_pair.push((origin(v[h as usize]), origin(v[next(h) as usize]), h));

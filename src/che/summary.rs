@@ -99,7 +99,11 @@ impl Che {
         let genus = if orientable && manifold {
             // Each component: chi = 2 - 2g - b; isolated vertices add 1 each to chi.
             let twice = 2 * components as i64 - (euler - isolated as i64) - boundary_curves as i64;
-            if twice >= 0 && twice % 2 == 0 { twice / 2 } else { -1 }
+            if twice >= 0 && twice % 2 == 0 {
+                twice / 2
+            } else {
+                -1
+            }
         } else {
             -1
         };

@@ -1,9 +1,480 @@
-//! Placeholder: the gmsh reader is being written.
+//! Gmsh `.msh`, ASCII versions 2.x and 4.1: nodes, triangles and tetrahedra (corner nodes of
+//! the higher-order ones); other elements and sections are skipped. Node tags may be sparse:
+//! they are numbered 0.. in order of appearance.
 
 use super::MeshData;
-use crate::error::{Error, Result};
+use super::text::{self, Lexer};
+use crate::error::Result;
+use glam::DVec3;
+use std::collections::HashMap;
 use std::path::Path;
 
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Version {
+    V2,
+    V41,
+}
+
+/// Number of nodes of a Gmsh element type, for the types Gmsh documents.
+fn nodes_per_element(ty: u64) -> Option<usize> {
+    const NODES: [usize; 32] = [
+        0, 2, 3, 4, 4, 8, 6, 5, 3, 6, 9, 10, 27, 18, 14, 1, 8, 20, 15, 13, 9, 10, 12, 15, 15, 21,
+        4, 5, 6, 20, 35, 56,
+    ];
+    match ty {
+        1..=31 => Some(NODES[ty as usize]),
+        92 => Some(64),
+        93 => Some(125),
+        _ => None,
+    }
+}
+
+/// What a type contributes: 3 corners (triangles of any order) or 4 (tetrahedra of any order).
+fn corners(ty: u64) -> usize {
+    match ty {
+        2 | 9 | 20..=25 => 3,
+        4 | 11 | 29..=31 => 4,
+        _ => 0,
+    }
+}
+
+/// Node tag -> 0-based id.
+enum TagMap {
+    Dense(Vec<u32>),
+    Sparse(HashMap<u64, u32>),
+}
+
+impl TagMap {
+    /// Numbers `tags` in order; a repeated tag is an error (reported at `line`).
+    fn new(tags: &[u64], lx: &Lexer, line: usize) -> Result<TagMap> {
+        let dup = |t: u64| lx.error_at(line, format!("node tag {t} appears twice in $Nodes"));
+        let max = tags.iter().copied().max().unwrap_or(0);
+        if max <= 2 * tags.len() as u64 + 1024 {
+            let mut map = vec![u32::MAX; max as usize + 1];
+            for (i, &t) in tags.iter().enumerate() {
+                let slot = &mut map[t as usize];
+                if *slot != u32::MAX {
+                    return Err(dup(t));
+                }
+                *slot = i as u32;
+            }
+            Ok(TagMap::Dense(map))
+        } else {
+            let mut map = HashMap::with_capacity(tags.len());
+            for (i, &t) in tags.iter().enumerate() {
+                if map.insert(t, i as u32).is_some() {
+                    return Err(dup(t));
+                }
+            }
+            Ok(TagMap::Sparse(map))
+        }
+    }
+
+    #[inline]
+    fn get(&self, tag: u64) -> Option<u32> {
+        match self {
+            TagMap::Dense(v) => v.get(tag as usize).copied().filter(|&i| i != u32::MAX),
+            TagMap::Sparse(m) => m.get(&tag).copied(),
+        }
+    }
+}
+
+/// Reads a `$Nodes` section body (after the keyword, up to `$EndNodes` excluded).
+fn read_nodes(lx: &mut Lexer, version: Version) -> Result<(Vec<DVec3>, Vec<u64>)> {
+    let read_xyz = |lx: &mut Lexer| -> Result<DVec3> {
+        let x = lx.f64("a coordinate")?;
+        let y = lx.f64("a coordinate")?;
+        let z = lx.f64("a coordinate")?;
+        Ok(DVec3::new(x, y, z))
+    };
+    match version {
+        Version::V2 => {
+            let n = lx.usize("the number of nodes")?;
+            lx.check_point_count(n)?;
+            let cap = lx.capacity(n, 4);
+            let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
+            for _ in 0..n {
+                tags.push(lx.u64("a node tag")?);
+                pos.push(read_xyz(lx)?);
+            }
+            Ok((pos, tags))
+        }
+        Version::V41 => {
+            let blocks = lx.usize("the number of entity blocks")?;
+            let n = lx.usize("the number of nodes")?;
+            lx.check_point_count(n)?;
+            lx.u64("the smallest node tag")?;
+            lx.u64("the largest node tag")?;
+            let cap = lx.capacity(n, 4);
+            let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
+            for _ in 0..blocks {
+                let dim = lx.u64("an entity dimension")?;
+                if dim > 3 {
+                    return Err(lx.error(format!("entity dimension {dim}")));
+                }
+                lx.expect("an entity tag")?;
+                let parametric = lx.u64("the parametric flag (0 or 1)")?;
+                if parametric > 1 {
+                    return Err(lx.error(format!("parametric flag {parametric} (0 or 1)")));
+                }
+                let count = lx.usize("the number of nodes in the block")?;
+                if count > n - tags.len() {
+                    return Err(
+                        lx.error(format!("the blocks hold more than the {n} nodes declared"))
+                    );
+                }
+                for _ in 0..count {
+                    tags.push(lx.u64("a node tag")?);
+                }
+                let extra = (parametric * dim) as usize;
+                for _ in 0..count {
+                    pos.push(read_xyz(lx)?);
+                    lx.skip(extra, "a parametric coordinate")?;
+                }
+            }
+            if tags.len() != n {
+                return Err(lx.error(format!(
+                    "the blocks hold {} nodes, {n} declared",
+                    tags.len()
+                )));
+            }
+            Ok((pos, tags))
+        }
+    }
+}
+
+/// Reads the nodes of one element of type `ty`, keeping its corners if it is a triangle or
+/// a tetrahedron; an unknown type is skipped to the end of its line.
+#[inline]
+fn read_element(lx: &mut Lexer, ty: u64, map: &TagMap, data: &mut MeshData) -> Result<()> {
+    let Some(n) = nodes_per_element(ty) else {
+        lx.skip_line();
+        return Ok(());
+    };
+    let k = corners(ty);
+    let mut ids = [0u32; 4];
+    for id in ids.iter_mut().take(k) {
+        let tag = lx.u64("a node tag")?;
+        *id = map
+            .get(tag)
+            .ok_or_else(|| lx.error(format!("unknown node tag {tag}")))?;
+    }
+    lx.skip(n - k, "a node tag")?;
+    match k {
+        3 => data.triangles.push([ids[0], ids[1], ids[2]]),
+        4 => data.tetrahedra.push(ids),
+        _ => {}
+    }
+    Ok(())
+}
+
+/// Reads an `$Elements` section body.
+fn read_elements(
+    lx: &mut Lexer,
+    version: Version,
+    map: &TagMap,
+    data: &mut MeshData,
+) -> Result<()> {
+    match version {
+        Version::V2 => {
+            let n = lx.usize("the number of elements")?;
+            for _ in 0..n {
+                lx.u64("an element tag")?;
+                let ty = lx.u64("an element type")?;
+                let ntags = lx.usize("the number of element tags")?;
+                lx.skip(ntags, "an element tag")?;
+                read_element(lx, ty, map, data)?;
+            }
+        }
+        Version::V41 => {
+            let blocks = lx.usize("the number of entity blocks")?;
+            lx.usize("the number of elements")?;
+            lx.u64("the smallest element tag")?;
+            lx.u64("the largest element tag")?;
+            for _ in 0..blocks {
+                let dim = lx.u64("an entity dimension")?;
+                if dim > 3 {
+                    return Err(lx.error(format!("entity dimension {dim}")));
+                }
+                lx.expect("an entity tag")?;
+                let ty = lx.u64("an element type")?;
+                let count = lx.usize("the number of elements in the block")?;
+                for _ in 0..count {
+                    lx.u64("an element tag")?;
+                    read_element(lx, ty, map, data)?;
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Parses the text of a `.msh` file; `name` is used in error messages.
+pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
+    let mut lx = Lexer::new(text, name, false);
+    let mut version = None;
+    let mut map = None;
+    let mut data = MeshData::default();
+    while let Some(tok) = lx.next() {
+        let start = lx.line();
+        match tok {
+            "$MeshFormat" => {
+                let v = lx.expect("the format version")?;
+                version = Some(if v == "2" || v.starts_with("2.") {
+                    Version::V2
+                } else if v == "4.1" {
+                    Version::V41
+                } else {
+                    return Err(lx.error(format!(
+                        "unsupported .msh version {} (2.x and 4.1 are read)",
+                        text::quote(v)
+                    )));
+                });
+                match lx.u64("the file type (0 = ASCII)")? {
+                    0 => {}
+                    1 => return Err(lx.error("binary .msh not supported (save as ASCII)")),
+                    t => return Err(lx.error(format!("unknown file type {t}"))),
+                }
+                lx.expect("the data size")?;
+                lx.keyword("$EndMeshFormat")?;
+            }
+            "$Nodes" => {
+                let Some(v) = version else {
+                    return Err(lx.error("$Nodes before $MeshFormat"));
+                };
+                if map.is_some() {
+                    return Err(lx.error("a second $Nodes section"));
+                }
+                let (positions, tags) = read_nodes(&mut lx, v)?;
+                lx.keyword("$EndNodes")?;
+                map = Some(TagMap::new(&tags, &lx, start)?);
+                data.positions = positions;
+            }
+            "$Elements" => {
+                let (Some(v), Some(m)) = (version, &map) else {
+                    return Err(lx.error("$Elements before $MeshFormat and $Nodes"));
+                };
+                read_elements(&mut lx, v, m, &mut data)?;
+                lx.keyword("$EndElements")?;
+            }
+            _ if tok.starts_with('$') && version.is_some() => {
+                let section = tok.get(1..).unwrap_or("");
+                loop {
+                    match lx.next() {
+                        Some(t) if t.strip_prefix("$End") == Some(section) => break,
+                        Some(_) => {}
+                        None => {
+                            return Err(lx.error_at(
+                                start,
+                                format!("section ${0} has no $End{0}", text::quote(section)),
+                            ));
+                        }
+                    }
+                }
+            }
+            _ => {
+                let what = if version.is_some() {
+                    "a $Section"
+                } else {
+                    "$MeshFormat"
+                };
+                return Err(lx.bad(what, tok));
+            }
+        }
+    }
+    if version.is_none() {
+        return Err(lx.error("no $MeshFormat: not a Gmsh file"));
+    }
+    Ok(data)
+}
+
+/// Reads a Gmsh `.msh` file (ASCII 2.x or 4.1).
 pub fn read(path: &Path) -> Result<MeshData> {
-    Err(Error::invalid(format!("{}: gmsh reader not written yet", path.display())))
+    let text = text::read_text(path)?;
+    parse(&text, &path.display().to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two tets and a boundary triangle over sparse tags, plus a point, a line, a quad, a
+    /// 10-node tet and a 6-node triangle, and sections to skip.
+    const V22: &str = "\
+$MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+2
+2 1 \"skin surface\"
+3 2 \"volume\"
+$EndPhysicalNames
+$Nodes
+6
+10 0 0 0
+20 1 0 0
+30 0 1 0
+40 0 0 1
+1000000 1 1 1
+7 0.5 0.5 0.5
+$EndNodes
+$Elements
+7
+1 15 2 0 1 10
+2 1 2 0 1 10 20
+3 2 2 1 1 10 20 30
+4 3 2 0 1 10 20 30 40
+5 4 2 2 1 10 20 30 40
+6 11 3 2 1 0 20 30 40 1000000 7 7 7 7 7 7
+7 9 2 0 1 10 30 40 7 7 7
+$EndElements
+$NodeData
+1
+\"a view\"
+0
+$EndNodeData
+";
+
+    const V41: &str = "\
+$MeshFormat
+4.1 0 8
+$EndMeshFormat
+$Entities
+1 0 0 1
+1 0 0 0 0
+1 0 0 0 1 1 1 0 0
+$EndEntities
+$Nodes
+3 6 5 900
+0 1 0 1
+5
+0 0 0
+2 1 1 3
+6
+9
+10
+1 0 0 0.25 0.75
+0 1 0 0.5 0.5
+0 0 1 0.75 0.25
+3 1 0 2
+800
+900
+1 1 1
+0.5 0.5 0.5
+$EndNodes
+$Elements
+4 5 1 5
+0 1 15 1
+1 5
+2 1 2 1
+2 5 6 9
+3 1 4 2
+3 5 6 9 10
+4 6 9 10 800
+3 1 7 1
+5 5 6 9 10 800
+$EndElements
+";
+
+    fn err(text: &str) -> String {
+        parse(text, "g.msh").unwrap_err().message
+    }
+
+    #[test]
+    fn reads_v22_mixed_elements_sparse_tags() {
+        let d = parse(V22, "g.msh").unwrap();
+        assert_eq!(d.positions.len(), 6);
+        assert_eq!(d.positions[4], DVec3::new(1.0, 1.0, 1.0));
+        assert_eq!(d.positions[5], DVec3::splat(0.5));
+        assert_eq!(d.triangles, vec![[0, 1, 2], [0, 2, 3]]);
+        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+    }
+
+    #[test]
+    fn reads_v41_blocks_parametric_and_skipped_types() {
+        let d = parse(V41, "g.msh").unwrap();
+        assert_eq!(d.positions.len(), 6);
+        assert_eq!(d.positions[1], DVec3::new(1.0, 0.0, 0.0));
+        assert_eq!(d.positions[5], DVec3::splat(0.5));
+        assert_eq!(d.triangles, vec![[0, 1, 2]]);
+        // Type 7 (pyramid) is skipped.
+        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+    }
+
+    #[test]
+    fn reads_v2_from_file() {
+        let path = text::temp_path("gmsh", "msh");
+        std::fs::write(&path, V22.replace('\n', "\r\n")).unwrap();
+        let d = super::super::read(&path);
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(d.unwrap().tetrahedra.len(), 2);
+    }
+
+    #[test]
+    fn unknown_node_tag_names_line() {
+        let e = err(&V22.replace("5 4 2 2 1 10 20 30 40", "5 4 2 2 1 10 20 31 40"));
+        assert_eq!(e, "g.msh:24: unknown node tag 31");
+        let e = err(&V41.replace("4 6 9 10 800", "4 6 9 10 801"));
+        assert_eq!(e, "g.msh:35: unknown node tag 801");
+        let e = err(&V22.replace("7 0.5 0.5 0.5", "40 0.5 0.5 0.5"));
+        assert!(e.starts_with("g.msh:9: node tag 40 appears twice"), "{e}");
+    }
+
+    #[test]
+    fn binary_and_bad_versions_are_errors() {
+        let e = err("$MeshFormat\n4.1 1 8\n\u{1}\u{0}\u{0}\u{0}\n$EndMeshFormat\n");
+        assert_eq!(e, "g.msh:2: binary .msh not supported (save as ASCII)");
+        let e = err("$MeshFormat\n4 0 8\n$EndMeshFormat\n");
+        assert!(e.starts_with("g.msh:2: unsupported .msh version 4"), "{e}");
+        let e = err("hello");
+        assert_eq!(e, "g.msh:1: expected $MeshFormat, found 'hello'");
+        let e = err("\n\n");
+        assert!(e.starts_with("g.msh:3: no $MeshFormat"), "{e}");
+    }
+
+    #[test]
+    fn truncated_and_bad_tokens_name_line() {
+        let e = err(&V22[..V22.find("$EndElements").unwrap()]);
+        assert!(
+            e.starts_with("g.msh:27: unexpected end of file, expected $EndElements"),
+            "{e}"
+        );
+        let e = err(&V22[..V22.find("40 0 0 1").unwrap() + 6]);
+        assert!(e.starts_with("g.msh:14: unexpected end of file"), "{e}");
+        let e = err(&V22.replace("$EndNodeData\n", ""));
+        assert!(
+            e.starts_with("g.msh:28: section $NodeData has no $EndNodeData"),
+            "{e}"
+        );
+        let e = err(&V41.replace("0.5 0.5 0.5", "0.5 0.5 half"));
+        assert_eq!(e, "g.msh:25: expected a coordinate, found 'half'");
+        let e = err(&V41.replace("3 6 5 900", "3 7 5 900"));
+        assert!(
+            e.starts_with("g.msh:25: the blocks hold 6 nodes, 7 declared"),
+            "{e}"
+        );
+        let e = err(&V22.replace("\n6\n10 0 0 0", "\n4000000000\n10 0 0 0"));
+        assert!(
+            e.starts_with("g.msh:17: expected a node tag, found '$EndNodes'"),
+            "{e}"
+        );
+        let e = err(&V22.replace("\n7\n1 15", "\n99999999999999\n1 15"));
+        assert!(e.starts_with("g.msh:27: expected an element tag"), "{e}");
+    }
+
+    #[test]
+    fn prefixes_and_mutations_never_panic() {
+        for src in [V22, V41] {
+            text::assert_robust(src, "g.msh:", |t| parse(t, "g.msh"));
+        }
+    }
+
+    #[test]
+    fn huge_sparse_tags_use_a_map() {
+        let t = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n18446744073709551615 0 0 0\n\
+                 5 1 0 0\n4000000000 0 1 0\n$EndNodes\n$Elements\n1\n\
+                 1 2 0 4000000000 5 18446744073709551615\n$EndElements\n";
+        let d = parse(t, "g.msh").unwrap();
+        assert_eq!(d.triangles, vec![[2, 1, 0]]);
+    }
 }

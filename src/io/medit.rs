@@ -1,13 +1,360 @@
-//! Placeholder: the medit reader is being written.
+//! Medit / INRIA `.mesh` (ASCII): vertices, triangles and tetrahedra (1-based ids); every
+//! other section the library knows the entry size of is skipped.
+//!
+//! This file also holds [`text`], the token reader shared by the volume formats
+//! (tetgen, medit, gmsh, vtk).
 
 use super::MeshData;
-use crate::error::{Error, Result};
+use super::text::{self, Lexer};
+use crate::error::Result;
+use glam::DVec3;
+use std::io::Write;
 use std::path::Path;
 
-pub fn read(path: &Path) -> Result<MeshData> {
-    Err(Error::invalid(format!("{}: medit reader not written yet", path.display())))
+/// Tokens per entry of the sections that are skipped, for a mesh of dimension `dim`
+/// (from libMeshb's keyword table), or `None` for a keyword not known.
+fn entry_tokens(keyword: &str, dim: usize) -> Option<usize> {
+    const TABLE: &[(&str, usize)] = &[
+        ("Edges", 3),
+        ("Quadrilaterals", 5),
+        ("Prisms", 7),
+        ("Pentahedra", 7),
+        ("Hexahedra", 9),
+        ("Pyramids", 6),
+        ("Corners", 1),
+        ("Ridges", 1),
+        ("RequiredVertices", 1),
+        ("RequiredEdges", 1),
+        ("RequiredTriangles", 1),
+        ("RequiredQuadrilaterals", 1),
+        ("TangentAtEdgeVertices", 3),
+        ("NormalAtVertices", 2),
+        ("NormalAtTriangleVertices", 3),
+        ("NormalAtQuadrilateralVertices", 4),
+        ("TangentAtVertices", 2),
+        ("EdgesP2", 4),
+        ("QuadrilateralsQ2", 10),
+        ("HexahedraQ2", 28),
+        ("VerticesOnGeometricVertices", 2),
+        ("VerticesOnGeometricEdges", 4),
+        ("VerticesOnGeometricTriangles", 5),
+        ("VerticesOnGeometricQuadrilaterals", 5),
+        ("EdgesOnGeometricEdges", 2),
+        ("TrianglesOnGeometricTriangles", 2),
+        ("TrianglesOnGeometricQuadrilaterals", 2),
+        ("QuadrilateralsOnGeometricTriangles", 2),
+        ("QuadrilateralsOnGeometricQuadrilaterals", 2),
+    ];
+    if keyword.eq_ignore_ascii_case("Normals") || keyword.eq_ignore_ascii_case("Tangents") {
+        return Some(dim);
+    }
+    TABLE
+        .iter()
+        .find(|(k, _)| k.eq_ignore_ascii_case(keyword))
+        .map(|&(_, n)| n)
 }
 
-pub fn write(path: &Path, _data: &MeshData) -> Result<()> {
-    Err(Error::invalid(format!("{}: medit writer not written yet", path.display())))
+/// Reads `n` elements of `tokens` tokens each, keeping the first `K` (1-based vertex ids).
+fn read_elements<const K: usize>(
+    lx: &mut Lexer,
+    keyword: &str,
+    tokens: usize,
+    num_vertices: usize,
+    out: &mut Vec<[u32; K]>,
+) -> Result<()> {
+    let n = lx.usize(&format!("the number of {keyword}"))?;
+    if n > 0 && num_vertices == 0 {
+        return Err(lx.error(format!("{keyword} before (or without) Vertices")));
+    }
+    out.reserve(lx.capacity(n, tokens));
+    for _ in 0..n {
+        let mut e = [0u32; K];
+        for v in &mut e {
+            let id = lx.u64("a vertex id")?;
+            if id == 0 || id > num_vertices as u64 {
+                return Err(lx.error(format!(
+                    "vertex id {id} out of range 1..={num_vertices} in {keyword}"
+                )));
+            }
+            *v = (id - 1) as u32;
+        }
+        lx.skip(tokens - K, "the rest of an element")?;
+        out.push(e);
+    }
+    Ok(())
+}
+
+/// Parses the text of a `.mesh` file; `name` is used in error messages.
+pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
+    let mut lx = Lexer::new(text, name, true);
+    let mut data = MeshData::default();
+    let mut dim = 3usize;
+    let mut have_vertices = false;
+    while let Some(kw) = lx.next() {
+        let is = |k: &str| kw.eq_ignore_ascii_case(k);
+        if is("MeshVersionFormatted") {
+            let v = lx.u64("the format version")?;
+            if !(1..=4).contains(&v) {
+                return Err(lx.error(format!("unknown MeshVersionFormatted {v}")));
+            }
+        } else if is("Dimension") {
+            let d = lx.usize("the dimension")?;
+            if d != 2 && d != 3 {
+                return Err(lx.error(format!("dimension {d} (only 2 and 3 are read)")));
+            }
+            dim = d;
+        } else if is("Vertices") {
+            if have_vertices {
+                return Err(lx.error("a second Vertices section"));
+            }
+            have_vertices = true;
+            let n = lx.usize("the number of vertices")?;
+            lx.check_point_count(n)?;
+            data.positions.reserve(lx.capacity(n, dim + 1));
+            for _ in 0..n {
+                let x = lx.f64("a coordinate")?;
+                let y = lx.f64("a coordinate")?;
+                let z = if dim == 3 {
+                    lx.f64("a coordinate")?
+                } else {
+                    0.0
+                };
+                lx.expect("a vertex reference")?;
+                data.positions.push(DVec3::new(x, y, z));
+            }
+        } else if is("Triangles") {
+            read_elements(
+                &mut lx,
+                "Triangles",
+                4,
+                data.positions.len(),
+                &mut data.triangles,
+            )?;
+        } else if is("TrianglesP2") {
+            read_elements(
+                &mut lx,
+                "TrianglesP2",
+                7,
+                data.positions.len(),
+                &mut data.triangles,
+            )?;
+        } else if is("Tetrahedra") {
+            read_elements(
+                &mut lx,
+                "Tetrahedra",
+                5,
+                data.positions.len(),
+                &mut data.tetrahedra,
+            )?;
+        } else if is("TetrahedraP2") {
+            let n = data.positions.len();
+            read_elements(&mut lx, "TetrahedraP2", 11, n, &mut data.tetrahedra)?;
+        } else if is("End") {
+            break;
+        } else if is("AngleOfCornerBound") || is("Iterations") || is("Time") {
+            lx.expect("a value")?;
+        } else if is("BoundingBox") {
+            lx.skip(2 * dim, "a bounding box coordinate")?;
+        } else if let Some(k) = entry_tokens(kw, dim) {
+            let n = lx.usize(&format!("the number of {kw}"))?;
+            for _ in 0..n {
+                lx.skip(k, kw)?;
+            }
+        } else {
+            return Err(lx.error(format!(
+                "unknown keyword '{}' (or an entry count that does not match the entries)",
+                text::quote(kw)
+            )));
+        }
+    }
+    Ok(data)
+}
+
+/// Reads a Medit `.mesh` file.
+pub fn read(path: &Path) -> Result<MeshData> {
+    let text = text::read_text(path)?;
+    parse(&text, &path.display().to_string())
+}
+
+/// Writes `data` as Medit ASCII (refs 0), coordinates in full precision.
+pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()> {
+    writeln!(w, "MeshVersionFormatted 2\n\nDimension 3\n")?;
+    writeln!(w, "Vertices\n{}", data.positions.len())?;
+    for p in &data.positions {
+        writeln!(w, "{} {} {} 0", p.x, p.y, p.z)?;
+    }
+    if !data.triangles.is_empty() {
+        writeln!(w, "\nTriangles\n{}", data.triangles.len())?;
+        for t in &data.triangles {
+            writeln!(w, "{} {} {} 0", t[0] + 1, t[1] + 1, t[2] + 1)?;
+        }
+    }
+    if !data.tetrahedra.is_empty() {
+        writeln!(w, "\nTetrahedra\n{}", data.tetrahedra.len())?;
+        for t in &data.tetrahedra {
+            writeln!(w, "{} {} {} {} 0", t[0] + 1, t[1] + 1, t[2] + 1, t[3] + 1)?;
+        }
+    }
+    writeln!(w, "\nEnd")
+}
+
+/// Writes a Medit `.mesh` file.
+pub fn write(path: &Path, data: &MeshData) -> Result<()> {
+    text::check_ids(path, data)?;
+    text::write_file(path, |w| write_to(w, data))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CUBE_CORNER: &str = "\
+MeshVersionFormatted 2
+# a comment line
+Dimension
+3
+Vertices
+5
+0 0 0 1
+1 0 0 1   # trailing comment
+0 1 0 1
+0 0 1 2
+1 1 1 2
+Edges 2
+1 2 0
+2 3 0
+Corners 1 1
+Ridges
+1
+2
+Normals 1
+0 0 1
+NormalAtVertices 1
+1 1
+Triangles
+2
+1 2 3 7
+2 3 4 7
+Quadrilaterals 1
+1 2 3 4 0
+Tetrahedra 2
+1 2 3 4 0
+2 3 4 5 1
+Hexahedra 1
+1 2 3 4 5 1 2 3 0
+End
+";
+
+    fn err(text: &str) -> String {
+        parse(text, "m.mesh").unwrap_err().message
+    }
+
+    #[test]
+    fn reads_with_skipped_sections() {
+        let d = parse(CUBE_CORNER, "m.mesh").unwrap();
+        assert_eq!(d.positions.len(), 5);
+        assert_eq!(d.positions[4], DVec3::new(1.0, 1.0, 1.0));
+        assert_eq!(d.triangles, vec![[0, 1, 2], [1, 2, 3]]);
+        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+    }
+
+    #[test]
+    fn reads_dimension_2_and_p2_elements() {
+        let t = "MeshVersionFormatted 1 Dimension 2\nVertices 3\n0 0 0\n1 0 0\n0 2 0\n\
+                 TrianglesP2 1\n1 2 3 1 2 3 0\nBoundingBox 0 1 0 2\nEnd";
+        let d = parse(t, "m.mesh").unwrap();
+        assert_eq!(d.positions[2], DVec3::new(0.0, 2.0, 0.0));
+        assert_eq!(d.triangles, vec![[0, 1, 2]]);
+        assert!(d.tetrahedra.is_empty());
+    }
+
+    #[test]
+    fn out_of_range_id_names_line() {
+        let t = CUBE_CORNER.replace("2 3 4 5 1", "2 3 4 6 1");
+        let e = err(&t);
+        assert!(e.starts_with("m.mesh:31:"), "{e}");
+        assert!(e.contains("vertex id 6 out of range 1..=5"), "{e}");
+        let e = err("Dimension 3 Vertices 1 0 0 0 0 Triangles 1\n1 1 0 0");
+        assert!(e.starts_with("m.mesh:2:") && e.contains("id 0"), "{e}");
+    }
+
+    #[test]
+    fn truncated_and_bad_tokens_name_line() {
+        let e = err("Dimension 3\nVertices 2\n0 0 0 0\n1 0");
+        assert!(e.starts_with("m.mesh:4: unexpected end of file"), "{e}");
+        let e = err("Dimension 3\nVertices 1\n0 0 zero 0\n");
+        assert_eq!(e, "m.mesh:3: expected a coordinate, found 'zero'");
+        let e = err("Dimension 3\nVertices 1\n0 0 0 0\nFoo 3\n");
+        assert!(e.starts_with("m.mesh:4: unknown keyword 'Foo'"), "{e}");
+        let e = err("Dimension 3\nTriangles 1\n1 2 3 0\n");
+        assert!(e.starts_with("m.mesh:2: Triangles before"), "{e}");
+        let e = err("Dimension 4\n");
+        assert!(e.starts_with("m.mesh:1: dimension 4"), "{e}");
+    }
+
+    #[test]
+    fn huge_counts_do_not_allocate() {
+        let e = err("Dimension 3\nVertices 4000000000\n0 0 0 0\n");
+        assert!(e.starts_with("m.mesh:4: unexpected end"), "{e}");
+        let e = err("Dimension 3\nVertices 99999999999\n");
+        assert!(e.contains("m.mesh:2:") && e.contains("more than"), "{e}");
+        let e = err("Corners 18446744073709551615 1 2");
+        assert!(e.starts_with("m.mesh:1: unexpected end"), "{e}");
+        let e = err("Corners 18446744073709551616");
+        assert!(
+            e.starts_with("m.mesh:1: expected the number of Corners"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn prefixes_and_mutations_never_panic() {
+        text::assert_robust(CUBE_CORNER, "m.mesh:", |t| parse(t, "m.mesh"));
+    }
+
+    #[test]
+    fn round_trip() {
+        let data = MeshData {
+            positions: vec![
+                DVec3::new(0.1, -2.5e-7, 1.0 / 3.0),
+                DVec3::new(1e15, 0.0, -0.0),
+                DVec3::new(std::f64::consts::PI, 2.0, 3.0),
+                DVec3::new(-1.0, 7.0, f64::MIN_POSITIVE),
+            ],
+            triangles: vec![[0, 1, 2], [3, 2, 1]],
+            tetrahedra: vec![[0, 1, 2, 3]],
+        };
+        let path = text::temp_path("medit-rt", "mesh");
+        write(&path, &data).unwrap();
+        let back = super::super::read(&path);
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(back.unwrap(), data);
+
+        let surface = MeshData {
+            tetrahedra: vec![],
+            ..data.clone()
+        };
+        let mut buf = Vec::new();
+        write_to(&mut buf, &surface).unwrap();
+        let s = String::from_utf8(buf).unwrap();
+        assert!(!s.contains("Tetrahedra"));
+        assert_eq!(parse(&s, "s.mesh").unwrap(), surface);
+    }
+
+    #[test]
+    fn write_rejects_bad_ids() {
+        let data = MeshData {
+            positions: vec![DVec3::ZERO; 3],
+            triangles: vec![[0, 1, 3]],
+            tetrahedra: vec![],
+        };
+        let path = text::temp_path("medit-bad", "mesh");
+        let e = write(&path, &data).unwrap_err();
+        assert!(!path.exists());
+        assert!(
+            e.message.contains("triangle 0 names vertex 3"),
+            "{}",
+            e.message
+        );
+    }
 }

@@ -8,6 +8,7 @@ mod off;
 mod ply;
 mod stl;
 mod tetgen;
+mod text;
 mod vtk;
 
 use crate::error::{Error, Result};
@@ -110,4 +111,25 @@ pub(crate) fn read_to_string(path: &Path) -> Result<String> {
 #[allow(dead_code)]
 pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
     std::fs::read(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
+}
+
+/// Parses a mesh held in memory (`name` appears in errors). TetGen needs two files, so
+/// it is read from paths only.
+pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
+    let text = || {
+        std::str::from_utf8(bytes)
+            .map_err(|e| Error::parse(format!("{name}: not UTF-8 text (byte {})", e.valid_up_to())))
+    };
+    match format {
+        Format::Off => off::parse(bytes, name),
+        Format::Obj => obj::parse(bytes.to_vec(), name),
+        Format::Ply => ply::parse(bytes, name),
+        Format::Stl => stl::parse(bytes, name),
+        Format::Medit => medit::parse(text()?, name),
+        Format::Gmsh => gmsh::parse(text()?, name),
+        Format::Vtk => vtk::parse(text()?, name),
+        Format::TetGen => Err(Error::invalid(format!(
+            "{name}: TetGen meshes are two files (.node and .ele): read them from a path"
+        ))),
+    }
 }

@@ -1,13 +1,599 @@
-//! Placeholder: the off reader is being written.
+//! OFF (Geomview Object File Format): our own reader and writer.
+//!
+//! The reader is token-based over the raw bytes (no allocation per token) and accepts:
+//! - the header keyword `OFF` with the prefixes `ST`, `C`, `N` (`STOFF`, `COFF`, `NOFF`,
+//!   `CNOFF`, ...); with a prefix, a vertex is its first 3 numbers and the rest of its line
+//!   (texture coordinates, colour, normal) is skipped. `4OFF`, `nOFF` and `OFF BINARY` are
+//!   refused with a clear error. Geomview lets the keyword be left out; we require it, so
+//!   that a file which is not OFF at all is not read as one;
+//! - `#` comments anywhere (to the end of the line) and blank lines;
+//! - the counts `nv nf [ne]` (`ne` is read only if it is on the line of `nf`, and ignored);
+//! - vertices as 3 numbers, split over lines in any way (plain `OFF`);
+//! - faces `k i1 .. ik [colour]`: polygons are fan-triangulated (i1,i2,i3), (i1,i3,i4), ...,
+//!   anything after the k-th index on its line (a colour) is skipped; `k < 3` is an error.
+//!
+//! Every error names the file and the line of the offending token. Declared counts only cap
+//! the memory reserved up front by the input's size, so a lying header costs nothing.
 
 use super::MeshData;
 use crate::error::{Error, Result};
+use glam::DVec3;
+use std::io::Write;
 use std::path::Path;
 
+/// Reads an OFF file.
 pub fn read(path: &Path) -> Result<MeshData> {
-    Err(Error::invalid(format!("{}: off reader not written yet", path.display())))
+    let bytes = super::read_bytes(path)?;
+    parse(&bytes, &path.display().to_string())
 }
 
-pub fn write(path: &Path, _data: &MeshData) -> Result<()> {
-    Err(Error::invalid(format!("{}: off writer not written yet", path.display())))
+/// Writes positions and triangles as an ASCII OFF file (`OFF`, `nv nf 0`, vertices, `3 a b c`).
+/// Coordinates are written with the shortest text that reads back to the same `f64`.
+pub fn write(path: &Path, data: &MeshData) -> Result<()> {
+    let name = path.display().to_string();
+    check_writable(data, &name)?;
+    let io_err = |e: std::io::Error| Error::io(format!("{name}: {e}"));
+    let file = std::fs::File::create(path).map_err(io_err)?;
+    let mut out = std::io::BufWriter::with_capacity(1 << 16, file);
+    write_to(&mut out, data, &name)?;
+    out.flush().map_err(io_err)
+}
+
+/// Writes `data` as OFF to any writer; `name` is used in error messages.
+pub(crate) fn write_to<W: Write>(out: &mut W, data: &MeshData, name: &str) -> Result<()> {
+    check_writable(data, name)?;
+    let io_err = |e: std::io::Error| Error::io(format!("{name}: {e}"));
+    writeln!(
+        out,
+        "OFF\n{} {} 0",
+        data.positions.len(),
+        data.triangles.len()
+    )
+    .map_err(io_err)?;
+    for p in &data.positions {
+        writeln!(out, "{} {} {}", p.x, p.y, p.z).map_err(io_err)?;
+    }
+    for t in &data.triangles {
+        writeln!(out, "3 {} {} {}", t[0], t[1], t[2]).map_err(io_err)?;
+    }
+    Ok(())
+}
+
+fn check_writable(data: &MeshData, name: &str) -> Result<()> {
+    if data.positions.is_empty() {
+        return Err(Error::invalid(format!("{name}: no vertices to write")));
+    }
+    if !data.tetrahedra.is_empty() {
+        return Err(Error::invalid(format!(
+            "{name}: OFF holds surfaces only, but the mesh has {} tetrahedra (write .mesh or .vtk)",
+            data.tetrahedra.len()
+        )));
+    }
+    let nv = data.positions.len();
+    if let Some((f, t)) = data
+        .triangles
+        .iter()
+        .enumerate()
+        .find(|(_, t)| t.iter().any(|&v| v as usize >= nv))
+    {
+        return Err(Error::invalid(format!(
+            "{name}: triangle {f} {t:?} refers to a vertex >= {nv} (the number of vertices)"
+        )));
+    }
+    Ok(())
+}
+
+/// Parses OFF text from memory; `name` (usually the file name) prefixes every error.
+pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes); // UTF-8 byte order mark
+    let mut tk = Tokens {
+        b: bytes,
+        pos: 0,
+        line: 1,
+    };
+
+    // Header keyword.
+    let Some((head, line)) = tk.next() else {
+        return Err(Error::parse(format!(
+            "{name}: empty file (no OFF header; expected 'OFF')"
+        )));
+    };
+    let prefixed = parse_header(head).map_err(|msg| tk.err_at(name, line, &msg))?;
+    if tk.token_on_this_line() {
+        let save = (tk.pos, tk.line);
+        if let Some((word, line)) = tk.next()
+            && word.eq_ignore_ascii_case(b"BINARY")
+        {
+            return Err(tk.err_at(name, line, "binary OFF ('OFF BINARY') is not supported"));
+        }
+        (tk.pos, tk.line) = save;
+    }
+
+    // Counts.
+    let nv = tk.count(name, "the number of vertices")?;
+    if nv > u64::from(u32::MAX) {
+        return Err(Error::out_of_range(format!(
+            "{name}:{}: {nv} vertices declared; at most {} are supported",
+            tk.line,
+            u32::MAX
+        )));
+    }
+    let nf = tk.count(name, "the number of faces")?;
+    if tk.token_on_this_line() {
+        tk.count(name, "the number of edges")?;
+    }
+
+    // Vertices: at least "0 0 0\n" (6 bytes) each, so the input bounds the reservation.
+    let mut positions = Vec::with_capacity((nv as usize).min(bytes.len() / 6));
+    for i in 0..nv {
+        let mut p = [0.0f64; 3];
+        for (c, axis) in p.iter_mut().zip(["x", "y", "z"]) {
+            *c = tk.number(name, || format!("coordinate {axis} of vertex {i}"))?;
+        }
+        positions.push(DVec3::from_array(p));
+        if prefixed {
+            tk.skip_rest_of_line();
+        }
+    }
+
+    // Faces: at least "3 0 1 2\n" (8 bytes) each.
+    let nv32 = nv as u32;
+    let mut triangles =
+        Vec::with_capacity((nf.min(usize::MAX as u64) as usize).min(bytes.len() / 8));
+    for f in 0..nf {
+        let (tok, line) = tk.expect(name, || format!("the vertex count of face {f}"))?;
+        let k: u64 = parse_tok(tok).ok_or_else(|| {
+            tk.bad_token(name, tok, line, &format!("the vertex count of face {f}"))
+        })?;
+        if k < 3 {
+            return Err(tk.err_at(
+                name,
+                line,
+                &format!("face {f} has {k} vertices; a face needs at least 3"),
+            ));
+        }
+        let first = tk.index(name, f, nv32)?;
+        let mut prev = tk.index(name, f, nv32)?;
+        for _ in 2..k {
+            let v = tk.index(name, f, nv32)?;
+            triangles.push([first, prev, v]);
+            prev = v;
+        }
+        // Whatever follows the last index on its line is the face's colour.
+        tk.skip_rest_of_line();
+    }
+
+    Ok(MeshData {
+        positions,
+        triangles,
+        tetrahedra: Vec::new(),
+    })
+}
+
+/// Checks the header keyword `[ST][C][N][4][n]OFF`; returns whether a prefix announces extra
+/// per-vertex columns.
+fn parse_header(tok: &[u8]) -> std::result::Result<bool, String> {
+    let mut rest = tok;
+    let mut prefixed = false;
+    for p in [&b"ST"[..], b"C", b"N"] {
+        if let Some(r) = rest.strip_prefix(p) {
+            rest = r;
+            prefixed = true;
+        }
+    }
+    let mut unsupported = false;
+    for p in [&b"4"[..], b"n"] {
+        if let Some(r) = rest.strip_prefix(p) {
+            rest = r;
+            unsupported = true;
+        }
+    }
+    if rest != b"OFF" {
+        return Err(format!(
+            "missing OFF header: expected 'OFF' (or COFF, NOFF, STOFF, ...), found '{}'",
+            show(tok)
+        ));
+    }
+    if unsupported {
+        return Err(format!(
+            "'{}': 4D and n-dimensional OFF are not supported",
+            show(tok)
+        ));
+    }
+    Ok(prefixed)
+}
+
+/// The token as text for an error message (lossy, shortened).
+fn show(tok: &[u8]) -> String {
+    let s = String::from_utf8_lossy(&tok[..tok.len().min(40)]).into_owned();
+    if tok.len() > 40 { s + "..." } else { s }
+}
+
+fn parse_tok<T: std::str::FromStr>(tok: &[u8]) -> Option<T> {
+    std::str::from_utf8(tok).ok()?.parse().ok()
+}
+
+/// Whitespace-separated tokens over bytes, with `#` comments and 1-based line numbers.
+struct Tokens<'a> {
+    b: &'a [u8],
+    pos: usize,
+    line: usize,
+}
+
+impl<'a> Tokens<'a> {
+    fn skip_blank(&mut self) {
+        while let Some(&c) = self.b.get(self.pos) {
+            match c {
+                b'\n' => {
+                    self.line += 1;
+                    self.pos += 1;
+                }
+                b'#' => self.skip_rest_of_line(),
+                c if c.is_ascii_whitespace() || c == 0x0b => self.pos += 1,
+                _ => break,
+            }
+        }
+    }
+
+    /// The next token and its line, or `None` at the end of the input.
+    fn next(&mut self) -> Option<(&'a [u8], usize)> {
+        self.skip_blank();
+        let start = self.pos;
+        if start >= self.b.len() {
+            return None;
+        }
+        let b = self.b;
+        while self.pos < b.len() && !b[self.pos].is_ascii_whitespace() && b[self.pos] != b'#' {
+            self.pos += 1;
+        }
+        Some((&b[start..self.pos], self.line))
+    }
+
+    /// Moves to the end of the current line (its `\n` is left for `skip_blank` to count).
+    fn skip_rest_of_line(&mut self) {
+        match self.b[self.pos.min(self.b.len())..]
+            .iter()
+            .position(|&c| c == b'\n')
+        {
+            Some(n) => self.pos += n,
+            None => self.pos = self.b.len(),
+        }
+    }
+
+    /// Whether another token follows on the current line.
+    fn token_on_this_line(&mut self) -> bool {
+        while let Some(&c) = self.b.get(self.pos) {
+            if c == b'\n' || c == b'#' {
+                return false;
+            }
+            if !(c.is_ascii_whitespace() || c == 0x0b) {
+                return true;
+            }
+            self.pos += 1;
+        }
+        false
+    }
+
+    fn err_at(&self, name: &str, line: usize, msg: &str) -> Error {
+        Error::parse(format!("{name}:{line}: {msg}"))
+    }
+
+    fn bad_token(&self, name: &str, tok: &[u8], line: usize, what: &str) -> Error {
+        self.err_at(
+            name,
+            line,
+            &format!("expected {what}, found '{}'", show(tok)),
+        )
+    }
+
+    fn expect(&mut self, name: &str, what: impl FnOnce() -> String) -> Result<(&'a [u8], usize)> {
+        self.next().ok_or_else(|| {
+            self.err_at(
+                name,
+                self.line,
+                &format!("unexpected end of file (truncated?): expected {}", what()),
+            )
+        })
+    }
+
+    fn count(&mut self, name: &str, what: &str) -> Result<u64> {
+        let (tok, line) = self.expect(name, || what.to_string())?;
+        parse_tok(tok).ok_or_else(|| self.bad_token(name, tok, line, what))
+    }
+
+    fn number(&mut self, name: &str, what: impl Fn() -> String) -> Result<f64> {
+        let (tok, line) = self.expect(name, &what)?;
+        parse_tok(tok).ok_or_else(|| self.bad_token(name, tok, line, &what()))
+    }
+
+    fn index(&mut self, name: &str, face: u64, nv: u32) -> Result<u32> {
+        let what = || format!("a vertex index of face {face}");
+        let (tok, line) = self.expect(name, what)?;
+        let v: u64 = parse_tok(tok).ok_or_else(|| self.bad_token(name, tok, line, &what()))?;
+        if v >= u64::from(nv) {
+            return Err(Error::out_of_range(format!(
+                "{name}:{line}: face {face}: vertex index {v} is out of range (the file has {nv} vertices)"
+            )));
+        }
+        Ok(v as u32)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::ErrorKind;
+
+    fn p(s: &str) -> Result<MeshData> {
+        parse(s.as_bytes(), "t.off")
+    }
+
+    fn err(s: &str) -> Error {
+        match p(s) {
+            Ok(m) => panic!("expected an error, got {m:?}"),
+            Err(e) => e,
+        }
+    }
+
+    const TETRA: &str =
+        "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+    #[test]
+    fn reads_a_tetrahedron() {
+        let m = p(TETRA).unwrap();
+        assert_eq!(m.positions.len(), 4);
+        assert_eq!(m.positions[1], DVec3::new(1.0, 0.0, 0.0));
+        assert_eq!(m.positions[3], DVec3::new(0.0, 0.0, 1.0));
+        assert_eq!(
+            m.triangles,
+            vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+        );
+        assert!(m.tetrahedra.is_empty());
+    }
+
+    #[test]
+    fn polygons_are_fan_triangulated() {
+        let m = p("OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n4 0 1 2 3\n5 1 4 5 2 0\n")
+            .unwrap();
+        assert_eq!(
+            m.triangles,
+            vec![[0, 1, 2], [0, 2, 3], [1, 4, 5], [1, 5, 2], [1, 2, 0]]
+        );
+    }
+
+    #[test]
+    fn comments_blank_lines_and_split_tokens() {
+        let text = "# leading comment\n\n  OFF # header comment\n# between\n4\n 2\n\
+                    0 # ne on the next line is not read as a count; it is x of vertex 0\n\
+                    0 0\n1 0 0 0 1\n0 # split\n0 0 1\n\n3 0 1 2 # tail\n3\n0\n2\n3\n";
+        let m = p(text).unwrap();
+        assert_eq!(m.positions.len(), 4);
+        assert_eq!(m.positions[0], DVec3::ZERO);
+        assert_eq!(m.positions[2], DVec3::new(0.0, 1.0, 0.0));
+        assert_eq!(m.positions[3], DVec3::new(0.0, 0.0, 1.0));
+        assert_eq!(m.triangles, vec![[0, 1, 2], [0, 2, 3]]);
+    }
+
+    #[test]
+    fn counts_on_the_header_line_and_crlf() {
+        let m = p("\u{feff}OFF 3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n").unwrap();
+        assert_eq!(m.positions.len(), 3);
+        assert_eq!(m.triangles, vec![[0, 1, 2]]);
+    }
+
+    #[test]
+    fn variants_skip_extra_columns_and_face_colours() {
+        let text = "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0\n0 1 0 0.1 0.2 0.3 1\n\
+                    3 0 1 2 1 0 0 1\n";
+        let m = p(text).unwrap();
+        assert_eq!(m.positions[1], DVec3::new(1.0, 0.0, 0.0));
+        assert_eq!(m.positions[2], DVec3::new(0.0, 1.0, 0.0));
+        assert_eq!(m.triangles, vec![[0, 1, 2]]);
+        let m = p("STCNOFF\n3 1 0\n0 0 0 9 9\n1 0 0 9 9 9\n0 1 0\n3 2 1 0\n").unwrap();
+        assert_eq!(m.positions[2], DVec3::new(0.0, 1.0, 0.0));
+        assert_eq!(m.triangles, vec![[2, 1, 0]]);
+        // Plain OFF is purely token-based: two vertices may share a line.
+        let m = p("OFF\n3 1 0\n0 0 0 1 0 0\n0 1 0 3 0 1 2\n").unwrap();
+        assert_eq!(m.positions[1], DVec3::new(1.0, 0.0, 0.0));
+        assert_eq!(m.triangles, vec![[0, 1, 2]]);
+    }
+
+    #[test]
+    fn nan_and_inf_coordinates_are_accepted() {
+        let m = p("OFF\n3 1 0\nnan 0 0\ninf -inf 0\n0 1 NaN\n3 0 1 2\n").unwrap();
+        assert!(m.positions[0].x.is_nan());
+        assert_eq!(m.positions[1].y, f64::NEG_INFINITY);
+        assert!(m.positions[2].z.is_nan());
+    }
+
+    #[test]
+    fn out_of_range_index_names_line_and_face() {
+        let e = err("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 3\n");
+        assert_eq!(e.kind, ErrorKind::OutOfRange);
+        assert!(e.message.starts_with("t.off:7: face 1"), "{}", e.message);
+        assert!(e.message.contains("vertex index 3"), "{}", e.message);
+    }
+
+    #[test]
+    fn truncated_file_is_an_error_with_line() {
+        let e = err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1\n");
+        assert_eq!(e.kind, ErrorKind::Parse);
+        assert!(
+            e.message.starts_with("t.off:6: unexpected end of file"),
+            "{}",
+            e.message
+        );
+        assert!(
+            e.message.contains("coordinate z of vertex 2"),
+            "{}",
+            e.message
+        );
+        let e = err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2");
+        assert!(e.message.starts_with("t.off:6:"), "{}", e.message);
+        assert!(e.message.contains("face 0"), "{}", e.message);
+        let e = err("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+        assert!(
+            e.message.contains("vertex count of face 1"),
+            "{}",
+            e.message
+        );
+    }
+
+    #[test]
+    fn bad_token_is_an_error_with_line() {
+        let e = err("OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n");
+        assert_eq!(e.kind, ErrorKind::Parse);
+        assert!(
+            e.message
+                .starts_with("t.off:4: expected coordinate y of vertex 1, found 'x'"),
+            "{}",
+            e.message
+        );
+        let e = err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n");
+        assert!(
+            e.message
+                .starts_with("t.off:6: expected a vertex index of face 0, found '-1'"),
+            "{}",
+            e.message
+        );
+        let e = err("OFF\nthree 1 0\n");
+        assert!(
+            e.message
+                .starts_with("t.off:2: expected the number of vertices"),
+            "{}",
+            e.message
+        );
+        let e = err("OFF\n3 1 x\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+        assert!(
+            e.message
+                .starts_with("t.off:2: expected the number of edges"),
+            "{}",
+            e.message
+        );
+        let e = err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 \u{e9}\n");
+        assert!(e.message.starts_with("t.off:6:"), "{}", e.message);
+    }
+
+    #[test]
+    fn small_faces_are_errors() {
+        let e = err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n\n2 0 1\n");
+        assert!(
+            e.message.starts_with("t.off:7: face 0 has 2 vertices"),
+            "{}",
+            e.message
+        );
+    }
+
+    #[test]
+    fn missing_or_unsupported_header() {
+        let e = err("3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+        assert!(
+            e.message.starts_with("t.off:1: missing OFF header"),
+            "{}",
+            e.message
+        );
+        let e = err("# only a comment\n\nPLY\n");
+        assert!(
+            e.message.starts_with("t.off:3: missing OFF header"),
+            "{}",
+            e.message
+        );
+        let e = err("");
+        assert!(e.message.starts_with("t.off: empty file"), "{}", e.message);
+        let e = err("  \n# c\n");
+        assert!(e.message.contains("empty file"), "{}", e.message);
+        let e = err("OFF BINARY\n3 1 0\n");
+        assert!(e.message.contains("binary OFF"), "{}", e.message);
+        let e = err("4OFF\n3 1 0\n");
+        assert!(e.message.contains("4D"), "{}", e.message);
+        let e = err("OFF\n");
+        assert!(
+            e.message.starts_with("t.off:2: unexpected end of file"),
+            "{}",
+            e.message
+        );
+    }
+
+    #[test]
+    fn huge_declared_counts_do_not_allocate() {
+        // Would need ~96 GB of positions if the header were trusted.
+        let e = err("OFF\n4000000000 1 0\n0 0 0\n");
+        assert!(
+            e.message.contains("unexpected end of file"),
+            "{}",
+            e.message
+        );
+        let e = err("OFF\n3 18446744073709551615 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+        assert!(
+            e.message.contains("vertex count of face 1"),
+            "{}",
+            e.message
+        );
+        let e = err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n");
+        assert!(e.message.contains("face 0"), "{}", e.message);
+        let e = err("OFF\n4294967296 0 0\n");
+        assert_eq!(e.kind, ErrorKind::OutOfRange);
+    }
+
+    #[test]
+    fn point_set_without_faces() {
+        let m = p("OFF\n2 0 0\n0 0 0\n1 1 1\n").unwrap();
+        assert_eq!(m.positions.len(), 2);
+        assert!(m.triangles.is_empty());
+    }
+
+    #[test]
+    fn write_then_read_round_trips_exactly() {
+        let data = MeshData {
+            positions: vec![
+                DVec3::new(0.1, -2.5e-300, 1.0 / 3.0),
+                DVec3::new(1e20, 0.0, -0.0),
+                DVec3::new(f64::MIN_POSITIVE, 7.0, 0.1 + 0.2),
+            ],
+            triangles: vec![[0, 1, 2], [2, 1, 0]],
+            tetrahedra: vec![],
+        };
+        let mut buf = Vec::new();
+        write_to(&mut buf, &data, "mem").unwrap();
+        assert!(buf.starts_with(b"OFF\n3 2 0\n"));
+        assert_eq!(parse(&buf, "mem").unwrap(), data);
+
+        let path = std::env::temp_dir().join(format!("topomesh-off-{}-rt.off", std::process::id()));
+        write(&path, &data).unwrap();
+        let back = read(&path);
+        let _ = std::fs::remove_file(&path);
+        assert_eq!(back.unwrap(), data);
+    }
+
+    #[test]
+    fn writer_refuses_bad_meshes() {
+        let mut buf = Vec::new();
+        let e = write_to(&mut buf, &MeshData::default(), "w.off").unwrap_err();
+        assert!(e.message.starts_with("w.off: no vertices"), "{}", e.message);
+        let data = MeshData {
+            positions: vec![DVec3::ZERO; 3],
+            triangles: vec![[0, 1, 3]],
+            tetrahedra: vec![],
+        };
+        let e = write_to(&mut buf, &data, "w.off").unwrap_err();
+        assert!(e.message.contains("triangle 0"), "{}", e.message);
+        let data = MeshData {
+            positions: vec![DVec3::ZERO; 4],
+            triangles: vec![],
+            tetrahedra: vec![[0, 1, 2, 3]],
+        };
+        assert!(write_to(&mut buf, &data, "w.off").is_err());
+        assert!(buf.is_empty());
+    }
+
+    #[test]
+    fn missing_file_is_an_io_error_naming_it() {
+        let e = read(Path::new("/nonexistent/dir/x.off")).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Io);
+        assert!(
+            e.message.contains("/nonexistent/dir/x.off"),
+            "{}",
+            e.message
+        );
+    }
 }

@@ -1,9 +1,447 @@
-//! Placeholder: the stl reader is being written.
+//! STL, ASCII and binary, decoded by the `stl_io` crate; the vertex welding is ours.
+//!
+//! STL stores every triangle with its own three corners, so shared vertices have to be
+//! recovered. `stl_io::read_stl` does weld (exact bit patterns through a `HashMap`, first
+//! occurrence order), but it keeps `-0.0` and `0.0` apart, so we only use its triangle
+//! iterator and weld here: corners whose `f32` coordinates are bitwise equal, with `-0.0`
+//! read as `0.0`, become one vertex. That is a (radix) sort of the corners by their bits and
+//! a scan of the runs, no hashing; vertices are numbered in order of first occurrence, so
+//! the output is deterministic. NaN coordinates weld by their bits (no panic).
+//!
+//! ASCII or binary is decided by the size first: a file of exactly `84 + 50 n` bytes whose
+//! header declares `n` triangles is binary even if it starts with `solid` (several
+//! exporters write such headers). Otherwise a file starting with `solid` and holding no NUL
+//! byte in its first 512 bytes is ASCII. ASCII errors name the facet and the line it starts
+//! on (the crate reports no line); `stl_io` refuses non-finite coordinates in ASCII files.
 
 use super::MeshData;
 use crate::error::{Error, Result};
+use glam::DVec3;
+use std::borrow::Cow;
+use std::io::Cursor;
 use std::path::Path;
 
+/// Reads an STL file (ASCII or binary) and welds equal corners into shared vertices.
 pub fn read(path: &Path) -> Result<MeshData> {
-    Err(Error::invalid(format!("{}: stl reader not written yet", path.display())))
+    let bytes = super::read_bytes(path)?;
+    parse(&bytes, &path.display().to_string())
+}
+
+const HEADER: usize = 84;
+const RECORD: usize = 50;
+
+/// Parses STL from memory; `name` (usually the file name) prefixes every error.
+pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
+    if bytes.is_empty() {
+        return Err(Error::parse(format!("{name}: empty file")));
+    }
+    let declared = (bytes.len() >= HEADER)
+        .then(|| u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as usize);
+    let exact_binary =
+        declared.is_some_and(|n| n.checked_mul(RECORD) == Some(bytes.len() - HEADER));
+    let ascii =
+        !exact_binary && bytes.starts_with(b"solid") && !bytes[..bytes.len().min(512)].contains(&0);
+
+    // stl_io picks ASCII iff the first line starts with "solid "; steer it to our choice.
+    let input: Cow<[u8]> = if ascii {
+        match bytes.get(5) {
+            Some(b' ') => Cow::Borrowed(bytes),
+            // "solid" alone on its line (or in the file): a valid ASCII header stl_io refuses.
+            _ => Cow::Owned([&b"solid "[..], &bytes[5..]].concat()),
+        }
+    } else {
+        let Some(n) = declared else {
+            return Err(Error::parse(format!(
+                "{name}: not an STL file: too short for binary STL ({} bytes, the header alone \
+                 is {HEADER}) and not ASCII STL (which starts with 'solid')",
+                bytes.len()
+            )));
+        };
+        let need = n.saturating_mul(RECORD).saturating_add(HEADER);
+        if bytes.len() < need {
+            return Err(Error::parse(format!(
+                "{name}: truncated binary STL: the header declares {n} triangles ({need} bytes), \
+                 the file has {} bytes (triangle {} is incomplete)",
+                bytes.len(),
+                (bytes.len() - HEADER) / RECORD
+            )));
+        }
+        if bytes.starts_with(b"solid ") {
+            let mut patched = bytes.to_vec();
+            patched[0] = b'S';
+            Cow::Owned(patched)
+        } else {
+            Cow::Borrowed(bytes)
+        }
+    };
+
+    let mut cursor = Cursor::new(&input[..]);
+    let mut iter =
+        stl_io::create_stl_reader(&mut cursor).map_err(|e| Error::parse(format!("{name}: {e}")))?;
+    // Binary: the size check above bounds the count. ASCII: a facet takes >= 100 bytes.
+    let cap = declared.filter(|_| !ascii).unwrap_or(input.len() / 100);
+    let mut corners: Vec<u128> = Vec::with_capacity(cap.min(input.len() / 12).saturating_mul(3));
+    for (facet, t) in iter.by_ref().enumerate() {
+        let t = t.map_err(|e| {
+            if ascii {
+                Error::parse(format!(
+                    "{name}:{}: facet {facet}: {e}",
+                    ascii_facet_line(&input, facet)
+                ))
+            } else {
+                Error::parse(format!("{name}: triangle {facet}: {e}"))
+            }
+        })?;
+        if corners.len() > (u32::MAX - 3) as usize {
+            return Err(Error::too_large(format!(
+                "{name}: too many triangles (more than {facet}); corner ids must fit in 32 bits"
+            )));
+        }
+        for v in &t.vertices {
+            corners.push(corner_key(v.0, corners.len()));
+        }
+    }
+    Ok(weld(corners))
+}
+
+/// The line on which ASCII facet `facet` (0-based) starts: the crate skips blank lines and
+/// takes every facet as 7 lines after the `solid` line.
+fn ascii_facet_line(text: &[u8], facet: usize) -> usize {
+    let target = facet.saturating_mul(7).saturating_add(1); // 0-based index of non-blank lines
+    let mut seen = 0;
+    for (i, line) in text.split(|&c| c == b'\n').enumerate() {
+        if line.iter().all(|c| c.is_ascii_whitespace()) {
+            continue;
+        }
+        if seen == target {
+            return i + 1;
+        }
+        seen += 1;
+    }
+    text.split(|&c| c == b'\n').count()
+}
+
+/// A corner as one sortable number: the bits of x, y, z (-0.0 as 0.0), then the corner's
+/// index, which makes every key distinct and orders equal positions by first occurrence.
+fn corner_key([x, y, z]: [f32; 3], index: usize) -> u128 {
+    let bits = |x: f32| u128::from(if x == 0.0 { 0 } else { x.to_bits() });
+    bits(x) << 96 | bits(y) << 64 | bits(z) << 32 | index as u128
+}
+
+/// Merges the corners (keys in corner order, fewer than `u32::MAX`) with equal positions
+/// into vertices numbered by first occurrence; every 3 corners make a triangle.
+fn weld(mut keys: Vec<u128>) -> MeshData {
+    let n = keys.len();
+    sort_by_position(&mut keys);
+    // Runs of equal positions, in sorted order: run_of[corner], and each run's position.
+    let mut run_of = vec![0u32; n];
+    let mut run_pos: Vec<u128> = Vec::new();
+    for (j, &k) in keys.iter().enumerate() {
+        if j == 0 || k >> 32 != keys[j - 1] >> 32 {
+            run_pos.push(k >> 32);
+        }
+        run_of[k as u32 as usize] = (run_pos.len() - 1) as u32;
+    }
+    drop(keys);
+    // Number the runs in order of their first corner; a corner becomes its run's vertex.
+    let mut id_of_run = vec![u32::MAX; run_pos.len()];
+    let mut positions = Vec::with_capacity(run_pos.len());
+    for r in run_of.iter_mut() {
+        let id = &mut id_of_run[*r as usize];
+        if *id == u32::MAX {
+            *id = positions.len() as u32;
+            let p = run_pos[*r as usize];
+            let f = |shift: u32| f64::from(f32::from_bits((p >> shift) as u32));
+            positions.push(DVec3::new(f(64), f(32), f(0)));
+        }
+        *r = *id;
+    }
+    let triangles = run_of.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
+    MeshData {
+        positions,
+        triangles,
+        tetrahedra: Vec::new(),
+    }
+}
+
+/// Stable LSD radix sort of `keys` on their bits 32..128 (the position), 16 bits a pass.
+/// The low 32 bits (the corner index) increase along the input, so stability leaves the
+/// keys ordered by position, then index. A pass whose digit is the same for all keys (a
+/// flat or axis-aligned part of the data) is skipped.
+fn sort_by_position(keys: &mut Vec<u128>) {
+    const PASSES: usize = 6;
+    const RADIX: usize = 1 << 16;
+    let digit = |k: u128, pass: usize| (k >> (32 + 16 * pass)) as usize & (RADIX - 1);
+    let mut hist = vec![0usize; PASSES * RADIX];
+    for &k in keys.iter() {
+        for pass in 0..PASSES {
+            hist[pass * RADIX + digit(k, pass)] += 1;
+        }
+    }
+    let mut tmp = vec![0u128; keys.len()];
+    for (pass, h) in hist.chunks_exact_mut(RADIX).enumerate() {
+        if h.contains(&keys.len()) {
+            continue;
+        }
+        let mut sum = 0;
+        for c in h.iter_mut() {
+            (*c, sum) = (sum, sum + *c);
+        }
+        for &k in keys.iter() {
+            let slot = &mut h[digit(k, pass)];
+            tmp[*slot] = k;
+            *slot += 1;
+        }
+        std::mem::swap(keys, &mut tmp);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::ErrorKind;
+
+    /// A unit cube as 12 triangles, each with its own corners, as in an STL file.
+    fn cube() -> Vec<[[f32; 3]; 3]> {
+        let c = |i: usize| [(i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32];
+        let quads = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
+        quads
+            .iter()
+            .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
+            .collect()
+    }
+
+    fn ascii(tris: &[[[f32; 3]; 3]]) -> String {
+        let mut s = String::from("solid cube\n");
+        for t in tris {
+            s += "  facet normal 0 0 0\n    outer loop\n";
+            for v in t {
+                s += &format!("      vertex {} {} {}\n", v[0], v[1], v[2]);
+            }
+            s += "    endloop\n  endfacet\n";
+        }
+        s + "endsolid cube\n"
+    }
+
+    fn binary(header: &[u8], tris: &[[[f32; 3]; 3]]) -> Vec<u8> {
+        let mut b = header.to_vec();
+        b.resize(80, b' ');
+        b.extend((tris.len() as u32).to_le_bytes());
+        for t in tris {
+            b.extend([0u8; 12]);
+            for x in t.iter().flatten() {
+                b.extend(x.to_le_bytes());
+            }
+            b.extend([0u8; 2]);
+        }
+        b
+    }
+
+    fn temp(tag: &str, bytes: &[u8]) -> std::path::PathBuf {
+        let path =
+            std::env::temp_dir().join(format!("topomesh-stl-{}-{tag}.stl", std::process::id()));
+        std::fs::write(&path, bytes).unwrap();
+        path
+    }
+
+    /// Checks the welded mesh has the same triangles, corner by corner, as `tris`.
+    fn check_same(m: &MeshData, tris: &[[[f32; 3]; 3]]) {
+        assert_eq!(m.triangles.len(), tris.len());
+        for (t, want) in m.triangles.iter().zip(tris) {
+            for (&v, w) in t.iter().zip(want) {
+                let p = m.positions[v as usize];
+                assert_eq!([p.x as f32, p.y as f32, p.z as f32], *w);
+            }
+        }
+    }
+
+    #[test]
+    fn ascii_cube_welds_to_8_vertices() {
+        let tris = cube();
+        let m = parse(ascii(&tris).as_bytes(), "c.stl").unwrap();
+        assert_eq!(m.positions.len(), 8);
+        check_same(&m, &tris);
+        // First-occurrence order: the first triangle's corners are vertices 0, 1, 2.
+        assert_eq!(m.triangles[0], [0, 1, 2]);
+        assert_eq!(m.triangles[1], [0, 2, 3]);
+    }
+
+    #[test]
+    fn binary_cube_file_welds_to_8_vertices() {
+        let tris = cube();
+        let path = temp("bin", &binary(b"binary cube", &tris));
+        let m = read(&path);
+        let _ = std::fs::remove_file(&path);
+        let m = m.unwrap();
+        assert_eq!(m.positions.len(), 8);
+        check_same(&m, &tris);
+    }
+
+    #[test]
+    fn binary_starting_with_solid_is_read_as_binary() {
+        let tris = cube();
+        let m = parse(&binary(b"solid but binary", &tris), "c.stl").unwrap();
+        assert_eq!(m.positions.len(), 8);
+        check_same(&m, &tris);
+    }
+
+    #[test]
+    fn ascii_with_bare_solid_line_and_crlf() {
+        let text = ascii(&cube())
+            .replace("solid cube\n", "solid\n")
+            .replace('\n', "\r\n");
+        let m = parse(text.as_bytes(), "c.stl").unwrap();
+        assert_eq!(m.positions.len(), 8);
+        assert_eq!(m.triangles.len(), 12);
+    }
+
+    #[test]
+    fn negative_zero_welds_with_zero_but_nothing_else_does() {
+        let mut tris = cube();
+        tris[3][0] = tris[3][0].map(|x| if x == 0.0 { -0.0 } else { x });
+        // 1 + 1e-7 is a different f32 from 1: a new vertex, not welded.
+        tris[5][1] = [1.0 + 1e-7, 1.0, 1.0];
+        let m = parse(&binary(b"x", &tris), "c.stl").unwrap();
+        assert_eq!(m.positions.len(), 9);
+        assert_eq!(m.triangles[3][0], m.triangles[2][0]);
+        assert_eq!(
+            m.positions[8],
+            DVec3::new(f64::from(1.0f32 + 1e-7), 1.0, 1.0)
+        );
+    }
+
+    #[test]
+    fn nan_coordinates_do_not_panic() {
+        let mut tris = cube();
+        tris[0][0] = [f32::NAN, 0.0, 0.0];
+        tris[1][0] = [f32::NAN, 0.0, 0.0];
+        tris[2][2] = [f32::INFINITY, 0.0, 0.0];
+        let m = parse(&binary(b"x", &tris), "c.stl").unwrap();
+        assert_eq!(m.triangles.len(), 12);
+        assert_eq!(m.triangles[0][0], m.triangles[1][0]);
+        assert!(m.positions[m.triangles[0][0] as usize].x.is_nan());
+    }
+
+    #[test]
+    fn weld_matches_a_naive_reference() {
+        // Corners drawn from a small pool (so there are many repeats), with values that
+        // differ in every 16-bit digit, -0.0, NaN and infinities.
+        let pool = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            1.5,
+            1e-30,
+            3e30,
+            0.1,
+            65536.0,
+            1.0 + 1e-7,
+            f32::NAN,
+            f32::INFINITY,
+        ];
+        let mut seed = 12345u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            pool[(seed >> 33) as usize % pool.len()]
+        };
+        let corners: Vec<[f32; 3]> = (0..3000).map(|_| [next(), next(), next()]).collect();
+        let keys = corners
+            .iter()
+            .enumerate()
+            .map(|(i, &c)| corner_key(c, i))
+            .collect();
+        let m = weld(keys);
+
+        let canon = |c: [f32; 3]| c.map(|x| if x == 0.0 { 0 } else { x.to_bits() });
+        let mut ids = std::collections::HashMap::new();
+        let mut want_positions = Vec::new();
+        let want: Vec<u32> = corners
+            .iter()
+            .map(|&c| {
+                *ids.entry(canon(c)).or_insert_with(|| {
+                    want_positions.push(canon(c));
+                    want_positions.len() as u32 - 1
+                })
+            })
+            .collect();
+        assert_eq!(m.triangles.concat(), want);
+        let got: Vec<[u32; 3]> = m
+            .positions
+            .iter()
+            .map(|p| canon([p.x as f32, p.y as f32, p.z as f32]))
+            .collect();
+        assert_eq!(got, want_positions);
+        assert!(m.positions.len() > 100 && m.positions.len() < 3000);
+    }
+
+    #[test]
+    fn empty_solid_is_an_empty_mesh() {
+        let m = parse(b"solid empty\nendsolid empty\n", "e.stl").unwrap();
+        assert!(m.positions.is_empty() && m.triangles.is_empty());
+        let m = parse(&binary(b"x", &[]), "e.stl").unwrap();
+        assert!(m.triangles.is_empty());
+    }
+
+    #[test]
+    fn truncated_binary_is_an_error() {
+        let mut b = binary(b"x", &cube());
+        b.truncate(b.len() - 10);
+        let e = parse(&b, "t.stl").unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Parse);
+        assert!(
+            e.message.starts_with("t.stl: truncated binary STL"),
+            "{}",
+            e.message
+        );
+        assert!(e.message.contains("triangle 11"), "{}", e.message);
+        // A huge declared count is checked against the size, not allocated.
+        let mut b = binary(b"x", &cube());
+        b[80..84].copy_from_slice(&u32::MAX.to_le_bytes());
+        let e = parse(&b, "t.stl").unwrap_err();
+        assert!(e.message.contains("4294967295 triangles"), "{}", e.message);
+    }
+
+    #[test]
+    fn truncated_ascii_is_an_error_with_line() {
+        let text = ascii(&cube());
+        let cut = &text[..text.find("endloop").unwrap() + 100];
+        let e = parse(cut.as_bytes(), "t.stl").unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Parse);
+        // The cut falls in facet 1, which starts on line 9.
+        assert!(e.message.starts_with("t.stl:9: facet 1"), "{}", e.message);
+    }
+
+    #[test]
+    fn bad_ascii_token_is_an_error_with_line() {
+        let text = ascii(&cube()).replacen("vertex 1 1 0", "vertex 1 x 0", 1);
+        let e = parse(text.as_bytes(), "t.stl").unwrap_err();
+        assert!(e.message.starts_with("t.stl:2: facet 0"), "{}", e.message);
+        let text = ascii(&cube()).replacen("outer loop", "outer", 3);
+        let e = parse(text.as_bytes(), "t.stl").unwrap_err();
+        assert!(e.message.starts_with("t.stl:2: facet 0"), "{}", e.message);
+    }
+
+    #[test]
+    fn garbage_and_empty_files_are_errors() {
+        let e = parse(b"", "g.stl").unwrap_err();
+        assert!(e.message.contains("empty file"), "{}", e.message);
+        let e = parse(b"hello world", "g.stl").unwrap_err();
+        assert!(e.message.contains("not an STL file"), "{}", e.message);
+        // 100 bytes of noise: a binary header declaring far more than is there.
+        let noise: Vec<u8> = (0..100u32).map(|i| (i * 37 % 251) as u8).collect();
+        let e = parse(&noise, "g.stl").unwrap_err();
+        assert!(e.message.contains("truncated binary STL"), "{}", e.message);
+        let e = parse(b"solid x\nfacet normal 0 0\n", "g.stl").unwrap_err();
+        assert!(e.message.starts_with("g.stl:2: facet 0"), "{}", e.message);
+    }
 }

@@ -1,13 +1,564 @@
-//! Placeholder: the vtk reader is being written.
+//! VTK legacy ASCII `.vtk`: `UNSTRUCTURED_GRID` (triangles and tetrahedra, linear or
+//! quadratic; other cells skipped) and `POLYDATA` (polygons fan-triangulated, triangle strips
+//! split). Cell arrays in the classic form (`k i1 .. ik`) and the 5.1 form (`OFFSETS` +
+//! `CONNECTIVITY`) are both read; point and cell data are ignored.
 
 use super::MeshData;
-use crate::error::{Error, Result};
+use super::text::{self, Lexer};
+use crate::error::Result;
+use glam::DVec3;
+use std::io::Write;
 use std::path::Path;
 
-pub fn read(path: &Path) -> Result<MeshData> {
-    Err(Error::invalid(format!("{}: vtk reader not written yet", path.display())))
+/// A cell array: cell `i` is `conn[offsets[i]..offsets[i + 1]]`.
+struct Cells {
+    offsets: Vec<usize>,
+    conn: Vec<u32>,
 }
 
-pub fn write(path: &Path, _data: &MeshData) -> Result<()> {
-    Err(Error::invalid(format!("{}: vtk writer not written yet", path.display())))
+impl Cells {
+    fn len(&self) -> usize {
+        self.offsets.len().saturating_sub(1)
+    }
+    fn cell(&self, i: usize) -> &[u32] {
+        match (self.offsets.get(i), self.offsets.get(i + 1)) {
+            (Some(&a), Some(&b)) => self.conn.get(a..b).unwrap_or(&[]),
+            _ => &[],
+        }
+    }
+}
+
+#[inline]
+fn point_id(lx: &mut Lexer, num_points: usize) -> Result<u32> {
+    let id = lx.u64("a point id")?;
+    if id >= num_points as u64 {
+        return Err(lx.error(format!("point id {id} out of range ({num_points} points)")));
+    }
+    Ok(id as u32)
+}
+
+/// Reads a cell array after its keyword (`CELLS`, `POLYGONS`, ...), in either form.
+fn read_cells(lx: &mut Lexer, num_points: usize) -> Result<Cells> {
+    let a = lx.usize("the number of cells")?;
+    let b = lx.usize("the size of the cell array")?;
+    if lx.peek().is_some_and(|t| t.eq_ignore_ascii_case("OFFSETS")) {
+        // VTK 5.1: `a` offsets (cells + 1), `b` connectivity entries.
+        lx.next();
+        lx.expect("the offsets data type")?;
+        let mut offsets = Vec::with_capacity(lx.capacity(a, 1).max(1));
+        for i in 0..a {
+            let o = lx.usize("an offset")?;
+            let prev = offsets.last().copied().unwrap_or(0);
+            if (i == 0 && o != 0) || o < prev || o > b {
+                return Err(lx.error(format!(
+                    "offset {o} (offsets start at 0 and grow up to the connectivity size {b})"
+                )));
+            }
+            offsets.push(o);
+        }
+        if offsets.is_empty() {
+            offsets.push(0);
+        }
+        let last = offsets.last().copied().unwrap_or(0);
+        if last != b {
+            return Err(lx.error(format!("last offset {last}, connectivity size {b}")));
+        }
+        lx.keyword("CONNECTIVITY")?;
+        lx.expect("the connectivity data type")?;
+        let mut conn = Vec::with_capacity(lx.capacity(b, 1));
+        for _ in 0..b {
+            conn.push(point_id(lx, num_points)?);
+        }
+        Ok(Cells { offsets, conn })
+    } else {
+        // Classic: `a` cells, `b` numbers in all (each cell's size and its ids).
+        let mut offsets = Vec::with_capacity(lx.capacity(a, 2).saturating_add(1));
+        offsets.push(0);
+        let mut conn = Vec::with_capacity(lx.capacity(b, 1));
+        let mut used = 0usize;
+        for _ in 0..a {
+            let k = lx.usize("a cell size")?;
+            used = used.saturating_add(k).saturating_add(1);
+            if used > b {
+                return Err(lx.error(format!("the cells hold more than the {b} numbers declared")));
+            }
+            for _ in 0..k {
+                conn.push(point_id(lx, num_points)?);
+            }
+            offsets.push(conn.len());
+        }
+        if used != b {
+            return Err(lx.error(format!("the cells hold {used} numbers, {b} declared")));
+        }
+        Ok(Cells { offsets, conn })
+    }
+}
+
+/// Reads `CELL_TYPES` (after the keyword) and keeps the triangles and tetrahedra of `cells`.
+fn read_cell_types(lx: &mut Lexer, cells: &Cells, data: &mut MeshData) -> Result<()> {
+    let n = lx.usize("the number of cell types")?;
+    if n != cells.len() {
+        return Err(lx.error(format!("{n} cell types for {} cells", cells.len())));
+    }
+    for i in 0..n {
+        let ty = lx.u64("a cell type")?;
+        let (want, corners) = match ty {
+            5 => (3, 3),
+            22 => (6, 3),
+            10 => (4, 4),
+            24 => (10, 4),
+            _ => continue,
+        };
+        let c = cells.cell(i);
+        if c.len() != want {
+            return Err(lx.error(format!(
+                "cell {i} of type {ty} has {} points, expected {want}",
+                c.len()
+            )));
+        }
+        if corners == 3 {
+            data.triangles.push([c[0], c[1], c[2]]);
+        } else {
+            data.tetrahedra.push([c[0], c[1], c[2], c[3]]);
+        }
+    }
+    Ok(())
+}
+
+/// Skips a 5.1 `METADATA` block: up to the first blank line.
+fn skip_metadata(lx: &mut Lexer) {
+    lx.skip_line();
+    while let Some(line) = lx.next_line() {
+        if line.trim().is_empty() {
+            break;
+        }
+    }
+}
+
+/// Skips `FIELD name n` and its `n` arrays.
+fn skip_field(lx: &mut Lexer) -> Result<()> {
+    lx.expect("a field name")?;
+    let n = lx.usize("the number of arrays")?;
+    for _ in 0..n {
+        if lx.expect("an array name")? == "NULL_ARRAY" {
+            continue;
+        }
+        let comps = lx.usize("the number of components")?;
+        let tuples = lx.usize("the number of tuples")?;
+        lx.expect("a data type")?;
+        let Some(total) = comps.checked_mul(tuples) else {
+            return Err(lx.error(format!("an array of {comps} x {tuples} values")));
+        };
+        lx.skip(total, "an array value")?;
+        if lx
+            .peek()
+            .is_some_and(|t| t.eq_ignore_ascii_case("METADATA"))
+        {
+            lx.next();
+            skip_metadata(lx);
+        }
+    }
+    Ok(())
+}
+
+/// Parses the text of a legacy `.vtk` file; `name` is used in error messages.
+pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
+    const MAGIC: &str = "# vtk DataFile Version";
+    let mut lx = Lexer::new(text, name, false);
+    let first = lx.next_line().unwrap_or("").trim_start();
+    if !first
+        .get(..MAGIC.len())
+        .is_some_and(|s| s.eq_ignore_ascii_case(MAGIC))
+    {
+        return Err(lx.error(format!("not a legacy VTK file (no '{MAGIC}' line)")));
+    }
+    if lx.next_line().is_none() {
+        return Err(lx.error("unexpected end of file, expected the title line"));
+    }
+    let enc = lx.expect("ASCII or BINARY")?;
+    if enc.eq_ignore_ascii_case("BINARY") {
+        return Err(lx.error("binary .vtk not supported (save as ASCII)"));
+    } else if !enc.eq_ignore_ascii_case("ASCII") {
+        return Err(lx.bad("ASCII or BINARY", enc));
+    }
+    lx.keyword("DATASET")?;
+    let kind = lx.expect("a dataset type")?;
+    let poly = if kind.eq_ignore_ascii_case("UNSTRUCTURED_GRID") {
+        false
+    } else if kind.eq_ignore_ascii_case("POLYDATA") {
+        true
+    } else {
+        return Err(lx.error(format!(
+            "dataset {} not supported (UNSTRUCTURED_GRID and POLYDATA are read)",
+            text::quote(kind)
+        )));
+    };
+
+    let mut data = MeshData::default();
+    let mut have_points = false;
+    let mut have_cells = false;
+    // CELLS read, waiting for their CELL_TYPES.
+    let mut pending: Option<(Cells, usize)> = None;
+    while let Some(kw) = lx.next() {
+        let is = |k: &str| kw.eq_ignore_ascii_case(k);
+        let is_cell_array = if poly {
+            is("POLYGONS") || is("TRIANGLE_STRIPS") || is("VERTICES") || is("LINES")
+        } else {
+            is("CELLS")
+        };
+        if is("POINTS") {
+            if have_points {
+                return Err(lx.error("a second POINTS section"));
+            }
+            have_points = true;
+            let n = lx.usize("the number of points")?;
+            lx.check_point_count(n)?;
+            lx.expect("the points' data type")?;
+            data.positions.reserve(lx.capacity(n, 3));
+            for _ in 0..n {
+                let x = lx.f64("a coordinate")?;
+                let y = lx.f64("a coordinate")?;
+                let z = lx.f64("a coordinate")?;
+                data.positions.push(DVec3::new(x, y, z));
+            }
+        } else if is_cell_array {
+            if !have_points {
+                return Err(lx.error(format!("{kw} before POINTS")));
+            }
+            if !poly && have_cells {
+                return Err(lx.error("a second CELLS section"));
+            }
+            have_cells = true;
+            let line = lx.line();
+            let cells = read_cells(&mut lx, data.positions.len())?;
+            if !poly {
+                pending = Some((cells, line));
+            } else if is("POLYGONS") {
+                for i in 0..cells.len() {
+                    let c = cells.cell(i);
+                    for j in 2..c.len() {
+                        data.triangles.push([c[0], c[j - 1], c[j]]);
+                    }
+                }
+            } else if is("TRIANGLE_STRIPS") {
+                for i in 0..cells.len() {
+                    let c = cells.cell(i);
+                    for j in 2..c.len() {
+                        data.triangles.push(if j % 2 == 0 {
+                            [c[j - 2], c[j - 1], c[j]]
+                        } else {
+                            [c[j - 1], c[j - 2], c[j]]
+                        });
+                    }
+                }
+            }
+        } else if !poly && is("CELL_TYPES") {
+            let Some((cells, _)) = pending.take() else {
+                return Err(lx.error("CELL_TYPES before CELLS"));
+            };
+            read_cell_types(&mut lx, &cells, &mut data)?;
+        } else if is("METADATA") {
+            skip_metadata(&mut lx);
+        } else if is("FIELD") {
+            skip_field(&mut lx)?;
+        } else if is("POINT_DATA") || is("CELL_DATA") {
+            break;
+        } else {
+            return Err(lx.error(format!("unexpected keyword '{}'", text::quote(kw))));
+        }
+    }
+    if let Some((_, line)) = pending {
+        return Err(lx.error_at(line, "CELLS without CELL_TYPES"));
+    }
+    Ok(data)
+}
+
+/// Reads a legacy ASCII `.vtk` file.
+pub fn read(path: &Path) -> Result<MeshData> {
+    let text = text::read_text(path)?;
+    parse(&text, &path.display().to_string())
+}
+
+/// Writes `data` as a legacy 3.0 ASCII unstructured grid (triangles: type 5, tetrahedra: 10).
+pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()> {
+    writeln!(
+        w,
+        "# vtk DataFile Version 3.0\ntopomesh\nASCII\nDATASET UNSTRUCTURED_GRID"
+    )?;
+    writeln!(w, "POINTS {} double", data.positions.len())?;
+    for p in &data.positions {
+        writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
+    }
+    let (nt, nk) = (data.triangles.len(), data.tetrahedra.len());
+    if nt + nk > 0 {
+        writeln!(w, "CELLS {} {}", nt + nk, 4 * nt + 5 * nk)?;
+        for t in &data.triangles {
+            writeln!(w, "3 {} {} {}", t[0], t[1], t[2])?;
+        }
+        for t in &data.tetrahedra {
+            writeln!(w, "4 {} {} {} {}", t[0], t[1], t[2], t[3])?;
+        }
+        writeln!(w, "CELL_TYPES {}", nt + nk)?;
+        for _ in 0..nt {
+            writeln!(w, "5")?;
+        }
+        for _ in 0..nk {
+            writeln!(w, "10")?;
+        }
+    }
+    Ok(())
+}
+
+/// Writes a legacy ASCII `.vtk` file.
+pub fn write(path: &Path, data: &MeshData) -> Result<()> {
+    text::check_ids(path, data)?;
+    text::write_file(path, |w| write_to(w, data))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A tet, a triangle, a quadratic tet and triangle, and a vertex, a line and a hex to skip;
+    /// point coordinates wrap lines anyhow.
+    const LEGACY: &str = "\
+# vtk DataFile Version 2.0
+mixed cells
+
+ASCII
+DATASET UNSTRUCTURED_GRID
+POINTS 10 float
+0 0 0 1 0 0 0 1 0
+0 0 1
+1 1 1 2 2 2 3 3 3 4 4 4 5 5
+5 6
+6 6
+CELLS 7 41
+4 0 1 2 3
+3 0 1 2
+10 1 2 3 4 5 6 7 8 9 0
+6 0 1 2 5 6 7
+1 9
+2 8 9
+8 0 1 2 3 4 5 6 7
+CELL_TYPES 7
+10
+5
+24
+22
+1
+3
+12
+POINT_DATA 10
+SCALARS s float 1
+LOOKUP_TABLE default
+0 1 2 3 4 5 6 7 8 9
+";
+
+    const V51: &str = "\
+# vtk DataFile Version 5.1
+vtk output
+ASCII
+DATASET UNSTRUCTURED_GRID
+FIELD FieldData 2
+TIME 1 1 double
+0.5
+CYCLE 1 1 int
+3
+POINTS 5 double
+0 0 0 1 0 0 0 1 0
+0 0 1 1 1 1
+METADATA
+INFORMATION 0
+
+CELLS 4 11
+OFFSETS vtktypeint64
+0 4 8 11
+CONNECTIVITY vtktypeint64
+0 1 2 3 1 2 3 4
+0 1 2
+CELL_TYPES 3
+10
+10
+5
+
+CELL_DATA 3
+";
+
+    const POLY: &str = "\
+# vtk DataFile Version 3.0
+surface
+ASCII
+DATASET POLYDATA
+POINTS 6 float
+0 0 0 1 0 0 1 1 0 0 1 0 2 0 0 2 1 0
+VERTICES 1 2
+1 5
+LINES 1 3
+2 0 1
+POLYGONS 3 12
+4 0 1 2 3
+3 1 4 5
+2 0 1
+TRIANGLE_STRIPS 1 5
+4 0 1 3 2
+";
+
+    fn err(text: &str) -> String {
+        parse(text, "v.vtk").unwrap_err().message
+    }
+
+    #[test]
+    fn reads_legacy_mixed_cells() {
+        let d = parse(LEGACY, "v.vtk").unwrap();
+        assert_eq!(d.positions.len(), 10);
+        assert_eq!(d.positions[3], DVec3::new(0.0, 0.0, 1.0));
+        assert_eq!(d.positions[8], DVec3::splat(5.0));
+        assert_eq!(d.positions[9], DVec3::splat(6.0));
+        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+        assert_eq!(d.triangles, vec![[0, 1, 2], [0, 1, 2]]);
+    }
+
+    #[test]
+    fn reads_v51_offsets_form() {
+        let d = parse(V51, "v.vtk").unwrap();
+        assert_eq!(d.positions.len(), 5);
+        assert_eq!(d.positions[4], DVec3::splat(1.0));
+        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+        assert_eq!(d.triangles, vec![[0, 1, 2]]);
+    }
+
+    #[test]
+    fn reads_polydata() {
+        let d = parse(POLY, "v.vtk").unwrap();
+        assert_eq!(d.positions.len(), 6);
+        assert!(d.tetrahedra.is_empty());
+        assert_eq!(
+            d.triangles,
+            vec![[0, 1, 2], [0, 2, 3], [1, 4, 5], [0, 1, 3], [3, 1, 2]]
+        );
+    }
+
+    #[test]
+    fn round_trip() {
+        let data = MeshData {
+            positions: vec![
+                DVec3::new(0.1, -2.5e-7, 1.0 / 3.0),
+                DVec3::new(1e15, 0.0, 12345.678901234567),
+                DVec3::new(std::f64::consts::E, 2.0, 3.0),
+                DVec3::new(-1.0, 7.0, 1e-12),
+            ],
+            triangles: vec![[0, 1, 2], [3, 2, 1]],
+            tetrahedra: vec![[0, 1, 2, 3], [3, 2, 1, 0]],
+        };
+        let path = text::temp_path("vtk-rt", "vtk");
+        write(&path, &data).unwrap();
+        let back = super::super::read(&path);
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(back.unwrap(), data);
+
+        let empty = MeshData::default();
+        let mut buf = Vec::new();
+        write_to(&mut buf, &empty).unwrap();
+        assert_eq!(
+            parse(std::str::from_utf8(&buf).unwrap(), "e.vtk").unwrap(),
+            empty
+        );
+    }
+
+    #[test]
+    fn write_rejects_bad_ids() {
+        let data = MeshData {
+            positions: vec![DVec3::ZERO; 4],
+            triangles: vec![],
+            tetrahedra: vec![[0, 1, 2, 4]],
+        };
+        let path = text::temp_path("vtk-bad", "vtk");
+        let e = write(&path, &data).unwrap_err();
+        assert!(!path.exists());
+        assert!(
+            e.message.contains("tetrahedron 0 names vertex 4"),
+            "{}",
+            e.message
+        );
+    }
+
+    #[test]
+    fn binary_and_foreign_files_are_errors() {
+        let e = err("# vtk DataFile Version 3.0\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\n");
+        assert_eq!(e, "v.vtk:3: binary .vtk not supported (save as ASCII)");
+        let e = err("ply\nformat ascii 1.0\n");
+        assert!(e.starts_with("v.vtk:1: not a legacy VTK file"), "{e}");
+        let e = err("# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\n");
+        assert!(
+            e.starts_with("v.vtk:4: dataset STRUCTURED_POINTS not supported"),
+            "{e}"
+        );
+        let e = err("# vtk DataFile Version 3.0");
+        assert!(e.starts_with("v.vtk:1: unexpected end of file"), "{e}");
+        let e = err("# vtk DataFile Version 3.0\ntitle\n");
+        assert!(
+            e.starts_with("v.vtk:3: unexpected end of file, expected ASCII"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn out_of_range_ids_name_line() {
+        let e = err(&LEGACY.replace("6 0 1 2 5 6 7", "6 0 1 2 5 6 10"));
+        assert_eq!(e, "v.vtk:16: point id 10 out of range (10 points)");
+        let e = err(&V51.replace("0 1 2\nCELL_TYPES", "0 1 5\nCELL_TYPES"));
+        assert_eq!(e, "v.vtk:21: point id 5 out of range (5 points)");
+    }
+
+    #[test]
+    fn inconsistent_cells_name_line() {
+        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 7 42"));
+        assert!(
+            e.starts_with("v.vtk:19: the cells hold 41 numbers, 42 declared"),
+            "{e}"
+        );
+        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 7 30"));
+        assert!(
+            e.starts_with("v.vtk:18: the cells hold more than the 30"),
+            "{e}"
+        );
+        let e = err(&LEGACY.replace("CELL_TYPES 7\n10\n5", "CELL_TYPES 7\n5\n10"));
+        assert_eq!(e, "v.vtk:21: cell 0 of type 5 has 4 points, expected 3");
+        let e = err(&LEGACY.replace("CELL_TYPES 7", "CELL_TYPES 6"));
+        assert!(e.starts_with("v.vtk:20: 6 cell types for 7 cells"), "{e}");
+        let e = err(&V51.replace("0 4 8 11", "0 8 4 11"));
+        assert!(e.starts_with("v.vtk:18: offset 4"), "{e}");
+        let e = err(&V51.replace("0 4 8 11", "0 4 8 10"));
+        assert!(
+            e.starts_with("v.vtk:18: last offset 10, connectivity size 11"),
+            "{e}"
+        );
+        let e = err(&V51.replace("CELL_TYPES 3\n10\n10\n5\n", ""));
+        assert!(e.starts_with("v.vtk:16: CELLS without CELL_TYPES"), "{e}");
+    }
+
+    #[test]
+    fn truncated_and_bad_tokens_name_line() {
+        let e = err(&LEGACY[..LEGACY.find("5 6\n6 6").unwrap()]);
+        assert!(e.starts_with("v.vtk:10: unexpected end of file"), "{e}");
+        let e = err(&LEGACY.replace("0 0 1\n", "0 0 one\n"));
+        assert_eq!(e, "v.vtk:8: expected a coordinate, found 'one'");
+        let e = err(&POLY.replace("VERTICES", "VERTEXES"));
+        assert_eq!(e, "v.vtk:7: unexpected keyword 'VERTEXES'");
+        let e = err(&LEGACY.replace("POINTS 10 float", "POINTS 3000000000 float"));
+        assert!(
+            e.starts_with("v.vtk:12: expected a coordinate, found 'CELLS'"),
+            "{e}"
+        );
+        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 18446744073709551615 41"));
+        assert_eq!(e, "v.vtk:20: expected a cell size, found 'CELL_TYPES'");
+    }
+
+    #[test]
+    fn prefixes_and_mutations_never_panic() {
+        for src in [LEGACY, V51, POLY] {
+            text::assert_robust(src, "v.vtk:", |t| parse(t, "v.vtk"));
+        }
+    }
 }

@@ -1,0 +1,126 @@
+//! CHE build and sweeps: levels 1, 2 and 3 from arrays, and full VV, VF, FF and EF sweeps,
+//! on a generated torus of 1.2M triangles and on real meshes found in
+//! $TOPOMESH_MESH_DIR (see scripts/fetch-meshes.sh). Prints bytes per triangle per level.
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use std::hint::black_box;
+use topomesh::{BuildOptions, Che};
+
+struct Input {
+    name: String,
+    triangles: Vec<[u32; 3]>,
+    n_vertices: usize,
+}
+
+fn inputs() -> Vec<Input> {
+    let mut out = Vec::new();
+    let torus = topomesh::generate::torus(1000, 600);
+    out.push(Input {
+        name: "torus-1.2M".into(),
+        n_vertices: torus.positions.len(),
+        triangles: torus.triangles,
+    });
+    let dir = std::env::var("TOPOMESH_MESH_DIR").unwrap_or_default();
+    for name in ["bunny00.off", "armadillo.off", "refined_elephant.off"] {
+        let path = std::path::Path::new(&dir).join(name);
+        if let Ok(data) = topomesh::io::read(&path) {
+            out.push(Input {
+                name: name.trim_end_matches(".off").into(),
+                n_vertices: data.num_vertices(),
+                triangles: data.triangles,
+            });
+        }
+    }
+    out
+}
+
+fn build(c: &mut Criterion) {
+    for input in inputs() {
+        let mut group = c.benchmark_group(format!("build/{}", input.name));
+        group.sample_size(10);
+        group.throughput(Throughput::Elements(input.triangles.len() as u64));
+        for level in 1..=3u8 {
+            let che = Che::from_triangles(
+                &input.triangles,
+                input.n_vertices,
+                &[],
+                BuildOptions::level(level),
+            )
+            .unwrap();
+            let m = che.memory_bytes();
+            let t = input.triangles.len() as f64;
+            eprintln!(
+                "{} level {level}: {:.3} topology bytes per triangle ({} V, {} E)",
+                input.name,
+                m.topology as f64 / t,
+                che.num_vertices(),
+                che.num_edges()
+            );
+            group.bench_with_input(BenchmarkId::new("level", level), &level, |b, &level| {
+                b.iter(|| {
+                    Che::from_triangles(
+                        black_box(&input.triangles),
+                        input.n_vertices,
+                        &[],
+                        BuildOptions::level(level),
+                    )
+                    .unwrap()
+                })
+            });
+        }
+        group.finish();
+    }
+}
+
+fn sweeps(c: &mut Criterion) {
+    for input in inputs() {
+        let che = Che::from_triangles(
+            &input.triangles,
+            input.n_vertices,
+            &[],
+            BuildOptions::level(2),
+        )
+        .unwrap();
+        let nv = che.num_vertices() as u32;
+        let nt = che.num_triangles() as u32;
+        let ne = che.num_edges() as u32;
+        let mut group = c.benchmark_group(format!("sweep/{}", input.name));
+        group.sample_size(10);
+        group.throughput(Throughput::Elements(input.triangles.len() as u64));
+        group.bench_function("VV", |b| {
+            b.iter(|| {
+                (0..nv)
+                    .flat_map(|v| che.vertex_vertices(v))
+                    .fold(0u64, |a, x| a + x as u64)
+            })
+        });
+        group.bench_function("VF", |b| {
+            b.iter(|| {
+                (0..nv)
+                    .flat_map(|v| che.vertex_triangles(v))
+                    .fold(0u64, |a, x| a + x as u64)
+            })
+        });
+        group.bench_function("FF", |b| {
+            b.iter(|| {
+                (0..nt)
+                    .flat_map(|t| che.triangle_triangles(t))
+                    .fold(0u64, |a, x| a + x as u64)
+            })
+        });
+        group.bench_function("EF", |b| {
+            b.iter(|| {
+                (0..ne)
+                    .flat_map(|e| che.edge_triangles(e))
+                    .fold(0u64, |a, x| a + x as u64)
+            })
+        });
+        group.bench_function("VV bulk", |b| {
+            b.iter(|| che.all_vertex_vertices().indices.len())
+        });
+        group.finish();
+    }
+}
+
+criterion_group!(benches, build, sweeps);
+criterion_main!(benches);

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The one test command. On a bare Debian 12 with Rust it installs what it needs, then runs
+# every test: formatting and lints, the Rust unit, property and integration tests (with
+# the header drift test), the C and C++ tests against the package installed into a
+# temporary prefix (with valgrind), and the differential tests against OpenMesh and CGAL
+# on real meshes.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$(date +%s)
+step() { echo; echo "== $* ($(( $(date +%s) - start )) s)"; }
+
+step "Debian packages"
+bash scripts/install-deps.sh
+
+step "cargo fmt and clippy"
+cargo fmt --check
+cargo clippy --all-targets --locked -- -D warnings
+
+step "cargo test"
+cargo test --locked
+
+if [ -f scripts/fetch-meshes.sh ]; then
+  step "real meshes"
+  bash scripts/fetch-meshes.sh
+fi
+
+if [ -f scripts/c-tests.sh ]; then
+  step "C and C++ tests (install, find_package, ctest, valgrind)"
+  bash scripts/c-tests.sh
+fi
+
+step "all tests passed"

@@ -147,6 +147,15 @@ void topomesh_rows(const Soup &s, uint32_t level, int reps, std::vector<LibBench
   base.connectivity_bytes = size_t(mem.topology);
   const size_t nv = che_mesh_num_vertices(m), nt = che_mesh_num_triangles(m), ne = che_mesh_num_edges(m);
   base.faces = nt;
+  base.vertices = nv;
+  {
+    che_summary sum;
+    std::memset(&sum, 0, sizeof sum);
+    che_mesh_summary(m, &sum);
+    base.note = std::to_string(sum.flipped_triangles) + " flipped, " + std::to_string(sum.split_vertices) +
+                " vertices split, " + std::to_string(sum.non_manifold_edges) + " non-manifold edges, " +
+                std::to_string(sum.dropped_degenerate) + " degenerate dropped";
+  }
   const std::string slow = "O(T) per query at level 1";
 
   // --- C API, one call per element.
@@ -433,30 +442,65 @@ void report(Out &out, const Soup &s, std::vector<LibBench> &rows, int reps) {
     for (const char *n : kSweeps) out(" %s |", both(sweep_ms(om, n), sweep_ms(cg, n), sweep_ms(r, n)).c_str());
     out("\n");
   }
-  // Checksums and skipped sweeps.
-  out("\nChecksums (equal across libraries when every face was accepted):");
+  // Checksums: every topomesh row must agree with the others; with the peers too when they
+  // kept every face (otherwise they walk a different mesh).
+  const bool peers_full = om.faces == s.n_triangles() && cg.faces == s.n_triangles();
+  const bool same_mesh = peers_full && rows[2].vertices == s.n_vertices;
   std::map<std::string, uint64_t> ref;
-  for (auto &sw : om.sweeps) ref[sw.name] = sw.checksum;
-  bool all_same = true;
+  for (size_t i = rows.size(); i-- > 2;)
+    for (auto &sw : rows[i].sweeps)
+      if (!sw.skipped()) ref[sw.name] = sw.checksum; // ends at the first row that ran it
   std::string diffs, skips;
-  for (auto &r : rows)
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const LibBench &r = rows[i];
+    if (i < 2 && !same_mesh) continue;
     for (auto &sw : r.sweeps) {
       if (sw.skipped()) {
         skips += " " + r.lib + " " + r.path + " " + sw.name + " (" + sw.note + ");";
         continue;
       }
-      if (sw.checksum != ref[sw.name]) {
-        all_same = false;
+      if (ref.count(sw.name) && sw.checksum != ref[sw.name])
         diffs += " " + r.lib + (r.path.empty() ? "" : " " + r.path) + " " + sw.name + "=" +
                  std::to_string(sw.checksum) + ";";
-      }
     }
-  out(" VV %llu, VF %llu, FF %llu, EF %llu, curves %llu — %s%s\n", (unsigned long long)ref["VV"],
+  }
+  out("\nChecksums: VV %llu, VF %llu, FF %llu, EF %llu, curves %llu — %s%s\n", (unsigned long long)ref["VV"],
       (unsigned long long)ref["VF"], (unsigned long long)ref["FF"], (unsigned long long)ref["EF"],
-      (unsigned long long)ref["curves"], all_same ? "all libraries agree" : "differ:", diffs.c_str());
+      (unsigned long long)ref["curves"],
+      !diffs.empty()  ? "DIFFER:"
+      : same_mesh     ? "all libraries and paths agree"
+      : !peers_full   ? "all topomesh paths agree (the peers refused faces: not comparable)"
+                      : "all topomesh paths agree (topomesh split non-manifold vertices: ids differ from the peers')",
+      diffs.c_str());
   if (!skips.empty()) out("Skipped:%s\n", skips.c_str());
-  out("Faces kept: OpenMesh %zu, CGAL %zu, topomesh %zu (of %zu).\n", om.faces, cg.faces, rows[2].faces,
-      s.n_triangles());
+  out("Faces kept: OpenMesh %zu, CGAL %zu, topomesh %zu (of %zu; %s).%s\n", om.faces, cg.faces,
+      rows[2].faces, s.n_triangles(), rows[2].note.c_str(),
+      peers_full ? "" : " The peers refused faces, so they sweep a smaller mesh: the ratios flatter them.");
+
+  // The targets, on this mesh.
+  auto find = [&](const std::string &lib, const std::string &path) -> const LibBench * {
+    for (auto &r : rows)
+      if (r.lib == lib && r.path == path) return &r;
+    return nullptr;
+  };
+  const LibBench *l2 = find("topomesh L2", "C API"), *l1 = find("topomesh L1", "C API");
+  double b2 = median(l2->build_ms), bo = median(om.build_ms), bc = median(cg.build_ms);
+  out("\nTargets: level-2 build %s faster than OpenMesh, %s than CGAL (target 10×: %s); ",
+      fmt_ratio(bo, b2).c_str(), fmt_ratio(bc, b2).c_str(), bo >= 10 * b2 && bc >= 10 * b2 ? "met" : "missed");
+  double mo = double(l1->connectivity_bytes) / double(om.connectivity_bytes),
+         mc = double(l1->connectivity_bytes) / double(cg.connectivity_bytes);
+  out("level-1 connectivity %.2f of OpenMesh's, %.2f of CGAL's (target ≤ 0.50: %s)", mo, mc,
+      mo <= 0.5 && mc <= 0.5 ? "met" : "missed");
+  for (const char *n : {"VV", "VF", "FF"}) {
+    double peer = std::min(sweep_ms(om, n), sweep_ms(cg, n));
+    out("; %s vs the faster peer (target 1.5×):", n);
+    for (const char *path : {"C API", "C++ wrapper", "zero-copy"}) {
+      const LibBench *r = find("topomesh L2", path);
+      double t = r ? sweep_ms(*r, n) : -1;
+      out(" L2 %s %s%s", path, fmt_ratio(peer, t).c_str(), t > 0 && peer >= 1.5 * t ? " met" : t > 0 ? " missed" : "");
+    }
+  }
+  out(".\n");
 }
 
 } // namespace

@@ -52,7 +52,8 @@ struct LibBench {
   std::vector<double> build_ms;     // empty for rows that share a build
   size_t connectivity_bytes = 0;    // from container sizes
   long rss_delta = -1;              // resident-set growth over one build
-  size_t faces = 0, refused = 0;
+  size_t faces = 0, refused = 0, vertices = 0;
+  std::string note;                 // what the build did (topomesh)
   std::vector<Sweep> sweeps;
   Sweep *find(const std::string &n) {
     for (auto &s : sweeps)

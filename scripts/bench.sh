@@ -46,7 +46,9 @@ for m in "${meshes[@]}"; do
   if [[ -f "$m" ]]; then files+=("$m"); else files+=("$dir/$m.off"); fi
 done
 echo "== running on ${#files[@]} meshes, $reps repetitions"
+load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 "$work/diff/topomesh_bench" --reps "$reps" --md "$work/tables.md" "${files[@]}"
+load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 # The machine and the toolchain.
 model="$(lscpu | sed -n 's/^Model name:[[:space:]]*//p' | head -1)"
@@ -67,7 +69,9 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
   echo
   echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty)."
   echo
-  echo "- Machine: $model, $cpus logical CPUs ($threads thread(s) per core), $mem, $os."
+  echo "- Machine: $model, $cpus logical CPUs ($threads thread(s) per core), $mem, $os. Load average"
+  echo "  (1, 5, 15 min) before the run: $load_before; after: $load_after (other jobs share the machine:"
+  echo "  sweeps of a few milliseconds are noisy)."
   echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`); OpenMesh $om_v (Debian, TriMesh_ArrayKernelT with"
   echo "  double points), CGAL $cgal_v (Surface_mesh of Epick points). Both peers get \`reserve()\` with the"
   echo "  final sizes before the build."

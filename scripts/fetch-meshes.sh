@@ -11,8 +11,8 @@
 #
 # Generated: bunny00-sub2.off (1,206,528 triangles) and bunny00-sub3.off (4,826,112), by
 # 1-to-4 midpoint subdivision of bunny00 (c-tests/diff/subdivide.cpp, built with g++).
-# --tets: also tetrahedral meshes made with tetgen (-pqzQ, -a for size) from closed
-# surfaces, as <name>.1.node / <name>.1.ele under tets/ (for the CHF issue).
+# --tets: also tetrahedral meshes made with tetgen from closed surfaces (about 16k, 108k
+# and 1M tetrahedra), as tets/<name>.1.node and tets/<name>.1.ele, numbered from 0.
 # --list: print the selected meshes and exit.
 set -euo pipefail
 
@@ -75,18 +75,19 @@ fi
 if ((TETS)); then
   command -v tetgen >/dev/null || { echo "fetch-meshes: tetgen not installed" >&2; exit 1; }
   mkdir -p "$DIR/tets"
-  # name, source surface, max volume (-a; none for the coarsest). Sizes: ~10k, ~100k, ~1M.
-  while read -r name src vol; do
-    [[ -s "$DIR/tets/$name.1.ele" ]] && continue
+  # name, source surface, tetgen flags (-p: from the surface, -q: quality, -a: volume bound,
+  # -z: number from 0). Sizes with Debian's tetgen 1.5.0: 15,707 / 108,390 / 1,045,219.
+  while read -r name src flags; do
+    [[ -s "$DIR/tets/$name.1.ele" && -s "$DIR/tets/$name.1.node" ]] && continue
     cp "$DIR/$src.off" "$DIR/tets/$name.off"
-    flags=-pqzQ
-    [[ "$vol" != - ]] && flags="$flags -a$vol"
     echo "fetch-meshes: tetgen $flags $name.off"
     (cd "$DIR/tets" && tetgen $flags "$name.off" >/dev/null)
     rm -f "$DIR/tets/$name.off" "$DIR/tets/$name.1.face" "$DIR/tets/$name.1.edge" \
           "$DIR/tets/$name.1.smesh"
   done <<'LIST'
-TETLIST
+knot1-tets16k knot1 -pzQ
+blobby-tets108k blobby -pqzQ -a1.5e-6
+blobby-tets1M blobby -pqzQ -a1e-7
 LIST
 fi
 echo "fetch-meshes: $DIR ready"

@@ -20,7 +20,8 @@ static int check_failures UNUSED_ = 0;
 static inline const char *last_error(void) {
     static char buf[1024];
     size_t len = 0;
-    if (topomesh_last_error(buf, sizeof buf, &len) > TOPOMESH_STATUS_BUFFER_TOO_SMALL) buf[0] = 0;
+    topomesh_status s = topomesh_last_error(buf, sizeof buf, &len);
+    if (s != TOPOMESH_STATUS_OK && s != TOPOMESH_STATUS_BUFFER_TOO_SMALL) buf[0] = 0;
     return buf;
 }
 

@@ -10,12 +10,22 @@ pub mod ffi;
 pub mod generate;
 pub mod io;
 mod rank;
+mod small_ids;
 
 pub use che::{BuildOptions, BuildReport, Che, Summary};
+pub use chf::{Chf, ChfBuildOptions, ChfBuildReport, ChfSummary};
 pub use error::{Error, ErrorKind};
+pub use small_ids::Ids;
 
 /// "No element": the opposite of a boundary half-edge, the start of an isolated vertex, ...
 pub const NONE: u32 = u32::MAX;
 
 /// How many offending ids a build report keeps of each kind.
 pub const REPORT_EXAMPLES: usize = 16;
+
+/// Keeps the first [`REPORT_EXAMPLES`] examples of a kind in a build report.
+pub(crate) fn push_example<T>(list: &mut Vec<T>, item: T) {
+    if list.len() < REPORT_EXAMPLES {
+        list.push(item);
+    }
+}

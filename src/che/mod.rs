@@ -23,12 +23,12 @@ mod split;
 mod star;
 mod summary;
 
+pub use crate::Ids;
 pub use build::{BuildOptions, MAX_TRIANGLES};
 pub use bulk::Csr;
 pub use curves::BoundaryWalk;
 pub use ids::{first, next, prev, tri};
 pub use memory::Memory;
-pub use queries::Ids;
 pub use report::BuildReport;
 pub use star::{Rotation, StarStep};
 pub use summary::Summary;

@@ -4,43 +4,8 @@
 use super::ids::{first, next, prev, tri};
 use super::star::{Rotation, StarStep};
 use super::{Che, matching};
-use crate::NONE;
+use crate::{Ids, NONE};
 use std::borrow::Cow;
-
-/// Up to `N` ids without allocation (edge wings, triangles of an edge).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Ids<const N: usize> {
-    ids: [u32; N],
-    len: u8,
-}
-
-impl<const N: usize> Ids<N> {
-    fn new() -> Self {
-        Ids {
-            ids: [NONE; N],
-            len: 0,
-        }
-    }
-    fn push(&mut self, id: u32) {
-        self.ids[self.len as usize] = id;
-        self.len += 1;
-    }
-}
-
-impl<const N: usize> std::ops::Deref for Ids<N> {
-    type Target = [u32];
-    fn deref(&self) -> &[u32] {
-        &self.ids[..self.len as usize]
-    }
-}
-
-impl<const N: usize> IntoIterator for Ids<N> {
-    type Item = u32;
-    type IntoIter = std::iter::Take<std::array::IntoIter<u32, N>>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.ids.into_iter().take(self.len as usize)
-    }
-}
 
 impl Che {
     /// Origin of half-edge `h`.

@@ -1,6 +1,5 @@
 //! What a build did to its input: nothing is dropped or changed without being listed here.
-
-use crate::REPORT_EXAMPLES;
+//! Lists keep the first [`crate::REPORT_EXAMPLES`] offending ids.
 
 /// Counts, plus the first [`REPORT_EXAMPLES`] offending ids of each kind (input ids).
 #[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -48,9 +47,4 @@ impl BuildReport {
     }
 }
 
-/// Keeps the first few examples of a kind.
-pub(crate) fn push_example<T>(list: &mut Vec<T>, item: T) {
-    if list.len() < REPORT_EXAMPLES {
-        list.push(item);
-    }
-}
+pub(crate) use crate::push_example;

@@ -1,1 +1,314 @@
-//! CHF, the Compact Half-Face for tetrahedral meshes (being written).
+//! CHF, the Compact Half-Face for tetrahedral meshes, in levels:
+//! - 0: `V[4T]`, the (oriented, manifold-split) tetrahedron soup;
+//! - 1: `O[4T]`, twin half-faces (`NONE` on the boundary);
+//! - 2: `VH[V]` (a boundary vertex stores a boundary half-face), edge ids and face ids;
+//! - 3: the boundary surface as a [`crate::che::Che`], with maps to and from the boundary half-faces
+//!   and a boundary-component id per boundary vertex.
+//!
+//! The arithmetic (half-faces, edge slots, the half-edge encoding, mate and radial) is in
+//! [`ids`]. Every query works at every level; a higher level only answers faster. The build
+//! always canonicalises the input (degenerate tetrahedra dropped, components oriented,
+//! non-manifold vertices split) so that half-face, edge and face ids are the same at every
+//! level, and so are the answers, in the same order.
+//!
+//! Ids: a face is named by its canonical half-face (`O[hf] == NONE || hf < O[hf]`), face
+//! `f` being the `f`-th; an edge is a fan of tetrahedra around a vertex pair (see
+//! `edges.rs`), edge `e` the `e`-th canonical edge slot. Below level 2 the ranks are
+//! computed for the query (O(T)); level 0 also computes `O` (the rule level 1 stores).
+//!
+//! The 16 relations (k = tetrahedra around an edge, S = tetrahedra around a vertex):
+//!
+//! | relation | answer | cost at level 2 |
+//! |---|---|---|
+//! | VV, VE, VF, VT | each once, breadth-first over the star | O(S) |
+//! | EV | the canonical half-edge's origin and target | O(1) |
+//! | ET, EF | rotation order, from the boundary on a boundary edge | O(k) |
+//! | EE | the two other edges of each face of EF, each once | O(k) walks |
+//! | FV, FE | the canonical half-face's order; edge `j` from vertex `j` to `j + 1` | O(1), O(k) per edge |
+//! | FF | the other faces of the face's one or two tetrahedra ("wings"), each once | O(1) |
+//! | FT | the canonical half-face's tetrahedron, then its twin's | O(1) (level 1 on half-faces) |
+//! | TV, TF, TT | local order; `TT[i]` across face `i`, `NONE` on the boundary | O(1) (TT from level 1) |
+//! | TE | local pairs (0,1) (0,2) (0,3) (1,2) (1,3) (2,3) | O(k) per edge |
+//!
+//! Naming an edge from a half-edge walks around the edge to its canonical slot (O(k)); a
+//! per-slot edge array would make it O(1) for 24 bytes per tetrahedron (see `edges.rs`).
+
+mod build;
+mod edges;
+mod fan;
+pub mod ids;
+mod level2;
+mod level3;
+mod matching;
+mod memory;
+mod orient;
+mod queries;
+mod report;
+mod split;
+mod star;
+mod strict;
+mod summary;
+mod view;
+
+pub use crate::Ids;
+pub use build::{ChfBuildOptions, MAX_TETRAHEDRA};
+pub use fan::EdgeIds;
+pub use ids::{HalfEdge, NO_HALF_EDGE};
+pub use memory::ChfMemory;
+pub use report::ChfBuildReport;
+pub use star::{INLINE as STAR_INLINE, VertexIds};
+pub use summary::ChfSummary;
+
+use crate::error::{Error, Result};
+use crate::rank::RankBits;
+use edges::MultiFan;
+use glam::DVec3;
+
+/// A tetrahedral mesh in the Compact Half-Face structure.
+#[derive(Clone, Debug)]
+pub struct Chf {
+    level: u8,
+    n_input_vertices: usize,
+    n_vertices: usize,
+    /// `V[hf]`: vertex `hf & 3` of tetrahedron `hf >> 2`.
+    v: Vec<u32>,
+    /// Level 1: `O[hf]`, the twin half-face.
+    o: Vec<u32>,
+    /// Level 2: a half-face holding each vertex, a boundary one on the boundary.
+    vh: Vec<u32>,
+    /// Level 2: bit `hf` set on canonical half-faces (`O[hf] == NONE || hf < O[hf]`); the
+    /// face id is the rank.
+    face_bits: RankBits,
+    /// Level 2: the canonical half-face of each face.
+    fh: Vec<u32>,
+    /// Level 2: bit `s` set on the canonical edge slot of each fan; the edge id is the rank.
+    edge_bits: RankBits,
+    /// Level 2: the tetrahedron of each edge's canonical slot (the slot is the right one
+    /// among the six marked bits of that tetrahedron: 4 bytes per edge, not 8).
+    eh: Vec<u32>,
+    /// Level 3.
+    boundary: Option<level3::Boundary>,
+    /// Counts, the same at every level.
+    num_edges: usize,
+    num_faces: usize,
+    positions: Vec<DVec3>,
+    /// Structure vertex -> input vertex; empty when the identity.
+    vertex_origin: Vec<u32>,
+    /// Structure tetrahedron -> input tetrahedron; empty when the identity.
+    tet_origin: Vec<u32>,
+    /// Sorted half-faces of non-manifold faces (3+ tetrahedra), unpaired at every level.
+    non_manifold: Vec<u32>,
+    /// Sorted half-faces on orientation seams, unpaired at every level.
+    seams: Vec<u32>,
+    /// Structure vertex pairs carrying several fans (several edge ids), sorted.
+    multi_fan: Vec<MultiFan>,
+    report: ChfBuildReport,
+}
+
+impl Chf {
+    /// Builds from tetrahedra over vertices `0..n_vertices`; `positions` is empty or holds
+    /// `n_vertices` points.
+    pub fn from_tetrahedra(
+        tets: &[[u32; 4]],
+        n_vertices: usize,
+        positions: &[DVec3],
+        options: ChfBuildOptions,
+    ) -> Result<Chf> {
+        build::build(tets, n_vertices, positions, options)
+    }
+
+    /// Builds from a flat array of `4 * n` vertex ids.
+    pub fn from_flat(
+        tets: &[u32],
+        n_vertices: usize,
+        positions: &[DVec3],
+        options: ChfBuildOptions,
+    ) -> Result<Chf> {
+        if !tets.len().is_multiple_of(4) {
+            return Err(Error::invalid(format!(
+                "tetrahedron array has {} ids, not a multiple of 4",
+                tets.len()
+            )));
+        }
+        // A copy (the build copies the ids anyway): `as_chunks` is newer than our MSRV.
+        let quads: Vec<[u32; 4]> = tets
+            .chunks_exact(4)
+            .map(|q| [q[0], q[1], q[2], q[3]])
+            .collect();
+        Self::from_tetrahedra(&quads, n_vertices, positions, options)
+    }
+
+    pub fn level(&self) -> u8 {
+        self.level
+    }
+
+    /// Raises (or lowers) the level in place. Ids do not change.
+    pub fn build_level(&mut self, level: u8) -> Result<()> {
+        if level > 3 {
+            return Err(Error::out_of_range(format!(
+                "level {level} is not in 0..=3"
+            )));
+        }
+        if level < self.level {
+            if level < 3 {
+                self.boundary = None;
+            }
+            if level < 2 {
+                self.vh = Vec::new();
+                self.face_bits = RankBits::default();
+                self.fh = Vec::new();
+                self.edge_bits = RankBits::default();
+                self.eh = Vec::new();
+            }
+            if level < 1 {
+                self.o = Vec::new();
+            }
+            self.level = level;
+            return Ok(());
+        }
+        if self.level < 1 && level >= 1 {
+            self.o = matching::opposites_by_rule(
+                &self.v,
+                self.n_vertices,
+                &self.non_manifold,
+                &self.seams,
+            );
+            self.level = 1;
+        }
+        if self.level < 2 && level >= 2 {
+            let bits = edges::canonical_slots(&self.v, &self.o);
+            level2::build(self, bits);
+            self.level = 2;
+        }
+        if self.level < 3 && level >= 3 {
+            self.boundary = Some(level3::build(self)?);
+            self.level = 3;
+        }
+        Ok(())
+    }
+
+    /// Vertices of the structure: the input vertices, then copies made by splitting.
+    pub fn num_vertices(&self) -> usize {
+        self.n_vertices
+    }
+    pub fn num_input_vertices(&self) -> usize {
+        self.n_input_vertices
+    }
+    pub fn num_tetrahedra(&self) -> usize {
+        self.v.len() / 4
+    }
+    pub fn num_half_faces(&self) -> usize {
+        self.v.len()
+    }
+    pub fn num_edges(&self) -> usize {
+        self.num_edges
+    }
+    pub fn num_faces(&self) -> usize {
+        self.num_faces
+    }
+
+    /// `V`: vertex `hf & 3` of tetrahedron `hf >> 2`, for every half-face `hf`.
+    pub fn half_face_vertices(&self) -> &[u32] {
+        &self.v
+    }
+    /// `O`, from level 1.
+    pub fn opposites(&self) -> Option<&[u32]> {
+        (self.level >= 1).then_some(&self.o[..])
+    }
+    /// `VH`, from level 2.
+    pub fn vertex_half_faces(&self) -> Option<&[u32]> {
+        (self.level >= 2).then_some(&self.vh[..])
+    }
+    /// `FH`: the canonical half-face of every face, from level 2.
+    pub fn face_half_faces(&self) -> Option<&[u32]> {
+        (self.level >= 2).then_some(&self.fh[..])
+    }
+    /// The tetrahedron holding the canonical slot of every edge, from level 2.
+    pub fn edge_slot_tetrahedra(&self) -> Option<&[u32]> {
+        (self.level >= 2).then_some(&self.eh[..])
+    }
+    /// Positions of the structure's vertices (copies repeat their origin); may be empty.
+    pub fn positions(&self) -> &[DVec3] {
+        &self.positions
+    }
+
+    /// The input vertex a structure vertex comes from.
+    pub fn vertex_origin(&self, v: u32) -> u32 {
+        if self.vertex_origin.is_empty() {
+            v
+        } else {
+            self.vertex_origin[v as usize]
+        }
+    }
+    /// The input tetrahedron a structure tetrahedron comes from.
+    pub fn tetrahedron_origin(&self, t: u32) -> u32 {
+        if self.tet_origin.is_empty() {
+            t
+        } else {
+            self.tet_origin[t as usize]
+        }
+    }
+    /// The vertex origin map, or `None` when it is the identity.
+    pub fn vertex_origins(&self) -> Option<&[u32]> {
+        (!self.vertex_origin.is_empty()).then_some(&self.vertex_origin[..])
+    }
+    /// The tetrahedron origin map, or `None` when it is the identity.
+    pub fn tetrahedron_origins(&self) -> Option<&[u32]> {
+        (!self.tet_origin.is_empty()).then_some(&self.tet_origin[..])
+    }
+
+    pub fn report(&self) -> &ChfBuildReport {
+        &self.report
+    }
+
+    /// Half-faces of non-manifold faces (sorted); they are unpaired at every level.
+    pub fn non_manifold_half_faces(&self) -> &[u32] {
+        &self.non_manifold
+    }
+    /// Half-faces on orientation seams (sorted); they are unpaired at every level.
+    pub fn seam_half_faces(&self) -> &[u32] {
+        &self.seams
+    }
+
+    pub fn check_vertex(&self, v: u32) -> Result<()> {
+        check("vertex", "vertices", v, self.n_vertices)
+    }
+    pub fn check_edge(&self, e: u32) -> Result<()> {
+        check("edge", "edges", e, self.num_edges)
+    }
+    pub fn check_face(&self, f: u32) -> Result<()> {
+        check("face", "faces", f, self.num_faces)
+    }
+    pub fn check_tetrahedron(&self, t: u32) -> Result<()> {
+        check("tetrahedron", "tetrahedra", t, self.num_tetrahedra())
+    }
+    pub fn check_half_face(&self, hf: u32) -> Result<()> {
+        check("half-face", "half-faces", hf, self.v.len())
+    }
+    pub fn check_half_edge(&self, he: HalfEdge) -> Result<()> {
+        if he < 3 * self.v.len() as u64 {
+            Ok(())
+        } else {
+            Err(Error::out_of_range(format!(
+                "half-edge {he} out of range (the mesh has {} half-edges)",
+                3 * self.v.len()
+            )))
+        }
+    }
+}
+
+fn check(what: &str, plural: &str, id: u32, n: usize) -> Result<()> {
+    if (id as usize) < n {
+        Ok(())
+    } else {
+        Err(Error::out_of_range(format!(
+            "{what} {id} out of range (the mesh has {n} {plural})"
+        )))
+    }
+}
+
+const _: () = {
+    // Queries are `&self` and lock-free: the structure is plain data.
+    const fn assert_send_sync<T: Send + Sync>() {}
+    assert_send_sync::<Chf>();
+};

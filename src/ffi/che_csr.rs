@@ -5,25 +5,36 @@
 //! *n_indices)`. Both buffers NULL (capacities 0) is a size query: OK, with both lengths
 //! written. Exactly one NULL buffer gives NULL_ARGUMENT. A buffer too small gives
 //! BUFFER_TOO_SMALL with both needed lengths written (the buffers then hold a prefix).
-//! Rows are in the order of the one-element calls. O(T) from level 2; below level 2 the
-//! vertex-centred calls first build a temporary level-2 copy (O(T) time and memory).
+//! Rows are in the order of the one-element calls. O(T) at every level: from level 2 the
+//! rows stream from the structure; below, the core's bulk sweep computes the missing
+//! tables once (O(T) temporary memory).
 
 use super::boundary::{CsrSink, guard, handle};
 use super::che::CheMesh;
 use super::status::Status;
 use crate::NONE;
-use crate::che::{Che, tri};
+use crate::che::{Che, Csr, tri};
 use crate::error::Result;
-use std::borrow::Cow;
 
-/// `che` itself from level 2, else a level-2 copy.
-fn at_level_2(che: &Che) -> Result<Cow<'_, Che>> {
+/// Streams one row per vertex from level 2; below, copies the core's bulk answer.
+fn vertex_rows(
+    che: &Che,
+    s: &mut CsrSink<'_>,
+    row: impl Fn(&Che, u32, &mut CsrSink<'_>),
+    bulk: impl Fn(&Che) -> Csr,
+) {
     if che.level() >= 2 {
-        return Ok(Cow::Borrowed(che));
+        for v in 0..che.num_vertices() as u32 {
+            s.row();
+            row(che, v, s);
+        }
+    } else {
+        let csr = bulk(che);
+        for v in 0..csr.len() {
+            s.row();
+            csr.get(v).iter().for_each(|&x| s.push(x));
+        }
     }
-    let mut copy = che.clone();
-    copy.build_level(2)?;
-    Ok(Cow::Owned(copy))
 }
 
 /// Shared body of the CSR calls.
@@ -84,11 +95,12 @@ pub unsafe extern "C" fn che_mesh_vertex_vertices_csr(
             n_offsets,
             n_indices,
             |che, s| {
-                let che = at_level_2(che)?;
-                for v in 0..che.num_vertices() as u32 {
-                    s.row();
-                    che.vertex_vertices(v).for_each(|w| s.push(w));
-                }
+                vertex_rows(
+                    che,
+                    s,
+                    |che, v, s| che.vertex_vertices(v).for_each(|x| s.push(x)),
+                    Che::all_vertex_vertices,
+                );
                 Ok(())
             },
         )
@@ -117,11 +129,12 @@ pub unsafe extern "C" fn che_mesh_vertex_edges_csr(
             n_offsets,
             n_indices,
             |che, s| {
-                let che = at_level_2(che)?;
-                for v in 0..che.num_vertices() as u32 {
-                    s.row();
-                    che.vertex_edges(v).for_each(|e| s.push(e));
-                }
+                vertex_rows(
+                    che,
+                    s,
+                    |che, v, s| che.vertex_edges(v).for_each(|x| s.push(x)),
+                    Che::all_vertex_edges,
+                );
                 Ok(())
             },
         )
@@ -150,11 +163,12 @@ pub unsafe extern "C" fn che_mesh_vertex_triangles_csr(
             n_offsets,
             n_indices,
             |che, s| {
-                let che = at_level_2(che)?;
-                for v in 0..che.num_vertices() as u32 {
-                    s.row();
-                    che.vertex_triangles(v).for_each(|t| s.push(t));
-                }
+                vertex_rows(
+                    che,
+                    s,
+                    |che, v, s| che.vertex_triangles(v).for_each(|x| s.push(x)),
+                    Che::all_vertex_triangles,
+                );
                 Ok(())
             },
         )

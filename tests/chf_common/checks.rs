@@ -1,0 +1,179 @@
+//! Checks of a build against its raw input and of the structure's invariants.
+
+use super::mesh::{det, sorted};
+use super::reference::{degenerate, expected};
+use glam::DVec3;
+use std::collections::BTreeSet;
+use topomesh::NONE;
+use topomesh::chf::Chf;
+
+/// Checks the build against the raw input: nothing disappears, the split follows the
+/// pieces of every input star, the orientation, `O` and `VH` invariants, the summary, and
+/// the boundary surface at level 3. `geometry` holds the generator's positions (whether or
+/// not the build was given them).
+pub fn check_build(chf: &Chf, input: &[[u32; 4]], geometry: &[DVec3], given_positions: bool) {
+    let n = geometry.len();
+    let x = expected(input, n);
+    let r = chf.report();
+    // Nothing disappears: every kept tetrahedron is there, with its vertices, in order.
+    assert_eq!(chf.num_tetrahedra(), x.kept);
+    assert_eq!(r.dropped_degenerate, x.dropped);
+    let mut present = vec![false; input.len()];
+    let mut last = None;
+    for t in 0..chf.num_tetrahedra() as u32 {
+        let o = chf.tetrahedron_origin(t);
+        assert!(last.is_none_or(|l| l < o), "tetrahedron order kept");
+        last = Some(o);
+        present[o as usize] = true;
+        let back = chf.tetrahedron_vertices(t).map(|v| chf.vertex_origin(v));
+        assert_eq!(
+            sorted(back),
+            sorted(input[o as usize]),
+            "tetrahedron {t} from input {o}"
+        );
+    }
+    let dropped: Vec<u32> = (0..input.len() as u32)
+        .filter(|&i| !present[i as usize])
+        .collect();
+    assert!(dropped.iter().all(|&i| degenerate(input[i as usize])));
+    assert_eq!(
+        r.degenerate_examples,
+        dropped
+            .iter()
+            .copied()
+            .take(topomesh::REPORT_EXAMPLES)
+            .collect::<Vec<_>>()
+    );
+    // The split: one structure vertex per piece of each input star.
+    let mut structure_of_input_tet = vec![NONE; input.len()];
+    for t in 0..chf.num_tetrahedra() as u32 {
+        structure_of_input_tet[chf.tetrahedron_origin(t) as usize] = t;
+    }
+    let mut ids_used = BTreeSet::new();
+    for (xv, pieces) in x.pieces.iter().enumerate() {
+        for piece in pieces {
+            let ids: BTreeSet<u32> = piece
+                .iter()
+                .map(|&i| {
+                    let t = structure_of_input_tet[i as usize];
+                    *chf.tetrahedron_vertices(t)
+                        .iter()
+                        .find(|&&v| chf.vertex_origin(v) == xv as u32)
+                        .unwrap()
+                })
+                .collect();
+            assert_eq!(ids.len(), 1, "one id per piece of vertex {xv}");
+            assert!(
+                ids_used.insert(*ids.first().unwrap()),
+                "pieces of {xv} share an id"
+            );
+        }
+    }
+    let pieces: usize = x.pieces.iter().map(|p| p.len()).sum();
+    assert_eq!(chf.num_vertices(), n + pieces - (n - x.isolated));
+    assert_eq!(r.added_vertices, chf.num_vertices() - n);
+    assert_eq!(r.split_vertices, x.split_vertices);
+    assert_eq!(r.non_manifold_faces, x.non_manifold_faces);
+    assert_eq!(r.non_manifold_edges, x.non_manifold_edges);
+    assert_eq!(r.non_orientable_components, 0);
+    // Orientation.
+    let pos: Vec<DVec3> = (0..chf.num_vertices() as u32)
+        .map(|v| geometry[chf.vertex_origin(v) as usize])
+        .collect();
+    let negative = (0..chf.num_tetrahedra() as u32)
+        .filter(|&t| det(&pos, chf.tetrahedron_vertices(t)) < 0.0)
+        .count();
+    if given_positions {
+        assert_eq!(negative, r.inverted_tetrahedra);
+        if r.duplicate_tetrahedra + r.zero_volume + r.inverted_tetrahedra == 0 {
+            let flips = dropped_free(input)
+                .filter(|t| det(geometry, *t) < 0.0)
+                .count();
+            assert_eq!(r.flipped_tetrahedra, flips);
+        }
+    }
+    check_invariants(chf);
+    // Summary.
+    let s = chf.summary();
+    assert_eq!(
+        (
+            s.vertices as usize,
+            s.edges as usize,
+            s.faces as usize,
+            s.tetrahedra as usize
+        ),
+        (n, x.edges, x.faces, x.kept)
+    );
+    assert_eq!(
+        (
+            s.boundary_faces as usize,
+            s.boundary_edges as usize,
+            s.boundary_vertices as usize
+        ),
+        (x.boundary_faces, x.boundary_edges, x.boundary_vertices)
+    );
+    assert_eq!(s.boundary_components as usize, x.boundary_components);
+    assert_eq!(s.components as usize, x.components);
+    assert_eq!(s.isolated_vertices as usize, x.isolated);
+    assert_eq!(s.euler_characteristic, x.euler);
+    assert_eq!(
+        s.manifold,
+        x.non_manifold_faces == 0 && x.non_manifold_edges == 0 && x.split_vertices == 0
+    );
+}
+
+fn dropped_free(input: &[[u32; 4]]) -> impl Iterator<Item = [u32; 4]> + '_ {
+    input.iter().copied().filter(|t| !degenerate(*t))
+}
+
+/// `O` pairs reversed faces; `VH` holds its vertex and is a boundary half-face exactly on
+/// boundary vertices; the level-3 boundary surface is the boundary half-faces.
+pub fn check_invariants(chf: &Chf) {
+    if let Some(o) = chf.opposites() {
+        for (hf, &g) in o.iter().enumerate() {
+            if g == NONE {
+                continue;
+            }
+            assert_eq!(o[g as usize], hf as u32);
+            let a = chf.half_face_vertices_of(hf as u32);
+            let b = chf.half_face_vertices_of(g);
+            let k = b.iter().position(|&y| y == a[0]).expect("same triple");
+            assert_eq!(b[(k + 2) % 3], a[1], "twins run opposite ways");
+            assert_eq!(b[(k + 1) % 3], a[2], "twins run opposite ways");
+        }
+    }
+    if let Some(vh) = chf.vertex_half_faces() {
+        for (v, &hf) in vh.iter().enumerate() {
+            if hf == NONE {
+                assert_eq!(chf.vertex_tetrahedra(v as u32).count(), 0);
+                continue;
+            }
+            assert!(chf.half_face_vertices_of(hf).contains(&(v as u32)));
+            let boundary = chf.vertex_faces(v as u32).any(|f| chf.is_boundary_face(f));
+            assert_eq!(chf.opposites().unwrap()[hf as usize] == NONE, boundary);
+        }
+    }
+    if let Some(che) = chf.boundary() {
+        let hfs = chf.boundary_half_faces();
+        assert_eq!(che.num_triangles(), hfs.len());
+        for (k, &hf) in hfs.iter().enumerate() {
+            assert_eq!(chf.opposite(hf), NONE);
+            assert_eq!(chf.boundary_triangle(hf), k as u32);
+            assert_eq!(chf.boundary_triangle_half_face(k as u32), hf);
+            let tri = che
+                .triangle_vertices(k as u32)
+                .map(|v| che.vertex_origin(v));
+            assert_eq!(
+                tri,
+                chf.half_face_vertices_of(hf),
+                "triangle {k} is half-face {hf}"
+            );
+            let comp = chf.boundary_component(tri[0]);
+            assert_ne!(comp, NONE);
+            assert!(tri.iter().all(|&v| chf.boundary_component(v) == comp));
+        }
+        for v in 0..chf.num_vertices() as u32 {
+            assert_eq!(chf.boundary_component(v) != NONE, chf.is_boundary_vertex(v));
+        }
+    }
+}

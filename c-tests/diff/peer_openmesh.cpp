@@ -55,6 +55,9 @@ Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
   for (auto v : m.vertices()) {
     size_t i = size_t(v.idx());
     a.have_v[i] = 1;
+    // An isolated vertex has no half-edge; OpenMesh's circulators must not start there
+    // (they return neighbours of half-edge -1's vertex).
+    if (!m.halfedge_handle(v).is_valid()) continue;
     for (auto it = m.cvv_ccwiter(v); it.is_valid(); ++it) {
       a.vv[i].push_back(vid(*it));
       a.ve[i].push_back(mkpair(uint32_t(i), vid(*it)));

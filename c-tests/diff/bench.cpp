@@ -8,7 +8,8 @@
 // from container sizes and the resident-set growth over one build, and full sweeps of VV,
 // VF, FF, EF and the boundary curves. Every sweep folds what it visits into a checksum
 // (printed; equal across libraries when every face was accepted) so nothing is optimised
-// away. Markdown tables go to stdout and, with --md, to FILE.
+// away. The repetitions are interleaved across libraries (see bench_util.hpp). Markdown
+// tables go to stdout and, with --md, to FILE.
 #include "off_reader.hpp"
 #include "peers.hpp"
 
@@ -29,7 +30,6 @@ inline uint32_t nxt(uint32_t h) { return che_next(h); }
 inline uint32_t prv(uint32_t h) { return che_prev(h); }
 
 struct Out {
-  std::string md;
   FILE *file = nullptr;
   void operator()(const char *fmt, ...) __attribute__((format(printf, 2, 3))) {
     char buf[4096];
@@ -43,267 +43,272 @@ struct Out {
   }
 };
 
-// Per-element C calls into a fixed buffer (a vertex degree above 256 falls back to a
-// vector).
-template <class F> uint64_t each_answer(F f, const che_mesh *m, uint32_t id, uint32_t *buf, size_t cap,
-                                        std::vector<uint32_t> &big, const uint32_t *&out, size_t &len) {
-  topomesh_status s = f(m, id, buf, cap, &len);
-  out = buf;
-  if (s == TOPOMESH_STATUS_BUFFER_TOO_SMALL) {
-    big.resize(len);
-    s = f(m, id, big.data(), big.size(), &len);
-    out = big.data();
+// One call per element into a fixed buffer (a longer answer falls back to a vector).
+using RelFn = topomesh_status (*)(const che_mesh *, uint32_t, uint32_t *, size_t, size_t *);
+struct Caller {
+  uint32_t buf[256];
+  std::vector<uint32_t> big;
+  const uint32_t *out = nullptr;
+  size_t len = 0;
+  size_t operator()(RelFn f, const che_mesh *m, uint32_t id) {
+    topomesh_status s = f(m, id, buf, 256, &len);
+    out = buf;
+    if (s == TOPOMESH_STATUS_BUFFER_TOO_SMALL) {
+      big.resize(len);
+      s = f(m, id, big.data(), big.size(), &len);
+      out = big.data();
+    }
+    if (s != TOPOMESH_STATUS_OK) {
+      std::fprintf(stderr, "bench: relation call failed on %u: %s\n", id, topomesh_status_str(s));
+      std::exit(1);
+    }
+    return len;
   }
-  if (s != TOPOMESH_STATUS_OK) {
-    std::fprintf(stderr, "bench: relation call failed on %u: %s\n", id, topomesh_status_str(s));
-    std::exit(1);
-  }
-  return len;
-}
+};
 
 // Estimated seconds of a sweep that costs `per` scans of all half-edges per element (about
 // 1 ns per half-edge scanned, measured on bunny00 at level 1).
 double scan_seconds(size_t elements, size_t nt, double per) { return double(elements) * per * 3.0 * nt * 1e-9; }
 constexpr double kMaxSweepSeconds = 2;
 
-// The header-only C++ wrapper (topomesh.hpp): star ranges over the C stack iterator,
-// fixed-size relations into std::array / SmallIds, curves into a std::vector.
-LibBench cpp_row(che_mesh *m, uint32_t level, int reps, const LibBench &base) {
-  LibBench r = base;
-  r.path = "C++ wrapper";
-  r.build_ms.clear();
-  // Borrow the handle: the Surface must not free it.
-  topomesh::Surface surf(m);
-  struct Release {
-    topomesh::Surface &s;
-    ~Release() { s.release(); }
-  } release{surf};
-  using namespace topomesh;
-  const uint32_t nv = uint32_t(surf.num_vertices()), nt = uint32_t(surf.num_triangles()),
-                 ne = uint32_t(surf.num_edges());
-  const std::string slow = "O(T) per query at level 1";
-  bool vslow = level < 2 && scan_seconds(nv, nt, 1) > kMaxSweepSeconds;
-  r.sweeps.push_back(vslow ? skipped_sweep("VV", slow) : time_sweep("VV", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (uint32_t v = 0; v < nv; ++v)
-      for (VertexId w : surf.vertices_around(VertexId{v})) cs += uint64_t(w.value()) * (v + 1), ++n;
-    return cs;
-  }));
-  r.sweeps.push_back(vslow ? skipped_sweep("VF", slow) : time_sweep("VF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (uint32_t v = 0; v < nv; ++v)
-      for (TriangleId t : surf.triangles_around(VertexId{v})) cs += uint64_t(t.value() + 1) * (v + 1), ++n;
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("FF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (uint32_t t = 0; t < nt; ++t)
-      for (TriangleId g : surf.triangle_triangles(TriangleId{t}))
-        if (g.valid()) cs += uint64_t(g.value() + 1) * (t + 1), ++n;
-    return cs;
-  }));
-  bool eslow = level < 2 && scan_seconds(ne, nt, 1) > kMaxSweepSeconds;
-  r.sweeps.push_back(eslow ? skipped_sweep("EF", slow) : time_sweep("EF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (uint32_t e = 0; e < ne; ++e)
-      for (TriangleId t : surf.edge_triangles(EdgeId{e})) cs += t.value() + 1, ++n;
-    return cs;
-  }));
-  const size_t nb = size_t(surf.summary().boundary_edges), nc = surf.num_boundary_curves();
-  bool cslow = (level < 2 && scan_seconds(nb, nt, 1) > kMaxSweepSeconds) ||
-               (level < 3 && scan_seconds(nc, nt, 1) > kMaxSweepSeconds);
-  r.sweeps.push_back(cslow ? skipped_sweep("curves", "O(T) per curve below level 3")
-                           : time_sweep("curves", reps, [&](uint64_t &n) {
-                               uint64_t cs = 0;
-                               for (uint32_t c = 0; c < nc; ++c)
-                                 for (VertexId v : surf.boundary_curve_vertices(c)) cs += v.value() + 1, ++n;
-                               return cs;
-                             }));
-  return r;
-}
-
-void topomesh_rows(const Soup &s, uint32_t level, int reps, std::vector<LibBench> &rows) {
-  const size_t nt_in = s.n_triangles();
-  LibBench base;
-  base.lib = "topomesh L" + std::to_string(level);
-  che_mesh *m = nullptr;
-  for (int k = 0; k < reps; ++k) {
-    double t0 = now_ms();
-    che_mesh *x = nullptr;
-    if (che_mesh_from_triangles(s.triangles.data(), nt_in, s.n_vertices, s.positions.data(), level, &x) !=
-        TOPOMESH_STATUS_OK) {
-      std::fprintf(stderr, "bench: build failed\n");
+// topomesh at one level; rows for each access path.
+class TmSubject : public Subject {
+public:
+  TmSubject(const Soup &s, uint32_t level) : s_(s), level_(level) {}
+  ~TmSubject() override { release(); }
+  void release() override {
+    che_mesh_free(m_);
+    m_ = nullptr;
+  }
+  void build() override {
+    if (che_mesh_from_triangles(s_.triangles.data(), s_.n_triangles(), s_.n_vertices, s_.positions.data(), level_,
+                                &m_) != TOPOMESH_STATUS_OK) {
+      std::fprintf(stderr, "bench: topomesh build failed\n");
       std::exit(1);
     }
-    base.build_ms.push_back(now_ms() - t0);
-    che_mesh_free(x);
   }
-  long before = rss_bytes();
-  che_mesh_from_triangles(s.triangles.data(), nt_in, s.n_vertices, s.positions.data(), level, &m);
-  base.rss_delta = rss_bytes() - before;
-  che_memory mem;
-  std::memset(&mem, 0, sizeof mem);
-  che_mesh_memory(m, &mem);
-  base.connectivity_bytes = size_t(mem.topology);
-  const size_t nv = che_mesh_num_vertices(m), nt = che_mesh_num_triangles(m), ne = che_mesh_num_edges(m);
-  base.faces = nt;
-  base.vertices = nv;
-  {
+  void describe(LibBench &r) const override {
+    che_memory mem;
+    std::memset(&mem, 0, sizeof mem);
+    che_mesh_memory(m_, &mem);
+    r.connectivity_bytes = size_t(mem.topology);
+    r.faces = che_mesh_num_triangles(m_);
+    r.vertices = che_mesh_num_vertices(m_);
     che_summary sum;
     std::memset(&sum, 0, sizeof sum);
-    che_mesh_summary(m, &sum);
-    base.note = std::to_string(sum.flipped_triangles) + " flipped, " + std::to_string(sum.split_vertices) +
-                " vertices split, " + std::to_string(sum.non_manifold_edges) + " non-manifold edges, " +
-                std::to_string(sum.dropped_degenerate) + " degenerate dropped";
+    che_mesh_summary(m_, &sum);
+    r.note = std::to_string(sum.flipped_triangles) + " flipped, " + std::to_string(sum.split_vertices) +
+             " vertices split, " + std::to_string(sum.non_manifold_edges) + " non-manifold edges, " +
+             std::to_string(sum.dropped_degenerate) + " degenerate dropped";
   }
-  const std::string slow = "O(T) per query at level 1";
+  std::vector<LibBench> rows() override {
+    // Sizes that decide which level-1 sweeps are too slow to run (O(T) per query).
+    nv_ = che_mesh_num_vertices(m_);
+    nt_ = che_mesh_num_triangles(m_);
+    ne_ = che_mesh_num_edges(m_);
+    che_summary sum;
+    std::memset(&sum, 0, sizeof sum);
+    che_mesh_summary(m_, &sum);
+    nb_ = size_t(sum.boundary_edges);
+    nc_ = che_mesh_num_boundary_curves(m_);
+    return {c_api(), star(), csr(), cpp(), zero_copy()};
+  }
 
-  // --- C API, one call per element.
-  LibBench c = base;
-  c.path = "C API";
-  {
-    uint32_t buf[256];
-    std::vector<uint32_t> big;
-    const uint32_t *a;
-    size_t len;
-    bool vslow = level < 2 && scan_seconds(nv, nt, 1) > kMaxSweepSeconds;
-    c.sweeps.push_back(vslow ? skipped_sweep("VV", slow) : time_sweep("VV", reps, [&](uint64_t &n) {
+private:
+  const std::string slow_ = "O(T) per query at level 1";
+  bool vslow(double per = 1) const { return level_ < 2 && scan_seconds(nv_, nt_, per) > kMaxSweepSeconds; }
+  bool eslow() const { return level_ < 2 && scan_seconds(ne_, nt_, 1) > kMaxSweepSeconds; }
+  bool cslow() const {
+    return (level_ < 2 && scan_seconds(nb_, nt_, 1) > kMaxSweepSeconds) ||
+           (level_ < 3 && scan_seconds(nc_, nt_, 1) > kMaxSweepSeconds);
+  }
+  LibBench row(const char *path, bool first = false) const {
+    LibBench r;
+    r.lib = "topomesh L" + std::to_string(level_);
+    r.path = path;
+    r.owns_build = first;
+    return r;
+  }
+
+  LibBench c_api() {
+    LibBench r = row("C API", true);
+    r.sweeps.push_back(vslow() ? skipped_sweep("VV", slow_) : sweep("VV", [this](uint64_t &n) {
+      Caller call;
       uint64_t cs = 0;
-      for (uint32_t v = 0; v < nv; ++v) {
-        n += each_answer(che_vertex_vertices, m, v, buf, 256, big, a, len);
-        for (size_t i = 0; i < len; ++i) cs += uint64_t(a[i]) * (v + 1);
+      for (uint32_t v = 0; v < nv_; ++v) {
+        n += call(che_vertex_vertices, m_, v);
+        for (size_t i = 0; i < call.len; ++i) cs += uint64_t(call.out[i]) * (v + 1);
       }
       return cs;
     }));
-    c.sweeps.push_back(vslow ? skipped_sweep("VF", slow) : time_sweep("VF", reps, [&](uint64_t &n) {
+    r.sweeps.push_back(vslow() ? skipped_sweep("VF", slow_) : sweep("VF", [this](uint64_t &n) {
+      Caller call;
       uint64_t cs = 0;
-      for (uint32_t v = 0; v < nv; ++v) {
-        n += each_answer(che_vertex_triangles, m, v, buf, 256, big, a, len);
-        for (size_t i = 0; i < len; ++i) cs += uint64_t(a[i] + 1) * (v + 1);
+      for (uint32_t v = 0; v < nv_; ++v) {
+        n += call(che_vertex_triangles, m_, v);
+        for (size_t i = 0; i < call.len; ++i) cs += uint64_t(call.out[i] + 1) * (v + 1);
       }
       return cs;
     }));
-    c.sweeps.push_back(time_sweep("FF", reps, [&](uint64_t &n) {
+    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
+      uint32_t ff[3];
+      size_t len;
       uint64_t cs = 0;
-      for (uint32_t t = 0; t < nt; ++t) {
-        each_answer(che_triangle_triangles, m, t, buf, 256, big, a, len);
+      for (uint32_t t = 0; t < nt_; ++t) {
+        che_triangle_triangles(m_, t, ff, 3, &len);
         for (size_t i = 0; i < 3; ++i)
-          if (a[i] != TOPOMESH_NONE) cs += uint64_t(a[i] + 1) * (t + 1), ++n;
+          if (ff[i] != TOPOMESH_NONE) cs += uint64_t(ff[i] + 1) * (t + 1), ++n;
       }
       return cs;
     }));
-    bool eslow = level < 2 && scan_seconds(ne, nt, 1) > kMaxSweepSeconds;
-    c.sweeps.push_back(eslow ? skipped_sweep("EF", slow) : time_sweep("EF", reps, [&](uint64_t &n) {
+    r.sweeps.push_back(eslow() ? skipped_sweep("EF", slow_) : sweep("EF", [this](uint64_t &n) {
+      uint32_t ef[2];
+      size_t len = 0;
       uint64_t cs = 0;
-      for (uint32_t e = 0; e < ne; ++e) {
-        n += each_answer(che_edge_triangles, m, e, buf, 256, big, a, len);
-        for (size_t i = 0; i < len; ++i) cs += uint64_t(a[i] + 1);
+      for (uint32_t e = 0; e < ne_; ++e) {
+        che_edge_triangles(m_, e, ef, 2, &len);
+        for (size_t i = 0; i < len; ++i) cs += uint64_t(ef[i] + 1), ++n;
       }
       return cs;
     }));
-    size_t nb = 0;
-    {
-      che_summary sum;
-      che_mesh_summary(m, &sum);
-      nb = size_t(sum.boundary_edges);
-    }
-    size_t nc = che_mesh_num_boundary_curves(m);
-    bool cslow = (level < 2 && scan_seconds(nb, nt, 1) > kMaxSweepSeconds) ||
-                 (level < 3 && scan_seconds(nc, nt, 1) > kMaxSweepSeconds);
-    c.sweeps.push_back(cslow ? skipped_sweep("curves", "O(T) per curve below level 3")
-                             : time_sweep("curves", reps, [&](uint64_t &n) {
-                                 uint64_t cs = 0;
-                                 size_t k = che_mesh_num_boundary_curves(m);
-                                 for (uint32_t cv = 0; cv < k; ++cv) {
-                                   n += each_answer(che_boundary_curve_vertices, m, cv, buf, 256, big, a, len);
-                                   for (size_t i = 0; i < len; ++i) cs += a[i] + 1;
-                                 }
-                                 return cs;
-                               }));
+    r.sweeps.push_back(cslow() ? skipped_sweep("curves", "O(T) per curve below level 3")
+                               : sweep("curves", [this](uint64_t &n) {
+                                   Caller call;
+                                   uint64_t cs = 0;
+                                   size_t k = che_mesh_num_boundary_curves(m_);
+                                   for (uint32_t c = 0; c < k; ++c) {
+                                     n += call(che_boundary_curve_vertices, m_, c);
+                                     for (size_t i = 0; i < call.len; ++i) cs += call.out[i] + 1;
+                                   }
+                                   return cs;
+                                 }));
+    return r;
   }
-  rows.push_back(c);
 
-  // --- The star iterator on the caller's stack.
-  LibBench st = base;
-  st.path = "star iterator";
-  st.build_ms.clear();
-  {
-    bool vslow = level < 2 && scan_seconds(nv, nt, 2) > kMaxSweepSeconds;
-    st.sweeps.push_back(vslow ? skipped_sweep("VV", slow) : time_sweep("VV", reps, [&](uint64_t &n) {
+  LibBench star() {
+    LibBench r = row("star iterator");
+    r.sweeps.push_back(vslow(2) ? skipped_sweep("VV", slow_) : sweep("VV", [this](uint64_t &n) {
       uint64_t cs = 0;
       che_star_iter it;
       che_star_step step;
-      for (uint32_t v = 0; v < nv; ++v) {
-        che_star_begin(m, v, &it);
+      for (uint32_t v = 0; v < nv_; ++v) {
+        che_star_begin(m_, v, &it);
         while (che_star_next(&it, &step)) cs += uint64_t(step.vertex) * (v + 1), ++n;
       }
       return cs;
     }));
-    st.sweeps.push_back(vslow ? skipped_sweep("VF", slow) : time_sweep("VF", reps, [&](uint64_t &n) {
+    r.sweeps.push_back(vslow(2) ? skipped_sweep("VF", slow_) : sweep("VF", [this](uint64_t &n) {
       uint64_t cs = 0;
       che_star_iter it;
       che_star_step step;
-      for (uint32_t v = 0; v < nv; ++v) {
-        che_star_begin(m, v, &it);
+      for (uint32_t v = 0; v < nv_; ++v) {
+        che_star_begin(m_, v, &it);
         while (che_star_next(&it, &step))
           if (step.triangle != TOPOMESH_NONE) cs += uint64_t(step.triangle + 1) * (v + 1), ++n;
       }
       return cs;
     }));
+    return r;
   }
-  rows.push_back(st);
 
-  // --- CSR bulk calls (one call for all vertices; the buffers are sized outside the timing).
-  LibBench csr = base;
-  csr.path = "CSR bulk";
-  csr.build_ms.clear();
-  {
+  // One call for all rows; the buffers are sized (by a size query) outside the timing.
+  LibBench csr() {
+    LibBench r = row("CSR bulk");
     using CsrFn = topomesh_status (*)(const che_mesh *, uint32_t *, size_t, uint32_t *, size_t, size_t *, size_t *);
-    auto run = [&](const char *name, CsrFn f, uint64_t add, bool skip_none) {
+    auto add = [&](const char *name, CsrFn f, uint64_t plus, bool skip_none) {
       size_t no = 0, ni = 0;
-      f(m, nullptr, 0, nullptr, 0, &no, &ni);
-      std::vector<uint32_t> off(no), idx(ni);
-      csr.sweeps.push_back(time_sweep(name, reps, [&](uint64_t &n) {
+      f(m_, nullptr, 0, nullptr, 0, &no, &ni);
+      auto off = std::make_shared<std::vector<uint32_t>>(no), idx = std::make_shared<std::vector<uint32_t>>(ni);
+      r.sweeps.push_back(sweep(name, [this, f, plus, skip_none, off, idx](uint64_t &n) {
         size_t a = 0, b = 0;
-        if (f(m, off.data(), off.size(), idx.data(), idx.size(), &a, &b) != TOPOMESH_STATUS_OK) {
+        if (f(m_, off->data(), off->size(), idx->data(), idx->size(), &a, &b) != TOPOMESH_STATUS_OK) {
           std::fprintf(stderr, "bench: CSR call failed\n");
           std::exit(1);
         }
         uint64_t cs = 0;
-        size_t rows_n = a ? a - 1 : 0;
-        for (size_t r = 0; r < rows_n; ++r)
-          for (uint32_t k = off[r]; k < off[r + 1]; ++k) {
-            uint32_t x = idx[k];
+        for (size_t row = 0; row + 1 < a; ++row)
+          for (uint32_t k = (*off)[row]; k < (*off)[row + 1]; ++k) {
+            uint32_t x = (*idx)[k];
             if (skip_none && x == TOPOMESH_NONE) continue;
-            cs += (uint64_t(x) + add) * (r + 1);
-            ++n;
+            cs += (uint64_t(x) + plus) * (row + 1), ++n;
           }
         return cs;
       }));
     };
-    run("VV", che_mesh_vertex_vertices_csr, 0, false);
-    run("VF", che_mesh_vertex_triangles_csr, 1, false);
-    run("FF", che_mesh_triangle_triangles_csr, 1, true);
+    add("VV", che_mesh_vertex_vertices_csr, 0, false);
+    add("VF", che_mesh_vertex_triangles_csr, 1, false);
+    add("FF", che_mesh_triangle_triangles_csr, 1, true);
+    return r;
   }
-  rows.push_back(csr);
 
-  rows.push_back(cpp_row(m, level, reps, base));
-
-  // --- Zero-copy: the arrays themselves, with inline next/prev.
-  LibBench z = base;
-  z.path = "zero-copy";
-  z.build_ms.clear();
-  {
-    size_t len = 0;
-    const uint32_t *V = che_mesh_half_edge_vertices(m, &len);
-    const uint32_t *O = che_mesh_opposites(m, &len);
-    const uint32_t *VH = che_mesh_vertex_half_edges(m, &len);
-    const uint32_t *CH = che_mesh_curve_half_edges(m, &len);
-    const size_t nh = 3 * nt, nc = CH ? len : 0;
-    if (VH) {
-      z.sweeps.push_back(time_sweep("VV", reps, [&](uint64_t &n) {
+  // The header-only C++ wrapper (topomesh.hpp): star ranges over the C stack iterator,
+  // fixed-size relations into std::array / SmallIds, curves into a std::vector. It borrows
+  // the handle (released before the Surface is destroyed).
+  template <class F> auto with_surface(F &&f) {
+    topomesh::Surface surf(m_);
+    struct Release {
+      topomesh::Surface &s;
+      ~Release() { s.release(); }
+    } release{surf};
+    return f(static_cast<const topomesh::Surface &>(surf));
+  }
+  LibBench cpp() {
+    using namespace topomesh;
+    LibBench r = row("C++ wrapper");
+    r.sweeps.push_back(vslow() ? skipped_sweep("VV", slow_) : sweep("VV", [this](uint64_t &n) {
+      return with_surface([&](const Surface &s) {
         uint64_t cs = 0;
-        for (uint32_t v = 0; v < nv; ++v) {
+        for (uint32_t v = 0; v < nv_; ++v)
+          for (VertexId w : s.vertices_around(VertexId{v})) cs += uint64_t(w.value()) * (v + 1), ++n;
+        return cs;
+      });
+    }));
+    r.sweeps.push_back(vslow() ? skipped_sweep("VF", slow_) : sweep("VF", [this](uint64_t &n) {
+      return with_surface([&](const Surface &s) {
+        uint64_t cs = 0;
+        for (uint32_t v = 0; v < nv_; ++v)
+          for (TriangleId t : s.triangles_around(VertexId{v})) cs += uint64_t(t.value() + 1) * (v + 1), ++n;
+        return cs;
+      });
+    }));
+    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
+      return with_surface([&](const Surface &s) {
+        uint64_t cs = 0;
+        for (uint32_t t = 0; t < nt_; ++t)
+          for (TriangleId g : s.triangle_triangles(TriangleId{t}))
+            if (g.valid()) cs += uint64_t(g.value() + 1) * (t + 1), ++n;
+        return cs;
+      });
+    }));
+    r.sweeps.push_back(eslow() ? skipped_sweep("EF", slow_) : sweep("EF", [this](uint64_t &n) {
+      return with_surface([&](const Surface &s) {
+        uint64_t cs = 0;
+        for (uint32_t e = 0; e < ne_; ++e)
+          for (TriangleId t : s.edge_triangles(EdgeId{e})) cs += t.value() + 1, ++n;
+        return cs;
+      });
+    }));
+    r.sweeps.push_back(cslow() ? skipped_sweep("curves", "O(T) per curve below level 3")
+                               : sweep("curves", [this](uint64_t &n) {
+                                   return with_surface([&](const Surface &s) {
+                                     uint64_t cs = 0;
+                                     for (uint32_t c = 0; c < nc_; ++c)
+                                       for (VertexId v : s.boundary_curve_vertices(c)) cs += v.value() + 1, ++n;
+                                     return cs;
+                                   });
+                                 }));
+    return r;
+  }
+
+  // The arrays themselves, with inline next/prev (views fetched per sweep: a rebuild moves them).
+  LibBench zero_copy() {
+    LibBench r = row("zero-copy");
+    if (level_ >= 2) {
+      r.sweeps.push_back(sweep("VV", [this](uint64_t &n) {
+        const uint32_t *V = che_mesh_half_edge_vertices(m_, nullptr), *O = che_mesh_opposites(m_, nullptr),
+                       *VH = che_mesh_vertex_half_edges(m_, nullptr);
+        uint64_t cs = 0;
+        for (uint32_t v = 0; v < nv_; ++v) {
           uint32_t h = VH[v], s0 = h;
           if (h == TOPOMESH_NONE) continue;
           do {
@@ -318,9 +323,10 @@ void topomesh_rows(const Soup &s, uint32_t level, int reps, std::vector<LibBench
         }
         return cs;
       }));
-      z.sweeps.push_back(time_sweep("VF", reps, [&](uint64_t &n) {
+      r.sweeps.push_back(sweep("VF", [this](uint64_t &n) {
+        const uint32_t *O = che_mesh_opposites(m_, nullptr), *VH = che_mesh_vertex_half_edges(m_, nullptr);
         uint64_t cs = 0;
-        for (uint32_t v = 0; v < nv; ++v) {
+        for (uint32_t v = 0; v < nv_; ++v) {
           uint32_t h = VH[v], s0 = h;
           if (h == TOPOMESH_NONE) continue;
           do {
@@ -331,32 +337,38 @@ void topomesh_rows(const Soup &s, uint32_t level, int reps, std::vector<LibBench
         return cs;
       }));
     } else {
-      z.sweeps.push_back(skipped_sweep("VV", "needs VH (level 2)"));
-      z.sweeps.push_back(skipped_sweep("VF", "needs VH (level 2)"));
+      r.sweeps.push_back(skipped_sweep("VV", "needs VH (level 2)"));
+      r.sweeps.push_back(skipped_sweep("VF", "needs VH (level 2)"));
     }
-    z.sweeps.push_back(time_sweep("FF", reps, [&](uint64_t &n) {
+    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
+      const uint32_t *O = che_mesh_opposites(m_, nullptr);
       uint64_t cs = 0;
-      for (uint32_t h = 0; h < nh; ++h)
+      for (uint32_t h = 0; h < 3 * nt_; ++h)
         if (O[h] != TOPOMESH_NONE) cs += uint64_t(O[h] / 3 + 1) * (h / 3 + 1), ++n;
       return cs;
     }));
-    z.sweeps.push_back(time_sweep("EF", reps, [&](uint64_t &n) {
+    r.sweeps.push_back(sweep("EF", [this](uint64_t &n) {
+      const uint32_t *O = che_mesh_opposites(m_, nullptr);
       uint64_t cs = 0;
-      for (uint32_t h = 0; h < nh; ++h) {
+      for (uint32_t h = 0; h < 3 * nt_; ++h) {
         uint32_t g = O[h];
         if (g == TOPOMESH_NONE) cs += h / 3 + 1, ++n;
         else if (h < g) cs += h / 3 + 1 + g / 3 + 1, n += 2;
       }
       return cs;
     }));
-    z.sweeps.push_back(time_sweep("curves", reps, [&](uint64_t &n) {
-      uint64_t cs = 0;
+    r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
+      size_t nc = 0;
+      const uint32_t *V = che_mesh_half_edge_vertices(m_, nullptr), *O = che_mesh_opposites(m_, nullptr),
+                     *VH = che_mesh_vertex_half_edges(m_, nullptr), *CH = che_mesh_curve_half_edges(m_, &nc);
+      const uint32_t nh = uint32_t(3 * nt_);
       auto next_boundary = [&](uint32_t h) {
         if (VH) return VH[V[nxt(h)]];
         uint32_t g = nxt(h); // level 1: rotate clockwise around the target to the boundary
         while (O[g] != TOPOMESH_NONE) g = nxt(O[g]);
         return g;
       };
+      uint64_t cs = 0;
       if (CH) {
         for (size_t c = 0; c < nc; ++c) {
           uint32_t h = CH[c];
@@ -374,9 +386,70 @@ void topomesh_rows(const Soup &s, uint32_t level, int reps, std::vector<LibBench
       }
       return cs;
     }));
+    return r;
   }
-  rows.push_back(z);
-  che_mesh_free(m);
+
+  const Soup &s_;
+  const uint32_t level_;
+  che_mesh *m_ = nullptr;
+  size_t nv_ = 0, nt_ = 0, ne_ = 0, nb_ = 0, nc_ = 0;
+};
+
+// Interleaved repetitions: RSS first (one build each, alone), then `reps` rounds of builds
+// (each round starts with a different subject), then `reps` rounds of every sweep of every
+// row.
+std::vector<LibBench> run(std::vector<std::unique_ptr<Subject>> &subjects, int reps) {
+  const size_t n = subjects.size();
+  std::vector<long> rss(n);
+  for (size_t k = 0; k < n; ++k) {
+    subjects[k]->release();
+    long before = rss_bytes();
+    subjects[k]->build();
+    rss[k] = rss_bytes() - before;
+    subjects[k]->release();
+  }
+  std::vector<std::vector<double>> build_ms(n);
+  for (int r = 0; r < reps; ++r)
+    for (size_t i = 0; i < n; ++i) {
+      size_t k = (i + size_t(r)) % n;
+      subjects[k]->release();
+      double t0 = now_ms();
+      subjects[k]->build();
+      build_ms[k].push_back(now_ms() - t0);
+    }
+  std::vector<LibBench> rows;
+  for (size_t k = 0; k < n; ++k)
+    for (LibBench &row : subjects[k]->rows()) {
+      if (row.owns_build) {
+        subjects[k]->describe(row);
+        row.build_ms = build_ms[k];
+        row.rss_delta = rss[k];
+      }
+      rows.push_back(std::move(row));
+    }
+  for (const char *name : {"VV", "VF", "FF", "EF", "curves"})
+    for (int r = 0; r < reps; ++r)
+      for (size_t i = 0; i < rows.size(); ++i) {
+        LibBench &row = rows[(i + size_t(r)) % rows.size()];
+        for (Sweep &sw : row.sweeps) {
+          if (sw.name != name || sw.skipped()) continue;
+          uint64_t count = 0;
+          double t0 = now_ms();
+          uint64_t cs = sw.fn(count);
+          sw.ms.push_back(now_ms() - t0);
+          sw.checksum = cs;
+          sw.count = count;
+        }
+      }
+  // Build columns of the rows that share their subject's build.
+  for (size_t i = 1; i < rows.size(); ++i)
+    if (!rows[i].owns_build) {
+      rows[i].faces = rows[i - 1].faces;
+      rows[i].vertices = rows[i - 1].vertices;
+      rows[i].note = rows[i - 1].note;
+      rows[i].connectivity_bytes = rows[i - 1].connectivity_bytes;
+    }
+  return rows;
 }
 
 std::string fmt_ms(double ms) {
@@ -416,7 +489,7 @@ void report(Out &out, const Soup &s, std::vector<LibBench> &rows, int reps) {
   out("| library | path | build | connectivity | RSS growth | VV | VF | FF | EF | curves |\n");
   out("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (auto &r : rows) {
-    bool first_of_build = !r.build_ms.empty();
+    bool first_of_build = r.owns_build;
     out("| %s | %s | %s | %s | %s |", r.lib.c_str(), r.path.empty() ? "" : r.path.c_str(),
         first_of_build ? fmt_ms(median(r.build_ms)).c_str() : "″",
         first_of_build ? fmt_mb(double(r.connectivity_bytes)).c_str() : "″",
@@ -431,11 +504,11 @@ void report(Out &out, const Soup &s, std::vector<LibBench> &rows, int reps) {
   const LibBench *build_row = nullptr;
   for (size_t i = 2; i < rows.size(); ++i) {
     const LibBench &r = rows[i];
-    if (!r.build_ms.empty()) build_row = &r;
+    if (r.owns_build) build_row = &r;
     auto both = [&](double a, double b, double t) { return fmt_ratio(a, t) + " / " + fmt_ratio(b, t); };
-    std::string b = r.build_ms.empty() ? "″"
+    std::string b = !r.owns_build ? "″"
                                        : both(median(om.build_ms), median(cg.build_ms), median(r.build_ms));
-    std::string mem = r.build_ms.empty() ? "″"
+    std::string mem = !r.owns_build ? "″"
                                          : both(double(om.connectivity_bytes), double(cg.connectivity_bytes),
                                                 double(build_row->connectivity_bytes));
     out("| %s | %s | %s | %s |", r.lib.c_str(), r.path.c_str(), b.c_str(), mem.c_str());
@@ -530,10 +603,11 @@ int main(int argc, char **argv) {
     }
     std::fprintf(stderr, "bench: %s (%zu triangles)\n", s.name.c_str(), s.n_triangles());
     PeerInput in{s.n_vertices, s.positions.data(), s.triangles.data(), s.n_triangles()};
-    std::vector<LibBench> rows;
-    rows.push_back(openmesh_bench(in, reps));
-    rows.push_back(cgal_bench(in, reps));
-    for (uint32_t level = 1; level <= 3; ++level) topomesh_rows(s, level, reps, rows);
+    std::vector<std::unique_ptr<Subject>> subjects;
+    subjects.push_back(openmesh_subject(in));
+    subjects.push_back(cgal_subject(in));
+    for (uint32_t level = 1; level <= 3; ++level) subjects.push_back(std::make_unique<TmSubject>(s, level));
+    std::vector<LibBench> rows = run(subjects, reps);
     report(out, s, rows, reps);
   }
   if (out.file) std::fclose(out.file);

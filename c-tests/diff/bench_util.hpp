@@ -1,10 +1,16 @@
 // Timing, memory and result records for the head-to-head benchmark.
+//
+// Every library (OpenMesh, CGAL, topomesh at each level) is a Subject: something built from
+// the arrays. The driver (bench.cpp) interleaves the repetitions: round r builds every
+// subject in turn (starting with a different one each round), then runs each sweep of every
+// row in turn, so that load from other jobs on the machine spreads over all of them.
 #pragma once
 
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <malloc.h>
 #include <string>
 #include <unistd.h>
@@ -35,54 +41,52 @@ inline long rss_bytes() {
   return pages_res * sysconf(_SC_PAGESIZE);
 }
 
-// One timed full sweep of a relation over the mesh.
+// A full sweep of a relation over the current build: returns a checksum, adds the number of
+// entries visited to `count`.
+using SweepFn = std::function<uint64_t(uint64_t &count)>;
+
+// One sweep of one row: the function (empty when skipped, with the reason in `note`) and its
+// results.
 struct Sweep {
-  std::string name;            // VV, VF, FF, EF, curves
-  std::vector<double> ms;      // one per repetition
-  uint64_t checksum = 0;       // the same for every library on a fully accepted mesh
-  uint64_t count = 0;          // entries visited
-  std::string note;            // why skipped, when skipped
-  bool skipped() const { return ms.empty(); }
+  std::string name;        // VV, VF, FF, EF, curves
+  SweepFn fn;
+  std::string note;        // why skipped
+  std::vector<double> ms;  // one per repetition
+  uint64_t checksum = 0;   // the same for every library on a fully accepted mesh
+  uint64_t count = 0;      // entries visited
+  bool skipped() const { return !fn; }
 };
 
-// One library (or one topomesh level and access path) on one mesh.
+inline Sweep sweep(const std::string &name, SweepFn fn) { return Sweep{name, std::move(fn), {}, {}, 0, 0}; }
+inline Sweep skipped_sweep(const std::string &name, const std::string &why) {
+  return Sweep{name, nullptr, why, {}, 0, 0};
+}
+
+// One line of the tables: a library, or a topomesh level with one access path.
 struct LibBench {
   std::string lib;                  // "OpenMesh", "CGAL", "topomesh L2", ...
-  std::string path;                 // access path for topomesh: "C API", "C++", "zero-copy"
-  std::vector<double> build_ms;     // empty for rows that share a build
+  std::string path;                 // access path for topomesh: "C API", "zero-copy", ...
+  bool owns_build = false;          // the first row of its subject: build and memory columns
+  std::vector<double> build_ms;
   size_t connectivity_bytes = 0;    // from container sizes
   long rss_delta = -1;              // resident-set growth over one build
   size_t faces = 0, refused = 0, vertices = 0;
   std::string note;                 // what the build did (topomesh)
   std::vector<Sweep> sweeps;
-  Sweep *find(const std::string &n) {
-    for (auto &s : sweeps)
-      if (s.name == n) return &s;
-    return nullptr;
-  }
 };
 
-// Runs `f` (which returns a checksum and adds its count) `reps` times, timing each.
-template <class F> Sweep time_sweep(const std::string &name, int reps, F &&f) {
-  Sweep s;
-  s.name = name;
-  for (int r = 0; r < reps; ++r) {
-    uint64_t count = 0;
-    double t0 = now_ms();
-    uint64_t cs = f(count);
-    double t1 = now_ms();
-    s.ms.push_back(t1 - t0);
-    s.checksum = cs;
-    s.count = count;
-  }
-  return s;
-}
-
-inline Sweep skipped_sweep(const std::string &name, const std::string &why) {
-  Sweep s;
-  s.name = name;
-  s.note = why;
-  return s;
-}
+// Something built from the arrays, with the rows of sweeps that run on its current build.
+class Subject {
+public:
+  virtual ~Subject() = default;
+  // Frees the current build (if any); not timed.
+  virtual void release() = 0;
+  // Builds from the arrays (the previous build released); timed.
+  virtual void build() = 0;
+  // Fills the build columns of the first row from the current build.
+  virtual void describe(LibBench &row) const = 0;
+  // The rows; their sweep functions act on whatever is built when they run.
+  virtual std::vector<LibBench> rows() = 0;
+};
 
 } // namespace diffmesh

@@ -118,77 +118,93 @@ Answers cgal_answers(const PeerInput &in, PeerBuild &b) {
   return a;
 }
 
-LibBench cgal_bench(const PeerInput &in, int reps) {
-  LibBench r;
-  r.lib = "CGAL";
-  for (int k = 0; k < reps; ++k) {
-    PeerBuild b;
-    double t0 = now_ms();
-    Mesh m;
-    build(in, m, b, nullptr);
-    r.build_ms.push_back(now_ms() - t0);
+namespace {
+class CgalSubject : public Subject {
+public:
+  explicit CgalSubject(const PeerInput &in) : in_(in) {}
+  void release() override { m_.reset(); }
+  void build() override {
+    m_ = std::make_unique<Mesh>();
+    b_ = PeerBuild();
+    diffmesh::build(in_, *m_, b_, nullptr);
   }
-  PeerBuild b;
-  long before = rss_bytes();
-  Mesh m;
-  build(in, m, b, nullptr);
-  r.rss_delta = rss_bytes() - before;
-  r.refused = b.refused;
-  r.faces = m.number_of_faces();
-  // vconn (a halfedge index), hconn (face, vertex, next, prev), fconn (a halfedge index),
-  // and one "removed" bit per vertex, edge and face (std::vector<bool>).
-  size_t idx = sizeof(HI);
-  r.connectivity_bytes = m.number_of_vertices() * idx + m.number_of_halfedges() * 4 * idx +
-                         m.number_of_faces() * idx +
-                         (m.number_of_vertices() + m.number_of_edges() + m.number_of_faces()) / 8;
+  void describe(LibBench &r) const override {
+    const Mesh &m = *m_;
+    r.refused = b_.refused;
+    r.faces = m.number_of_faces();
+    r.vertices = m.number_of_vertices();
+    // vconn (a halfedge index), hconn (face, vertex, next, prev), fconn (a halfedge index),
+    // and one "removed" bit per vertex, edge and face (std::vector<bool>).
+    size_t idx = sizeof(HI);
+    r.connectivity_bytes = m.number_of_vertices() * idx + m.number_of_halfedges() * 4 * idx +
+                           m.number_of_faces() * idx +
+                           (m.number_of_vertices() + m.number_of_edges() + m.number_of_faces()) / 8;
+  }
+  std::vector<LibBench> rows() override {
+    LibBench r;
+    r.lib = "CGAL";
+    r.owns_build = true;
+    r.sweeps.push_back(sweep("VV", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (VI v : m.vertices())
+        for (VI w : CGAL::vertices_around_target(m.halfedge(v), m))
+          cs += uint64_t(size_t(w)) * uint64_t(size_t(v) + 1), ++n;
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("VF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (VI v : m.vertices())
+        for (FI f : CGAL::faces_around_target(m.halfedge(v), m))
+          if (f != Mesh::null_face()) cs += uint64_t(size_t(f) + 1) * uint64_t(size_t(v) + 1), ++n;
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (FI f : m.faces())
+        for (FI g : CGAL::faces_around_face(m.halfedge(f), m))
+          if (g != Mesh::null_face()) cs += uint64_t(size_t(g) + 1) * uint64_t(size_t(f) + 1), ++n;
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("EF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto e : m.edges()) {
+        HI h = m.halfedge(e);
+        FI f0 = m.face(h), f1 = m.face(m.opposite(h));
+        if (f0 != Mesh::null_face()) cs += uint64_t(size_t(f0) + 1), ++n;
+        if (f1 != Mesh::null_face()) cs += uint64_t(size_t(f1) + 1), ++n;
+      }
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      std::vector<bool> seen(m.number_of_halfedges(), false);
+      for (HI h : m.halfedges()) {
+        if (seen[size_t(h)] || !m.is_border(h)) continue;
+        HI g = h;
+        do {
+          seen[size_t(g)] = true;
+          cs += uint64_t(size_t(m.source(g)) + 1);
+          ++n;
+          g = m.next(g);
+        } while (g != h);
+      }
+      return cs;
+    }));
+    return {r};
+  }
 
-  r.sweeps.push_back(time_sweep("VV", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (VI v : m.vertices())
-      for (VI w : CGAL::vertices_around_target(m.halfedge(v), m))
-        cs += uint64_t(size_t(w)) * uint64_t(size_t(v) + 1), ++n;
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("VF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (VI v : m.vertices())
-      for (FI f : CGAL::faces_around_target(m.halfedge(v), m))
-        if (f != Mesh::null_face()) cs += uint64_t(size_t(f) + 1) * uint64_t(size_t(v) + 1), ++n;
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("FF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (FI f : m.faces())
-      for (FI g : CGAL::faces_around_face(m.halfedge(f), m))
-        if (g != Mesh::null_face()) cs += uint64_t(size_t(g) + 1) * uint64_t(size_t(f) + 1), ++n;
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("EF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (auto e : m.edges()) {
-      HI h = m.halfedge(e);
-      FI f0 = m.face(h), f1 = m.face(m.opposite(h));
-      if (f0 != Mesh::null_face()) cs += uint64_t(size_t(f0) + 1), ++n;
-      if (f1 != Mesh::null_face()) cs += uint64_t(size_t(f1) + 1), ++n;
-    }
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("curves", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    std::vector<bool> seen(m.number_of_halfedges(), false);
-    for (HI h : m.halfedges()) {
-      if (seen[size_t(h)] || !m.is_border(h)) continue;
-      HI g = h;
-      do {
-        seen[size_t(g)] = true;
-        cs += uint64_t(size_t(m.source(g)) + 1);
-        ++n;
-        g = m.next(g);
-      } while (g != h);
-    }
-    return cs;
-  }));
-  return r;
-}
+private:
+  const PeerInput &in_;
+  std::unique_ptr<Mesh> m_;
+  PeerBuild b_;
+};
+} // namespace
+
+std::unique_ptr<Subject> cgal_subject(const PeerInput &in) { return std::make_unique<CgalSubject>(in); }
 
 } // namespace diffmesh

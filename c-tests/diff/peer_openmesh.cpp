@@ -116,73 +116,87 @@ Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
   return a;
 }
 
-LibBench openmesh_bench(const PeerInput &in, int reps) {
-  LibBench r;
-  r.lib = "OpenMesh";
-  for (int k = 0; k < reps; ++k) {
-    PeerBuild b;
-    double t0 = now_ms();
-    Mesh m;
-    build(in, m, b, nullptr);
-    r.build_ms.push_back(now_ms() - t0);
+namespace {
+class OpenMeshSubject : public Subject {
+public:
+  explicit OpenMeshSubject(const PeerInput &in) : in_(in) {}
+  void release() override { m_.reset(); }
+  void build() override {
+    m_ = std::make_unique<Mesh>();
+    b_ = PeerBuild();
+    diffmesh::build(in_, *m_, b_, nullptr);
   }
-  PeerBuild b;
-  long before = rss_bytes();
-  Mesh m;
-  build(in, m, b, nullptr);
-  r.rss_delta = rss_bytes() - before;
-  r.refused = b.refused;
-  r.faces = m.n_faces();
-  r.connectivity_bytes = m.n_vertices() * sizeof(Mesh::Vertex) +
-                         m.n_edges() * sizeof(Mesh::Edge) + m.n_faces() * sizeof(Mesh::Face);
+  void describe(LibBench &r) const override {
+    r.refused = b_.refused;
+    r.faces = m_->n_faces();
+    r.vertices = m_->n_vertices();
+    r.connectivity_bytes = m_->n_vertices() * sizeof(Mesh::Vertex) + m_->n_edges() * sizeof(Mesh::Edge) +
+                           m_->n_faces() * sizeof(Mesh::Face);
+  }
+  std::vector<LibBench> rows() override {
+    LibBench r;
+    r.lib = "OpenMesh";
+    r.owns_build = true;
+    r.sweeps.push_back(sweep("VV", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto v : m.vertices())
+        for (auto it = m.cvv_iter(v); it.is_valid(); ++it, ++n) cs += uint64_t(it->idx()) * uint64_t(v.idx() + 1);
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("VF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto v : m.vertices())
+        for (auto it = m.cvf_iter(v); it.is_valid(); ++it, ++n)
+          cs += uint64_t(it->idx() + 1) * uint64_t(v.idx() + 1);
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto f : m.faces())
+        for (auto it = m.cff_iter(f); it.is_valid(); ++it, ++n)
+          cs += uint64_t(it->idx() + 1) * uint64_t(f.idx() + 1);
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("EF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto e : m.edges()) {
+        auto f0 = m.face_handle(m.halfedge_handle(e, 0));
+        auto f1 = m.face_handle(m.halfedge_handle(e, 1));
+        if (f0.is_valid()) cs += uint64_t(f0.idx() + 1), ++n;
+        if (f1.is_valid()) cs += uint64_t(f1.idx() + 1), ++n;
+      }
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      std::vector<bool> seen(m.n_halfedges(), false);
+      for (auto h : m.halfedges()) {
+        if (seen[size_t(h.idx())] || !m.is_boundary(h)) continue;
+        auto g = h;
+        do {
+          seen[size_t(g.idx())] = true;
+          cs += uint64_t(m.from_vertex_handle(g).idx() + 1);
+          ++n;
+          g = m.next_halfedge_handle(g);
+        } while (g != h);
+      }
+      return cs;
+    }));
+    return {r};
+  }
 
-  r.sweeps.push_back(time_sweep("VV", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (auto v : m.vertices())
-      for (auto it = m.cvv_iter(v); it.is_valid(); ++it, ++n)
-        cs += uint64_t(it->idx()) * uint64_t(v.idx() + 1);
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("VF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (auto v : m.vertices())
-      for (auto it = m.cvf_iter(v); it.is_valid(); ++it, ++n)
-        cs += uint64_t(it->idx() + 1) * uint64_t(v.idx() + 1);
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("FF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (auto f : m.faces())
-      for (auto it = m.cff_iter(f); it.is_valid(); ++it, ++n)
-        cs += uint64_t(it->idx() + 1) * uint64_t(f.idx() + 1);
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("EF", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    for (auto e : m.edges()) {
-      auto f0 = m.face_handle(m.halfedge_handle(e, 0));
-      auto f1 = m.face_handle(m.halfedge_handle(e, 1));
-      if (f0.is_valid()) cs += uint64_t(f0.idx() + 1), ++n;
-      if (f1.is_valid()) cs += uint64_t(f1.idx() + 1), ++n;
-    }
-    return cs;
-  }));
-  r.sweeps.push_back(time_sweep("curves", reps, [&](uint64_t &n) {
-    uint64_t cs = 0;
-    std::vector<bool> seen(m.n_halfedges(), false);
-    for (auto h : m.halfedges()) {
-      if (seen[size_t(h.idx())] || !m.is_boundary(h)) continue;
-      auto g = h;
-      do {
-        seen[size_t(g.idx())] = true;
-        cs += uint64_t(m.from_vertex_handle(g).idx() + 1);
-        ++n;
-        g = m.next_halfedge_handle(g);
-      } while (g != h);
-    }
-    return cs;
-  }));
-  return r;
-}
+private:
+  const PeerInput &in_;
+  std::unique_ptr<Mesh> m_;
+  PeerBuild b_;
+};
+} // namespace
+
+std::unique_ptr<Subject> openmesh_subject(const PeerInput &in) { return std::make_unique<OpenMeshSubject>(in); }
 
 } // namespace diffmesh

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 namespace diffmesh {
 
@@ -23,8 +24,9 @@ struct PeerInput {
 Answers openmesh_answers(const PeerInput &in, PeerBuild &build);
 Answers cgal_answers(const PeerInput &in, PeerBuild &build);
 
-// The head-to-head benchmark of one peer: `reps` builds and sweeps.
-LibBench openmesh_bench(const PeerInput &in, int reps);
-LibBench cgal_bench(const PeerInput &in, int reps);
+// The peers as benchmark subjects (one row each: VV, VF, FF, EF and curve sweeps). `in`
+// must outlive them.
+std::unique_ptr<Subject> openmesh_subject(const PeerInput &in);
+std::unique_ptr<Subject> cgal_subject(const PeerInput &in);
 
 } // namespace diffmesh

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <functional>
 #include <malloc.h>
+#include <time.h>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -21,6 +22,14 @@ namespace diffmesh {
 inline double now_ms() {
   using namespace std::chrono;
   return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+// CPU time of the calling thread (user + system), in milliseconds: on a machine shared with
+// other jobs it leaves out the time the benchmark waits for a core.
+inline double cpu_ms() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
 inline double median(std::vector<double> v) {
@@ -51,15 +60,16 @@ struct Sweep {
   std::string name;        // VV, VF, FF, EF, curves
   SweepFn fn;
   std::string note;        // why skipped
-  std::vector<double> ms;  // one per repetition
+  std::vector<double> ms;  // CPU time, one per repetition
+  std::vector<double> wall_ms;
   uint64_t checksum = 0;   // the same for every library on a fully accepted mesh
   uint64_t count = 0;      // entries visited
   bool skipped() const { return !fn; }
 };
 
-inline Sweep sweep(const std::string &name, SweepFn fn) { return Sweep{name, std::move(fn), {}, {}, 0, 0}; }
+inline Sweep sweep(const std::string &name, SweepFn fn) { return Sweep{name, std::move(fn), {}, {}, {}, 0, 0}; }
 inline Sweep skipped_sweep(const std::string &name, const std::string &why) {
-  return Sweep{name, nullptr, why, {}, 0, 0};
+  return Sweep{name, nullptr, why, {}, {}, 0, 0};
 }
 
 // One line of the tables: a library, or a topomesh level with one access path.
@@ -67,7 +77,8 @@ struct LibBench {
   std::string lib;                  // "OpenMesh", "CGAL", "topomesh L2", ...
   std::string path;                 // access path for topomesh: "C API", "zero-copy", ...
   bool owns_build = false;          // the first row of its subject: build and memory columns
-  std::vector<double> build_ms;
+  std::vector<double> build_ms;      // CPU time
+  std::vector<double> build_wall_ms;
   size_t connectivity_bytes = 0;    // from container sizes
   long rss_delta = -1;              // resident-set growth over one build
   size_t faces = 0, refused = 0, vertices = 0;

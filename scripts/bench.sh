@@ -74,7 +74,7 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
   echo "  sweeps of a few milliseconds are noisy)."
   echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`); OpenMesh $om_v (Debian, TriMesh_ArrayKernelT with"
   echo "  double points), CGAL $cgal_v (Surface_mesh of Epick points). Both peers get \`reserve()\` with the"
-  echo "  final sizes before the build."
+  echo "  counts, edges estimated as 3T/2) before the build."
   echo "- topomesh: $rustc_v, cargo release profile (opt-level 3, debug = 1), through the installed"
   echo "  libtopomesh.so; single-threaded."
   echo "- Each build and sweep runs $reps times, interleaved across the libraries (round r builds each"

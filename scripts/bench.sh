@@ -73,7 +73,7 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
   echo "  (1, 5, 15 min) before the run: $load_before; after: $load_after (other jobs share the machine:"
   echo "  sweeps of a few milliseconds are noisy)."
   echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`); OpenMesh $om_v (Debian, TriMesh_ArrayKernelT with"
-  echo "  double points), CGAL $cgal_v (Surface_mesh of Epick points). Both peers get \`reserve()\` with the"
+  echo "  double points), CGAL $cgal_v (Surface_mesh of Epick points). Both peers get \`reserve()\` (vertex and face"
   echo "  counts, edges estimated as 3T/2) before the build."
   echo "- topomesh: $rustc_v, cargo release profile (opt-level 3, debug = 1), through the installed"
   echo "  libtopomesh.so; single-threaded."

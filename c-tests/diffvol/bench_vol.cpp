@@ -70,8 +70,11 @@ struct MemProbe {
     peak_ok = reset_peak();
     base = status_bytes("VmRSS");
   }
+  // The peak first; then freed memory goes back (the build's temporaries would otherwise
+  // stay in malloc's free lists and count as retained).
   void end() {
     peak = status_bytes("VmHWM");
+    malloc_trim(0);
     after = status_bytes("VmRSS");
   }
   long retained() const { return after - base; }

@@ -125,3 +125,53 @@ fn convert_round_trip() {
     let out = topomesh(&["check", src.to_str().unwrap()]);
     assert!(out.status.success());
 }
+
+#[test]
+fn volumes_info_check_and_convert() {
+    // Two tetrahedra sharing the face (1, 2, 3), 1-based as Medit writes them.
+    let mesh = temp(
+        "two.mesh",
+        "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n\
+         Tetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nEnd\n",
+    );
+    let out = topomesh(&["info", "--json", mesh.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", text(&out).1);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["kind"], "volume");
+    assert_eq!(
+        (json["vertices"].as_u64(), json["edges"].as_u64()),
+        (Some(5), Some(9))
+    );
+    assert_eq!(
+        (json["faces"].as_u64(), json["tetrahedra"].as_u64()),
+        (Some(7), Some(2))
+    );
+    assert_eq!(json["boundary_faces"], 6);
+    assert_eq!(json["euler_characteristic"], 1);
+    let out = topomesh(&["check", mesh.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", text(&out).0);
+    let vtk = mesh.with_file_name("two.vtk");
+    let out = topomesh(&["convert", mesh.to_str().unwrap(), vtk.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", text(&out).1);
+    let out = topomesh(&["info", vtk.to_str().unwrap()]);
+    assert!(
+        text(&out).0.contains("euler characteristic 1"),
+        "{}",
+        text(&out).0
+    );
+    // Three tetrahedra on one face: check fails, strict refuses.
+    let three = temp(
+        "three.mesh",
+        "MeshVersionFormatted 2\nDimension 3\nVertices\n6\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n-1 -1 -1 0\n\
+         Tetrahedra\n3\n1 2 3 4 0\n2 3 4 5 0\n2 3 4 6 0\nEnd\n",
+    );
+    let out = topomesh(&["check", three.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out).0.contains("non-manifold faces"),
+        "{}",
+        text(&out).0
+    );
+    let out = topomesh(&["info", "--strict", three.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+}

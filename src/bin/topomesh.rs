@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 use topomesh::io::{self, MeshData};
-use topomesh::{BuildOptions, Che, Error};
+use topomesh::{BuildOptions, Che, Chf, ChfBuildOptions, Error};
 
 /// The mesh `topomesh info` describes when no file is given: a 24 x 12 torus.
 const DEFAULT_MESH: &str = include_str!("../../data/default.off");
@@ -272,77 +272,285 @@ fn examples<T: std::fmt::Debug>(list: &[T]) -> String {
     }
 }
 
+#[derive(serde::Serialize)]
+struct VolumeJson<'a> {
+    file: &'a str,
+    kind: &'static str,
+    level: u8,
+    #[serde(flatten)]
+    summary: topomesh::ChfSummary,
+    structure: VolumeStructure,
+    report: &'a topomesh::ChfBuildReport,
+    memory: topomesh::chf::ChfMemory,
+    build_seconds: f64,
+}
+
+#[derive(serde::Serialize)]
+struct VolumeStructure {
+    vertices: usize,
+    edges: usize,
+    faces: usize,
+    half_faces: usize,
+}
+
+fn build_volume(data: &MeshData, options: ChfBuildOptions) -> Result<Chf, Error> {
+    Chf::from_tetrahedra(
+        &data.tetrahedra,
+        data.num_vertices(),
+        &data.positions,
+        options,
+    )
+}
+
 fn volume_info(
-    _name: &str,
-    _data: &MeshData,
-    _level: u8,
-    _strict: bool,
-    _json: bool,
+    name: &str,
+    data: &MeshData,
+    level: u8,
+    strict: bool,
+    json: bool,
 ) -> Result<ExitCode, Error> {
-    Err(Error::invalid("tetrahedral meshes are not supported yet"))
+    let progress = Progress::new();
+    progress.step(format!(
+        "building level {level} from {} tetrahedra",
+        data.tetrahedra.len()
+    ));
+    let start = Instant::now();
+    let chf = build_volume(data, ChfBuildOptions { level, strict })?;
+    let build_seconds = start.elapsed().as_secs_f64();
+    progress.step("summarising".to_string());
+    let out = VolumeJson {
+        file: name,
+        kind: "volume",
+        level,
+        summary: chf.summary(),
+        structure: VolumeStructure {
+            vertices: chf.num_vertices(),
+            edges: chf.num_edges(),
+            faces: chf.num_faces(),
+            half_faces: chf.num_half_faces(),
+        },
+        report: chf.report(),
+        memory: chf.memory_bytes(),
+        build_seconds,
+    };
+    drop(progress);
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&out).expect("plain data serialises")
+        );
+        return Ok(ExitCode::SUCCESS);
+    }
+    let s = &out.summary;
+    let r = out.report;
+    let yes = |b: bool| if b { "yes" } else { "no" };
+    println!("file                 {name}");
+    println!("structure            CHF level {level}");
+    println!("vertices             {}", s.vertices);
+    println!("edges                {}", s.edges);
+    println!("faces                {}", s.faces);
+    println!("tetrahedra           {}", s.tetrahedra);
+    println!("boundary faces       {}", s.boundary_faces);
+    println!("boundary edges       {}", s.boundary_edges);
+    println!("boundary vertices    {}", s.boundary_vertices);
+    println!("boundary components  {}", s.boundary_components);
+    println!("components           {}", s.components);
+    println!("isolated vertices    {}", s.isolated_vertices);
+    println!("euler characteristic {}", s.euler_characteristic);
+    println!("orientable           {}", yes(s.orientable));
+    println!("manifold             {}", yes(s.manifold));
+    println!("build report");
+    println!(
+        "  dropped degenerate        {}{}",
+        r.dropped_degenerate,
+        examples(&r.degenerate_examples)
+    );
+    println!(
+        "  zero volume (kept)        {}{}",
+        r.zero_volume,
+        examples(&r.zero_volume_examples)
+    );
+    println!(
+        "  inverted (kept)           {}{}",
+        r.inverted_tetrahedra,
+        examples(&r.inverted_examples)
+    );
+    println!(
+        "  duplicate pairs           {}{}",
+        r.duplicate_tetrahedra,
+        examples(&r.duplicate_examples)
+    );
+    println!(
+        "  non-manifold faces        {}{}",
+        r.non_manifold_faces,
+        examples(&r.non_manifold_face_examples)
+    );
+    println!(
+        "  non-manifold edges        {}{}",
+        r.non_manifold_edges,
+        examples(&r.non_manifold_edge_examples)
+    );
+    println!(
+        "  split vertices            {}{}",
+        r.split_vertices,
+        examples(&r.split_vertex_examples)
+    );
+    println!("  flipped tetrahedra        {}", r.flipped_tetrahedra);
+    println!(
+        "  non-orientable components {}{}",
+        r.non_orientable_components,
+        examples(&r.non_orientable_examples)
+    );
+    let st = &out.structure;
+    println!(
+        "structure counts     {} vertices, {} edges, {} faces, {} half-faces",
+        st.vertices, st.edges, st.faces, st.half_faces
+    );
+    println!(
+        "topology memory      {} bytes ({:.2} bytes per tetrahedron)",
+        out.memory.topology,
+        out.memory.topology as f64 / (s.tetrahedra.max(1) as f64)
+    );
+    println!("time                 build {:.3} s", out.build_seconds);
+    Ok(ExitCode::SUCCESS)
+}
+
+fn check_volume(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
+    let chf = build_volume(
+        data,
+        ChfBuildOptions {
+            level: 1,
+            strict: false,
+        },
+    )?;
+    let r = chf.report();
+    let mut problems = Vec::new();
+    let mut note = |count: usize, what: &str, ex: String| {
+        if count > 0 {
+            problems.push(format!("{count} {what}{ex}"));
+        }
+    };
+    note(
+        r.dropped_degenerate,
+        "degenerate tetrahedra",
+        examples(&r.degenerate_examples),
+    );
+    note(
+        r.zero_volume,
+        "zero-volume tetrahedra",
+        examples(&r.zero_volume_examples),
+    );
+    note(
+        r.inverted_tetrahedra,
+        "inverted tetrahedra",
+        examples(&r.inverted_examples),
+    );
+    note(
+        r.duplicate_tetrahedra,
+        "duplicate tetrahedron pairs",
+        examples(&r.duplicate_examples),
+    );
+    note(
+        r.non_manifold_faces,
+        "non-manifold faces",
+        examples(&r.non_manifold_face_examples),
+    );
+    note(
+        r.non_manifold_edges,
+        "non-manifold edges",
+        examples(&r.non_manifold_edge_examples),
+    );
+    note(
+        r.split_vertices,
+        "non-manifold vertices",
+        examples(&r.split_vertex_examples),
+    );
+    note(
+        r.non_orientable_components,
+        "non-orientable components",
+        examples(&r.non_orientable_examples),
+    );
+    note(
+        r.flipped_tetrahedra,
+        "tetrahedra oriented against their neighbours",
+        String::new(),
+    );
+    report_problems(name, problems, || {
+        let s = chf.summary();
+        format!(
+            "a manifold of {} tetrahedra, euler characteristic {}",
+            s.tetrahedra, s.euler_characteristic
+        )
+    })
+}
+
+fn report_problems(
+    name: &str,
+    problems: Vec<String>,
+    ok: impl FnOnce() -> String,
+) -> Result<ExitCode, Error> {
+    if problems.is_empty() {
+        println!("{name}: ok: {}", ok());
+        return Ok(ExitCode::SUCCESS);
+    }
+    for p in &problems {
+        println!("{name}: {p}");
+    }
+    Ok(ExitCode::FAILURE)
 }
 
 fn check(file: &Path) -> Result<ExitCode, Error> {
     let progress = Progress::new();
     let (name, data) = load(Some(file), &progress)?;
-    let che = build_surface(&data, BuildOptions::level(1))?;
     drop(progress);
-    let s = che.summary();
+    if data.is_volume() {
+        return check_volume(&name, &data);
+    }
+    let che = build_surface(&data, BuildOptions::level(1))?;
     let r = che.report();
     let mut problems = Vec::new();
-    if r.dropped_degenerate > 0 {
-        problems.push(format!(
-            "{} degenerate triangles{}",
-            r.dropped_degenerate,
-            examples(&r.degenerate_examples)
-        ));
-    }
-    if r.duplicate_triangles > 0 {
-        problems.push(format!(
-            "{} duplicate triangle pairs{}",
-            r.duplicate_triangles,
-            examples(&r.duplicate_examples)
-        ));
-    }
-    if r.non_manifold_edges > 0 {
-        problems.push(format!(
-            "{} non-manifold edges{}",
-            r.non_manifold_edges,
-            examples(&r.non_manifold_edge_examples)
-        ));
-    }
-    if r.split_vertices > 0 {
-        problems.push(format!(
-            "{} non-manifold vertices{}",
-            r.split_vertices,
-            examples(&r.split_vertex_examples)
-        ));
-    }
-    if r.non_orientable_components > 0 {
-        problems.push(format!(
-            "{} non-orientable components{}",
-            r.non_orientable_components,
-            examples(&r.non_orientable_examples)
-        ));
-    }
-    if r.flipped_triangles > 0 {
-        problems.push(format!(
-            "{} triangles oriented against their neighbours",
-            r.flipped_triangles
-        ));
-    }
-    if problems.is_empty() {
-        println!(
-            "{name}: ok: a manifold of {} triangles, euler characteristic {}",
-            s.triangles, s.euler_characteristic
-        );
-        Ok(ExitCode::SUCCESS)
-    } else {
-        for p in &problems {
-            println!("{name}: {p}");
+    let mut note = |count: usize, what: &str, ex: String| {
+        if count > 0 {
+            problems.push(format!("{count} {what}{ex}"));
         }
-        Ok(ExitCode::FAILURE)
-    }
+    };
+    note(
+        r.dropped_degenerate,
+        "degenerate triangles",
+        examples(&r.degenerate_examples),
+    );
+    note(
+        r.duplicate_triangles,
+        "duplicate triangle pairs",
+        examples(&r.duplicate_examples),
+    );
+    note(
+        r.non_manifold_edges,
+        "non-manifold edges",
+        examples(&r.non_manifold_edge_examples),
+    );
+    note(
+        r.split_vertices,
+        "non-manifold vertices",
+        examples(&r.split_vertex_examples),
+    );
+    note(
+        r.non_orientable_components,
+        "non-orientable components",
+        examples(&r.non_orientable_examples),
+    );
+    note(
+        r.flipped_triangles,
+        "triangles oriented against their neighbours",
+        String::new(),
+    );
+    report_problems(&name, problems, || {
+        let s = che.summary();
+        format!(
+            "a manifold of {} triangles, euler characteristic {}",
+            s.triangles, s.euler_characteristic
+        )
+    })
 }
 
 fn convert(input: &Path, output: &Path) -> Result<ExitCode, Error> {
@@ -371,6 +579,9 @@ fn bench(file: Option<&Path>, repeat: usize) -> Result<ExitCode, Error> {
     let progress = Progress::new();
     let (name, data) = load(file, &progress)?;
     drop(progress);
+    if data.is_volume() {
+        return bench_volume(&name, &data, repeat);
+    }
     let t = data.triangles.len().max(1) as f64;
     println!(
         "{name}: {} triangles, median of {repeat}",
@@ -394,6 +605,77 @@ fn bench(file: Option<&Path>, repeat: usize) -> Result<ExitCode, Error> {
         );
         if level >= 1 {
             sweeps(&che, repeat);
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn bench_volume(name: &str, data: &MeshData, repeat: usize) -> Result<ExitCode, Error> {
+    let t = data.tetrahedra.len().max(1) as f64;
+    println!(
+        "{name}: {} tetrahedra, median of {repeat}",
+        data.tetrahedra.len()
+    );
+    for level in 0..=3u8 {
+        let mut times = Vec::new();
+        let mut chf = None;
+        for _ in 0..repeat {
+            let start = Instant::now();
+            chf = Some(build_volume(
+                data,
+                ChfBuildOptions {
+                    level,
+                    strict: false,
+                },
+            )?);
+            times.push(start.elapsed().as_secs_f64());
+        }
+        let chf = chf.expect("repeat >= 1");
+        let secs = median(times);
+        println!(
+            "build level {level}: {:8.2} ms  {:6.1} ns/tetrahedron  {:6.2} bytes/tetrahedron",
+            secs * 1e3,
+            secs * 1e9 / t,
+            chf.memory_bytes().topology as f64 / t
+        );
+        if level >= 2 {
+            let nt = chf.num_tetrahedra() as u32;
+            let nv = chf.num_vertices() as u32;
+            let timed = |f: &dyn Fn() -> u64| {
+                median(
+                    (0..repeat)
+                        .map(|_| {
+                            let start = Instant::now();
+                            std::hint::black_box(f());
+                            start.elapsed().as_secs_f64()
+                        })
+                        .collect(),
+                )
+            };
+            let tt = timed(&|| {
+                (0..nt)
+                    .flat_map(|x| chf.tetrahedron_tetrahedra(x))
+                    .map(u64::from)
+                    .sum()
+            });
+            let vt = timed(&|| {
+                (0..nv)
+                    .flat_map(|v| chf.vertex_tetrahedra(v))
+                    .map(u64::from)
+                    .sum()
+            });
+            let vv = timed(&|| {
+                (0..nv)
+                    .flat_map(|v| chf.vertex_vertices(v))
+                    .map(u64::from)
+                    .sum()
+            });
+            println!(
+                "  sweeps: TT {:.2} ms, VT {:.2} ms, VV {:.2} ms",
+                tt * 1e3,
+                vt * 1e3,
+                vv * 1e3
+            );
         }
     }
     Ok(ExitCode::SUCCESS)

@@ -114,6 +114,10 @@ pub(crate) fn build(
     let mut non_manifold: Vec<u32> = Vec::new();
     let mut same_direction = false;
     let mut duplicates: Vec<[u32; 2]> = Vec::new();
+    // Direction bits (`V[h] < V[next(h)]`): 1 bit per half-edge stays in cache, where
+    // reading `V` at both half-edges of every pair would miss it.
+    let forward = direction_bits(&v);
+    let is_forward = |h: u32| (forward[(h >> 6) as usize] >> (h & 63)) & 1 == 1;
     for_each_group(&v, n_vertices, |a, b, group| {
         report.input_edges += 1;
         match group.len() {
@@ -122,7 +126,7 @@ pub(crate) fn build(
                 let (h, g) = (half_edge(group[0]), half_edge(group[1]));
                 partner[h as usize] = g;
                 partner[g as usize] = h;
-                same_direction |= v[h as usize] == v[g as usize];
+                same_direction |= is_forward(h) == is_forward(g);
             }
             _ => {
                 report.non_manifold_edges += 1;
@@ -174,7 +178,7 @@ pub(crate) fn build(
         )));
     }
 
-    let split = split::split(&mut v, &o, n_vertices, &seams);
+    let mut split = split::split(&mut v, &o, n_vertices, &seams);
     report.split_vertices = split.split_vertices;
     report.split_vertex_examples = split.split_examples;
     report.seam_split_vertices = split.seam_split_vertices;
@@ -230,7 +234,8 @@ pub(crate) fn build(
         che.level = 0;
     }
     if options.level >= 2 {
-        level2::build(&mut che);
+        che.vh = std::mem::take(&mut split.vh);
+        level2::build_edges(&mut che);
         che.level = 2;
     }
     if options.level >= 3 {
@@ -238,6 +243,20 @@ pub(crate) fn build(
         che.level = 3;
     }
     Ok(che)
+}
+
+fn direction_bits(v: &[u32]) -> Vec<u64> {
+    let mut bits = vec![0u64; v.len().div_ceil(64)];
+    for (t, tri) in v.chunks_exact(3).enumerate() {
+        let h = 3 * t;
+        for (i, (a, b)) in [(tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])]
+            .into_iter()
+            .enumerate()
+        {
+            bits[(h + i) >> 6] |= ((a < b) as u64) << ((h + i) & 63);
+        }
+    }
+    bits
 }
 
 /// Two triangles with the same three vertices whose edges are all paired to each other

@@ -7,42 +7,85 @@ use crate::NONE;
 
 /// Calls `f(min, max, group)` for every unordered vertex pair of `v`, in increasing
 /// (min, max) order; `group` holds packed keys `(max << 32) | h` whose low 32 bits are the
-/// half-edges on that pair, in increasing order. Each bucket is sorted just before its
-/// groups are visited, while it is in cache.
+/// half-edges on that pair, in increasing order.
+///
+/// A two-pass radix on the smaller vertex: the first pass scatters to at most 2048 coarse
+/// buckets (streaming writes, where one scatter per vertex would miss the cache on every
+/// half-edge of a large mesh), the second sorts one coarse bucket at a time in cache.
 pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, mut f: impl FnMut(u32, u32, &[u64])) {
-    // Counting pass: bucket `m` ends at `end[m]`; the scatter fills buckets backwards.
-    let mut end = vec![0u32; n_vertices + 1];
+    const COARSE_BITS: u32 = 11;
+    let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
+    let shift = bits.saturating_sub(COARSE_BITS);
+    let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
+    let ends = |h: u32| {
+        let (a, b) = (v[h as usize], v[next(h) as usize]);
+        (a.min(b), a.max(b))
+    };
+
+    let mut start = vec![0u32; n_coarse + 1];
     for h in 0..v.len() as u32 {
-        let (a, b) = (v[h as usize], v[next(h) as usize]);
-        end[a.min(b) as usize] += 1;
+        start[(ends(h).0 >> shift) as usize + 1] += 1;
     }
-    let mut total = 0u32;
-    for e in end.iter_mut() {
-        total += *e;
-        *e = total;
+    for c in 0..n_coarse {
+        start[c + 1] += start[c];
     }
+    let mut fill = start.clone();
     let mut keys = vec![0u64; v.len()];
-    for h in (0..v.len() as u32).rev() {
-        let (a, b) = (v[h as usize], v[next(h) as usize]);
-        let slot = &mut end[a.min(b) as usize];
-        *slot -= 1;
-        keys[*slot as usize] = ((a.max(b) as u64) << 32) | h as u64;
+    let mut mins = vec![0u32; v.len()];
+    for h in 0..v.len() as u32 {
+        let (min, max) = ends(h);
+        let slot = &mut fill[(min >> shift) as usize];
+        keys[*slot as usize] = ((max as u64) << 32) | h as u64;
+        mins[*slot as usize] = min;
+        *slot += 1;
     }
-    // Now `end[m]` is where bucket `m` starts.
-    for min in 0..n_vertices {
-        let bucket = &mut keys[end[min] as usize..end[min + 1] as usize];
-        if bucket.len() > 1 {
-            bucket.sort_unstable();
+    drop(fill);
+
+    // Second pass, one coarse bucket at a time: by the low bits of the smaller vertex.
+    let n_fine = 1usize << shift;
+    let mut fine_start = vec![0u32; n_fine + 1];
+    let mut local: Vec<u64> = Vec::new();
+    for c in 0..n_coarse {
+        let range = start[c] as usize..start[c + 1] as usize;
+        if range.is_empty() {
+            continue;
         }
-        let mut i = 0;
-        while i < bucket.len() {
-            let max = bucket[i] >> 32;
-            let mut j = i + 1;
-            while j < bucket.len() && bucket[j] >> 32 == max {
-                j += 1;
+        let (ck, cm) = (&keys[range.clone()], &mins[range]);
+        fine_start.fill(0);
+        let mask = (n_fine - 1) as u32;
+        for &m in cm {
+            fine_start[(m & mask) as usize + 1] += 1;
+        }
+        for i in 0..n_fine {
+            fine_start[i + 1] += fine_start[i];
+        }
+        local.clear();
+        local.resize(ck.len(), 0);
+        let mut cursor = fine_start.clone();
+        for (&k, &m) in ck.iter().zip(cm) {
+            let slot = &mut cursor[(m & mask) as usize];
+            local[*slot as usize] = k;
+            *slot += 1;
+        }
+        for i in 0..n_fine {
+            let bucket = &mut local[fine_start[i] as usize..fine_start[i + 1] as usize];
+            if bucket.is_empty() {
+                continue;
             }
-            f(min as u32, max as u32, &bucket[i..j]);
-            i = j;
+            if bucket.len() > 1 {
+                bucket.sort_unstable();
+            }
+            let min = ((c << shift) | i) as u32;
+            let mut j = 0;
+            while j < bucket.len() {
+                let max = bucket[j] >> 32;
+                let mut k = j + 1;
+                while k < bucket.len() && bucket[k] >> 32 == max {
+                    k += 1;
+                }
+                f(min, max as u32, &bucket[j..k]);
+                j = k;
+            }
         }
     }
 }
@@ -94,5 +137,30 @@ mod tests {
         );
         let o = opposites_by_rule(&v, 4, &[]);
         assert_eq!(o, vec![NONE, 3, NONE, 1, NONE, NONE]);
+    }
+
+    #[test]
+    fn groups_match_a_map_on_many_vertices() {
+        // Enough vertices for both radix passes to have more than one bucket.
+        for n in [2047usize, 2048, 2049, 5000, 70_000] {
+            let mut x = 12345u64;
+            let mut rnd = |m: usize| {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                (x % m as u64) as u32
+            };
+            let v: Vec<u32> = (0..3 * 4000).map(|_| rnd(n)).collect();
+            let mut expected = std::collections::BTreeMap::<(u32, u32), Vec<u32>>::new();
+            for h in 0..v.len() as u32 {
+                let (a, b) = (v[h as usize], v[next(h) as usize]);
+                expected.entry((a.min(b), a.max(b))).or_default().push(h);
+            }
+            let mut got = Vec::new();
+            for_each_group(&v, n, |a, b, g| {
+                got.push(((a, b), g.iter().map(|&k| half_edge(k)).collect::<Vec<_>>()))
+            });
+            assert_eq!(got, expected.into_iter().collect::<Vec<_>>(), "n = {n}");
+        }
     }
 }

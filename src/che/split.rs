@@ -14,13 +14,16 @@ pub(crate) struct Split {
     pub split_examples: Vec<u32>,
     /// Input vertices split only because a non-orientable seam crosses them.
     pub seam_split_vertices: usize,
+    /// `VH` as level 2 wants it, found on the way: per vertex (copies included) its
+    /// outgoing boundary half-edge, or any outgoing half-edge of a closed fan.
+    pub vh: Vec<u32>,
 }
 
 /// Rewrites `v` so that every vertex id names one fan. `seams` (sorted, pairs running the
 /// same way) tell which extra fans are only cut by a seam, not non-manifold in the input.
 pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) -> Split {
     let mut visited = vec![0u64; v.len().div_ceil(64)];
-    let mut has_fan = vec![0u64; n_vertices.div_ceil(64)];
+    let mut vh = vec![NONE; n_vertices];
     let mut copies: Vec<u32> = Vec::new();
     let test = |bits: &[u64], i: usize| (bits[i >> 6] >> (i & 63)) & 1 == 1;
     fn set(bits: &mut [u64], i: usize) {
@@ -31,11 +34,11 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
             continue;
         }
         let vertex = v[h as usize];
-        let id = if test(&has_fan, vertex as usize) {
+        let id = if vh[vertex as usize] != NONE {
             copies.push(vertex);
+            vh.push(NONE);
             (n_vertices + copies.len() - 1) as u32
         } else {
-            set(&mut has_fan, vertex as usize);
             vertex
         };
         // Counter-clockwise from `h` until back at `h` (a closed fan, the common case) or
@@ -55,20 +58,21 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
             }
             g = around;
         };
+        let mut start = h;
         if !closed {
-            let mut g = h;
             loop {
-                let back = o[g as usize];
+                let back = o[start as usize];
                 if back == NONE {
                     break;
                 }
-                g = next(back);
-                set(&mut visited, g as usize);
+                start = next(back);
+                set(&mut visited, start as usize);
                 if id != vertex {
-                    v[g as usize] = id;
+                    v[start as usize] = id;
                 }
             }
         }
+        vh[id as usize] = start;
     }
 
     let mut split_origins: Vec<u32> = copies.clone();
@@ -93,6 +97,7 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
         seam_split_vertices: split_origins.len() - split_vertices,
         split_examples,
         copies,
+        vh,
     }
 }
 

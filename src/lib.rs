@@ -5,6 +5,7 @@
 
 pub mod che;
 pub mod chf;
+mod dsu;
 pub mod error;
 pub mod ffi;
 pub mod generate;

@@ -5,6 +5,7 @@
 use super::ids::{next, prev};
 use super::report::push_example;
 use crate::NONE;
+use crate::dsu::Dsu;
 
 pub(crate) struct Split {
     /// Origins of the appended copies (input ids), in order of creation.
@@ -111,20 +112,7 @@ fn still_split(
     seams: &[u32],
 ) -> Vec<bool> {
     let n = n_vertices + copies.len();
-    let mut parent: Vec<u32> = (0..n as u32).collect();
-    fn find(parent: &mut [u32], mut x: u32) -> u32 {
-        while parent[x as usize] != x {
-            parent[x as usize] = parent[parent[x as usize] as usize];
-            x = parent[x as usize];
-        }
-        x
-    }
-    let mut union = |a: u32, b: u32| {
-        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-        if ra != rb {
-            parent[ra.max(rb) as usize] = ra.min(rb);
-        }
-    };
+    let mut dsu = Dsu::new(n);
     // Seams come in pairs (h, g) of half-edges on one vertex pair running the same way.
     let mut by_pair: Vec<(u32, u32, u32)> = Vec::with_capacity(seams.len());
     let origin = |x: u32| {
@@ -140,8 +128,8 @@ fn still_split(
     by_pair.sort_unstable();
     for pair in by_pair.chunks(2) {
         if let [(_, _, h), (_, _, g)] = *pair {
-            union(v[h as usize], v[g as usize]);
-            union(v[next(h) as usize], v[next(g) as usize]);
+            dsu.union(v[h as usize], v[g as usize]);
+            dsu.union(v[next(h) as usize], v[next(g) as usize]);
         }
     }
     let mut root_of_origin = vec![NONE; split_origins.len()];
@@ -153,7 +141,7 @@ fn still_split(
     {
         let o = origin(x);
         let k = split_origins.binary_search(&o).expect("split vertex");
-        let r = find(&mut parent, x);
+        let r = dsu.find(x);
         if root_of_origin[k] == NONE {
             root_of_origin[k] = r;
         } else if root_of_origin[k] != r {

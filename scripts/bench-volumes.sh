@@ -47,6 +47,7 @@ fi
 echo "== topomesh_bench_vol (the CGAL translation unit compiles slowly: about a minute)"
 # An empty build type: the only optimisation flags are the target's -O2 -DNDEBUG.
 cmake -S "$root/c-tests/diffvol" -B "$work/diffvol" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE= \
+  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE \
   -DTOPOMESH_MESH_DIR="$dir" >/dev/null
 cmake --build "$work/diffvol" --target topomesh_bench_vol >/dev/null
 

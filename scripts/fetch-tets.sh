@@ -86,7 +86,7 @@ for line in "${selected[@]}"; do
   [[ -s "$out.ele" && -s "$out.node" ]] && continue
   work="$(mktemp -d "$DIR/tets/.work.XXXXXX")"
   cp "$DIR/$src.off" "$work/$name.off"
-  echo "fetch-tets: tetgen $flags $src.off -> tets/$name (the 1M one takes minutes)"
+  echo "fetch-tets: tetgen $flags $src.off -> tets/$name (bunny00-1m: under a minute)"
   t0=$(date +%s.%N)
   (cd "$work" && tetgen "$flags" "$name.off" >/dev/null) || {
     echo "fetch-tets: tetgen failed on $src.off" >&2; rm -rf "$work"; exit 1; }

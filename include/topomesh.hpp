@@ -205,9 +205,21 @@ public:
         friend class StarRange;
         Iterator(const che_mesh *m, VertexId v) {
             detail::check(che_star_begin(m, v.value(), &it_));
+            // From level 2, steps that need no edge id walk V, O and VH inline instead
+            // of calling into the library once per step.
+            const std::uint32_t *vh = Proj::needs_edge ? nullptr : che_mesh_vertex_half_edges(m, nullptr);
+            if (vh != nullptr) {
+                V_ = che_mesh_half_edge_vertices(m, nullptr);
+                O_ = che_mesh_opposites(m, nullptr);
+                start_ = cur_ = vh[v.value()];
+            }
             advance();
         }
         void advance() {
+            if (V_ != nullptr) {
+                advance_inline();
+                return;
+            }
             che_star_step s;
             do {
                 if (!che_star_next(&it_, &s)) {
@@ -218,9 +230,30 @@ public:
             current_ = StarStep{HalfEdgeId{s.half_edge}, VertexId{s.vertex}, EdgeId{s.edge},
                                 TriangleId{s.triangle}};
         }
+        // The same rotation as the library's (counter-clockwise, from the boundary).
+        void advance_inline() {
+            if (cur_ != none) {
+                const std::uint32_t h = cur_, p = che_prev(h), g = O_[p];
+                cur_ = (g == none || g == start_) ? none : g;
+                if (g == none) tail_ = p;
+                current_ = StarStep{HalfEdgeId{h}, VertexId{V_[che_next(h)]}, EdgeId{none},
+                                    TriangleId{che_tri(h)}};
+                return;
+            }
+            if (!SkipClosing && tail_ != none) {
+                current_ = StarStep{HalfEdgeId{tail_}, VertexId{V_[tail_]}, EdgeId{none},
+                                    TriangleId{none}};
+                tail_ = none;
+                return;
+            }
+            done_ = true;
+        }
         che_star_iter it_{};
         StarStep current_{};
         bool done_ = false;
+        const std::uint32_t *V_ = nullptr;
+        const std::uint32_t *O_ = nullptr;
+        std::uint32_t start_ = none, cur_ = none, tail_ = none;
     };
 
     StarRange(const che_mesh *m, VertexId v) noexcept : m_(m), v_(v) {}
@@ -242,15 +275,19 @@ private:
 
 namespace detail {
 struct StepOf {
+    static constexpr bool needs_edge = true;
     StarStep operator()(const StarStep &s) const noexcept { return s; }
 };
 struct VertexOf {
+    static constexpr bool needs_edge = false;
     VertexId operator()(const StarStep &s) const noexcept { return s.vertex; }
 };
 struct EdgeOf {
+    static constexpr bool needs_edge = true;
     EdgeId operator()(const StarStep &s) const noexcept { return s.edge; }
 };
 struct TriangleOf {
+    static constexpr bool needs_edge = false;
     TriangleId operator()(const StarStep &s) const noexcept { return s.triangle; }
 };
 } // namespace detail

@@ -33,6 +33,24 @@ impl RankBits {
         }
     }
 
+    /// From `len` bits packed in words (bit `i` is bit `i & 63` of word `i >> 6`); bits
+    /// past `len` must be clear.
+    pub fn from_words(words: Vec<u64>, len: usize) -> Self {
+        assert_eq!(words.len(), len.div_ceil(64));
+        let mut before = Vec::with_capacity(words.len());
+        let mut ones = 0usize;
+        for w in &words {
+            before.push(ones as u32);
+            ones += w.count_ones() as usize;
+        }
+        debug_assert!(len.is_multiple_of(64) || words.last().is_none_or(|w| w >> (len % 64) == 0));
+        RankBits {
+            words,
+            before,
+            ones,
+        }
+    }
+
     pub fn ones(&self) -> usize {
         self.ones
     }
@@ -71,6 +89,9 @@ mod tests {
                 count += pattern(i) as usize;
             }
             assert_eq!(bits.ones(), count);
+            let words = bits.words.clone();
+            let again = RankBits::from_words(words, len);
+            assert_eq!((again.before, again.ones), (bits.before.clone(), bits.ones));
         }
     }
 }

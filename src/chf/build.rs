@@ -4,11 +4,11 @@
 
 use super::edges::{self, EdgeCensus};
 use super::ids::tet;
-use super::matching::Groups;
 use super::orient::{self, flipped_id};
-use super::report::{ChfBuildReport, push_example};
+use super::report::ChfBuildReport;
+use super::stars::{self, Pairs};
 use super::strict::{strict_after_split, strict_faces};
-use super::{Chf, level2, level3, split};
+use super::{Chf, level2, level3, soup, split};
 use crate::NONE;
 use crate::error::{Error, Result};
 use crate::rank::RankBits;
@@ -56,50 +56,27 @@ pub(crate) fn build(
         input_vertices: n_vertices,
         ..ChfBuildReport::default()
     };
-
-    // Soup: range check, degenerate tetrahedra dropped, determinant signs.
-    let mut v: Vec<u32> = Vec::with_capacity(4 * tets.len());
-    // Stays empty (the identity) until the first dropped tetrahedron.
-    let mut tet_origin: Vec<u32> = Vec::new();
-    let mut remapped = false;
-    let mut sign: Vec<i8> = Vec::new();
-    for (t, tet) in tets.iter().enumerate() {
-        for (i, &x) in tet.iter().enumerate() {
-            if x as usize >= n_vertices {
-                return Err(Error::out_of_range(format!(
-                    "tetrahedron {t}, corner {i}: vertex {x} out of range (there are {n_vertices} vertices)"
-                )));
-            }
+    let timing = std::env::var("CHF_TIMING").is_ok();
+    let cpu = || -> u64 {
+        std::fs::read_to_string("/proc/thread-self/schedstat")
+            .ok()
+            .and_then(|s| s.split_whitespace().next().and_then(|x| x.parse().ok()))
+            .unwrap_or(0)
+    };
+    let mut clock = cpu();
+    let mut lap = |what: &str| {
+        if timing {
+            let now = cpu();
+            eprintln!(
+                "  {what}: {:.1} ns/tet",
+                (now - clock) as f64 / tets.len().max(1) as f64
+            );
+            clock = now;
         }
-        let [a, b, c, d] = *tet;
-        if a == b || a == c || a == d || b == c || b == d || c == d {
-            if !remapped {
-                remapped = true;
-                tet_origin.extend(0..t as u32);
-            }
-            report.dropped_degenerate += 1;
-            push_example(&mut report.degenerate_examples, t as u32);
-            continue;
-        }
-        if remapped {
-            tet_origin.push(t as u32);
-        }
-        v.extend_from_slice(tet);
-        if !positions.is_empty() {
-            let [p0, p1, p2, p3] = tet.map(|x| positions[x as usize]);
-            let det = (p1 - p0).dot((p2 - p0).cross(p3 - p0));
-            let s = if det > 0.0 {
-                1
-            } else if det < 0.0 {
-                -1
-            } else {
-                report.zero_volume += 1;
-                push_example(&mut report.zero_volume_examples, t as u32);
-                0
-            };
-            sign.push(s);
-        }
-    }
+    };
+    let mut soup = soup::soup(tets, n_vertices, positions, &mut report)?;
+    lap("soup");
+    let tet_origin = std::mem::take(&mut soup.tet_origin);
     let origin_of = |t: u32| {
         if tet_origin.is_empty() {
             t
@@ -108,82 +85,114 @@ pub(crate) fn build(
         }
     };
 
-    // Match on vertex triples; triples of exactly two half-faces are partners.
-    let mut partner = vec![NONE; v.len()];
-    let mut non_manifold: Vec<u32> = Vec::new();
-    Groups::new(&v, n_vertices).for_each(|triple, group| {
-        report.input_faces += 1;
-        match group.len() {
-            1 => report.boundary_faces += 1,
-            2 => {
-                partner[group[0] as usize] = group[1];
-                partner[group[1] as usize] = group[0];
-            }
-            _ => {
-                report.non_manifold_faces += 1;
-                push_example(&mut report.non_manifold_face_examples, triple);
-                non_manifold.extend_from_slice(group);
-            }
-        }
-        count_duplicates(&v, triple[2], group, &mut report, &origin_of);
-    });
+    // One pass over the vertex stars: faces and their pairs, pieces, `VH`, edges.
+    let mut stars = stars::stars(&soup.v, n_vertices, &[], Pairs::Partners);
+    lap("stars");
+    let (faces, partner) = stars.faces.take().expect("faces were asked for");
+    report.input_faces = faces.input_faces;
+    report.boundary_faces = faces.boundary_faces;
+    report.non_manifold_faces = faces.non_manifold_faces;
+    report.non_manifold_face_examples = faces.non_manifold_face_examples;
+    report.duplicate_tetrahedra = faces.duplicates;
+    report.duplicate_examples = faces
+        .duplicate_examples
+        .iter()
+        .map(|&[s, t]| [origin_of(s), origin_of(t)])
+        .collect();
+    let mut non_manifold = faces.non_manifold;
     if options.strict {
-        strict_faces(&report, &v, &non_manifold, &origin_of)?;
+        strict_faces(&report, &soup.v, &non_manifold, &origin_of)?;
     }
 
-    let oriented = orient::orient(&mut v, &partner, &sign);
-    drop(partner);
-    report.flipped_tetrahedra = oriented.flipped_count;
-    report.non_orientable_components = oriented.non_orientable_components;
-    report.non_orientable_examples = oriented
-        .non_orientable_examples
-        .iter()
-        .map(|&t| origin_of(t))
-        .collect();
-    report.inverted_tetrahedra = oriented.inverted;
-    report.inverted_examples = oriented
-        .inverted_examples
-        .iter()
-        .map(|&t| origin_of(t))
-        .collect();
-    report.seam_faces = oriented.seams.len() / 2;
-    for hf in non_manifold.iter_mut() {
-        if oriented.flipped[tet(*hf) as usize] {
-            *hf = flipped_id(*hf);
+    // Orient only when some pair still runs the same way after the soup's flips: otherwise
+    // the pairs are the opposites (see `soup.rs`) and the stars are right as found.
+    let (o, seams, links) = if !faces.same_direction {
+        report.flipped_tetrahedra = soup.flipped;
+        (partner, Vec::new(), Vec::new())
+    } else {
+        // Back to the input's numbering, then orient as given.
+        let unflip = |hf: u32| {
+            if soup.is_flipped(tet(hf)) {
+                flipped_id(hf)
+            } else {
+                hf
+            }
+        };
+        let mut input_partner = vec![NONE; partner.len()];
+        for (h, &g) in partner.iter().enumerate() {
+            if g != NONE {
+                input_partner[unflip(h as u32) as usize] = unflip(g);
+            }
         }
-    }
+        drop(partner);
+        for hf in non_manifold.iter_mut() {
+            *hf = unflip(*hf);
+        }
+        soup.unflip();
+        let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign);
+        drop(input_partner);
+        report.flipped_tetrahedra = oriented.flipped_count;
+        report.non_orientable_components = oriented.non_orientable_components;
+        report.non_orientable_examples = oriented
+            .non_orientable_examples
+            .iter()
+            .map(|&t| origin_of(t))
+            .collect();
+        report.inverted_tetrahedra = oriented.inverted;
+        report.inverted_examples = oriented
+            .inverted_examples
+            .iter()
+            .map(|&t| origin_of(t))
+            .collect();
+        report.seam_faces = oriented.seams.len() / 2;
+        for hf in non_manifold.iter_mut() {
+            if oriented.flipped[tet(*hf) as usize] {
+                *hf = flipped_id(*hf);
+            }
+        }
+        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, Pairs::No);
+        (oriented.o, oriented.seams, oriented.links)
+    };
     non_manifold.sort_unstable();
-    let (o, seams, links) = (oriented.o, oriented.seams, oriented.links);
-    drop(oriented.flipped);
+    let mut v = std::mem::take(&mut soup.v);
+    drop(soup);
+    lap("orient");
 
-    let split = split::split(&mut v, &o, &links, n_vertices);
+    let mut copies = Vec::new();
+    if stars.split_needed {
+        let split = split::split(&mut v, &o, &links, n_vertices);
+        report.split_vertices = split.split_vertices;
+        report.split_vertex_examples = split.split_examples;
+        report.seam_split_vertices = split.seam_split_vertices;
+        report.added_vertices = split.copies.len();
+        copies = split.copies;
+    }
     drop(links);
-    report.split_vertices = split.split_vertices;
-    report.split_vertex_examples = split.split_examples;
-    report.seam_split_vertices = split.seam_split_vertices;
-    report.added_vertices = split.copies.len();
-    let n_total = n_vertices + split.copies.len();
+    let n_total = n_vertices + copies.len();
     if n_total >= NONE as usize {
         return Err(Error::too_large(format!(
             "splitting non-manifold vertices makes {n_total} vertices: ids must fit below 2^32 - 1"
         )));
     }
-    let vertex_origin: Vec<u32> = if split.copies.is_empty() {
+    let vertex_origin: Vec<u32> = if copies.is_empty() {
         Vec::new()
     } else {
         (0..n_vertices as u32)
-            .chain(split.copies.iter().copied())
+            .chain(copies.iter().copied())
             .collect()
     };
-
-    let edge_bits = edges::canonical_slots(&v, &o);
-    let census = edges::census(&v, &edge_bits, n_vertices, |x| {
-        if vertex_origin.is_empty() {
-            x
-        } else {
+    let census = if copies.is_empty() {
+        std::mem::take(&mut stars.census)
+    } else {
+        // Every star is one piece now; the census groups by input pair.
+        let flagged = merged(&non_manifold, &seams);
+        stars = stars::stars(&v, n_total, &flagged, Pairs::No);
+        debug_assert!(!stars.split_needed);
+        edges::census(&v, &stars.edge_bits, n_vertices, |x| {
             vertex_origin[x as usize]
-        }
-    });
+        })
+    };
+    let edge_bits = std::mem::take(&mut stars.edge_bits);
     record_edges(&mut report, &census);
     if options.strict {
         strict_after_split(&report, &v, &vertex_origin, &origin_of)?;
@@ -191,7 +200,7 @@ pub(crate) fn build(
 
     let mut positions = positions.to_vec();
     if !positions.is_empty() {
-        for &c in &split.copies {
+        for &c in &copies {
             positions.push(positions[c as usize]);
         }
     }
@@ -227,10 +236,12 @@ pub(crate) fn build(
         chf.o = Vec::new();
         chf.level = 0;
     }
+    lap("rest");
     if options.level >= 2 {
-        level2::build(&mut chf, edge_bits);
+        level2::build(&mut chf, edge_bits, std::mem::take(&mut stars.vh));
         chf.level = 2;
     }
+    lap("level2");
     if options.level >= 3 {
         chf.boundary = Some(level3::build(&chf)?);
         chf.level = 3;
@@ -271,37 +282,12 @@ fn record_edges(report: &mut ChfBuildReport, census: &EdgeCensus) {
     report.kept_non_manifold_edge_examples = census.kept_examples.clone();
 }
 
-/// Two tetrahedra with the same four vertices share all four triples; count each such
-/// pair once, on the triple made of their three smallest vertices (the fourth vertex,
-/// `V[hf]`, is the one opposite the half-face).
-fn count_duplicates(
-    v: &[u32],
-    max: u32,
-    group: &[u32],
-    report: &mut ChfBuildReport,
-    origin_of: &impl Fn(u32) -> u32,
-) {
-    if group.len() < 2 {
-        return;
-    }
-    let fourth = |hf: u32| v[hf as usize];
-    let mut by_fourth: Vec<(u32, u32)> = group
-        .iter()
-        .map(|&hf| (fourth(hf), hf))
-        .filter(|&(d, _)| d > max)
-        .collect();
-    by_fourth.sort_unstable();
-    for run in by_fourth.chunk_by(|x, y| x.0 == y.0) {
-        for (i, &(_, a)) in run.iter().enumerate() {
-            for &(_, b) in &run[i + 1..] {
-                report.duplicate_tetrahedra += 1;
-                push_example(
-                    &mut report.duplicate_examples,
-                    [origin_of(tet(a)), origin_of(tet(b))],
-                );
-            }
-        }
-    }
+/// The sorted union of two sorted lists.
+pub(crate) fn merged(a: &[u32], b: &[u32]) -> Vec<u32> {
+    let mut out: Vec<u32> = a.iter().chain(b).copied().collect();
+    out.sort_unstable();
+    out.dedup();
+    out
 }
 
 #[cfg(test)]

@@ -57,44 +57,6 @@ pub(crate) fn walk(
     }
 }
 
-/// One bit per edge slot: set on the canonical slot of each fan. O(T).
-pub(crate) fn canonical_slots(v: &[u32], o: &[u32]) -> RankBits {
-    let n_slots = 6 * (v.len() / 4);
-    let mut visited = vec![0u64; n_slots.div_ceil(64)];
-    let mut canonical = vec![0u64; n_slots.div_ceil(64)];
-    fn set(bits: &mut [u64], i: u64) {
-        bits[(i >> 6) as usize] |= 1 << (i & 63);
-    }
-    let test = |bits: &[u64], i: u64| (bits[(i >> 6) as usize] >> (i & 63)) & 1 == 1;
-    for s in 0..n_slots as u64 {
-        if test(&visited, s) {
-            continue;
-        }
-        let he = slot_half_edges(s)[0];
-        let mut min = he;
-        let end = walk(v, o, he, |g, m| {
-            set(&mut visited, slot_of(g));
-            min = min.min(g).min(m);
-            false
-        });
-        let c = match end {
-            FanEnd::Closed => min,
-            FanEnd::Boundary(last) => {
-                let other = walk(v, o, mate(he), |g, _| {
-                    set(&mut visited, slot_of(g));
-                    false
-                });
-                match other {
-                    FanEnd::Boundary(first) => last.min(first),
-                    FanEnd::Closed => unreachable!("a fan open one way is open both ways"),
-                }
-            }
-        };
-        set(&mut canonical, slot_of(c));
-    }
-    RankBits::from_fn(n_slots, |i| test(&canonical, i as u64))
-}
-
 /// The canonical slot of the fan of `he`, found by walking until a slot marked in `bits`.
 pub(crate) fn canonical_slot(v: &[u32], o: &[u32], bits: &RankBits, he: HalfEdge) -> u64 {
     let mut found = slot_of(he);

@@ -5,24 +5,14 @@
 //! the tetrahedron of each).
 
 use super::Chf;
-use super::ids::{FACE, first, local, tet};
 use super::view::face_bits;
-use crate::NONE;
 use crate::rank::RankBits;
 
-/// `edge_bits` are the canonical slots (computed once by the build or the level change).
-pub(crate) fn build(chf: &mut Chf, edge_bits: RankBits) {
+/// `edge_bits` (the canonical slots) and `vh` come from the star pass (`stars.rs`), run
+/// once by the build or the level change.
+pub(crate) fn build(chf: &mut Chf, edge_bits: RankBits, vh: Vec<u32>) {
     let (v, o) = (&chf.v, &chf.o);
-    let mut vh = vec![NONE; chf.n_vertices];
-    for hf in 0..v.len() as u32 {
-        let base = first(tet(hf)) as usize;
-        for l in FACE[local(hf) as usize] {
-            let slot = &mut vh[v[base + l as usize] as usize];
-            if *slot == NONE || (o[hf as usize] == NONE && o[*slot as usize] != NONE) {
-                *slot = hf;
-            }
-        }
-    }
+    debug_assert_eq!(vh.len(), chf.n_vertices);
     let faces = face_bits(o);
     let mut fh = Vec::with_capacity(faces.ones());
     fh.extend((0..v.len() as u32).filter(|&hf| faces.get(hf as usize)));

@@ -39,13 +39,16 @@ mod fan;
 pub mod ids;
 mod level2;
 mod level3;
-mod matching;
+mod link;
 mod memory;
 mod orient;
+mod pairs;
 mod queries;
 mod report;
+mod soup;
 mod split;
 mod star;
+mod stars;
 mod strict;
 mod summary;
 mod view;
@@ -167,17 +170,14 @@ impl Chf {
             return Ok(());
         }
         if self.level < 1 && level >= 1 {
-            self.o = matching::opposites_by_rule(
-                &self.v,
-                self.n_vertices,
-                &self.non_manifold,
-                &self.seams,
-            );
+            self.o = self.opposites_by_rule();
             self.level = 1;
         }
         if self.level < 2 && level >= 2 {
-            let bits = edges::canonical_slots(&self.v, &self.o);
-            level2::build(self, bits);
+            let flagged = build::merged(&self.non_manifold, &self.seams);
+            let stars = stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::No);
+            debug_assert!(!stars.split_needed, "the build split every vertex");
+            level2::build(self, stars.edge_bits, stars.vh);
             self.level = 2;
         }
         if self.level < 3 && level >= 3 {

@@ -5,7 +5,7 @@
 
 use super::edges::{self, MultiFan};
 use super::ids::{HalfEdge, first, he_face, local, sorted_triple, tet};
-use super::{Chf, matching};
+use super::{Chf, stars};
 use crate::NONE;
 use crate::rank::RankBits;
 use std::borrow::Cow;
@@ -52,12 +52,7 @@ impl Chf {
         let o: Cow<'_, [u32]> = if self.level >= 1 {
             Cow::Borrowed(&self.o)
         } else {
-            Cow::Owned(matching::opposites_by_rule(
-                &self.v,
-                self.n_vertices,
-                &self.non_manifold,
-                &self.seams,
-            ))
+            Cow::Owned(self.opposites_by_rule())
         };
         let stored = self.level >= 2;
         let faces = match (stored, need.faces) {
@@ -67,7 +62,12 @@ impl Chf {
         };
         let edges = match (stored, need.edges) {
             (true, _) => Cow::Borrowed(&self.edge_bits),
-            (false, true) => Cow::Owned(edges::canonical_slots(&self.v, &o)),
+            (false, true) => {
+                let flagged = super::build::merged(&self.non_manifold, &self.seams);
+                Cow::Owned(
+                    stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::No).edge_bits,
+                )
+            }
             (false, false) => Cow::Owned(RankBits::default()),
         };
         View {
@@ -80,6 +80,15 @@ impl Chf {
             eh: stored.then_some(&self.eh[..]),
             multi_fan: &self.multi_fan,
         }
+    }
+
+    /// `O` of a canonical `V` (oriented, split): two half-faces are twins when they are the
+    /// only two on their vertex triple, run opposite ways, and are flagged neither
+    /// non-manifold nor seam. Level 1 stores it; level 0 queries compute it.
+    pub(crate) fn opposites_by_rule(&self) -> Vec<u32> {
+        let flagged = super::build::merged(&self.non_manifold, &self.seams);
+        let faces = stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::Opposites).faces;
+        faces.expect("faces were asked for").1
     }
 
     /// The opposite of one half-face without building `O`: a scan at level 0, by the same

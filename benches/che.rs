@@ -115,6 +115,36 @@ fn sweeps(c: &mut Criterion) {
                     .fold(0u64, |a, x| a + x as u64)
             })
         });
+        group.bench_function("VV raw arrays", |b| {
+            let (v, o, vh) = (
+                che.half_edge_vertices(),
+                che.opposites().unwrap(),
+                che.vertex_half_edges().unwrap(),
+            );
+            b.iter(|| {
+                let mut sum = 0u64;
+                for &start in vh {
+                    if start == topomesh::NONE {
+                        continue;
+                    }
+                    let mut h = start;
+                    loop {
+                        sum += v[topomesh::che::next(h) as usize] as u64;
+                        let p = topomesh::che::prev(h);
+                        let g = o[p as usize];
+                        if g == topomesh::NONE {
+                            sum += v[p as usize] as u64;
+                            break;
+                        }
+                        if g == start {
+                            break;
+                        }
+                        h = g;
+                    }
+                }
+                sum
+            })
+        });
         group.bench_function("VV bulk", |b| {
             b.iter(|| che.all_vertex_vertices().indices.len())
         });

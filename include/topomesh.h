@@ -1,4 +1,5 @@
-/* topomesh: compact topological mesh structures (CHE for triangle surfaces), C API.
+/* topomesh: compact topological mesh structures (CHE for triangle surfaces, CHF for
+ * tetrahedral meshes), C API.
  *
  * Conventions
  * - Ids are uint32_t; TOPOMESH_NONE (UINT32_MAX) means boundary / none / invalid.
@@ -11,10 +12,10 @@
  * - Variable-size answers go into caller buffers (buf, cap, *out_len): buf == NULL with
  *   cap == 0 is a size query; a short buffer gives TOPOMESH_STATUS_BUFFER_TOO_SMALL with
  *   the needed length in *out_len. Bulk calls fill CSR arrays; che_star_iter walks a
- *   vertex star from the caller's stack; che_mesh_* views point into the structure
- *   (valid until the mesh is freed or its level changes).
- * - Threads: any number of threads may query a const che_mesh* at once;
- *   che_mesh_build_level and che_mesh_free need exclusive access.
+ *   vertex star from the caller's stack; che_mesh_* and chf_mesh_* views point into the
+ *   structure (valid until the mesh is freed or its level changes).
+ * - Threads: any number of threads may query a const che_mesh* (const chf_mesh*) at once;
+ *   *_build_level and *_free need exclusive access.
  */
 
 #ifndef TOPOMESH_H
@@ -127,10 +128,70 @@ typedef uint32_t che_report_kind;
 #endif // __cplusplus
 
 /**
+ * Which offending ids `chf_mesh_report_examples` returns (at most 16 items of each kind,
+ * input ids).
+ */
+enum chf_report_kind
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * Input tetrahedra dropped as degenerate (one id each).
+     */
+    CHF_REPORT_KIND_DEGENERATE = 0,
+    /**
+     * Input tetrahedra of zero volume (one id each).
+     */
+    CHF_REPORT_KIND_ZERO_VOLUME = 1,
+    /**
+     * Input tetrahedra inverted against their component (one id each).
+     */
+    CHF_REPORT_KIND_INVERTED = 2,
+    /**
+     * Pairs of input tetrahedra with the same vertices (two ids each).
+     */
+    CHF_REPORT_KIND_DUPLICATE = 3,
+    /**
+     * Non-manifold faces as sorted input vertex triples (three ids each).
+     */
+    CHF_REPORT_KIND_NON_MANIFOLD_FACE = 4,
+    /**
+     * Non-manifold edges as input vertex pairs (two ids each, smaller first).
+     */
+    CHF_REPORT_KIND_NON_MANIFOLD_EDGE = 5,
+    /**
+     * Non-manifold edges kept as several edges (two ids each, smaller first).
+     */
+    CHF_REPORT_KIND_KEPT_NON_MANIFOLD_EDGE = 6,
+    /**
+     * Input vertices split because their star is several pieces (one id each).
+     */
+    CHF_REPORT_KIND_SPLIT_VERTEX = 7,
+    /**
+     * One input tetrahedron of each non-orientable component (one id each).
+     */
+    CHF_REPORT_KIND_NON_ORIENTABLE = 8,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum chf_report_kind chf_report_kind;
+#else
+typedef uint32_t chf_report_kind;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * Opaque handle to a CHE surface. Create with `che_mesh_from_triangles` or
  * `che_mesh_load`, free with `che_mesh_free`.
  */
 typedef struct che_mesh che_mesh;
+
+/**
+ * Opaque handle to a CHF tetrahedral mesh. Create with `chf_mesh_from_tetrahedra` or
+ * `chf_mesh_load`, free with `chf_mesh_free`.
+ */
+typedef struct chf_mesh chf_mesh;
 
 /**
  * How to build a CHE.
@@ -311,6 +372,198 @@ typedef struct che_star_step {
     uint32_t edge;
     uint32_t triangle;
 } che_star_step;
+
+/**
+ * How to build a CHF.
+ */
+typedef struct chf_build_options {
+    /**
+     * The level, 0..3 (default 2).
+     */
+    uint32_t level;
+    /**
+     * Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
+     * and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
+     * the offending ids) instead of keeping them (default false).
+     */
+    bool strict;
+} chf_build_options;
+
+/**
+ * The topology of the input complex as given (input vertices, unique input edges and
+ * faces, kept tetrahedra), whatever the build split or left unpaired, and what the build
+ * did. Field names match the CLI's JSON.
+ */
+typedef struct chf_summary {
+    uint64_t vertices;
+    uint64_t edges;
+    uint64_t faces;
+    uint64_t tetrahedra;
+    /**
+     * Faces with exactly one tetrahedron.
+     */
+    uint64_t boundary_faces;
+    /**
+     * Edges and vertices of the boundary faces.
+     */
+    uint64_t boundary_edges;
+    uint64_t boundary_vertices;
+    /**
+     * Components of the boundary faces, joined through shared vertices.
+     */
+    uint64_t boundary_components;
+    /**
+     * Components of the tetrahedra, joined through shared vertices.
+     */
+    uint64_t components;
+    uint64_t isolated_vertices;
+    /**
+     * V - E + F - T of the input complex (isolated vertices count).
+     */
+    int64_t euler_characteristic;
+    /**
+     * No non-manifold face, edge or vertex.
+     */
+    bool manifold;
+    bool orientable;
+    uint64_t dropped_degenerate;
+    /**
+     * Tetrahedra of zero volume (kept), when built with positions.
+     */
+    uint64_t zero_volume;
+    /**
+     * Tetrahedra whose volume has the sign opposite to their component's orientation.
+     */
+    uint64_t inverted_tetrahedra;
+    uint64_t non_manifold_faces;
+    uint64_t non_manifold_edges;
+    uint64_t split_vertices;
+    uint64_t flipped_tetrahedra;
+    uint64_t non_orientable_components;
+} chf_summary;
+
+/**
+ * What the build did to its input (counts; `chf_mesh_report_examples` gives ids).
+ */
+typedef struct chf_build_report {
+    /**
+     * Tetrahedra given.
+     */
+    uint64_t input_tetrahedra;
+    /**
+     * Vertices given (the structure may hold more after splitting).
+     */
+    uint64_t input_vertices;
+    /**
+     * Tetrahedra with a repeated vertex id, dropped.
+     */
+    uint64_t dropped_degenerate;
+    /**
+     * Tetrahedra whose positions have a zero determinant (kept).
+     */
+    uint64_t zero_volume;
+    /**
+     * Tetrahedra whose determinant has the sign opposite to their component's orientation
+     * (a folded or tangled mesh; kept).
+     */
+    uint64_t inverted_tetrahedra;
+    /**
+     * Pairs of tetrahedra with the same four vertices (kept).
+     */
+    uint64_t duplicate_tetrahedra;
+    /**
+     * Unique input faces (vertex triples).
+     */
+    uint64_t input_faces;
+    /**
+     * Input faces with one tetrahedron.
+     */
+    uint64_t boundary_faces;
+    /**
+     * Input faces with three or more tetrahedra (their half-faces stay unpaired).
+     */
+    uint64_t non_manifold_faces;
+    /**
+     * Unique input edges (vertex pairs).
+     */
+    uint64_t input_edges;
+    /**
+     * Input edges whose tetrahedra form several fans.
+     */
+    uint64_t non_manifold_edges;
+    /**
+     * Of those, the ones whose fans still share both end vertices after the vertex split
+     * (one edge id per fan, all with the same two vertices).
+     */
+    uint64_t kept_non_manifold_edges;
+    /**
+     * Input vertices whose star is several face-connected pieces (split into one copy per
+     * piece).
+     */
+    uint64_t split_vertices;
+    /**
+     * Input vertices split only because an orientation seam crosses their star.
+     */
+    uint64_t seam_split_vertices;
+    /**
+     * Vertex copies appended after the input vertices.
+     */
+    uint64_t added_vertices;
+    /**
+     * Tetrahedra whose local vertices 1 and 2 were swapped to orient them.
+     */
+    uint64_t flipped_tetrahedra;
+    /**
+     * Face-connected components that cannot be consistently oriented.
+     */
+    uint64_t non_orientable_components;
+    /**
+     * Faces left unpaired because their two tetrahedra could not agree on an orientation.
+     */
+    uint64_t seam_faces;
+} chf_build_report;
+
+/**
+ * Bytes held by each container (lengths, not capacities).
+ */
+typedef struct chf_memory {
+    /**
+     * `V`, level 0.
+     */
+    uint64_t half_face_vertices;
+    /**
+     * `O`, level 1.
+     */
+    uint64_t opposites;
+    /**
+     * `VH`, level 2.
+     */
+    uint64_t vertex_half_faces;
+    /**
+     * The canonical-edge-slot rank bits and the tetrahedron of each edge, level 2.
+     */
+    uint64_t edges;
+    /**
+     * The canonical-half-face rank bits and `FH`, level 2.
+     */
+    uint64_t faces;
+    /**
+     * The boundary CHE's topology, its maps and the component of each vertex, level 3.
+     */
+    uint64_t boundary;
+    /**
+     * The sum of the above: the topology.
+     */
+    uint64_t topology;
+    /**
+     * Positions (not topology).
+     */
+    uint64_t positions;
+    /**
+     * Origin maps, the non-manifold and seam flags, the several-fan pairs (not topology).
+     */
+    uint64_t maps;
+} chf_memory;
 
 #ifdef __cplusplus
 extern "C" {
@@ -710,6 +963,531 @@ const uint32_t *che_mesh_vertex_origins(const struct che_mesh *m, size_t *len);
  * where degenerate triangles were dropped).
  */
 const uint32_t *che_mesh_triangle_origins(const struct che_mesh *m, size_t *len);
+
+/**
+ * The default CHF build options: level 2, not strict.
+ */
+struct chf_build_options chf_build_options_default(void);
+
+/**
+ * Builds a CHF at `level` (0..3) from `n_tets` tetrahedra (4 vertex ids each, over
+ * vertices `0..n_vertices`). `positions` may be NULL; otherwise it holds 3 doubles (x, y,
+ * z) per input vertex (they only orient each component, positive volume where possible,
+ * and count zero-volume and inverted tetrahedra in the report). `tetrahedra` may be NULL
+ * when `n_tets == 0`.
+ *
+ * Input vertex ids are kept; copies made by splitting non-manifold vertices are appended
+ * after them (see `chf_mesh_vertex_origins`). Input tetrahedron order is kept; degenerate
+ * tetrahedra (a repeated id) are dropped (see `chf_mesh_tetrahedron_origins`). Every
+ * component is oriented consistently (local vertices 1 and 2 swapped where needed);
+ * `chf_mesh_report` says what was changed. Non-manifold input is kept (faces of three or
+ * more tetrahedra stay unpaired; see `chf_mesh_from_tetrahedra_ex` for strict mode).
+ * A tetrahedron naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`;
+ * more than 2^32 - 2 vertices or 1073741823 tetrahedra `TOPOMESH_STATUS_TOO_LARGE`.
+ * `*out` is NULL on failure.
+ */
+topomesh_status chf_mesh_from_tetrahedra(const uint32_t *tetrahedra,
+                                         size_t n_tets,
+                                         size_t n_vertices,
+                                         const double *positions,
+                                         uint32_t level,
+                                         struct chf_mesh **out);
+
+/**
+ * `chf_mesh_from_tetrahedra` with options (NULL: `chf_build_options_default()`). With
+ * `strict`, non-manifold input fails with `TOPOMESH_STATUS_NON_MANIFOLD`, the detail
+ * naming the offending face and tetrahedra, edge, or vertex.
+ */
+topomesh_status chf_mesh_from_tetrahedra_ex(const uint32_t *tetrahedra,
+                                            size_t n_tets,
+                                            size_t n_vertices,
+                                            const double *positions,
+                                            const struct chf_build_options *options,
+                                            struct chf_mesh **out);
+
+/**
+ * Reads a volume file (the format from the extension: .mesh (Medit), .msh (Gmsh), .vtk,
+ * .node/.ele (TetGen)) and builds its tetrahedra at `level` (triangles the file also
+ * holds, such as its boundary, are ignored). A missing or unreadable file gives
+ * `TOPOMESH_STATUS_IO`, a malformed one `TOPOMESH_STATUS_PARSE` (the detail names the
+ * file and line), a file without tetrahedra (a surface) `TOPOMESH_STATUS_INVALID_INPUT`.
+ * `*out` is NULL on failure.
+ */
+topomesh_status chf_mesh_load(const char *path, uint32_t level, struct chf_mesh **out);
+
+/**
+ * `chf_mesh_load` with options (NULL: `chf_build_options_default()`).
+ */
+topomesh_status chf_mesh_load_ex(const char *path,
+                                 const struct chf_build_options *options,
+                                 struct chf_mesh **out);
+
+/**
+ * Frees a mesh; NULL is a no-op. Needs exclusive access.
+ */
+void chf_mesh_free(struct chf_mesh *m);
+
+/**
+ * Raises or lowers the level (0..3) in place. Ids never change with the level; views
+ * obtained before are invalid afterwards. Needs exclusive access.
+ */
+topomesh_status chf_mesh_build_level(struct chf_mesh *m, uint32_t level);
+
+/**
+ * The current level (0..3); 0 for NULL.
+ */
+uint32_t chf_mesh_level(const struct chf_mesh *m);
+
+/**
+ * Vertices of the structure: the input vertices, then the copies made by splitting
+ * non-manifold vertices. 0 for NULL (and likewise for the other counts).
+ */
+size_t chf_mesh_num_vertices(const struct chf_mesh *m);
+
+/**
+ * Vertices given as input (ids `0..n` of the structure are the same vertices).
+ */
+size_t chf_mesh_num_input_vertices(const struct chf_mesh *m);
+
+/**
+ * Tetrahedra kept (degenerate input tetrahedra are dropped).
+ */
+size_t chf_mesh_num_tetrahedra(const struct chf_mesh *m);
+
+/**
+ * Faces of the structure: paired half-faces count once, unpaired ones (boundary, and the
+ * half-faces of a non-manifold face, which stay unpaired) once each.
+ */
+size_t chf_mesh_num_faces(const struct chf_mesh *m);
+
+/**
+ * Edges of the structure: one per fan of tetrahedra around a vertex pair (a non-manifold
+ * edge whose fans the vertex split did not separate counts once per fan).
+ */
+size_t chf_mesh_num_edges(const struct chf_mesh *m);
+
+/**
+ * Half-faces: 4 per tetrahedron (half-face `4t + i` is the face opposite local vertex `i`).
+ */
+size_t chf_mesh_num_half_faces(const struct chf_mesh *m);
+
+/**
+ * VV for every vertex (rows as `chf_vertex_vertices`).
+ */
+topomesh_status chf_mesh_vertex_vertices_csr(const struct chf_mesh *m,
+                                             uint32_t *offsets,
+                                             size_t offsets_cap,
+                                             uint32_t *indices,
+                                             size_t indices_cap,
+                                             size_t *n_offsets,
+                                             size_t *n_indices);
+
+/**
+ * VE for every vertex (rows as `chf_vertex_edges`).
+ */
+topomesh_status chf_mesh_vertex_edges_csr(const struct chf_mesh *m,
+                                          uint32_t *offsets,
+                                          size_t offsets_cap,
+                                          uint32_t *indices,
+                                          size_t indices_cap,
+                                          size_t *n_offsets,
+                                          size_t *n_indices);
+
+/**
+ * VF for every vertex (rows as `chf_vertex_faces`).
+ */
+topomesh_status chf_mesh_vertex_faces_csr(const struct chf_mesh *m,
+                                          uint32_t *offsets,
+                                          size_t offsets_cap,
+                                          uint32_t *indices,
+                                          size_t indices_cap,
+                                          size_t *n_offsets,
+                                          size_t *n_indices);
+
+/**
+ * VT for every vertex (rows as `chf_vertex_tetrahedra`).
+ */
+topomesh_status chf_mesh_vertex_tetrahedra_csr(const struct chf_mesh *m,
+                                               uint32_t *offsets,
+                                               size_t offsets_cap,
+                                               uint32_t *indices,
+                                               size_t indices_cap,
+                                               size_t *n_offsets,
+                                               size_t *n_indices);
+
+/**
+ * EF for every edge (rows as `chf_edge_faces`, in rotation order).
+ */
+topomesh_status chf_mesh_edge_faces_csr(const struct chf_mesh *m,
+                                        uint32_t *offsets,
+                                        size_t offsets_cap,
+                                        uint32_t *indices,
+                                        size_t indices_cap,
+                                        size_t *n_offsets,
+                                        size_t *n_indices);
+
+/**
+ * ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order).
+ */
+topomesh_status chf_mesh_edge_tetrahedra_csr(const struct chf_mesh *m,
+                                             uint32_t *offsets,
+                                             size_t offsets_cap,
+                                             uint32_t *indices,
+                                             size_t indices_cap,
+                                             size_t *n_offsets,
+                                             size_t *n_indices);
+
+/**
+ * TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
+ * tetrahedron across face `i`, `TOPOMESH_NONE` on the boundary, as
+ * `chf_tetrahedron_tetrahedra`.
+ */
+topomesh_status chf_mesh_tetrahedron_tetrahedra_csr(const struct chf_mesh *m,
+                                                    uint32_t *offsets,
+                                                    size_t offsets_cap,
+                                                    uint32_t *indices,
+                                                    size_t indices_cap,
+                                                    size_t *n_offsets,
+                                                    size_t *n_indices);
+
+/**
+ * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2, a
+ * scan below.
+ */
+topomesh_status chf_vertex_is_boundary(const struct chf_mesh *m, uint32_t v, bool *out);
+
+/**
+ * Is edge `e` on the boundary (on a boundary face)? O(1) from level 2.
+ */
+topomesh_status chf_edge_is_boundary(const struct chf_mesh *m, uint32_t e, bool *out);
+
+/**
+ * Is face `f` on the boundary (one tetrahedron)? O(1) from level 2.
+ */
+topomesh_status chf_face_is_boundary(const struct chf_mesh *m, uint32_t f, bool *out);
+
+/**
+ * The twin of half-face `hf` (the same face seen from the neighbouring tetrahedron) into
+ * `*out`, `TOPOMESH_NONE` on the boundary. O(1) from level 1, a scan at level 0.
+ */
+topomesh_status chf_half_face_opposite(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
+
+/**
+ * The face of half-face `hf` into `*out`. O(1) from level 2.
+ */
+topomesh_status chf_half_face_face(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
+
+/**
+ * The canonical half-face of face `f` into `*out`: the boundary one on a boundary face,
+ * else the smaller of the two. O(1) from level 2.
+ */
+topomesh_status chf_face_half_face(const struct chf_mesh *m, uint32_t f, uint32_t *out);
+
+/**
+ * A half-face holding vertex `v` into `*out`, where its star starts: a boundary one on a
+ * boundary vertex, `TOPOMESH_NONE` for an isolated vertex (`VH[v]`). O(1) from level 2.
+ */
+topomesh_status chf_vertex_half_face(const struct chf_mesh *m, uint32_t v, uint32_t *out);
+
+/**
+ * The topology summary into `*out`. O(T log T) at every level.
+ */
+topomesh_status chf_mesh_summary(const struct chf_mesh *m, struct chf_summary *out);
+
+/**
+ * The build report into `*out`. O(1).
+ */
+topomesh_status chf_mesh_report(const struct chf_mesh *m, struct chf_build_report *out);
+
+/**
+ * The first offending ids of one kind (a `chf_report_kind` value), flattened, into `buf`
+ * (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
+ */
+topomesh_status chf_mesh_report_examples(const struct chf_mesh *m,
+                                         uint32_t kind,
+                                         uint32_t *buf,
+                                         size_t cap,
+                                         size_t *out_len);
+
+/**
+ * Memory per container into `*out`. O(1).
+ */
+topomesh_status chf_mesh_memory(const struct chf_mesh *m, struct chf_memory *out);
+
+/**
+ * VV: the vertices sharing an edge with `v`, each once, in the breadth-first order of its
+ * star (tetrahedra reached across the faces holding `v`; there is no rotation order
+ * around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
+ * each call also computes the missing tables, O(T).
+ */
+topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
+                                    uint32_t v,
+                                    uint32_t *buf,
+                                    size_t cap,
+                                    size_t *out_len);
+
+/**
+ * VE: the edges holding `v`, each once, in the order of its star. O(star) from level 2.
+ */
+topomesh_status chf_vertex_edges(const struct chf_mesh *m,
+                                 uint32_t v,
+                                 uint32_t *buf,
+                                 size_t cap,
+                                 size_t *out_len);
+
+/**
+ * VF: the faces holding `v`, each once, in the order of its star. O(star) from level 2.
+ */
+topomesh_status chf_vertex_faces(const struct chf_mesh *m,
+                                 uint32_t v,
+                                 uint32_t *buf,
+                                 size_t cap,
+                                 size_t *out_len);
+
+/**
+ * VT: the tetrahedra holding `v`, each once, breadth-first from the half-face
+ * `chf_vertex_half_face` gives. O(star) from level 2.
+ */
+topomesh_status chf_vertex_tetrahedra(const struct chf_mesh *m,
+                                      uint32_t v,
+                                      uint32_t *buf,
+                                      size_t cap,
+                                      size_t *out_len);
+
+/**
+ * EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (where its
+ * rotation starts: on a boundary face for a boundary edge). O(1) from level 2.
+ */
+topomesh_status chf_edge_vertices(const struct chf_mesh *m,
+                                  uint32_t e,
+                                  uint32_t *buf,
+                                  size_t cap,
+                                  size_t *out_len);
+
+/**
+ * EE: the edges sharing a face with `e`, each once: for each face of `chf_edge_faces`, in
+ * that order, its two other edges (next, then previous in the face's order). O(k) walks
+ * from level 2 (k: tetrahedra around each edge).
+ */
+topomesh_status chf_edge_edges(const struct chf_mesh *m,
+                               uint32_t e,
+                               uint32_t *buf,
+                               size_t cap,
+                               size_t *out_len);
+
+/**
+ * EF: the faces around edge `e` in rotation order; on a boundary edge from one boundary
+ * face to the other (one more face than tetrahedra). O(k) from level 2.
+ */
+topomesh_status chf_edge_faces(const struct chf_mesh *m,
+                               uint32_t e,
+                               uint32_t *buf,
+                               size_t cap,
+                               size_t *out_len);
+
+/**
+ * ET: the tetrahedra around edge `e` in rotation order, from the boundary on a boundary
+ * edge. O(k) from level 2.
+ */
+topomesh_status chf_edge_tetrahedra(const struct chf_mesh *m,
+                                    uint32_t e,
+                                    uint32_t *buf,
+                                    size_t cap,
+                                    size_t *out_len);
+
+/**
+ * FV: the 3 vertices of face `f` in the order of its canonical half-face (the boundary
+ * one on a boundary face, else the smaller of the two), outward for that half-face's
+ * tetrahedron. O(1) from level 2.
+ */
+topomesh_status chf_face_vertices(const struct chf_mesh *m,
+                                  uint32_t f,
+                                  uint32_t *buf,
+                                  size_t cap,
+                                  size_t *out_len);
+
+/**
+ * FE: the 3 edges of face `f`; edge `j` runs from vertex `j` to vertex `j + 1` of
+ * `chf_face_vertices`. O(k) per edge from level 2.
+ */
+topomesh_status chf_face_edges(const struct chf_mesh *m,
+                               uint32_t f,
+                               uint32_t *buf,
+                               size_t cap,
+                               size_t *out_len);
+
+/**
+ * FF: the faces sharing a tetrahedron with `f` (hence an edge), each once: the other three
+ * faces of the canonical half-face's tetrahedron, then of its twin's (3 on a boundary
+ * face, 6 inside). O(1) from level 2.
+ */
+topomesh_status chf_face_faces(const struct chf_mesh *m,
+                               uint32_t f,
+                               uint32_t *buf,
+                               size_t cap,
+                               size_t *out_len);
+
+/**
+ * FT: the tetrahedra of face `f` (2 entries, 1 on a boundary face), the canonical
+ * half-face's first. O(1) from level 2.
+ */
+topomesh_status chf_face_tetrahedra(const struct chf_mesh *m,
+                                    uint32_t f,
+                                    uint32_t *buf,
+                                    size_t cap,
+                                    size_t *out_len);
+
+/**
+ * TV: the 4 vertices of tetrahedron `t` (`V[4t .. 4t + 4]`, positively oriented when
+ * built with positions and orientable). O(1) at every level.
+ */
+topomesh_status chf_tetrahedron_vertices(const struct chf_mesh *m,
+                                         uint32_t t,
+                                         uint32_t *buf,
+                                         size_t cap,
+                                         size_t *out_len);
+
+/**
+ * TE: the 6 edges of tetrahedron `t`, in local-pair order (0,1) (0,2) (0,3) (1,2) (1,3)
+ * (2,3). O(k) per edge from level 2.
+ */
+topomesh_status chf_tetrahedron_edges(const struct chf_mesh *m,
+                                      uint32_t t,
+                                      uint32_t *buf,
+                                      size_t cap,
+                                      size_t *out_len);
+
+/**
+ * TF: the 4 faces of tetrahedron `t`; face `i` (half-face `4t + i`) is opposite vertex
+ * `i`. O(1) from level 2.
+ */
+topomesh_status chf_tetrahedron_faces(const struct chf_mesh *m,
+                                      uint32_t t,
+                                      uint32_t *buf,
+                                      size_t cap,
+                                      size_t *out_len);
+
+/**
+ * TT: always 4 entries, the tetrahedron across face `i` of `t`, or `TOPOMESH_NONE` on
+ * the boundary (also across the faces of a non-manifold face and orientation seams,
+ * which the structure keeps unpaired). O(1) from level 1.
+ */
+topomesh_status chf_tetrahedron_tetrahedra(const struct chf_mesh *m,
+                                           uint32_t t,
+                                           uint32_t *buf,
+                                           size_t cap,
+                                           size_t *out_len);
+
+/**
+ * The boundary surface as a new CHE at level 3 into `*out`, which the caller frees with
+ * `che_mesh_free` (it does not borrow the volume mesh). A copy of the stored surface at
+ * level 3; built, O(T), below. A closed volume gives a closed surface (no boundary
+ * curves); a mesh without tetrahedra an empty one. `*out` is NULL on failure.
+ */
+topomesh_status chf_mesh_boundary(const struct chf_mesh *m, struct che_mesh **out);
+
+/**
+ * Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface. This counts the
+ * structure (each half-face of a non-manifold face too), unlike `boundary_faces` in
+ * `chf_summary`, which counts input faces with one tetrahedron. O(1) at level 3, O(T)
+ * below; 0 for NULL.
+ */
+size_t chf_mesh_num_boundary_faces(const struct chf_mesh *m);
+
+/**
+ * Boundary components of the structure (after the vertex split): components of the
+ * boundary faces joined through shared vertices. O(1) at level 3, O(T) below; 0 for NULL.
+ */
+size_t chf_mesh_num_boundary_components(const struct chf_mesh *m);
+
+/**
+ * The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is
+ * paired (interior).
+ */
+topomesh_status chf_half_face_boundary_triangle(const struct chf_mesh *m,
+                                                uint32_t hf,
+                                                uint32_t *out);
+
+/**
+ * The half-face of boundary triangle `k` into `*out`; `k` out of range (see
+ * `chf_mesh_num_boundary_faces`) gives OUT_OF_RANGE.
+ */
+topomesh_status chf_boundary_triangle_half_face(const struct chf_mesh *m,
+                                                uint32_t k,
+                                                uint32_t *out);
+
+/**
+ * The boundary triangle of face `f` into `*out`, `TOPOMESH_NONE` for an interior face.
+ */
+topomesh_status chf_face_boundary_triangle(const struct chf_mesh *m, uint32_t f, uint32_t *out);
+
+/**
+ * The face of boundary triangle `k` into `*out`; `k` out of range gives OUT_OF_RANGE.
+ */
+topomesh_status chf_boundary_triangle_face(const struct chf_mesh *m, uint32_t k, uint32_t *out);
+
+/**
+ * The boundary component of vertex `v` into `*out` (`TOPOMESH_NONE` off the boundary;
+ * see `chf_mesh_vertex_boundary_components`).
+ */
+topomesh_status chf_vertex_boundary_component(const struct chf_mesh *m, uint32_t v, uint32_t *out);
+
+/**
+ * `V`: vertex `i` of tetrahedron `t` at `V[4t + i]` (`4 * num_tetrahedra` entries); also
+ * the vertex each half-face `4t + i` is opposite. The vertices of half-face `hf` in its
+ * outward order are `V[chf_face_corner(hf, j)]`, j = 0, 1, 2. All levels.
+ */
+const uint32_t *chf_mesh_half_face_vertices(const struct chf_mesh *m, size_t *len);
+
+/**
+ * `O`: the twin of every half-face (`TOPOMESH_NONE` on the boundary). NULL below level 1.
+ */
+const uint32_t *chf_mesh_opposites(const struct chf_mesh *m, size_t *len);
+
+/**
+ * `VH`: one half-face holding each vertex, a boundary one on a boundary vertex,
+ * `TOPOMESH_NONE` for an isolated vertex (`num_vertices` entries). NULL below level 2.
+ */
+const uint32_t *chf_mesh_vertex_half_faces(const struct chf_mesh *m, size_t *len);
+
+/**
+ * `FH`: the canonical half-face of every face (`num_faces` entries, increasing; the
+ * boundary one on a boundary face). NULL below level 2.
+ */
+const uint32_t *chf_mesh_face_half_faces(const struct chf_mesh *m, size_t *len);
+
+/**
+ * The boundary half-faces in increasing order: triangle `k` of `chf_mesh_boundary`'s
+ * surface is the `k`-th. NULL below level 3 (then use `chf_boundary_triangle_half_face`).
+ */
+const uint32_t *chf_mesh_boundary_half_faces(const struct chf_mesh *m, size_t *len);
+
+/**
+ * The boundary component of every vertex (`num_vertices` entries; `TOPOMESH_NONE` off
+ * the boundary): components of the boundary faces joined through shared vertices,
+ * numbered in order of their first boundary half-face. NULL below level 3.
+ */
+const uint32_t *chf_mesh_vertex_boundary_components(const struct chf_mesh *m, size_t *len);
+
+/**
+ * Positions: x, y, z per structure vertex (copies repeat their origin's position);
+ * `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
+ */
+const double *chf_mesh_positions(const struct chf_mesh *m, size_t *len);
+
+/**
+ * Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
+ * vertices, then the origin of each split copy). Materialised on first use when it is the
+ * identity; then kept with the mesh.
+ */
+const uint32_t *chf_mesh_vertex_origins(const struct chf_mesh *m, size_t *len);
+
+/**
+ * Structure tetrahedron -> input tetrahedron (`num_tetrahedra` entries; increasing, with
+ * gaps where degenerate tetrahedra were dropped). Materialised on first use when it is
+ * the identity.
+ */
+const uint32_t *chf_mesh_tetrahedron_origins(const struct chf_mesh *m, size_t *len);
 
 #ifdef __cplusplus
 }  // extern "C"

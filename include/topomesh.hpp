@@ -3,12 +3,19 @@
 //   topomesh::Surface s = topomesh::Surface::load("bunny.off");
 //   for (topomesh::VertexId w : s.vertices_around(topomesh::VertexId{0})) { ... }
 //
-// - topomesh::Surface owns a che_mesh (move-only RAII); every failing call throws
-//   topomesh::Error (a std::runtime_error carrying the status and the detail).
-// - Ids are strong types (VertexId, EdgeId, TriangleId, HalfEdgeId); an invalid id
-//   (TOPOMESH_NONE) has valid() == false.
-// - Stars are ranges over the C stack iterator: no allocation.
-// - Views are Span<T> (pointer + size) into the structure, valid until the surface is
+//   topomesh::Volume vol = topomesh::Volume::load("box.mesh");
+//   for (topomesh::TetrahedronId t : vol.vertex_tetrahedra(topomesh::VertexId{0})) { ... }
+//   topomesh::Surface skin = vol.boundary();
+//
+// - topomesh::Surface owns a che_mesh, topomesh::Volume a chf_mesh (move-only RAII); every
+//   failing call throws topomesh::Error (a std::runtime_error carrying the status and the
+//   detail).
+// - Ids are strong types (VertexId, EdgeId, TriangleId, HalfEdgeId; FaceId, TetrahedronId,
+//   HalfFaceId for volumes); an invalid id (TOPOMESH_NONE) has valid() == false.
+// - Surface stars are ranges over the C stack iterator: no allocation. Volume relations
+//   around a vertex or an edge return an IdList (a std::vector of ids); the bounded ones
+//   a std::array or a SmallIds.
+// - Views are Span<T> (pointer + size) into the structure, valid until the mesh is
 //   destroyed or its level changes.
 // - Thread safety is the C API's: const member functions may run concurrently;
 //   build_level() and destruction need exclusive access.
@@ -94,6 +101,28 @@ constexpr HalfEdgeId prev(HalfEdgeId h) noexcept {
 }
 constexpr HalfEdgeId first_half_edge(TriangleId t) noexcept { return HalfEdgeId{3u * t.value()}; }
 
+using FaceId = Id<struct FaceTag>;
+using TetrahedronId = Id<struct TetrahedronTag>;
+using HalfFaceId = Id<struct HalfFaceTag>;
+
+/// Half-face arithmetic (all levels): tetrahedron t owns half-faces 4t .. 4t+3; half-face
+/// 4t + i is the face opposite local vertex i.
+constexpr TetrahedronId tetrahedron_of(HalfFaceId hf) noexcept {
+    return TetrahedronId{hf.value() >> 2};
+}
+constexpr std::uint32_t local_index(HalfFaceId hf) noexcept { return hf.value() & 3u; }
+constexpr HalfFaceId next(HalfFaceId hf) noexcept {
+    return HalfFaceId{(hf.value() & ~3u) | ((hf.value() + 1u) & 3u)};
+}
+constexpr HalfFaceId first_half_face(TetrahedronId t) noexcept {
+    return HalfFaceId{4u * t.value()};
+}
+/// The half-face whose V entry is corner j (0..2) of `hf` in its outward order.
+constexpr HalfFaceId face_corner(HalfFaceId hf, std::uint32_t j) noexcept {
+    return HalfFaceId{(hf.value() & ~3u) |
+                      ((0x634B39u >> (2u * (3u * (hf.value() & 3u) + j))) & 3u)};
+}
+
 /// A read-only view: pointer + size (C++17 has no std::span).
 template <class T> class Span {
 public:
@@ -176,9 +205,21 @@ public:
         friend class StarRange;
         Iterator(const che_mesh *m, VertexId v) {
             detail::check(che_star_begin(m, v.value(), &it_));
+            // From level 2, steps that need no edge id walk V, O and VH inline instead
+            // of calling into the library once per step.
+            const std::uint32_t *vh = Proj::needs_edge ? nullptr : che_mesh_vertex_half_edges(m, nullptr);
+            if (vh != nullptr) {
+                V_ = che_mesh_half_edge_vertices(m, nullptr);
+                O_ = che_mesh_opposites(m, nullptr);
+                start_ = cur_ = vh[v.value()];
+            }
             advance();
         }
         void advance() {
+            if (V_ != nullptr) {
+                advance_inline();
+                return;
+            }
             che_star_step s;
             do {
                 if (!che_star_next(&it_, &s)) {
@@ -189,9 +230,30 @@ public:
             current_ = StarStep{HalfEdgeId{s.half_edge}, VertexId{s.vertex}, EdgeId{s.edge},
                                 TriangleId{s.triangle}};
         }
+        // The same rotation as the library's (counter-clockwise, from the boundary).
+        void advance_inline() {
+            if (cur_ != none) {
+                const std::uint32_t h = cur_, p = che_prev(h), g = O_[p];
+                cur_ = (g == none || g == start_) ? none : g;
+                if (g == none) tail_ = p;
+                current_ = StarStep{HalfEdgeId{h}, VertexId{V_[che_next(h)]}, EdgeId{none},
+                                    TriangleId{che_tri(h)}};
+                return;
+            }
+            if (!SkipClosing && tail_ != none) {
+                current_ = StarStep{HalfEdgeId{tail_}, VertexId{V_[tail_]}, EdgeId{none},
+                                    TriangleId{none}};
+                tail_ = none;
+                return;
+            }
+            done_ = true;
+        }
         che_star_iter it_{};
         StarStep current_{};
         bool done_ = false;
+        const std::uint32_t *V_ = nullptr;
+        const std::uint32_t *O_ = nullptr;
+        std::uint32_t start_ = none, cur_ = none, tail_ = none;
     };
 
     StarRange(const che_mesh *m, VertexId v) noexcept : m_(m), v_(v) {}
@@ -213,15 +275,19 @@ private:
 
 namespace detail {
 struct StepOf {
+    static constexpr bool needs_edge = true;
     StarStep operator()(const StarStep &s) const noexcept { return s; }
 };
 struct VertexOf {
+    static constexpr bool needs_edge = false;
     VertexId operator()(const StarStep &s) const noexcept { return s.vertex; }
 };
 struct EdgeOf {
+    static constexpr bool needs_edge = true;
     EdgeId operator()(const StarStep &s) const noexcept { return s.edge; }
 };
 struct TriangleOf {
+    static constexpr bool needs_edge = false;
     TriangleId operator()(const StarStep &s) const noexcept { return s.triangle; }
 };
 } // namespace detail
@@ -489,6 +555,308 @@ private:
 
 /// The structure's name in the papers.
 using Che = Surface;
+
+/// A variable-size answer (around a vertex or an edge): the ids, in the C API's order.
+template <class T> using IdList = std::vector<T>;
+
+/// A tetrahedral mesh in the Compact Half-Face structure (owns a chf_mesh).
+class Volume {
+public:
+    using Options = topomesh::Options;
+
+    /// From a flat tetrahedron array (4 ids per tetrahedron) over `n_vertices` vertices;
+    /// `positions` is NULL or 3 doubles per vertex.
+    static Volume from_tetrahedra(const std::uint32_t *tetrahedra, std::size_t n_tets,
+                                  std::size_t n_vertices, const double *positions = nullptr,
+                                  Options options = {}) {
+        chf_build_options o{options.level, options.strict};
+        chf_mesh *m = nullptr;
+        detail::check(chf_mesh_from_tetrahedra_ex(tetrahedra, n_tets, n_vertices, positions,
+                                                  &o, &m));
+        return Volume(m);
+    }
+
+    /// From vectors: `tetrahedra.size()` a multiple of 4; `positions` empty or 3 per vertex.
+    static Volume from_tetrahedra(const std::vector<std::uint32_t> &tetrahedra,
+                                  std::size_t n_vertices,
+                                  const std::vector<double> &positions = {},
+                                  Options options = {}) {
+        if (tetrahedra.size() % 4 != 0)
+            throw Error(TOPOMESH_STATUS_INVALID_INPUT,
+                        "tetrahedron array has " + std::to_string(tetrahedra.size()) +
+                            " ids, not a multiple of 4");
+        if (!positions.empty() && positions.size() != 3 * n_vertices)
+            throw Error(TOPOMESH_STATUS_INVALID_INPUT,
+                        std::to_string(positions.size()) + " coordinates given for " +
+                            std::to_string(n_vertices) + " vertices");
+        return from_tetrahedra(tetrahedra.data(), tetrahedra.size() / 4, n_vertices,
+                               positions.empty() ? nullptr : positions.data(), options);
+    }
+
+    /// Reads a volume file (.mesh .msh .vtk .node/.ele).
+    static Volume load(const std::string &path, Options options = {}) {
+        chf_build_options o{options.level, options.strict};
+        chf_mesh *m = nullptr;
+        detail::check(chf_mesh_load_ex(path.c_str(), &o, &m));
+        return Volume(m);
+    }
+
+    /// Takes ownership of a handle from the C API.
+    explicit Volume(chf_mesh *adopt) noexcept : m_(adopt) {}
+    Volume(const Volume &) = delete;
+    Volume &operator=(const Volume &) = delete;
+    Volume(Volume &&other) noexcept : m_(std::exchange(other.m_, nullptr)) {}
+    Volume &operator=(Volume &&other) noexcept {
+        if (this != &other) {
+            chf_mesh_free(m_);
+            m_ = std::exchange(other.m_, nullptr);
+        }
+        return *this;
+    }
+    ~Volume() { chf_mesh_free(m_); }
+
+    const chf_mesh *handle() const noexcept { return m_; }
+    chf_mesh *handle() noexcept { return m_; }
+    /// Gives up ownership; the caller frees with chf_mesh_free.
+    chf_mesh *release() noexcept { return std::exchange(m_, nullptr); }
+
+    // Level and counts.
+    std::uint32_t level() const noexcept { return chf_mesh_level(m_); }
+    /// Raises or lowers the level; invalidates views.
+    void build_level(std::uint32_t level) { detail::check(chf_mesh_build_level(m_, level)); }
+    std::size_t num_vertices() const noexcept { return chf_mesh_num_vertices(m_); }
+    std::size_t num_input_vertices() const noexcept { return chf_mesh_num_input_vertices(m_); }
+    std::size_t num_tetrahedra() const noexcept { return chf_mesh_num_tetrahedra(m_); }
+    std::size_t num_faces() const noexcept { return chf_mesh_num_faces(m_); }
+    std::size_t num_edges() const noexcept { return chf_mesh_num_edges(m_); }
+    std::size_t num_half_faces() const noexcept { return chf_mesh_num_half_faces(m_); }
+    std::size_t num_boundary_faces() const noexcept { return chf_mesh_num_boundary_faces(m_); }
+    std::size_t num_boundary_components() const noexcept {
+        return chf_mesh_num_boundary_components(m_);
+    }
+
+    // Around a vertex (each once, in the breadth-first order of its star) and around an
+    // edge (rotation order, from the boundary on a boundary edge).
+    IdList<VertexId> vertex_vertices(VertexId v) const {
+        return list<VertexId>(chf_vertex_vertices, v.value());
+    }
+    IdList<EdgeId> vertex_edges(VertexId v) const {
+        return list<EdgeId>(chf_vertex_edges, v.value());
+    }
+    IdList<FaceId> vertex_faces(VertexId v) const {
+        return list<FaceId>(chf_vertex_faces, v.value());
+    }
+    IdList<TetrahedronId> vertex_tetrahedra(VertexId v) const {
+        return list<TetrahedronId>(chf_vertex_tetrahedra, v.value());
+    }
+    IdList<EdgeId> edge_edges(EdgeId e) const { return list<EdgeId>(chf_edge_edges, e.value()); }
+    IdList<FaceId> edge_faces(EdgeId e) const { return list<FaceId>(chf_edge_faces, e.value()); }
+    IdList<TetrahedronId> edge_tetrahedra(EdgeId e) const {
+        return list<TetrahedronId>(chf_edge_tetrahedra, e.value());
+    }
+
+    // Bounded relations.
+    std::array<VertexId, 2> edge_vertices(EdgeId e) const {
+        return fixed<VertexId, 2>(chf_edge_vertices, e.value());
+    }
+    std::array<VertexId, 3> face_vertices(FaceId f) const {
+        return fixed<VertexId, 3>(chf_face_vertices, f.value());
+    }
+    std::array<EdgeId, 3> face_edges(FaceId f) const {
+        return fixed<EdgeId, 3>(chf_face_edges, f.value());
+    }
+    SmallIds<FaceId, 6> face_faces(FaceId f) const {
+        return small<FaceId, 6>(chf_face_faces, f.value());
+    }
+    SmallIds<TetrahedronId, 2> face_tetrahedra(FaceId f) const {
+        return small<TetrahedronId, 2>(chf_face_tetrahedra, f.value());
+    }
+    std::array<VertexId, 4> tetrahedron_vertices(TetrahedronId t) const {
+        return fixed<VertexId, 4>(chf_tetrahedron_vertices, t.value());
+    }
+    std::array<EdgeId, 6> tetrahedron_edges(TetrahedronId t) const {
+        return fixed<EdgeId, 6>(chf_tetrahedron_edges, t.value());
+    }
+    std::array<FaceId, 4> tetrahedron_faces(TetrahedronId t) const {
+        return fixed<FaceId, 4>(chf_tetrahedron_faces, t.value());
+    }
+    /// The tetrahedron across each face; invalid on the boundary.
+    std::array<TetrahedronId, 4> tetrahedron_tetrahedra(TetrahedronId t) const {
+        return fixed<TetrahedronId, 4>(chf_tetrahedron_tetrahedra, t.value());
+    }
+
+    // Half-face helpers and boundary tests.
+    HalfFaceId opposite(HalfFaceId hf) const {
+        return HalfFaceId{value(chf_half_face_opposite, hf.value())};
+    }
+    FaceId face(HalfFaceId hf) const { return FaceId{value(chf_half_face_face, hf.value())}; }
+    HalfFaceId half_face(FaceId f) const {
+        return HalfFaceId{value(chf_face_half_face, f.value())};
+    }
+    HalfFaceId half_face(VertexId v) const {
+        return HalfFaceId{value(chf_vertex_half_face, v.value())};
+    }
+    bool is_boundary(VertexId v) const { return flag(chf_vertex_is_boundary, v.value()); }
+    bool is_boundary(EdgeId e) const { return flag(chf_edge_is_boundary, e.value()); }
+    bool is_boundary(FaceId f) const { return flag(chf_face_is_boundary, f.value()); }
+
+    // The boundary surface and its maps.
+    /// The boundary as a new Surface (level 3; interior vertices are isolated vertices).
+    Surface boundary() const {
+        che_mesh *s = nullptr;
+        detail::check(chf_mesh_boundary(m_, &s));
+        return Surface(s);
+    }
+    /// The boundary triangle of a half-face or face; invalid when interior.
+    TriangleId boundary_triangle(HalfFaceId hf) const {
+        return TriangleId{value(chf_half_face_boundary_triangle, hf.value())};
+    }
+    TriangleId boundary_triangle(FaceId f) const {
+        return TriangleId{value(chf_face_boundary_triangle, f.value())};
+    }
+    HalfFaceId boundary_half_face(TriangleId k) const {
+        return HalfFaceId{value(chf_boundary_triangle_half_face, k.value())};
+    }
+    FaceId boundary_face(TriangleId k) const {
+        return FaceId{value(chf_boundary_triangle_face, k.value())};
+    }
+    /// The boundary component of v, or `none` off the boundary.
+    std::uint32_t boundary_component(VertexId v) const {
+        return value(chf_vertex_boundary_component, v.value());
+    }
+
+    // Zero-copy views (empty below the level that stores them).
+    Span<std::uint32_t> half_face_vertices() const { return view(chf_mesh_half_face_vertices); }
+    Span<std::uint32_t> opposites() const { return view(chf_mesh_opposites); }
+    Span<std::uint32_t> vertex_half_faces() const { return view(chf_mesh_vertex_half_faces); }
+    Span<std::uint32_t> face_half_faces() const { return view(chf_mesh_face_half_faces); }
+    Span<std::uint32_t> boundary_half_faces() const {
+        return view(chf_mesh_boundary_half_faces);
+    }
+    Span<std::uint32_t> vertex_boundary_components() const {
+        return view(chf_mesh_vertex_boundary_components);
+    }
+    Span<std::uint32_t> vertex_origins() const { return view(chf_mesh_vertex_origins); }
+    Span<std::uint32_t> tetrahedron_origins() const {
+        return view(chf_mesh_tetrahedron_origins);
+    }
+    /// x, y, z per vertex; empty without positions.
+    Span<double> positions() const {
+        std::size_t len = 0;
+        const double *p = chf_mesh_positions(m_, &len);
+        return Span<double>(p, p ? len : 0);
+    }
+
+    // Bulk relations.
+    Csr vertex_vertices_csr() const { return csr(chf_mesh_vertex_vertices_csr); }
+    Csr vertex_edges_csr() const { return csr(chf_mesh_vertex_edges_csr); }
+    Csr vertex_faces_csr() const { return csr(chf_mesh_vertex_faces_csr); }
+    Csr vertex_tetrahedra_csr() const { return csr(chf_mesh_vertex_tetrahedra_csr); }
+    Csr edge_faces_csr() const { return csr(chf_mesh_edge_faces_csr); }
+    Csr edge_tetrahedra_csr() const { return csr(chf_mesh_edge_tetrahedra_csr); }
+    Csr tetrahedron_tetrahedra_csr() const { return csr(chf_mesh_tetrahedron_tetrahedra_csr); }
+
+    // Summary, build report, memory.
+    chf_summary summary() const {
+        chf_summary s{};
+        detail::check(chf_mesh_summary(m_, &s));
+        return s;
+    }
+    chf_build_report report() const {
+        chf_build_report r{};
+        detail::check(chf_mesh_report(m_, &r));
+        return r;
+    }
+    std::vector<std::uint32_t> report_examples(chf_report_kind kind) const {
+        std::size_t len = 0;
+        detail::check(chf_mesh_report_examples(m_, kind, nullptr, 0, &len));
+        std::vector<std::uint32_t> out(len);
+        detail::check(chf_mesh_report_examples(m_, kind, out.data(), out.size(), &len));
+        return out;
+    }
+    chf_memory memory() const {
+        chf_memory mem{};
+        detail::check(chf_mesh_memory(m_, &mem));
+        return mem;
+    }
+
+private:
+    using RelationFn = topomesh_status (*)(const chf_mesh *, std::uint32_t, std::uint32_t *,
+                                           std::size_t, std::size_t *);
+    using ValueFn = topomesh_status (*)(const chf_mesh *, std::uint32_t, std::uint32_t *);
+    using FlagFn = topomesh_status (*)(const chf_mesh *, std::uint32_t, bool *);
+    using ViewFn = const std::uint32_t *(*)(const chf_mesh *, std::size_t *);
+    using CsrFn = topomesh_status (*)(const chf_mesh *, std::uint32_t *, std::size_t,
+                                      std::uint32_t *, std::size_t, std::size_t *,
+                                      std::size_t *);
+
+    /// One call into a stack buffer; a second into a vector of the needed size when longer.
+    template <class T> IdList<T> list(RelationFn f, std::uint32_t id) const {
+        std::array<std::uint32_t, 64> buf{};
+        std::size_t len = 0;
+        topomesh_status s = f(m_, id, buf.data(), buf.size(), &len);
+        IdList<T> out;
+        if (s == TOPOMESH_STATUS_BUFFER_TOO_SMALL) {
+            std::vector<std::uint32_t> big(len);
+            detail::check(f(m_, id, big.data(), big.size(), &len));
+            out.reserve(len);
+            for (std::size_t i = 0; i < len; i++) out.push_back(T{big[i]});
+            return out;
+        }
+        detail::check(s);
+        out.reserve(len);
+        for (std::size_t i = 0; i < len; i++) out.push_back(T{buf[i]});
+        return out;
+    }
+    template <class T, std::size_t N> std::array<T, N> fixed(RelationFn f, std::uint32_t id) const {
+        std::array<std::uint32_t, N> ids{};
+        std::size_t len = 0;
+        detail::check(f(m_, id, ids.data(), N, &len));
+        std::array<T, N> out{};
+        for (std::size_t i = 0; i < N; i++) out[i] = T{ids[i]};
+        return out;
+    }
+    template <class T, std::size_t N> SmallIds<T, N> small(RelationFn f, std::uint32_t id) const {
+        std::array<std::uint32_t, N> ids{};
+        std::size_t len = 0;
+        detail::check(f(m_, id, ids.data(), N, &len));
+        SmallIds<T, N> out;
+        for (std::size_t i = 0; i < len; i++) out.push_back(T{ids[i]});
+        return out;
+    }
+    std::uint32_t value(ValueFn f, std::uint32_t id) const {
+        std::uint32_t out = none;
+        detail::check(f(m_, id, &out));
+        return out;
+    }
+    bool flag(FlagFn f, std::uint32_t id) const {
+        bool out = false;
+        detail::check(f(m_, id, &out));
+        return out;
+    }
+    Span<std::uint32_t> view(ViewFn f) const {
+        std::size_t len = 0;
+        const std::uint32_t *p = f(m_, &len);
+        return Span<std::uint32_t>(p, p ? len : 0);
+    }
+    Csr csr(CsrFn f) const {
+        std::size_t n_offsets = 0, n_indices = 0;
+        detail::check(f(m_, nullptr, 0, nullptr, 0, &n_offsets, &n_indices));
+        Csr out;
+        out.offsets.resize(n_offsets);
+        out.indices.resize(n_indices);
+        std::uint32_t dummy = 0;
+        detail::check(f(m_, out.offsets.empty() ? &dummy : out.offsets.data(), n_offsets,
+                        out.indices.empty() ? &dummy : out.indices.data(), n_indices,
+                        &n_offsets, &n_indices));
+        return out;
+    }
+
+    chf_mesh *m_ = nullptr;
+};
+
+/// The structure's name in the papers.
+using Chf = Volume;
 
 /// The library version ("0.1.0").
 inline std::string version() { return topomesh_version(); }

@@ -19,14 +19,11 @@ cargo clippy --all-targets --locked -- -D warnings
 step "cargo test"
 cargo test --locked
 
-if [ -f scripts/fetch-meshes.sh ]; then
-  step "real meshes"
-  bash scripts/fetch-meshes.sh
-fi
+step "real meshes (libcgal-demo) and tetrahedral meshes (tetgen)"
+bash scripts/fetch-meshes.sh
+bash scripts/fetch-tets.sh --no-large
 
-if [ -f scripts/c-tests.sh ]; then
-  step "C and C++ tests (install, find_package, ctest, valgrind)"
-  bash scripts/c-tests.sh
-fi
+step "C and C++ tests (install, find_package, ctest, differential, valgrind)"
+bash scripts/c-tests.sh
 
 step "all tests passed"

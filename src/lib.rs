@@ -5,6 +5,7 @@
 
 pub mod che;
 pub mod chf;
+mod dsu;
 pub mod error;
 pub mod ffi;
 pub mod generate;
@@ -29,3 +30,8 @@ pub(crate) fn push_example<T>(list: &mut Vec<T>, item: T) {
         list.push(item);
     }
 }
+
+/// The README's Rust example, compiled and run as a doctest.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;

@@ -178,7 +178,7 @@ pub(crate) fn build(
         )));
     }
 
-    let split = split::split(&mut v, &o, n_vertices, &seams);
+    let mut split = split::split(&mut v, &o, n_vertices, &seams);
     report.split_vertices = split.split_vertices;
     report.split_vertex_examples = split.split_examples;
     report.seam_split_vertices = split.seam_split_vertices;
@@ -234,7 +234,8 @@ pub(crate) fn build(
         che.level = 0;
     }
     if options.level >= 2 {
-        level2::build(&mut che);
+        che.vh = std::mem::take(&mut split.vh);
+        level2::build_edges(&mut che);
         che.level = 2;
     }
     if options.level >= 3 {

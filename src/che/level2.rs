@@ -15,6 +15,13 @@ pub(crate) fn build(che: &mut Che) {
             *slot = h as u32;
         }
     }
+    che.vh = vh;
+    build_edges(che);
+}
+
+/// Edge ids, with `VH` already in place (the build finds it while splitting vertices).
+pub(crate) fn build_edges(che: &mut Che) {
+    let (v, o) = (&che.v, &che.o);
     let edge_bits = RankBits::from_fn(v.len(), |h| {
         let g = o[h];
         g == NONE || (h as u32) < g
@@ -22,7 +29,6 @@ pub(crate) fn build(che: &mut Che) {
     let mut eh = Vec::with_capacity(edge_bits.ones());
     eh.extend((0..v.len() as u32).filter(|&h| edge_bits.get(h as usize)));
     debug_assert_eq!(eh.len(), che.num_edges);
-    che.vh = vh;
     che.edge_bits = edge_bits;
     che.eh = eh;
 }

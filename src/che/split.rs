@@ -5,6 +5,7 @@
 use super::ids::{next, prev};
 use super::report::push_example;
 use crate::NONE;
+use crate::dsu::Dsu;
 
 pub(crate) struct Split {
     /// Origins of the appended copies (input ids), in order of creation.
@@ -14,13 +15,16 @@ pub(crate) struct Split {
     pub split_examples: Vec<u32>,
     /// Input vertices split only because a non-orientable seam crosses them.
     pub seam_split_vertices: usize,
+    /// `VH` as level 2 wants it, found on the way: per vertex (copies included) its
+    /// outgoing boundary half-edge, or any outgoing half-edge of a closed fan.
+    pub vh: Vec<u32>,
 }
 
 /// Rewrites `v` so that every vertex id names one fan. `seams` (sorted, pairs running the
 /// same way) tell which extra fans are only cut by a seam, not non-manifold in the input.
 pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) -> Split {
     let mut visited = vec![0u64; v.len().div_ceil(64)];
-    let mut has_fan = vec![0u64; n_vertices.div_ceil(64)];
+    let mut vh = vec![NONE; n_vertices];
     let mut copies: Vec<u32> = Vec::new();
     let test = |bits: &[u64], i: usize| (bits[i >> 6] >> (i & 63)) & 1 == 1;
     fn set(bits: &mut [u64], i: usize) {
@@ -31,11 +35,11 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
             continue;
         }
         let vertex = v[h as usize];
-        let id = if test(&has_fan, vertex as usize) {
+        let id = if vh[vertex as usize] != NONE {
             copies.push(vertex);
+            vh.push(NONE);
             (n_vertices + copies.len() - 1) as u32
         } else {
-            set(&mut has_fan, vertex as usize);
             vertex
         };
         // Counter-clockwise from `h` until back at `h` (a closed fan, the common case) or
@@ -55,20 +59,21 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
             }
             g = around;
         };
+        let mut start = h;
         if !closed {
-            let mut g = h;
             loop {
-                let back = o[g as usize];
+                let back = o[start as usize];
                 if back == NONE {
                     break;
                 }
-                g = next(back);
-                set(&mut visited, g as usize);
+                start = next(back);
+                set(&mut visited, start as usize);
                 if id != vertex {
-                    v[g as usize] = id;
+                    v[start as usize] = id;
                 }
             }
         }
+        vh[id as usize] = start;
     }
 
     let mut split_origins: Vec<u32> = copies.clone();
@@ -93,6 +98,7 @@ pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) 
         seam_split_vertices: split_origins.len() - split_vertices,
         split_examples,
         copies,
+        vh,
     }
 }
 
@@ -106,20 +112,7 @@ fn still_split(
     seams: &[u32],
 ) -> Vec<bool> {
     let n = n_vertices + copies.len();
-    let mut parent: Vec<u32> = (0..n as u32).collect();
-    fn find(parent: &mut [u32], mut x: u32) -> u32 {
-        while parent[x as usize] != x {
-            parent[x as usize] = parent[parent[x as usize] as usize];
-            x = parent[x as usize];
-        }
-        x
-    }
-    let mut union = |a: u32, b: u32| {
-        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-        if ra != rb {
-            parent[ra.max(rb) as usize] = ra.min(rb);
-        }
-    };
+    let mut dsu = Dsu::new(n);
     // Seams come in pairs (h, g) of half-edges on one vertex pair running the same way.
     let mut by_pair: Vec<(u32, u32, u32)> = Vec::with_capacity(seams.len());
     let origin = |x: u32| {
@@ -135,8 +128,8 @@ fn still_split(
     by_pair.sort_unstable();
     for pair in by_pair.chunks(2) {
         if let [(_, _, h), (_, _, g)] = *pair {
-            union(v[h as usize], v[g as usize]);
-            union(v[next(h) as usize], v[next(g) as usize]);
+            dsu.union(v[h as usize], v[g as usize]);
+            dsu.union(v[next(h) as usize], v[next(g) as usize]);
         }
     }
     let mut root_of_origin = vec![NONE; split_origins.len()];
@@ -148,7 +141,7 @@ fn still_split(
     {
         let o = origin(x);
         let k = split_origins.binary_search(&o).expect("split vertex");
-        let r = find(&mut parent, x);
+        let r = dsu.find(x);
         if root_of_origin[k] == NONE {
             root_of_origin[k] = r;
         } else if root_of_origin[k] != r {

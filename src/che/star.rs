@@ -20,6 +20,8 @@ pub enum StarStep {
 #[derive(Clone, Debug)]
 pub struct Rotation<'a> {
     che: &'a Che,
+    /// `O` from level 1 (read directly in the loop); empty at level 0, which scans.
+    o: &'a [u32],
     start: u32,
     cur: u32,
     tail: u32,
@@ -29,6 +31,7 @@ impl<'a> Rotation<'a> {
     pub(crate) fn new(che: &'a Che, start: u32) -> Self {
         Rotation {
             che,
+            o: che.opposites().unwrap_or(&[]),
             start,
             cur: start,
             tail: NONE,
@@ -44,7 +47,10 @@ impl Iterator for Rotation<'_> {
         if self.cur != NONE {
             let h = self.cur;
             let p = prev(h);
-            let around = self.che.opposite(p);
+            let around = match self.o.get(p as usize) {
+                Some(&g) => g,
+                None => self.che.opposite(p),
+            };
             if around == NONE {
                 self.cur = NONE;
                 self.tail = p;

@@ -4,6 +4,7 @@
 use super::Che;
 use super::ids::next;
 use crate::NONE;
+use crate::dsu::Dsu;
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -31,38 +32,13 @@ pub struct Summary {
     pub non_orientable_components: u64,
 }
 
-/// Union-find over input vertex ids.
-struct Dsu(Vec<u32>);
-
-impl Dsu {
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.0[x as usize] != x {
-            let up = self.0[self.0[x as usize] as usize];
-            self.0[x as usize] = up;
-            x = up;
-        }
-        x
-    }
-    fn union(&mut self, a: u32, b: u32) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra != rb {
-            self.0[ra.max(rb) as usize] = ra.min(rb);
-        }
-    }
-    fn roots_among(&mut self, used: &[bool]) -> u64 {
-        (0..used.len() as u32)
-            .filter(|&x| used[x as usize] && self.find(x) == x)
-            .count() as u64
-    }
-}
-
 impl Che {
     /// The summary; O(T) at every level.
     pub fn summary(&self) -> Summary {
         let r = &self.report;
         let n = self.n_input_vertices;
         let mut used = vec![false; n];
-        let mut dsu = Dsu((0..n as u32).collect());
+        let mut dsu = Dsu::new(n);
         for t in self.v.chunks_exact(3) {
             let [a, b, c] = [t[0], t[1], t[2]].map(|x| self.vertex_origin(x));
             used[a as usize] = true;
@@ -77,7 +53,7 @@ impl Che {
         // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
         let o = self.opposites_or_computed();
         let mut on_boundary = vec![false; n];
-        let mut dsu = Dsu((0..n as u32).collect());
+        let mut dsu = Dsu::new(n);
         for h in 0..self.v.len() as u32 {
             if o[h as usize] != NONE
                 || self.non_manifold.binary_search(&h).is_ok()

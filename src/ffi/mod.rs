@@ -10,13 +10,18 @@
 //!   level, counts), `che_relations` (one element at a time), `che_star` (stack
 //!   iterator), `che_csr` (bulk), `che_views` (zero-copy), `che_info` (summary, report,
 //!   memory).
+//! - `chf`: the `chf_mesh` handle and build options, the same shape: `chf_build`,
+//!   `chf_relations` (the 16 relations), `chf_half_faces` (boundary tests, half-face
+//!   helpers), `chf_csr`, `chf_views`, `chf_info`, `chf_surface` (the boundary surface as
+//!   a new `che_mesh`, and the maps to it).
 //!
 //! Safety contract of every export (written once here and in the header): each pointer
 //! argument is NULL or valid for the access its documentation states (a handle from this
 //! library that is not freed; a buffer of at least `cap` elements; a NUL-terminated path);
-//! a `const che_mesh*` may be shared between threads, a `che_mesh*` passed to
-//! `che_mesh_build_level` or `che_mesh_free` may not. NULL where a value is required gives
-//! `TOPOMESH_STATUS_NULL_ARGUMENT`; nothing panics or unwinds across the boundary.
+//! a `const che_mesh*` (`const chf_mesh*`) may be shared between threads, a `che_mesh*`
+//! passed to `che_mesh_build_level` or `che_mesh_free` (and likewise for CHF) may not.
+//! NULL where a value is required gives `TOPOMESH_STATUS_NULL_ARGUMENT`; nothing panics
+//! or unwinds across the boundary.
 #![allow(
     clippy::missing_safety_doc,
     reason = "every export has the same safety contract, documented once in the module docs and the header preamble"
@@ -33,12 +38,24 @@ pub mod che_info;
 pub mod che_relations;
 pub mod che_star;
 pub mod che_views;
+pub mod chf;
+pub mod chf_build;
+pub mod chf_csr;
+pub mod chf_half_faces;
+pub mod chf_info;
+pub mod chf_relations;
+pub mod chf_surface;
+#[cfg(test)]
+mod chf_tests;
+pub mod chf_views;
 #[cfg(test)]
 mod tests;
 
 pub use che::{CheBuildOptions, CheMesh};
 pub use che_info::{CheBuildReport, CheMemory, CheReportKind, CheSummary};
 pub use che_star::{CheStarIter, CheStarStep};
+pub use chf::{ChfBuildOptions, ChfMesh};
+pub use chf_info::{ChfBuildReport, ChfMemory, ChfReportKind, ChfSummary};
 pub use status::Status;
 
 /// `TOPOMESH_NONE` in C: no element (boundary, none, invalid).

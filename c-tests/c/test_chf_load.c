@@ -1,0 +1,147 @@
+/* chf_mesh_load and chf_mesh_load_ex.
+   `test_chf_load args`: argument errors, independent of the file readers.
+   `test_chf_load readers`: needs the Medit, TetGen and OFF readers (src/io). */
+#include "chf_fixtures.h"
+
+static void write_file(const char *path, const char *text) {
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(text, f) < 0 || fclose(f) != 0) {
+        fprintf(stderr, "cannot write %s\n", path);
+        exit(2);
+    }
+}
+
+static void test_args(void) {
+    chf_mesh *m = (chf_mesh *)&m;
+    CHECK_STATUS(chf_mesh_load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK(m == NULL);
+    CHECK_DETAIL("path");
+    CHECK_STATUS(chf_mesh_load("x.mesh", 2, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(chf_mesh_load("x.mesh", 4, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(chf_mesh_load_ex(NULL, NULL, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(chf_mesh_load_ex("x.mesh", NULL, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    chf_build_options o = {9, false};
+    CHECK_STATUS(chf_mesh_load_ex("x.mesh", &o, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
+    /* An unknown extension is not a mesh format. */
+    write_file("chf-not-a-volume.xyz", "hello\n");
+    m = (chf_mesh *)&m;
+    CHECK_STATUS(chf_mesh_load("chf-not-a-volume.xyz", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK(m == NULL);
+    CHECK_DETAIL("chf-not-a-volume.xyz");
+}
+
+/* PAIR in Medit (1-based), with its boundary triangles too (ignored by chf_mesh_load). */
+static const char *PAIR_MESH = "MeshVersionFormatted 1\nDimension 3\nVertices\n5\n"
+                               "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n"
+                               "Triangles\n2\n1 2 3 0\n1 3 4 0\n"
+                               "Tetrahedra\n2\n1 2 3 4 0\n5 2 4 3 0\nEnd\n";
+
+/* BOOK: three tetrahedra on one face. */
+static const char *BOOK_MESH = "MeshVersionFormatted 1\nDimension 3\nVertices\n6\n"
+                               "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 -1 0\n1 1 1 0\n"
+                               "Tetrahedra\n3\n1 2 3 4 0\n1 2 3 5 0\n1 2 3 6 0\nEnd\n";
+
+static void test_readers(void) {
+    /* Success, at every level; triangles in the file are not tetrahedra. */
+    write_file("chf-pair.mesh", PAIR_MESH);
+    for (uint32_t level = 0; level <= 3; level++) {
+        chf_mesh *m = NULL;
+        CHECK_OK(chf_mesh_load("chf-pair.mesh", level, &m));
+        if (!m) continue;
+        CHECK(chf_mesh_level(m) == level);
+        CHECK(chf_mesh_num_vertices(m) == 5 && chf_mesh_num_tetrahedra(m) == 2);
+        CHECK(chf_mesh_num_faces(m) == 7 && chf_mesh_num_edges(m) == 9);
+        size_t len = 0;
+        const double *p = chf_mesh_positions(m, &len);
+        CHECK(p != NULL && len == 15);
+        if (p && len == 15) CHECK(memcmp(p, PAIR_POS, sizeof PAIR_POS) == 0);
+        const uint32_t *V = chf_mesh_half_face_vertices(m, &len);
+        CHECK(len == 8 && memcmp(V, PAIR, sizeof PAIR) == 0);
+        chf_summary s;
+        CHECK_OK(chf_mesh_summary(m, &s));
+        CHECK(s.euler_characteristic == 1 && s.boundary_faces == 6 && s.manifold);
+        CHECK(s.flipped_tetrahedra == 0 && s.inverted_tetrahedra == 0);
+        chf_mesh_free(m);
+    }
+    chf_build_options o = {1, true};
+    chf_mesh *m = NULL;
+    CHECK_OK(chf_mesh_load_ex("chf-pair.mesh", &o, &m));
+    CHECK(m != NULL && chf_mesh_level(m) == 1);
+    chf_mesh_free(m);
+    m = NULL;
+    CHECK_OK(chf_mesh_load_ex("chf-pair.mesh", NULL, &m));
+    CHECK(m != NULL && chf_mesh_level(m) == 2);
+    chf_mesh_free(m);
+
+    /* TetGen .node + .ele (0-based here), by either path. */
+    write_file("chf-pair.node", "5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 1 1 1\n");
+    write_file("chf-pair.ele", "2 4 0\n0 0 1 2 3\n1 4 1 3 2\n");
+    m = NULL;
+    CHECK_OK(chf_mesh_load("chf-pair.ele", 2, &m));
+    CHECK(m != NULL && chf_mesh_num_tetrahedra(m) == 2 && chf_mesh_num_faces(m) == 7);
+    chf_mesh_free(m);
+    m = NULL;
+    CHECK_OK(chf_mesh_load("chf-pair.node", 3, &m));
+    CHECK(m != NULL && chf_mesh_num_boundary_faces(m) == 6);
+    chf_mesh_free(m);
+
+    /* A missing file. */
+    m = (chf_mesh *)&m;
+    CHECK_STATUS(chf_mesh_load("chf-does-not-exist.mesh", 2, &m), TOPOMESH_STATUS_IO);
+    CHECK(m == NULL);
+    CHECK_DETAIL("chf-does-not-exist.mesh");
+
+    /* A malformed file: the detail names the file. */
+    write_file("chf-malformed.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
+                                 "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+                                 "Tetrahedra\n1\n1 2 x 4 0\nEnd\n");
+    m = (chf_mesh *)&m;
+    CHECK_STATUS(chf_mesh_load("chf-malformed.mesh", 2, &m), TOPOMESH_STATUS_PARSE);
+    CHECK(m == NULL);
+    CHECK_DETAIL("chf-malformed.mesh");
+    write_file("chf-bad-index.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
+                                 "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+                                 "Tetrahedra\n1\n1 2 3 9 0\nEnd\n");
+    CHECK(chf_mesh_load("chf-bad-index.mesh", 2, &m) != TOPOMESH_STATUS_OK);
+    CHECK(m == NULL);
+
+    /* A surface file is not a volume. */
+    write_file("chf-tetra.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                            "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    m = (chf_mesh *)&m;
+    CHECK_STATUS(chf_mesh_load("chf-tetra.off", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK(m == NULL);
+    CHECK_DETAIL("chf-tetra.off");
+    CHECK_DETAIL("no tetrahedra");
+    /* ... nor is a Medit file with triangles only. */
+    write_file("chf-surface.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n3\n"
+                               "0 0 0 0\n1 0 0 0\n0 1 0 0\nTriangles\n1\n1 2 3 0\nEnd\n");
+    CHECK_STATUS(chf_mesh_load("chf-surface.mesh", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK_DETAIL("1 triangles");
+
+    /* Strict mode on a file with a non-manifold face. */
+    write_file("chf-book.mesh", BOOK_MESH);
+    o.strict = true;
+    CHECK_STATUS(chf_mesh_load_ex("chf-book.mesh", &o, &m), TOPOMESH_STATUS_NON_MANIFOLD);
+    CHECK(m == NULL);
+    CHECK_DETAIL("(0, 1, 2)");
+    o.strict = false;
+    CHECK_OK(chf_mesh_load_ex("chf-book.mesh", &o, &m));
+    chf_summary s;
+    CHECK_OK(chf_mesh_summary(m, &s));
+    CHECK(s.non_manifold_faces == 1 && !s.manifold);
+    chf_mesh_free(m);
+}
+
+int main(int argc, char **argv) {
+    const char *what = argc > 1 ? argv[1] : "args";
+    if (strcmp(what, "args") == 0) {
+        test_args();
+    } else if (strcmp(what, "readers") == 0) {
+        test_readers();
+    } else {
+        fprintf(stderr, "usage: test_chf_load args|readers\n");
+        return 2;
+    }
+    return finish(what);
+}

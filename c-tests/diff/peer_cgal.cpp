@@ -1,0 +1,210 @@
+// CGAL 5.5 Surface_mesh (Epick points): differential answers and benchmark. The only CGAL
+// translation unit: it takes about a minute to compile.
+#include "peers.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/iterator.h>
+
+namespace diffmesh {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using VI = Mesh::Vertex_index;
+using FI = Mesh::Face_index;
+using HI = Mesh::Halfedge_index;
+
+void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input) {
+  m.reserve(Mesh::size_type(in.n_vertices), Mesh::size_type(in.n_triangles * 3 / 2 + 16),
+            Mesh::size_type(in.n_triangles));
+  for (size_t v = 0; v < in.n_vertices; ++v) {
+    const double *p = in.positions + 3 * v;
+    VI h = m.add_vertex(K::Point_3(p[0], p[1], p[2]));
+    if (size_t(h) != v) b.vertices_in_order = false;
+  }
+  for (size_t t = 0; t < in.n_triangles; ++t) {
+    const uint32_t *c = in.triangles + 3 * t;
+    if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) {
+      b.skipped_degenerate++;
+      continue;
+    }
+    b.submitted++;
+    FI f = m.add_face(VI(c[0]), VI(c[1]), VI(c[2]));
+    if (f == Mesh::null_face()) {
+      if (b.refused_examples.size() < 8) b.refused_examples.push_back(uint32_t(t));
+      b.refused++;
+    } else if (face_input) {
+      face_input->push_back(uint32_t(t));
+    }
+  }
+}
+
+uint32_t id(VI v) { return uint32_t(size_t(v)); }
+
+} // namespace
+
+Answers cgal_answers(const PeerInput &in, PeerBuild &b) {
+  Mesh m;
+  std::vector<uint32_t> fin;
+  build(in, m, b, &fin);
+  Answers a;
+  a.lib = "CGAL";
+  a.resize(m.number_of_vertices(), m.number_of_edges(), 0);
+  a.n_faces = m.number_of_faces();
+  a.have_f.assign(in.n_triangles, 0);
+  a.fv.assign(in.n_triangles, {NONE, NONE, NONE});
+  a.ff.assign(in.n_triangles, {NONE, NONE, NONE});
+  a.fe.assign(in.n_triangles, {});
+  auto fid = [&](FI f) { return f == Mesh::null_face() ? NONE : fin[size_t(f)]; };
+  for (VI v : m.vertices()) {
+    size_t i = size_t(v);
+    a.have_v[i] = 1;
+    HI h = m.halfedge(v);
+    if (h == Mesh::null_halfedge()) continue;
+    // Around the target, CGAL's circulators run clockwise: reverse them.
+    for (VI w : CGAL::vertices_around_target(h, m)) {
+      a.vv[i].push_back(id(w));
+      a.ve[i].push_back(mkpair(uint32_t(i), id(w)));
+    }
+    for (FI f : CGAL::faces_around_target(h, m))
+      if (f != Mesh::null_face()) a.vf[i].push_back(fid(f));
+    std::reverse(a.vv[i].begin(), a.vv[i].end());
+    std::reverse(a.ve[i].begin(), a.ve[i].end());
+    std::reverse(a.vf[i].begin(), a.vf[i].end());
+    a.v_boundary[i] = m.is_border(v);
+  }
+  for (FI f : m.faces()) {
+    size_t i = fin[size_t(f)];
+    a.have_f[i] = 1;
+    int k = 0;
+    for (HI h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+      if (k == 3) break;
+      uint32_t from = id(m.source(h)), to = id(m.target(h));
+      a.fv[i][k] = from;
+      a.fe[i][k] = mkpair(from, to);
+      a.ff[i][k] = fid(m.face(m.opposite(h)));
+      ++k;
+    }
+  }
+  for (auto e : m.edges()) {
+    size_t i = size_t(e);
+    a.have_e[i] = 1;
+    HI h0 = m.halfedge(e), h1 = m.opposite(h0);
+    a.ev[i] = mkpair(id(m.source(h0)), id(m.target(h0)));
+    for (HI h : {h0, h1}) {
+      FI f = m.face(h);
+      if (f == Mesh::null_face()) continue;
+      a.ef[i].push_back(fid(f));
+      for (HI g : {m.next(h), m.prev(h)}) a.ee[i].push_back(mkpair(id(m.source(g)), id(m.target(g))));
+    }
+    std::sort(a.ef[i].begin(), a.ef[i].end());
+    std::sort(a.ee[i].begin(), a.ee[i].end());
+  }
+  a.have_curves = true;
+  std::vector<uint8_t> seen(m.number_of_halfedges(), 0);
+  for (HI h : m.halfedges()) {
+    if (!m.is_border(h) || seen[size_t(h)]) continue;
+    std::vector<uint32_t> loop;
+    HI g = h;
+    do {
+      seen[size_t(g)] = 1;
+      loop.push_back(id(m.source(g)));
+      g = m.next(g);
+    } while (g != h && loop.size() <= m.number_of_halfedges());
+    std::reverse(loop.begin(), loop.end());
+    a.curves.push_back(loop);
+  }
+  return a;
+}
+
+namespace {
+class CgalSubject : public Subject {
+public:
+  explicit CgalSubject(const PeerInput &in) : in_(in) {}
+  void release() override { m_.reset(); }
+  void build() override {
+    m_ = std::make_unique<Mesh>();
+    b_ = PeerBuild();
+    diffmesh::build(in_, *m_, b_, nullptr);
+  }
+  void describe(LibBench &r) const override {
+    const Mesh &m = *m_;
+    r.refused = b_.refused;
+    r.faces = m.number_of_faces();
+    r.vertices = m.number_of_vertices();
+    // vconn (a halfedge index), hconn (face, vertex, next, prev), fconn (a halfedge index),
+    // and one "removed" bit per vertex, edge and face (std::vector<bool>).
+    size_t idx = sizeof(HI);
+    r.connectivity_bytes = m.number_of_vertices() * idx + m.number_of_halfedges() * 4 * idx +
+                           m.number_of_faces() * idx +
+                           (m.number_of_vertices() + m.number_of_edges() + m.number_of_faces()) / 8;
+  }
+  std::vector<LibBench> rows() override {
+    LibBench r;
+    r.lib = "CGAL";
+    r.owns_build = true;
+    r.sweeps.push_back(sweep("VV", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (VI v : m.vertices())
+        for (VI w : CGAL::vertices_around_target(m.halfedge(v), m))
+          cs += uint64_t(size_t(w)) * uint64_t(size_t(v) + 1), ++n;
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("VF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (VI v : m.vertices())
+        for (FI f : CGAL::faces_around_target(m.halfedge(v), m))
+          if (f != Mesh::null_face()) cs += uint64_t(size_t(f) + 1) * uint64_t(size_t(v) + 1), ++n;
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (FI f : m.faces())
+        for (FI g : CGAL::faces_around_face(m.halfedge(f), m))
+          if (g != Mesh::null_face()) cs += uint64_t(size_t(g) + 1) * uint64_t(size_t(f) + 1), ++n;
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("EF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto e : m.edges()) {
+        HI h = m.halfedge(e);
+        FI f0 = m.face(h), f1 = m.face(m.opposite(h));
+        if (f0 != Mesh::null_face()) cs += uint64_t(size_t(f0) + 1), ++n;
+        if (f1 != Mesh::null_face()) cs += uint64_t(size_t(f1) + 1), ++n;
+      }
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      std::vector<bool> seen(m.number_of_halfedges(), false);
+      for (HI h : m.halfedges()) {
+        if (seen[size_t(h)] || !m.is_border(h)) continue;
+        HI g = h;
+        do {
+          seen[size_t(g)] = true;
+          cs += uint64_t(size_t(m.source(g)) + 1);
+          ++n;
+          g = m.next(g);
+        } while (g != h);
+      }
+      return cs;
+    }));
+    return {r};
+  }
+
+private:
+  const PeerInput &in_;
+  std::unique_ptr<Mesh> m_;
+  PeerBuild b_;
+};
+} // namespace
+
+std::unique_ptr<Subject> cgal_subject(const PeerInput &in) { return std::make_unique<CgalSubject>(in); }
+
+} // namespace diffmesh

@@ -1,0 +1,202 @@
+// OpenMesh 9 (TriMesh_ArrayKernelT with double points): differential answers and benchmark.
+#include "peers.hpp"
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+namespace diffmesh {
+namespace {
+
+struct Traits : OpenMesh::DefaultTraits {
+  typedef OpenMesh::Vec3d Point;
+};
+using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
+
+// Builds from the arrays; `face_input[f]` is the submitted index of face f.
+void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input) {
+  static bool quiet = (::omerr().disable(), true); // "complex edge" etc.
+  (void)quiet;
+  m.reserve(in.n_vertices, in.n_triangles * 3 / 2 + 16, in.n_triangles);
+  for (size_t v = 0; v < in.n_vertices; ++v) {
+    const double *p = in.positions + 3 * v;
+    auto h = m.add_vertex(Mesh::Point(p[0], p[1], p[2]));
+    if ((size_t)h.idx() != v) b.vertices_in_order = false;
+  }
+  for (size_t t = 0; t < in.n_triangles; ++t) {
+    const uint32_t *c = in.triangles + 3 * t;
+    if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) {
+      b.skipped_degenerate++;
+      continue;
+    }
+    b.submitted++;
+    auto f = m.add_face(OpenMesh::VertexHandle(int(c[0])), OpenMesh::VertexHandle(int(c[1])),
+                        OpenMesh::VertexHandle(int(c[2])));
+    if (!f.is_valid()) {
+      if (b.refused_examples.size() < 8) b.refused_examples.push_back(uint32_t(t));
+      b.refused++;
+    } else if (face_input) {
+      face_input->push_back(uint32_t(t));
+    }
+  }
+}
+
+uint32_t vid(OpenMesh::VertexHandle h) { return uint32_t(h.idx()); }
+
+} // namespace
+
+Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
+  Mesh m;
+  std::vector<uint32_t> fin;
+  build(in, m, b, &fin);
+  Answers a;
+  a.lib = "OpenMesh";
+  a.resize(m.n_vertices(), m.n_edges(), m.n_faces());
+  auto fid = [&](OpenMesh::FaceHandle f) { return f.is_valid() ? fin[size_t(f.idx())] : NONE; };
+  for (auto v : m.vertices()) {
+    size_t i = size_t(v.idx());
+    a.have_v[i] = 1;
+    // An isolated vertex has no half-edge; OpenMesh's circulators must not start there
+    // (they return neighbours of half-edge -1's vertex).
+    if (!m.halfedge_handle(v).is_valid()) continue;
+    for (auto it = m.cvv_ccwiter(v); it.is_valid(); ++it) {
+      a.vv[i].push_back(vid(*it));
+      a.ve[i].push_back(mkpair(uint32_t(i), vid(*it)));
+    }
+    for (auto it = m.cvf_ccwiter(v); it.is_valid(); ++it) a.vf[i].push_back(fid(*it));
+    a.v_boundary[i] = m.halfedge_handle(v).is_valid() && m.is_boundary(v);
+  }
+  // Faces are stored by submitted index: resize to the submitted count.
+  a.n_faces = m.n_faces();
+  a.have_f.assign(in.n_triangles, 0);
+  a.fv.assign(in.n_triangles, {NONE, NONE, NONE});
+  a.ff.assign(in.n_triangles, {NONE, NONE, NONE});
+  a.fe.assign(in.n_triangles, {});
+  for (auto f : m.faces()) {
+    size_t i = fin[size_t(f.idx())];
+    a.have_f[i] = 1;
+    int k = 0;
+    for (auto it = m.cfh_ccwiter(f); it.is_valid() && k < 3; ++it, ++k) {
+      auto h = *it;
+      auto from = vid(m.from_vertex_handle(h)), to = vid(m.to_vertex_handle(h));
+      a.fv[i][k] = from;
+      a.fe[i][k] = mkpair(from, to);
+      a.ff[i][k] = fid(m.face_handle(m.opposite_halfedge_handle(h)));
+    }
+  }
+  for (auto e : m.edges()) {
+    size_t i = size_t(e.idx());
+    a.have_e[i] = 1;
+    auto h0 = m.halfedge_handle(e, 0), h1 = m.halfedge_handle(e, 1);
+    a.ev[i] = mkpair(vid(m.from_vertex_handle(h0)), vid(m.to_vertex_handle(h0)));
+    for (auto h : {h0, h1}) {
+      auto f = m.face_handle(h);
+      if (!f.is_valid()) continue;
+      a.ef[i].push_back(fid(f));
+      for (auto g : {m.next_halfedge_handle(h), m.prev_halfedge_handle(h)})
+        a.ee[i].push_back(mkpair(vid(m.from_vertex_handle(g)), vid(m.to_vertex_handle(g))));
+    }
+    std::sort(a.ef[i].begin(), a.ef[i].end());
+    std::sort(a.ee[i].begin(), a.ee[i].end());
+  }
+  // Boundary loops: the face-less half-edges run against topomesh's curves; reverse.
+  a.have_curves = true;
+  std::vector<uint8_t> seen(m.n_halfedges(), 0);
+  for (auto h : m.halfedges()) {
+    if (!m.is_boundary(h) || seen[size_t(h.idx())]) continue;
+    std::vector<uint32_t> loop;
+    auto g = h;
+    do {
+      seen[size_t(g.idx())] = 1;
+      loop.push_back(vid(m.from_vertex_handle(g)));
+      g = m.next_halfedge_handle(g);
+    } while (g != h && loop.size() <= m.n_halfedges());
+    std::reverse(loop.begin(), loop.end());
+    a.curves.push_back(loop);
+  }
+  return a;
+}
+
+namespace {
+class OpenMeshSubject : public Subject {
+public:
+  explicit OpenMeshSubject(const PeerInput &in) : in_(in) {}
+  void release() override { m_.reset(); }
+  void build() override {
+    m_ = std::make_unique<Mesh>();
+    b_ = PeerBuild();
+    diffmesh::build(in_, *m_, b_, nullptr);
+  }
+  void describe(LibBench &r) const override {
+    r.refused = b_.refused;
+    r.faces = m_->n_faces();
+    r.vertices = m_->n_vertices();
+    r.connectivity_bytes = m_->n_vertices() * sizeof(Mesh::Vertex) + m_->n_edges() * sizeof(Mesh::Edge) +
+                           m_->n_faces() * sizeof(Mesh::Face);
+  }
+  std::vector<LibBench> rows() override {
+    LibBench r;
+    r.lib = "OpenMesh";
+    r.owns_build = true;
+    r.sweeps.push_back(sweep("VV", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto v : m.vertices())
+        for (auto it = m.cvv_iter(v); it.is_valid(); ++it, ++n) cs += uint64_t(it->idx()) * uint64_t(v.idx() + 1);
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("VF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto v : m.vertices())
+        for (auto it = m.cvf_iter(v); it.is_valid(); ++it, ++n)
+          cs += uint64_t(it->idx() + 1) * uint64_t(v.idx() + 1);
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto f : m.faces())
+        for (auto it = m.cff_iter(f); it.is_valid(); ++it, ++n)
+          cs += uint64_t(it->idx() + 1) * uint64_t(f.idx() + 1);
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("EF", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      for (auto e : m.edges()) {
+        auto f0 = m.face_handle(m.halfedge_handle(e, 0));
+        auto f1 = m.face_handle(m.halfedge_handle(e, 1));
+        if (f0.is_valid()) cs += uint64_t(f0.idx() + 1), ++n;
+        if (f1.is_valid()) cs += uint64_t(f1.idx() + 1), ++n;
+      }
+      return cs;
+    }));
+    r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
+      const Mesh &m = *m_;
+      uint64_t cs = 0;
+      std::vector<bool> seen(m.n_halfedges(), false);
+      for (auto h : m.halfedges()) {
+        if (seen[size_t(h.idx())] || !m.is_boundary(h)) continue;
+        auto g = h;
+        do {
+          seen[size_t(g.idx())] = true;
+          cs += uint64_t(m.from_vertex_handle(g).idx() + 1);
+          ++n;
+          g = m.next_halfedge_handle(g);
+        } while (g != h);
+      }
+      return cs;
+    }));
+    return {r};
+  }
+
+private:
+  const PeerInput &in_;
+  std::unique_ptr<Mesh> m_;
+  PeerBuild b_;
+};
+} // namespace
+
+std::unique_ptr<Subject> openmesh_subject(const PeerInput &in) { return std::make_unique<OpenMeshSubject>(in); }
+
+} // namespace diffmesh

@@ -1,0 +1,255 @@
+// The only translation unit that includes CGAL (about a minute to compile). See peer_cgal.hpp.
+#include "peer_cgal.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_3.h>
+#include <CGAL/Triangulation_cell_base_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_3.h>
+#include <CGAL/Mesh_3/tet_soup_to_c3t3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <unordered_map>
+
+namespace diffvol {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// What build_triangulation calls on vertices and cells, as no-ops: the lean bases keep no
+// Mesh_3 data (a Mesh_3 cell would cost far more per tetrahedron).
+template <class Gt, class Vb = CGAL::Triangulation_vertex_base_3<Gt>>
+struct Soup_vertex_base : Vb {
+  template <class TDS2> struct Rebind_TDS {
+    using Vb2 = typename Vb::template Rebind_TDS<TDS2>::Other;
+    using Other = Soup_vertex_base<Gt, Vb2>;
+  };
+  using Vb::Vb;
+  void set_dimension(int) {}
+};
+
+template <class Gt, class Cb = CGAL::Triangulation_cell_base_3<Gt>>
+struct Soup_cell_base : Cb {
+  using Surface_patch_index = int;
+  using Subdomain_index = int;
+  template <class TDS2> struct Rebind_TDS {
+    using Cb2 = typename Cb::template Rebind_TDS<TDS2>::Other;
+    using Other = Soup_cell_base<Gt, Cb2>;
+  };
+  using Cb::Cb;
+  void set_subdomain_index(int) {}
+  void set_surface_patch_index(int, int) {}
+  int surface_patch_index(int) const { return 0; }
+};
+
+using Tds = CGAL::Triangulation_data_structure_3<Soup_vertex_base<K>, Soup_cell_base<K>>;
+using Tr = CGAL::Triangulation_3<K, Tds>;
+using Vh = Tr::Vertex_handle;
+using Ch = Tr::Cell_handle;
+
+double now_ms() {
+  using namespace std::chrono;
+  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+} // namespace
+
+struct CgalVol::Impl {
+  Tr tr;
+  std::vector<Vh> handles; // input vertex i -> handles[i + 1]; handles[0] is the infinite one
+};
+
+CgalVol::CgalVol() : p_(new Impl) {}
+CgalVol::~CgalVol() = default;
+
+std::unique_ptr<CgalVol> CgalVol::build(const TetSoup &s, CgalStats &st) {
+  st = CgalStats();
+  st.sizeof_vertex = sizeof(Tr::Vertex);
+  st.sizeof_point = sizeof(Tr::Point);
+  st.sizeof_cell = sizeof(Tr::Cell);
+  std::unique_ptr<CgalVol> out(new CgalVol);
+  double t0 = now_ms();
+  std::vector<Tr::Point> points;
+  points.reserve(s.n_vertices);
+  for (size_t v = 0; v < s.n_vertices; ++v)
+    points.emplace_back(s.positions[3 * v], s.positions[3 * v + 1], s.positions[3 * v + 2]);
+  std::vector<std::array<int, 5>> cells(s.n_tets());
+  for (size_t t = 0; t < s.n_tets(); ++t) {
+    const uint32_t *q = &s.tets[4 * t];
+    std::array<int, 5> c{int(q[0]), int(q[1]), int(q[2]), int(q[3]), 1};
+    // The builder wants positively oriented cells.
+    if (CGAL::orientation(points[q[0]], points[q[1]], points[q[2]], points[q[3]]) == CGAL::NEGATIVE)
+      std::swap(c[1], c[2]);
+    cells[t] = c;
+  }
+  std::map<std::array<int, 3>, int> border_facets;
+  double t1 = now_ms();
+  bool ok = CGAL::build_triangulation<Tr, true>(out->p_->tr, points, cells, border_facets,
+                                                 out->p_->handles, false, false);
+  double t2 = now_ms();
+  st.convert_ms = t1 - t0;
+  st.build_ms = t2 - t0;
+  st.ok = ok;
+  const Tds &tds = out->p_->tr.tds();
+  st.vertices = tds.number_of_vertices();
+  st.cells = tds.number_of_cells();
+  st.vertex_capacity = tds.vertices().capacity();
+  st.cell_capacity = tds.cells().capacity();
+  if (!ok) {
+    st.refusal = "build_triangulation returned false (a facet or an infinite facet with more than two cells)";
+    return nullptr;
+  }
+  st.finite_cells = out->p_->tr.number_of_finite_cells();
+  return out;
+}
+
+Answers CgalVol::answers(const TetSoup &s) const {
+  const Tr &tr = p_->tr;
+  Answers a;
+  a.side = "CGAL";
+  a.et_ordered = true;
+  // Vertex handle -> input id; cell -> input tetrahedron (by sorted vertex quadruple).
+  std::unordered_map<const void *, uint32_t> vid;
+  vid.reserve(2 * s.n_vertices);
+  for (size_t i = 0; i < s.n_vertices; ++i) vid[&*p_->handles[i + 1]] = uint32_t(i);
+  auto id = [&](Vh v) { return vid.at(&*v); };
+  std::vector<std::pair<std::array<uint32_t, 4>, uint32_t>> quads(s.n_tets());
+  for (size_t t = 0; t < s.n_tets(); ++t) {
+    std::array<uint32_t, 4> q{s.tets[4 * t], s.tets[4 * t + 1], s.tets[4 * t + 2], s.tets[4 * t + 3]};
+    std::sort(q.begin(), q.end());
+    quads[t] = {q, uint32_t(t)};
+  }
+  std::sort(quads.begin(), quads.end());
+  std::unordered_map<const void *, uint32_t> cid;
+  cid.reserve(2 * s.n_tets());
+  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+    std::array<uint32_t, 4> q{id(c->vertex(0)), id(c->vertex(1)), id(c->vertex(2)), id(c->vertex(3))};
+    std::sort(q.begin(), q.end());
+    auto it = std::lower_bound(quads.begin(), quads.end(), std::make_pair(q, uint32_t(0)));
+    cid[&*c] = (it != quads.end() && it->first == q) ? it->second : NONE;
+  }
+  auto cell_id = [&](Ch c) { return tr.is_infinite(c) ? NONE : cid.at(&*c); };
+
+  a.V = long(tr.number_of_vertices());
+  a.E = long(tr.number_of_finite_edges());
+  a.F = long(tr.number_of_finite_facets());
+  a.T = long(tr.number_of_finite_cells());
+
+  // TT per input slot, and boundary faces.
+  a.tt.assign(s.tets.size(), NONE);
+  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+    uint32_t t = cid.at(&*c);
+    if (t == NONE) continue;
+    for (int i = 0; i < 4; ++i) {
+      uint32_t x = id(c->vertex(i));
+      Ch n = c->neighbor(i);
+      for (int j = 0; j < 4; ++j)
+        if (s.tets[4 * t + j] == x) a.tt[4 * t + j] = cell_id(n);
+      if (tr.is_infinite(n)) {
+        std::array<uint32_t, 3> f;
+        for (int k = 1; k < 4; ++k) f[k - 1] = id(c->vertex((i + k) % 4));
+        std::sort(f.begin(), f.end());
+        a.boundary_faces.push_back(f);
+      }
+    }
+  }
+  std::sort(a.boundary_faces.begin(), a.boundary_faces.end());
+
+  // VT and VV.
+  std::vector<Ch> cs;
+  std::vector<Vh> vs;
+  std::vector<uint32_t> row;
+  for (size_t v = 0; v < s.n_vertices; ++v) {
+    Vh h = p_->handles[v + 1];
+    cs.clear(), vs.clear();
+    if (h->cell() != Ch()) {
+      tr.finite_incident_cells(h, std::back_inserter(cs));
+      tr.finite_adjacent_vertices(h, std::back_inserter(vs));
+    }
+    row.clear();
+    for (Ch c : cs) row.push_back(cell_id(c));
+    std::sort(row.begin(), row.end());
+    a.vt.ids.insert(a.vt.ids.end(), row.begin(), row.end());
+    a.vt.push_row();
+    row.clear();
+    for (Vh w : vs) row.push_back(id(w));
+    std::sort(row.begin(), row.end());
+    a.vv.ids.insert(a.vv.ids.end(), row.begin(), row.end());
+    a.vv.push_row();
+  }
+
+  // ET: the circulator's order, started just after the infinite cells of a boundary edge.
+  std::vector<Ch> ring;
+  for (auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
+    ring.clear();
+    auto cc = tr.incident_cells(*e), done = cc;
+    do ring.push_back(cc); while (++cc != done);
+    size_t k = ring.size(), start = 0;
+    for (size_t i = 0; i < k; ++i)
+      if (tr.is_infinite(ring[i]) && !tr.is_infinite(ring[(i + 1) % k])) { start = (i + 1) % k; break; }
+    std::vector<uint32_t> fan;
+    for (size_t i = 0; i < k; ++i) {
+      Ch c = ring[(start + i) % k];
+      if (!tr.is_infinite(c)) fan.push_back(cell_id(c));
+    }
+    a.et.push_back({edge_key(id(e->first->vertex(e->second)), id(e->first->vertex(e->third))), std::move(fan)});
+  }
+  std::sort(a.et.begin(), a.et.end());
+  return a;
+}
+
+size_t CgalVol::vertex_star_size(uint32_t v) const {
+  Vh h = p_->handles[v + 1];
+  if (h->cell() == Ch()) return 0;
+  std::vector<Ch> cs;
+  p_->tr.finite_incident_cells(h, std::back_inserter(cs));
+  return cs.size();
+}
+
+uint64_t CgalVol::sweep_tt() const {
+  const Tr &tr = p_->tr;
+  uint64_t n = 0;
+  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+    for (int i = 0; i < 4; ++i) n += !tr.is_infinite(c->neighbor(i));
+  return n;
+}
+
+uint64_t CgalVol::sweep_vt() const {
+  const Tr &tr = p_->tr;
+  uint64_t n = 0;
+  std::vector<Ch> cs;
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    if (v->cell() == Ch()) continue;
+    cs.clear();
+    tr.finite_incident_cells(v, std::back_inserter(cs));
+    n += cs.size();
+  }
+  return n;
+}
+
+uint64_t CgalVol::sweep_et() const {
+  const Tr &tr = p_->tr;
+  uint64_t n = 0;
+  for (auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
+    auto cc = tr.incident_cells(*e), done = cc;
+    do n += !tr.is_infinite(cc); while (++cc != done);
+  }
+  return n;
+}
+
+uint64_t CgalVol::sweep_vv() const {
+  const Tr &tr = p_->tr;
+  uint64_t n = 0;
+  std::vector<Vh> vs;
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    if (v->cell() == Ch()) continue;
+    vs.clear();
+    tr.finite_adjacent_vertices(v, std::back_inserter(vs));
+    n += vs.size();
+  }
+  return n;
+}
+
+} // namespace diffvol

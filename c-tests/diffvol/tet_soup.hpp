@@ -1,0 +1,317 @@
+// Tetrahedron soups for the CHF differential tests and the volume benchmark: a reader for
+// tetgen's .node/.ele pair, and the small pathological cases the tests write themselves.
+// CGAL and topomesh are always built from the SAME arrays held here.
+#pragma once
+
+#include <array>
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace diffvol {
+
+struct TetSoup {
+  std::string name;
+  size_t n_vertices = 0;
+  std::vector<double> positions; // 3 per vertex
+  std::vector<uint32_t> tets;    // 4 per tetrahedron, input vertex ids
+  size_t n_tets() const { return tets.size() / 4; }
+};
+
+namespace detail {
+inline bool slurp(const std::string &path, std::string &text) {
+  std::FILE *f = std::fopen(path.c_str(), "rb");
+  if (!f) return false;
+  std::fseek(f, 0, SEEK_END);
+  long size = std::ftell(f);
+  std::fseek(f, 0, SEEK_SET);
+  text.resize(size > 0 ? size_t(size) : 0);
+  size_t got = std::fread(text.data(), 1, text.size(), f);
+  std::fclose(f);
+  return got == text.size();
+}
+// Splits into non-empty lines without '#' comments.
+struct Lines {
+  const char *p, *end;
+  bool next(const char *&b, const char *&e) {
+    while (p < end) {
+      const char *s = p;
+      while (p < end && *p != '\n') ++p;
+      const char *t = p;
+      if (p < end) ++p;
+      for (const char *q = s; q < t; ++q)
+        if (*q == '#') { t = q; break; }
+      while (s < t && (*s == ' ' || *s == '\t' || *s == '\r')) ++s;
+      while (t > s && (t[-1] == ' ' || t[-1] == '\t' || t[-1] == '\r')) --t;
+      if (s < t) { b = s; e = t; return true; }
+    }
+    return false;
+  }
+};
+template <class T> bool num(const char *&b, const char *e, T &out) {
+  while (b < e && (*b == ' ' || *b == '\t')) ++b;
+  if (b < e && *b == '+') ++b;
+  auto r = std::from_chars(b, e, out);
+  if (r.ec != std::errc()) return false;
+  b = r.ptr;
+  return true;
+}
+} // namespace detail
+
+// Reads tetgen's `<base>.node` and `<base>.ele` (numbered from 0 or 1: the first node's
+// index decides; attributes and boundary markers ignored; 10-node tetrahedra keep their
+// 4 corners). On failure returns false with a message in `err`.
+inline bool read_tetgen(const std::string &base, TetSoup &s, std::string &err) {
+  s = TetSoup();
+  auto slash = base.find_last_of('/');
+  s.name = base.substr(slash == std::string::npos ? 0 : slash + 1);
+  std::string text;
+  const char *b, *e;
+  if (!detail::slurp(base + ".node", text)) { err = "cannot read " + base + ".node"; return false; }
+  {
+    detail::Lines lines{text.data(), text.data() + text.size()};
+    size_t nv = 0;
+    int dim = 0;
+    if (!lines.next(b, e) || !detail::num(b, e, nv) || !detail::num(b, e, dim) || dim != 3) {
+      err = base + ".node: bad header";
+      return false;
+    }
+    s.n_vertices = nv;
+    s.positions.resize(3 * nv);
+    long first = -1;
+    for (size_t v = 0; v < nv; ++v) {
+      long id = 0;
+      if (!lines.next(b, e) || !detail::num(b, e, id)) {
+        err = base + ".node: bad line for node " + std::to_string(v);
+        return false;
+      }
+      if (first < 0) first = id;
+      if (size_t(id - first) != v) { err = base + ".node: nodes not numbered in order"; return false; }
+      for (int k = 0; k < 3; ++k)
+        if (!detail::num(b, e, s.positions[3 * v + k])) {
+          err = base + ".node: bad coordinate in node " + std::to_string(v);
+          return false;
+        }
+    }
+    if (!detail::slurp(base + ".ele", text)) { err = "cannot read " + base + ".ele"; return false; }
+    lines = detail::Lines{text.data(), text.data() + text.size()};
+    size_t nt = 0;
+    int per = 0;
+    if (!lines.next(b, e) || !detail::num(b, e, nt) || !detail::num(b, e, per) ||
+        (per != 4 && per != 10)) {
+      err = base + ".ele: bad header";
+      return false;
+    }
+    s.tets.resize(4 * nt);
+    for (size_t t = 0; t < nt; ++t) {
+      long id = 0;
+      if (!lines.next(b, e) || !detail::num(b, e, id)) {
+        err = base + ".ele: bad line for tetrahedron " + std::to_string(t);
+        return false;
+      }
+      for (int k = 0; k < 4; ++k) {
+        long x = 0;
+        if (!detail::num(b, e, x) || x < first || size_t(x - first) >= nv) {
+          err = base + ".ele: bad node id in tetrahedron " + std::to_string(t);
+          return false;
+        }
+        s.tets[4 * t + k] = uint32_t(x - first);
+      }
+    }
+  }
+  return true;
+}
+
+// ---- The pathological cases, with what a careful reader counts by hand. ----
+
+// Hand-computed topology of a case (-1: not asserted).
+struct Expect {
+  long vertices = -1, edges = -1, faces = -1, tetrahedra = -1;
+  long boundary_faces = -1, boundary_components = -1, components = -1;
+  long euler = -1;
+  int manifold = -1;          // 1 / 0
+  long split_vertices = -1;   // non-manifold input vertices
+  long non_manifold_faces = -1;
+  long non_manifold_edges = -1;
+  long structure_vertices = -1; // after the split: input vertices + copies
+  long boundary_euler = -1;   // V - E + F of the boundary surface
+};
+
+// What CGAL's build_triangulation should do with a case.
+enum class CgalExpect { Accept, Refuse, AcceptButWrong };
+
+struct Case {
+  TetSoup soup;
+  Expect expect;
+  CgalExpect cgal = CgalExpect::Accept;
+  std::string why; // for Refuse / AcceptButWrong
+};
+
+namespace detail {
+inline void add_point(TetSoup &s, double x, double y, double z) {
+  s.positions.insert(s.positions.end(), {x, y, z});
+  s.n_vertices++;
+}
+inline void add_tet(TetSoup &s, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  s.tets.insert(s.tets.end(), {a, b, c, d});
+}
+// Cubes of a grid, cut into 6 tetrahedra around the main diagonal (Kuhn/Freudenthal): the
+// cut agrees on shared cube faces, so any set of cubes gives a conforming mesh. Vertex
+// (i, j, k) of an (n+1)^3 grid has id i + (n+1) (j + (n+1) k); unused ones are dropped.
+inline TetSoup kuhn_cubes(const std::string &name, int n,
+                          const std::vector<std::array<int, 3>> &cubes) {
+  TetSoup s;
+  s.name = name;
+  int m = n + 1;
+  std::vector<long> id(size_t(m) * m * m, -1);
+  auto vid = [&](int i, int j, int k) {
+    long &x = id[size_t(i + m * (j + m * k))];
+    if (x < 0) {
+      x = long(s.n_vertices);
+      add_point(s, i, j, k);
+    }
+    return uint32_t(x);
+  };
+  // The 6 monotone paths from (0,0,0) to (1,1,1).
+  static const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                  {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (auto c : cubes)
+    for (auto &p : perms) {
+      int cur[3] = {c[0], c[1], c[2]};
+      uint32_t v[4];
+      v[0] = vid(cur[0], cur[1], cur[2]);
+      for (int step = 0; step < 3; ++step) {
+        cur[p[step]]++;
+        v[step + 1] = vid(cur[0], cur[1], cur[2]);
+      }
+      add_tet(s, v[0], v[1], v[2], v[3]);
+    }
+  return s;
+}
+} // namespace detail
+
+inline std::vector<Case> pathological_cases() {
+  using detail::add_point;
+  using detail::add_tet;
+  std::vector<Case> out;
+  auto unit_tet = [](TetSoup &s, double ox) { // 4 new points, returns their first id
+    uint32_t b = uint32_t(s.n_vertices);
+    add_point(s, ox, 0, 0);
+    add_point(s, ox + 1, 0, 0);
+    add_point(s, ox, 1, 0);
+    add_point(s, ox, 0, 1);
+    return b;
+  };
+  {
+    Case c;
+    c.soup.name = "one-tet";
+    unit_tet(c.soup, 0);
+    add_tet(c.soup, 0, 1, 2, 3);
+    c.expect = {4, 6, 4, 1, 4, 1, 1, 1, 1, 0, 0, 0, 4, 2};
+    out.push_back(c);
+  }
+  {
+    Case c; // 0,1,2 shared; 3 above, 4 below
+    c.soup.name = "two-share-face";
+    add_point(c.soup, 0, 0, 0);
+    add_point(c.soup, 1, 0, 0);
+    add_point(c.soup, 0, 1, 0);
+    add_point(c.soup, 0.3, 0.3, 1);
+    add_point(c.soup, 0.3, 0.3, -1);
+    add_tet(c.soup, 0, 1, 2, 3);
+    add_tet(c.soup, 0, 2, 1, 4);
+    c.expect = {5, 9, 7, 2, 6, 1, 1, 1, 1, 0, 0, 0, 5, 2};
+    out.push_back(c);
+  }
+  {
+    Case c; // edge 0-1 shared by two tetrahedra that share nothing else
+    c.soup.name = "two-share-edge";
+    add_point(c.soup, 0, 0, 0);
+    add_point(c.soup, 1, 0, 0);
+    add_point(c.soup, 0, 1, 0.2);
+    add_point(c.soup, 0, 0.2, 1);
+    add_point(c.soup, 0, -1, -0.2);
+    add_point(c.soup, 0, -0.2, -1);
+    add_tet(c.soup, 0, 1, 2, 3);
+    add_tet(c.soup, 0, 1, 4, 5);
+    // Both ends of the edge have two face-disconnected stars: split, 2 copies added.
+    c.expect = {6, 11, 8, 2, 8, 1, 1, 1, 0, 2, 0, 1, 8, -1};
+    c.cgal = CgalExpect::Refuse;
+    c.why = "four boundary facets on one edge: the infinite cells cannot be glued";
+    out.push_back(c);
+  }
+  {
+    Case c; // vertex 0 shared
+    c.soup.name = "two-share-vertex";
+    unit_tet(c.soup, 0);
+    add_point(c.soup, -1, 0, 0);
+    add_point(c.soup, 0, -1, 0);
+    add_point(c.soup, 0, 0, -1);
+    add_tet(c.soup, 0, 1, 2, 3);
+    add_tet(c.soup, 0, 4, 5, 6);
+    c.expect = {7, 12, 8, 2, 8, 1, 1, 1, 0, 1, 0, 0, 8, -1};
+    c.cgal = CgalExpect::AcceptButWrong;
+    c.why = "one cell per vertex: the star of vertex 0 reaches one of its two tetrahedra";
+    out.push_back(c);
+  }
+  {
+    Case c; // face 0,1,2 in three tetrahedra
+    c.soup.name = "three-on-face";
+    add_point(c.soup, 0, 0, 0);
+    add_point(c.soup, 1, 0, 0);
+    add_point(c.soup, 0, 1, 0);
+    add_point(c.soup, 0.3, 0.3, 1);
+    add_point(c.soup, 0.3, 0.3, -1);
+    add_point(c.soup, 0.3, 0.3, 2);
+    add_tet(c.soup, 0, 1, 2, 3);
+    add_tet(c.soup, 0, 2, 1, 4);
+    add_tet(c.soup, 0, 1, 2, 5);
+    // The face is non-manifold (never paired); its three edges then carry three fans and
+    // its three vertices three face-disconnected pieces each: 6 copies added.
+    c.expect = {6, 12, 10, 3, 9, 1, 1, 1, 0, 3, 1, 3, 12, -1};
+    c.cgal = CgalExpect::Refuse;
+    c.why = "a facet with three cells";
+    out.push_back(c);
+  }
+  {
+    std::vector<std::array<int, 3>> cubes;
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+          if (!(i == 1 && j == 1 && k == 1)) cubes.push_back({i, j, k});
+    Case c;
+    c.soup = detail::kuhn_cubes("cavity", 3, cubes);
+    // A ball minus a ball: chi = 2; boundary: two spheres (outer 6x9x2 + inner 6x2
+    // triangles), boundary chi = 4. V = 64, T = 26 x 6.
+    c.expect = {64, -1, -1, 156, 120, 2, 1, 2, 1, 0, 0, 0, 64, 4};
+    out.push_back(c);
+  }
+  {
+    std::vector<std::array<int, 3>> cubes;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i)
+        if (!(i == 1 && j == 1)) cubes.push_back({i, j, 0});
+    Case c;
+    c.soup = detail::kuhn_cubes("solid-torus", 3, cubes);
+    // A solid torus: chi = 0; boundary: one torus (chi 0). V = 32, T = 8 x 6,
+    // boundary triangles: 2 x 8 x 2 (top, bottom) + (12 outer + 4 inner squares) x 2.
+    c.expect = {32, -1, -1, 48, 64, 1, 1, 0, 1, 0, 0, 0, 32, 0};
+    out.push_back(c);
+  }
+  {
+    Case c; // two tetrahedra apart and an isolated vertex
+    c.soup.name = "two-apart-isolated";
+    unit_tet(c.soup, 0);
+    unit_tet(c.soup, 5);
+    add_point(c.soup, 9, 9, 9);
+    add_tet(c.soup, 0, 1, 2, 3);
+    add_tet(c.soup, 4, 5, 6, 7);
+    c.expect = {9, 12, 8, 2, 8, 2, 2, 3, 1, 0, 0, 0, 9, 4};
+    out.push_back(c);
+  }
+  return out;
+}
+
+} // namespace diffvol

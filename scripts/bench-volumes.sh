@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# The volume head-to-head benchmark: topomesh's CHF (levels 1-3, per-element C calls, CSR
+# bulk calls, the zero-copy O view) against CGAL's Triangulation_3 built by
+# CGAL::build_triangulation, in one process, from the same arrays. Writes
+# BENCHMARKS-volumes.md (the "Volumes" section of BENCHMARKS.md) with the machine, the
+# flags and this command.
+#
+#   scripts/bench-volumes.sh [--reps N] [--prefix DIR] [--out FILE] [MESH...]
+#
+# MESH: names under <mesh dir>/tets (default: blobby-12k armadillo-101k bunny00-1m).
+# Makes the meshes (scripts/fetch-tets.sh: tetgen, the 1M one takes under a minute), builds
+# and installs the package into a temporary prefix (or uses --prefix, an installed one),
+# builds c-tests/diffvol's topomesh_bench_vol (-O2 -DNDEBUG, no -march=native; the CGAL
+# translation unit takes about a minute) and runs it. Respects CARGO_TARGET_DIR and
+# TOPOMESH_MESH_DIR.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cmdline="scripts/bench-volumes.sh${*:+ $*}"
+reps=5
+prefix=""
+out="$root/BENCHMARKS-volumes.md"
+meshes=()
+while (($#)); do
+  case "$1" in
+    --reps) reps="$2"; shift 2 ;;
+    --prefix) prefix="$2"; shift 2 ;;
+    --out) out="$2"; shift 2 ;;
+    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
+    *) meshes+=("$1"); shift ;;
+  esac
+done
+((${#meshes[@]})) || meshes=(blobby-12k armadillo-101k bunny00-1m)
+dir="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"
+
+"$root/scripts/fetch-tets.sh"
+
+work="$(mktemp -d "${TMPDIR:-/tmp}/topomesh-bench-vol.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+if [[ -z "$prefix" ]]; then
+  prefix="$work/prefix"
+  echo "== topomesh package -> $prefix"
+  cmake -S "$root/cmake" -B "$work/pkg" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$work/pkg" >/dev/null
+  cmake --install "$work/pkg" >/dev/null
+fi
+echo "== topomesh_bench_vol (the CGAL translation unit compiles slowly: about a minute)"
+# An empty build type: the only optimisation flags are the target's -O2 -DNDEBUG.
+cmake -S "$root/c-tests/diffvol" -B "$work/diffvol" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE= \
+  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE \
+  -DTOPOMESH_MESH_DIR="$dir" >/dev/null
+cmake --build "$work/diffvol" --target topomesh_bench_vol >/dev/null
+
+bases=()
+for m in "${meshes[@]}"; do
+  if [[ -f "$m.ele" ]]; then bases+=("$m"); else bases+=("$dir/tets/$m"); fi
+done
+echo "== running on ${#bases[@]} meshes, $reps repetitions"
+load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
+"$work/diffvol/topomesh_bench_vol" --reps "$reps" "${bases[@]}" | tee "$work/tables.md"
+load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+
+model="$(lscpu | sed -n 's/^Model name:[[:space:]]*//p' | head -1)"
+cpus="$(nproc)"
+mem="$(free -g | awk '/^Mem:/ {print $2 " GiB"}')"
+os="$(. /etc/os-release 2>/dev/null && echo "$PRETTY_NAME" || uname -s)"
+cxx="$(c++ --version | head -1)"
+rustc_v="$(rustc --version 2>/dev/null || echo '?')"
+cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
+tetgen_v="$(dpkg-query -W -f '${Version}' tetgen 2>/dev/null || echo '?')"
+commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
+dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
+
+{
+  echo "## Volumes"
+  echo
+  echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty)."
+  echo
+  echo "- Machine: $model, $cpus logical CPUs, $mem, $os. Load average (1, 5, 15 min) before the"
+  echo "  run: $load_before; after: $load_after (other jobs share the machine: short timings are noisy)."
+  echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`). CGAL $cgal_v: \`Triangulation_3<Epick,"
+  echo "  Triangulation_data_structure_3>\` with the plain vertex and cell bases (plus the no-op setters"
+  echo "  \`build_triangulation\` calls: the leanest triangulation it accepts), built by"
+  echo "  \`CGAL::build_triangulation<Tr, true>\` (CGAL/Mesh_3/tet_soup_to_c3t3.h); its infinite vertex and"
+  echo "  cells are left out of every answer. Its build time includes turning the arrays into its"
+  echo "  \`Point_3\` vector and positively oriented cells (the conversion time is given)."
+  echo "- topomesh: $rustc_v, cargo release profile, through the installed libtopomesh.so;"
+  echo "  \`chf_mesh_from_tetrahedra\` with positions (it orients, matches faces, splits non-manifold"
+  echo "  vertices, and from level 2 names edges and faces). Single-threaded."
+  echo "- Meshes: made by \`scripts/fetch-tets.sh\` with Debian's tetgen $tetgen_v from closed surfaces"
+  echo "  of CGAL's demo data:"
+  for b in "${bases[@]}"; do
+    if [[ -f "$b.tetgen.txt" ]]; then
+      echo "  $(basename "$b"): \`tetgen $(sed -n 's/^flags //p' "$b.tetgen.txt") $(sed -n 's/^source //p' "$b.tetgen.txt")\`,"\
+           "$(sed -n 's/^seconds //p' "$b.tetgen.txt") s."
+    fi
+  done
+  echo "- Each build and sweep runs $reps times; the tables give the median. Checksums count the"
+  echo "  entries a sweep visits (boundary NONE excluded): equal counts mean every library did the"
+  echo "  same work."
+  cat "$work/tables.md" | sed '1d'
+} > "$out"
+echo "== wrote $out"

@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# The head-to-head benchmark: topomesh (levels 1-3, every access path) against OpenMesh and
+# CGAL Surface_mesh, in one process, from the same arrays. Writes the tables into
+# BENCHMARKS.md between the "bench:begin" and "bench:end" markers (the text around them is
+# kept), with the machine, the compilers, the flags and this command.
+#
+#   scripts/bench.sh [--reps N] [MESH...]
+#
+# MESH: names in the mesh cache (default: bunny00 armadillo holes polygon_mesh
+# blobby-shuffled bunny00-sub2 bunny00-sub3) or paths to .off files. Fetches the meshes
+# (scripts/fetch-meshes.sh), builds and installs the package into a temporary prefix
+# (the cmake/ project, as scripts/c-tests.sh does), builds c-tests/diff's topomesh_bench
+# (-O2, no -march=native) and runs it. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cmdline="scripts/bench.sh${*:+ $*}"
+reps=5
+meshes=()
+while (($#)); do
+  case "$1" in
+    --reps) reps="$2"; shift 2 ;;
+    -h|--help) sed -n 2,13p "$0"; exit 0 ;;
+    *) meshes+=("$1"); shift ;;
+  esac
+done
+((${#meshes[@]})) || meshes=(bunny00 armadillo holes polygon_mesh blobby-shuffled bunny00-sub2 bunny00-sub3)
+dir="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"
+
+"$root/scripts/fetch-meshes.sh"
+
+work="$(mktemp -d "${TMPDIR:-/tmp}/topomesh-bench.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+prefix="$work/prefix"
+echo "== topomesh package -> $prefix"
+cmake -S "$root/cmake" -B "$work/pkg" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$work/pkg" >/dev/null
+cmake --install "$work/pkg" >/dev/null
+echo "== topomesh_bench (OpenMesh and CGAL compile slowly: about a minute)"
+cmake -S "$root/c-tests/diff" -B "$work/diff" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+  -DTOPOMESH_MESH_DIR="$dir" >/dev/null
+cmake --build "$work/diff" --target topomesh_bench >/dev/null
+
+files=()
+for m in "${meshes[@]}"; do
+  if [[ -f "$m" ]]; then files+=("$m"); else files+=("$dir/$m.off"); fi
+done
+echo "== running on ${#files[@]} meshes, $reps repetitions"
+load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
+"$work/diff/topomesh_bench" --reps "$reps" --md "$work/tables.md" "${files[@]}"
+load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+
+# The machine and the toolchain.
+model="$(lscpu | sed -n 's/^Model name:[[:space:]]*//p' | head -1)"
+cpus="$(nproc)"
+threads="$(lscpu | sed -n 's/^Thread(s) per core:[[:space:]]*//p' | head -1)"
+mem="$(free -g | awk '/^Mem:/ {print $2 " GiB"}')"
+os="$(. /etc/os-release 2>/dev/null && echo "$PRETTY_NAME" || uname -s)"
+cxx="$(c++ --version | head -1)"
+rustc_v="$(rustc --version)"
+om_v="$(dpkg-query -W -f '${Version}' libopenmesh-dev 2>/dev/null || echo '?')"
+cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
+commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
+dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
+
+{
+  echo "<!-- bench:begin (written by scripts/bench.sh; edit outside the markers) -->"
+  echo "## Results"
+  echo
+  echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty)."
+  echo
+  echo "- Machine: $model, $cpus logical CPUs ($threads thread(s) per core), $mem, $os. Load average"
+  echo "  (1, 5, 15 min) before the run: $load_before; after: $load_after (other jobs share the machine:"
+  echo "  sweeps of a few milliseconds are noisy)."
+  echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`); OpenMesh $om_v (Debian, TriMesh_ArrayKernelT with"
+  echo "  double points), CGAL $cgal_v (Surface_mesh of Epick points). Both peers get \`reserve()\` (vertex and face"
+  echo "  counts, edges estimated as 3T/2) before the build."
+  echo "- topomesh: $rustc_v, cargo release profile (opt-level 3, debug = 1), through the installed"
+  echo "  libtopomesh.so; single-threaded."
+  echo "- Each build and sweep runs $reps times, interleaved across the libraries (round r builds each"
+  echo "  of them in turn, from a different first one, then runs each sweep in turn); the tables give"
+  echo "  the median of the benchmark thread's CPU time (CLOCK_THREAD_CPUTIME_ID, user + system: the"
+  echo "  machine is shared, and wall-clock time counts the waits for a core; it is shown for builds)."
+  echo "  Build times include the positions (every library stores them) and the page faults of fresh"
+  echo "  memory. Connectivity memory is counted from container sizes:"
+  echo "  OpenMesh: V·sizeof(Vertex) + E·sizeof(Edge) + F·sizeof(Face); CGAL: 4 B per vertex,"
+  echo "  16 B per half-edge, 4 B per face, plus its removed-flag bits; topomesh: \`che_mesh_memory().topology\`."
+  echo "  RSS growth is the resident-set growth over one build (/proc/self/statm, after malloc_trim),"
+  echo "  positions included."
+  echo "- Paths: *C API* is one call per element into a caller buffer; *star iterator* is"
+  echo "  che_star_begin/next on the stack; *CSR bulk* one call for all rows (time includes the call);"
+  echo "  *C++ wrapper* the ranges of topomesh.hpp; *zero-copy* walks the V/O/VH/CH arrays with"
+  echo "  che_next/che_prev inline. A sweep visits every element and folds the answers into a checksum."
+  cat "$work/tables.md"
+  echo "<!-- bench:end -->"
+} > "$work/section.md"
+
+out="$root/BENCHMARKS.md"
+if [[ -f "$out" ]] && grep -q '<!-- bench:begin' "$out" && grep -q '<!-- bench:end -->' "$out"; then
+  awk -v sec="$work/section.md" '
+    /<!-- bench:begin/ { while ((getline l < sec) > 0) print l; skip = 1; next }
+    /<!-- bench:end -->/ { skip = 0; next }
+    !skip { print }' "$out" > "$work/new.md"
+  mv "$work/new.md" "$out"
+else
+  { echo "# Benchmarks"; echo; cat "$work/section.md"; } > "$out"
+fi
+echo "== wrote $out"

@@ -1,0 +1,33 @@
+//! Union-find over `0..n` with path halving; the smaller root wins, so results do not
+//! depend on the order of unions.
+
+pub(crate) struct Dsu(Vec<u32>);
+
+impl Dsu {
+    pub(crate) fn new(n: usize) -> Self {
+        Dsu((0..n as u32).collect())
+    }
+
+    pub(crate) fn find(&mut self, mut x: u32) -> u32 {
+        while self.0[x as usize] != x {
+            let up = self.0[self.0[x as usize] as usize];
+            self.0[x as usize] = up;
+            x = up;
+        }
+        x
+    }
+
+    pub(crate) fn union(&mut self, a: u32, b: u32) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            self.0[ra.max(rb) as usize] = ra.min(rb);
+        }
+    }
+
+    /// Number of sets among the elements marked in `used`.
+    pub(crate) fn roots_among(&mut self, used: &[bool]) -> u64 {
+        (0..used.len() as u32)
+            .filter(|&x| used[x as usize] && self.find(x) == x)
+            .count() as u64
+    }
+}

@@ -1,0 +1,259 @@
+//! Making, freeing and re-levelling `chf_mesh` handles, and their counts.
+
+use super::boundary::{
+    cstr_arg, free_handle, guard, guard_or, handle, handle_mut, handle_out, new_handle, slice_arg,
+};
+use super::che::level_arg;
+use super::chf::{ChfBuildOptions, ChfMesh};
+use super::status::Status;
+use crate::chf::{Chf, ChfBuildOptions as CoreOptions, MAX_TETRAHEDRA};
+use crate::error::{Error, Result};
+use glam::DVec3;
+use std::ffi::c_char;
+
+// Positions arrive as `3 * n` doubles and are viewed as `n` `DVec3` without a copy.
+const _: () = {
+    assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
+    assert!(std::mem::align_of::<DVec3>() == std::mem::align_of::<f64>());
+};
+
+/// Builds from C arrays (sizes checked before any slice is made).
+///
+/// # Safety
+/// `tets` is NULL or holds `4 * n_tets` ids; `positions` is NULL or holds `3 * n_vertices`
+/// doubles.
+unsafe fn build(
+    tets: *const u32,
+    n_tets: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    options: CoreOptions,
+) -> Result<ChfMesh> {
+    if n_tets > MAX_TETRAHEDRA {
+        return Err(Error::too_large(format!(
+            "{n_tets} tetrahedra: half-face ids must fit below 2^32 - 1 \
+             (at most {MAX_TETRAHEDRA} tetrahedra)"
+        )));
+    }
+    if n_vertices >= u32::MAX as usize {
+        return Err(Error::too_large(format!(
+            "{n_vertices} vertices: ids must fit below 2^32 - 1"
+        )));
+    }
+    // SAFETY: sizes bounded above (far below isize::MAX bytes); the caller contract covers
+    // the pointers. `DVec3` is `repr(C)` with three `f64` (asserted above).
+    let (flat, points) = unsafe {
+        let flat = slice_arg(tets, 4 * n_tets, "tetrahedra")?;
+        let points: &[DVec3] = if positions.is_null() {
+            &[]
+        } else {
+            slice_arg(positions.cast::<DVec3>(), n_vertices, "positions")?
+        };
+        (flat, points)
+    };
+    Ok(ChfMesh::new(Chf::from_flat(
+        flat, n_vertices, points, options,
+    )?))
+}
+
+/// Builds a CHF at `level` (0..3) from `n_tets` tetrahedra (4 vertex ids each, over
+/// vertices `0..n_vertices`). `positions` may be NULL; otherwise it holds 3 doubles (x, y,
+/// z) per input vertex (they only orient each component, positive volume where possible,
+/// and count zero-volume and inverted tetrahedra in the report). `tetrahedra` may be NULL
+/// when `n_tets == 0`.
+///
+/// Input vertex ids are kept; copies made by splitting non-manifold vertices are appended
+/// after them (see `chf_mesh_vertex_origins`). Input tetrahedron order is kept; degenerate
+/// tetrahedra (a repeated id) are dropped (see `chf_mesh_tetrahedron_origins`). Every
+/// component is oriented consistently (local vertices 1 and 2 swapped where needed);
+/// `chf_mesh_report` says what was changed. Non-manifold input is kept (faces of three or
+/// more tetrahedra stay unpaired; see `chf_mesh_from_tetrahedra_ex` for strict mode).
+/// A tetrahedron naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`;
+/// more than 2^32 - 2 vertices or 1073741823 tetrahedra `TOPOMESH_STATUS_TOO_LARGE`.
+/// `*out` is NULL on failure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_from_tetrahedra(
+    tetrahedra: *const u32,
+    n_tets: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    level: u32,
+    out: *mut *mut ChfMesh,
+) -> Status {
+    let options = ChfBuildOptions {
+        level,
+        ..ChfBuildOptions::default()
+    };
+    // SAFETY: the same contract as the `_ex` variant; `options` is a local.
+    unsafe { chf_mesh_from_tetrahedra_ex(tetrahedra, n_tets, n_vertices, positions, &options, out) }
+}
+
+/// `chf_mesh_from_tetrahedra` with options (NULL: `chf_build_options_default()`). With
+/// `strict`, non-manifold input fails with `TOPOMESH_STATUS_NON_MANIFOLD`, the detail
+/// naming the offending face and tetrahedra, edge, or vertex.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_from_tetrahedra_ex(
+    tetrahedra: *const u32,
+    n_tets: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    options: *const ChfBuildOptions,
+    out: *mut *mut ChfMesh,
+) -> Status {
+    guard(|| {
+        // SAFETY: caller contract: `out` is NULL or writable, `options` NULL or readable,
+        // the arrays NULL or of the stated sizes.
+        unsafe {
+            let out = handle_out(out, "out")?;
+            let options = options.as_ref().copied().unwrap_or_default().to_core()?;
+            let mesh = build(tetrahedra, n_tets, n_vertices, positions, options)?;
+            new_handle(mesh, &out);
+        }
+        Ok(())
+    })
+}
+
+/// Reads a volume file (the format from the extension: .mesh (Medit), .msh (Gmsh), .vtk,
+/// .node/.ele (TetGen)) and builds its tetrahedra at `level` (triangles the file also
+/// holds, such as its boundary, are ignored). A missing or unreadable file gives
+/// `TOPOMESH_STATUS_IO`, a malformed one `TOPOMESH_STATUS_PARSE` (the detail names the
+/// file and line), a file without tetrahedra (a surface) `TOPOMESH_STATUS_INVALID_INPUT`.
+/// `*out` is NULL on failure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_load(
+    path: *const c_char,
+    level: u32,
+    out: *mut *mut ChfMesh,
+) -> Status {
+    let options = ChfBuildOptions {
+        level,
+        ..ChfBuildOptions::default()
+    };
+    // SAFETY: the same contract as the `_ex` variant; `options` is a local.
+    unsafe { chf_mesh_load_ex(path, &options, out) }
+}
+
+/// `chf_mesh_load` with options (NULL: `chf_build_options_default()`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_load_ex(
+    path: *const c_char,
+    options: *const ChfBuildOptions,
+    out: *mut *mut ChfMesh,
+) -> Status {
+    guard(|| {
+        // SAFETY: caller contract: `out` NULL or writable, `options` NULL or readable,
+        // `path` NULL or NUL-terminated.
+        let (out, options, path) = unsafe {
+            (
+                handle_out(out, "out")?,
+                options.as_ref().copied().unwrap_or_default().to_core()?,
+                cstr_arg(path, "path")?,
+            )
+        };
+        let path = std::path::Path::new(
+            <std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(path.to_bytes()),
+        );
+        let data = crate::io::read(path)?;
+        if !data.is_volume() {
+            return Err(Error::invalid(format!(
+                "{}: holds no tetrahedra ({} triangles: a surface, not a volume mesh)",
+                path.display(),
+                data.triangles.len()
+            )));
+        }
+        let chf = Chf::from_tetrahedra(
+            &data.tetrahedra,
+            data.num_vertices(),
+            &data.positions,
+            options,
+        )?;
+        new_handle(ChfMesh::new(chf), &out);
+        Ok(())
+    })
+}
+
+/// Frees a mesh; NULL is a no-op. Needs exclusive access.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_free(m: *mut ChfMesh) {
+    // Dropping plain vectors cannot panic; guard anyway so that nothing ever unwinds.
+    guard(|| {
+        // SAFETY: caller contract: NULL or a live handle, freed once.
+        unsafe { free_handle(m) };
+        Ok(())
+    });
+}
+
+/// Raises or lowers the level (0..3) in place. Ids never change with the level; views
+/// obtained before are invalid afterwards. Needs exclusive access.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_build_level(m: *mut ChfMesh, level: u32) -> Status {
+    guard(|| {
+        // SAFETY: caller contract: NULL or a live handle, not shared during the call.
+        let m = unsafe { handle_mut(m, "m")? };
+        m.chf.build_level(level_arg(level)?)
+    })
+}
+
+/// Runs a count on a handle; NULL gives 0.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+unsafe fn count(m: *const ChfMesh, f: impl FnOnce(&Chf) -> usize) -> usize {
+    guard_or(0, || {
+        // SAFETY: forwarded contract.
+        let m = unsafe { handle(m, "m")? };
+        Ok(f(&m.chf))
+    })
+}
+
+/// The current level (0..3); 0 for NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_level(m: *const ChfMesh) -> u32 {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, |c| c.level() as usize) as u32 }
+}
+
+/// Vertices of the structure: the input vertices, then the copies made by splitting
+/// non-manifold vertices. 0 for NULL (and likewise for the other counts).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_vertices(m: *const ChfMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Chf::num_vertices) }
+}
+
+/// Vertices given as input (ids `0..n` of the structure are the same vertices).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_input_vertices(m: *const ChfMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Chf::num_input_vertices) }
+}
+
+/// Tetrahedra kept (degenerate input tetrahedra are dropped).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_tetrahedra(m: *const ChfMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Chf::num_tetrahedra) }
+}
+
+/// Faces of the structure: paired half-faces count once, unpaired ones (boundary, and the
+/// half-faces of a non-manifold face, which stay unpaired) once each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_faces(m: *const ChfMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Chf::num_faces) }
+}
+
+/// Edges of the structure: one per fan of tetrahedra around a vertex pair (a non-manifold
+/// edge whose fans the vertex split did not separate counts once per fan).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_edges(m: *const ChfMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Chf::num_edges) }
+}
+
+/// Half-faces: 4 per tetrahedron (half-face `4t + i` is the face opposite local vertex `i`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_half_faces(m: *const ChfMesh) -> usize {
+    // SAFETY: caller contract: NULL or a live handle.
+    unsafe { count(m, Chf::num_half_faces) }
+}

@@ -1,0 +1,341 @@
+//! The 16 relations, one element at a time.
+//!
+//! Every relation call has the form `(m, id, buf, cap, *out_len)`: the answer goes into
+//! `buf[0..*out_len]`. `buf == NULL` with `cap == 0` is a size query (OK, `*out_len` set).
+//! A buffer shorter than the answer receives its first `cap` entries and the call returns
+//! `TOPOMESH_STATUS_BUFFER_TOO_SMALL` with the needed length in `*out_len`. An id out of
+//! range gives `TOPOMESH_STATUS_OUT_OF_RANGE` (the detail names it) and writes nothing.
+//!
+//! Every relation works at every level with the same answer in the same order; a higher
+//! level only answers faster. Below level 2 a call computes the tables it needs (face and
+//! edge ranks, and `O` at level 0) for itself: O(T) per call. Answers are bounded except
+//! around a vertex (VV, VE, VF, VT) and an edge (EE, EF, ET): size them with a query or
+//! use the bulk calls (`chf_mesh_*_csr`).
+
+use super::boundary::ids_answer;
+use super::chf::ChfMesh;
+use super::status::Status;
+
+/// VV: the vertices sharing an edge with `v`, each once, in the breadth-first order of its
+/// star (tetrahedra reached across the faces holding `v`; there is no rotation order
+/// around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
+/// each call also computes the missing tables, O(T).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_vertex_vertices(
+    m: *const ChfMesh,
+    v: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_vertex(v)?;
+            s.extend(m.chf.vertex_vertices(v));
+            Ok(())
+        })
+    }
+}
+
+/// VE: the edges holding `v`, each once, in the order of its star. O(star) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_vertex_edges(
+    m: *const ChfMesh,
+    v: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_vertex(v)?;
+            s.extend(m.chf.vertex_edges(v));
+            Ok(())
+        })
+    }
+}
+
+/// VF: the faces holding `v`, each once, in the order of its star. O(star) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_vertex_faces(
+    m: *const ChfMesh,
+    v: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_vertex(v)?;
+            s.extend(m.chf.vertex_faces(v));
+            Ok(())
+        })
+    }
+}
+
+/// VT: the tetrahedra holding `v`, each once, breadth-first from the half-face
+/// `chf_vertex_half_face` gives. O(star) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_vertex_tetrahedra(
+    m: *const ChfMesh,
+    v: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_vertex(v)?;
+            s.extend(m.chf.vertex_tetrahedra(v));
+            Ok(())
+        })
+    }
+}
+
+/// EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (where its
+/// rotation starts: on a boundary face for a boundary edge). O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_edge_vertices(
+    m: *const ChfMesh,
+    e: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_edge(e)?;
+            s.extend(m.chf.edge_vertices(e));
+            Ok(())
+        })
+    }
+}
+
+/// EE: the edges sharing a face with `e`, each once: for each face of `chf_edge_faces`, in
+/// that order, its two other edges (next, then previous in the face's order). O(k) walks
+/// from level 2 (k: tetrahedra around each edge).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_edge_edges(
+    m: *const ChfMesh,
+    e: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_edge(e)?;
+            s.extend(m.chf.edge_edges(e));
+            Ok(())
+        })
+    }
+}
+
+/// EF: the faces around edge `e` in rotation order; on a boundary edge from one boundary
+/// face to the other (one more face than tetrahedra). O(k) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_edge_faces(
+    m: *const ChfMesh,
+    e: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_edge(e)?;
+            s.extend(m.chf.edge_faces(e));
+            Ok(())
+        })
+    }
+}
+
+/// ET: the tetrahedra around edge `e` in rotation order, from the boundary on a boundary
+/// edge. O(k) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_edge_tetrahedra(
+    m: *const ChfMesh,
+    e: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_edge(e)?;
+            s.extend(m.chf.edge_tetrahedra(e));
+            Ok(())
+        })
+    }
+}
+
+/// FV: the 3 vertices of face `f` in the order of its canonical half-face (the boundary
+/// one on a boundary face, else the smaller of the two), outward for that half-face's
+/// tetrahedron. O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_face_vertices(
+    m: *const ChfMesh,
+    f: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_face(f)?;
+            s.extend(m.chf.face_vertices(f));
+            Ok(())
+        })
+    }
+}
+
+/// FE: the 3 edges of face `f`; edge `j` runs from vertex `j` to vertex `j + 1` of
+/// `chf_face_vertices`. O(k) per edge from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_face_edges(
+    m: *const ChfMesh,
+    f: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_face(f)?;
+            s.extend(m.chf.face_edges(f));
+            Ok(())
+        })
+    }
+}
+
+/// FF: the faces sharing a tetrahedron with `f` (hence an edge), each once: the other three
+/// faces of the canonical half-face's tetrahedron, then of its twin's (3 on a boundary
+/// face, 6 inside). O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_face_faces(
+    m: *const ChfMesh,
+    f: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_face(f)?;
+            s.extend(m.chf.face_faces(f));
+            Ok(())
+        })
+    }
+}
+
+/// FT: the tetrahedra of face `f` (2 entries, 1 on a boundary face), the canonical
+/// half-face's first. O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_face_tetrahedra(
+    m: *const ChfMesh,
+    f: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_face(f)?;
+            s.extend(m.chf.face_tetrahedra(f));
+            Ok(())
+        })
+    }
+}
+
+/// TV: the 4 vertices of tetrahedron `t` (`V[4t .. 4t + 4]`, positively oriented when
+/// built with positions and orientable). O(1) at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_tetrahedron_vertices(
+    m: *const ChfMesh,
+    t: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_tetrahedron(t)?;
+            s.extend(m.chf.tetrahedron_vertices(t));
+            Ok(())
+        })
+    }
+}
+
+/// TE: the 6 edges of tetrahedron `t`, in local-pair order (0,1) (0,2) (0,3) (1,2) (1,3)
+/// (2,3). O(k) per edge from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_tetrahedron_edges(
+    m: *const ChfMesh,
+    t: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_tetrahedron(t)?;
+            s.extend(m.chf.tetrahedron_edges(t));
+            Ok(())
+        })
+    }
+}
+
+/// TF: the 4 faces of tetrahedron `t`; face `i` (half-face `4t + i`) is opposite vertex
+/// `i`. O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_tetrahedron_faces(
+    m: *const ChfMesh,
+    t: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_tetrahedron(t)?;
+            s.extend(m.chf.tetrahedron_faces(t));
+            Ok(())
+        })
+    }
+}
+
+/// TT: always 4 entries, the tetrahedron across face `i` of `t`, or `TOPOMESH_NONE` on
+/// the boundary (also across the faces of a non-manifold face and orientation seams,
+/// which the structure keeps unpaired). O(1) from level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_tetrahedron_tetrahedra(
+    m: *const ChfMesh,
+    t: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe {
+        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
+            m.chf.check_tetrahedron(t)?;
+            s.extend(m.chf.tetrahedron_tetrahedra(t));
+            Ok(())
+        })
+    }
+}

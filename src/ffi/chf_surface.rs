@@ -1,0 +1,157 @@
+//! The boundary surface of a volume mesh as a CHE, and the maps between its triangles and
+//! the boundary half-faces and faces.
+//!
+//! Triangle `k` of the boundary surface is the `k`-th unpaired half-face in increasing
+//! order (boundary faces, and also the half-faces of non-manifold faces and orientation
+//! seams, which the structure keeps unpaired), its corners in the half-face's outward
+//! order, its vertex ids the CHF's (interior vertices are isolated vertices of the CHE, so
+//! they count in its `che_summary`; vertices the CHE itself splits are appended after the
+//! CHF's, see its `che_mesh_vertex_origins`). Every call works at every level: O(1) per
+//! element at level 3, which stores the surface and the maps; O(T) per call below.
+
+use super::boundary::{guard, guard_or, handle, handle_out, new_handle, value_answer};
+use super::che::CheMesh;
+use super::chf::ChfMesh;
+use super::status::Status;
+use crate::NONE;
+use crate::error::Error;
+
+/// The boundary surface as a new CHE at level 3 into `*out`, which the caller frees with
+/// `che_mesh_free` (it does not borrow the volume mesh). A copy of the stored surface at
+/// level 3; built, O(T), below. A closed volume gives a closed surface (no boundary
+/// curves); a mesh without tetrahedra an empty one. `*out` is NULL on failure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_boundary(m: *const ChfMesh, out: *mut *mut CheMesh) -> Status {
+    guard(|| {
+        // SAFETY: caller contract: `m` NULL or live, `out` NULL or writable. `out` first,
+        // so that it is NULL on every failure.
+        let (out, m) = unsafe { (handle_out(out, "out")?, handle(m, "m")?) };
+        let che = m.chf.boundary_surface()?;
+        new_handle(CheMesh::new(che), &out);
+        Ok(())
+    })
+}
+
+/// Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface. This counts the
+/// structure (each half-face of a non-manifold face too), unlike `boundary_faces` in
+/// `chf_summary`, which counts input faces with one tetrahedron. O(1) at level 3, O(T)
+/// below; 0 for NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_boundary_faces(m: *const ChfMesh) -> usize {
+    guard_or(0, || {
+        // SAFETY: caller contract: NULL or a live handle.
+        let m = unsafe { handle(m, "m")? };
+        Ok(m.chf.boundary_half_faces().len())
+    })
+}
+
+/// Boundary components of the structure (after the vertex split): components of the
+/// boundary faces joined through shared vertices. O(1) at level 3, O(T) below; 0 for NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_boundary_components(m: *const ChfMesh) -> usize {
+    guard_or(0, || {
+        // SAFETY: caller contract: NULL or a live handle.
+        let m = unsafe { handle(m, "m")? };
+        Ok(m.chf.num_boundary_components())
+    })
+}
+
+/// The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is
+/// paired (interior).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_half_face_boundary_triangle(
+    m: *const ChfMesh,
+    hf: u32,
+    out: *mut u32,
+) -> Status {
+    // SAFETY: caller contract.
+    unsafe {
+        value_answer(m, out, |m: &ChfMesh| {
+            m.chf.check_half_face(hf)?;
+            Ok(m.chf.boundary_triangle(hf))
+        })
+    }
+}
+
+/// The half-face of boundary triangle `k` into `*out`; `k` out of range (see
+/// `chf_mesh_num_boundary_faces`) gives OUT_OF_RANGE.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_boundary_triangle_half_face(
+    m: *const ChfMesh,
+    k: u32,
+    out: *mut u32,
+) -> Status {
+    // SAFETY: caller contract.
+    unsafe {
+        value_answer(m, out, |m: &ChfMesh| {
+            let list = m.chf.boundary_half_faces();
+            list.get(k as usize).copied().ok_or_else(|| {
+                Error::out_of_range(format!(
+                    "boundary triangle {k} out of range (the boundary has {} triangles)",
+                    list.len()
+                ))
+            })
+        })
+    }
+}
+
+/// The boundary triangle of face `f` into `*out`, `TOPOMESH_NONE` for an interior face.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_face_boundary_triangle(
+    m: *const ChfMesh,
+    f: u32,
+    out: *mut u32,
+) -> Status {
+    // SAFETY: caller contract.
+    unsafe {
+        value_answer(m, out, |m: &ChfMesh| {
+            m.chf.check_face(f)?;
+            let hf = m.chf.face_half_face(f);
+            // An unpaired half-face names its face alone; a paired face is interior.
+            Ok(if m.chf.opposite(hf) == NONE {
+                m.chf.boundary_triangle(hf)
+            } else {
+                NONE
+            })
+        })
+    }
+}
+
+/// The face of boundary triangle `k` into `*out`; `k` out of range gives OUT_OF_RANGE.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_boundary_triangle_face(
+    m: *const ChfMesh,
+    k: u32,
+    out: *mut u32,
+) -> Status {
+    // SAFETY: caller contract.
+    unsafe {
+        value_answer(m, out, |m: &ChfMesh| {
+            let list = m.chf.boundary_half_faces();
+            let &hf = list.get(k as usize).ok_or_else(|| {
+                Error::out_of_range(format!(
+                    "boundary triangle {k} out of range (the boundary has {} triangles)",
+                    list.len()
+                ))
+            })?;
+            Ok(m.chf.face_of(hf))
+        })
+    }
+}
+
+/// The boundary component of vertex `v` into `*out` (`TOPOMESH_NONE` off the boundary;
+/// see `chf_mesh_vertex_boundary_components`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_vertex_boundary_component(
+    m: *const ChfMesh,
+    v: u32,
+    out: *mut u32,
+) -> Status {
+    // SAFETY: caller contract.
+    unsafe {
+        value_answer(m, out, |m: &ChfMesh| {
+            m.chf.check_vertex(v)?;
+            Ok(m.chf.boundary_component(v))
+        })
+    }
+}

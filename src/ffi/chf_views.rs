@@ -1,0 +1,143 @@
+//! Zero-copy views of the containers. Each returns a pointer to the first element and
+//! writes the element count to `*len` (when `len` is not NULL); NULL (and `*len = 0`) when
+//! the handle is NULL or the container does not exist at the current level. A view is
+//! valid until the mesh is freed or its level changes (`chf_mesh_build_level`). An empty
+//! container may be returned as a non-NULL pointer with `*len == 0`.
+
+use super::boundary::{guard_or, handle};
+use super::chf::ChfMesh;
+use glam::DVec3;
+use std::borrow::Cow;
+use std::ptr;
+
+/// Points as their coordinates.
+fn flat(points: &[DVec3]) -> &[f64] {
+    const _: () = assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
+    // SAFETY: `DVec3` is `repr(C)` with three `f64` fields and no padding (asserted), so `n`
+    // points are `3 n` contiguous, aligned doubles borrowed for the same lifetime.
+    unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f64>(), 3 * points.len()) }
+}
+
+/// Shared body of the views.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `len` NULL or valid for one write.
+unsafe fn view<T>(
+    m: *const ChfMesh,
+    len: *mut usize,
+    f: impl FnOnce(&ChfMesh) -> Option<&[T]>,
+) -> *const T {
+    let (p, n) = guard_or((ptr::null(), 0), || {
+        // SAFETY: forwarded contract.
+        let m = unsafe { handle(m, "m")? };
+        Ok(f(m).map_or((ptr::null(), 0), |s| (s.as_ptr(), s.len())))
+    });
+    if !len.is_null() {
+        // SAFETY: non-NULL, valid for one write (contract).
+        unsafe { len.write(n) };
+    }
+    p
+}
+
+/// `V`: vertex `i` of tetrahedron `t` at `V[4t + i]` (`4 * num_tetrahedra` entries); also
+/// the vertex each half-face `4t + i` is opposite. The vertices of half-face `hf` in its
+/// outward order are `V[chf_face_corner(hf, j)]`, j = 0, 1, 2. All levels.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_half_face_vertices(
+    m: *const ChfMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| Some(m.chf.half_face_vertices())) }
+}
+
+/// `O`: the twin of every half-face (`TOPOMESH_NONE` on the boundary). NULL below level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_opposites(m: *const ChfMesh, len: *mut usize) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.chf.opposites()) }
+}
+
+/// `VH`: one half-face holding each vertex, a boundary one on a boundary vertex,
+/// `TOPOMESH_NONE` for an isolated vertex (`num_vertices` entries). NULL below level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_vertex_half_faces(
+    m: *const ChfMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.chf.vertex_half_faces()) }
+}
+
+/// `FH`: the canonical half-face of every face (`num_faces` entries, increasing; the
+/// boundary one on a boundary face). NULL below level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_face_half_faces(
+    m: *const ChfMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.chf.face_half_faces()) }
+}
+
+/// The boundary half-faces in increasing order: triangle `k` of `chf_mesh_boundary`'s
+/// surface is the `k`-th. NULL below level 3 (then use `chf_boundary_triangle_half_face`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_boundary_half_faces(
+    m: *const ChfMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe {
+        view(m, len, |m| match m.chf.boundary_half_faces() {
+            Cow::Borrowed(s) => Some(s),
+            Cow::Owned(_) => None,
+        })
+    }
+}
+
+/// The boundary component of every vertex (`num_vertices` entries; `TOPOMESH_NONE` off
+/// the boundary): components of the boundary faces joined through shared vertices,
+/// numbered in order of their first boundary half-face. NULL below level 3.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_vertex_boundary_components(
+    m: *const ChfMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.chf.boundary_components()) }
+}
+
+/// Positions: x, y, z per structure vertex (copies repeat their origin's position);
+/// `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_positions(m: *const ChfMesh, len: *mut usize) -> *const f64 {
+    // SAFETY: caller contract.
+    unsafe {
+        view(m, len, |m| {
+            let p = m.chf.positions();
+            (!p.is_empty()).then(|| flat(p))
+        })
+    }
+}
+
+/// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
+/// vertices, then the origin of each split copy). Materialised on first use when it is the
+/// identity; then kept with the mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_vertex_origins(m: *const ChfMesh, len: *mut usize) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| Some(m.vertex_origins())) }
+}
+
+/// Structure tetrahedron -> input tetrahedron (`num_tetrahedra` entries; increasing, with
+/// gaps where degenerate tetrahedra were dropped). Materialised on first use when it is
+/// the identity.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_tetrahedron_origins(
+    m: *const ChfMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| Some(m.tetrahedron_origins())) }
+}

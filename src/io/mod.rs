@@ -122,7 +122,7 @@ pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
     };
     match format {
         Format::Off => off::parse(bytes, name),
-        Format::Obj => obj::parse(bytes.to_vec(), name),
+        Format::Obj => obj::parse(bytes, name),
         Format::Ply => ply::parse(bytes, name),
         Format::Stl => stl::parse(bytes, name),
         Format::Medit => medit::parse(text()?, name),

@@ -10,6 +10,7 @@ pub mod error;
 pub mod ffi;
 pub mod generate;
 pub mod io;
+mod pages;
 mod rank;
 mod small_ids;
 

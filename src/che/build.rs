@@ -75,7 +75,7 @@ pub(crate) fn build(
     };
 
     // Soup: range check, degenerate triangles dropped.
-    let mut v: Vec<u32> = Vec::with_capacity(3 * triangles.len());
+    let mut v: Vec<u32> = crate::pages::with_capacity(3 * triangles.len());
     let mut triangle_origin: Vec<u32> = Vec::new();
     let mut dropped_any = false;
     for (t, tri) in triangles.iter().enumerate() {
@@ -110,7 +110,7 @@ pub(crate) fn build(
     };
 
     // Match on unordered vertex pairs; pairs of exactly two are partners.
-    let mut partner = vec![NONE; v.len()];
+    let mut partner = crate::pages::filled(v.len(), NONE);
     let mut non_manifold: Vec<u32> = Vec::new();
     let mut same_direction = false;
     let mut duplicates: Vec<[u32; 2]> = Vec::new();

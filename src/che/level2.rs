@@ -8,7 +8,7 @@ use crate::rank::RankBits;
 
 pub(crate) fn build(che: &mut Che) {
     let (v, o) = (&che.v, &che.o);
-    let mut vh = vec![NONE; che.n_vertices];
+    let mut vh = crate::pages::filled(che.n_vertices, NONE);
     for (h, (&x, &opp)) in v.iter().zip(o).enumerate() {
         let slot = &mut vh[x as usize];
         if *slot == NONE || opp == NONE {
@@ -26,7 +26,7 @@ pub(crate) fn build_edges(che: &mut Che) {
         let g = o[h];
         g == NONE || (h as u32) < g
     });
-    let mut eh = Vec::with_capacity(edge_bits.ones());
+    let mut eh = crate::pages::with_capacity(edge_bits.ones());
     eh.extend((0..v.len() as u32).filter(|&h| edge_bits.get(h as usize)));
     debug_assert_eq!(eh.len(), che.num_edges);
     che.edge_bits = edge_bits;

@@ -12,11 +12,29 @@ use crate::NONE;
 /// A two-pass radix on the smaller vertex: the first pass scatters to at most 2048 coarse
 /// buckets (streaming writes, where one scatter per vertex would miss the cache on every
 /// half-edge of a large mesh), the second sorts one coarse bucket at a time in cache.
-pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, mut f: impl FnMut(u32, u32, &[u64])) {
+/// The first pass stores one `u64` per half-edge, `[fine | max | h]`, where `fine` is the low
+/// bits of the smaller vertex (the coarse bucket holds the rest): 8 bytes of fresh memory
+/// per half-edge instead of 12. Meshes too large for that (over about 30M triangles) keep
+/// the fine bits in a second array.
+pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, f: impl FnMut(u32, u32, &[u64])) {
+    groups(v, n_vertices, true, f)
+}
+
+/// [`for_each_group`], with the packed keys allowed or not (tests take both paths).
+fn groups(v: &[u32], n_vertices: usize, allow_packed: bool, mut f: impl FnMut(u32, u32, &[u64])) {
     const COARSE_BITS: u32 = 11;
-    let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
-    let shift = bits.saturating_sub(COARSE_BITS);
+    let bits_of = |n: usize| usize::BITS - n.saturating_sub(1).leading_zeros();
+    let vertex_bits = bits_of(n_vertices);
+    let shift = vertex_bits.saturating_sub(COARSE_BITS);
     let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
+    let h_bits = bits_of(v.len());
+    let packed = allow_packed && shift + vertex_bits + h_bits <= 64;
+    // Where `max` and `fine` sit in a key.
+    let (max_at, fine_at) = if packed {
+        (h_bits, h_bits + vertex_bits)
+    } else {
+        (32, 64)
+    };
     let ends = |h: u32| {
         let (a, b) = (v[h as usize], v[next(h) as usize]);
         (a.min(b), a.max(b))
@@ -30,13 +48,23 @@ pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, mut f: impl FnMut(u32
         start[c + 1] += start[c];
     }
     let mut fill = start.clone();
-    let mut keys = vec![0u64; v.len()];
-    let mut mins = vec![0u32; v.len()];
+    let fine_mask = (1u32 << shift) - 1;
+    let mut keys: Vec<u64> = crate::pages::filled(v.len(), 0);
+    let mut mins: Vec<u32> = if packed {
+        Vec::new()
+    } else {
+        crate::pages::filled(v.len(), 0)
+    };
     for h in 0..v.len() as u32 {
         let (min, max) = ends(h);
         let slot = &mut fill[(min >> shift) as usize];
-        keys[*slot as usize] = ((max as u64) << 32) | h as u64;
-        mins[*slot as usize] = min;
+        let fine = if packed {
+            ((min & fine_mask) as u64) << fine_at
+        } else {
+            mins[*slot as usize] = min;
+            0
+        };
+        keys[*slot as usize] = fine | ((max as u64) << max_at) | h as u64;
         *slot += 1;
     }
     drop(fill);
@@ -45,16 +73,24 @@ pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, mut f: impl FnMut(u32
     let n_fine = 1usize << shift;
     let mut fine_start = vec![0u32; n_fine + 1];
     let mut local: Vec<u64> = Vec::new();
+    let h_mask = (1u64 << max_at) - 1;
+    let max_mask = (1u64 << (fine_at - max_at)) - 1;
+    let fine_of = |i: usize, k: u64| {
+        if packed {
+            (k >> fine_at) as u32 & fine_mask
+        } else {
+            mins[i] & fine_mask
+        }
+    };
     for c in 0..n_coarse {
         let range = start[c] as usize..start[c + 1] as usize;
         if range.is_empty() {
             continue;
         }
-        let (ck, cm) = (&keys[range.clone()], &mins[range]);
+        let ck = &keys[range.clone()];
         fine_start.fill(0);
-        let mask = (n_fine - 1) as u32;
-        for &m in cm {
-            fine_start[(m & mask) as usize + 1] += 1;
+        for (i, &k) in range.clone().zip(ck) {
+            fine_start[fine_of(i, k) as usize + 1] += 1;
         }
         for i in 0..n_fine {
             fine_start[i + 1] += fine_start[i];
@@ -62,9 +98,10 @@ pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, mut f: impl FnMut(u32
         local.clear();
         local.resize(ck.len(), 0);
         let mut cursor = fine_start.clone();
-        for (&k, &m) in ck.iter().zip(cm) {
-            let slot = &mut cursor[(m & mask) as usize];
-            local[*slot as usize] = k;
+        for (i, &k) in range.zip(ck) {
+            let slot = &mut cursor[fine_of(i, k) as usize];
+            // The group format: (max << 32) | h.
+            local[*slot as usize] = ((k >> max_at) & max_mask) << 32 | (k & h_mask);
             *slot += 1;
         }
         for i in 0..n_fine {
@@ -156,11 +193,14 @@ mod tests {
                 let (a, b) = (v[h as usize], v[next(h) as usize]);
                 expected.entry((a.min(b), a.max(b))).or_default().push(h);
             }
-            let mut got = Vec::new();
-            for_each_group(&v, n, |a, b, g| {
-                got.push(((a, b), g.iter().map(|&k| half_edge(k)).collect::<Vec<_>>()))
-            });
-            assert_eq!(got, expected.into_iter().collect::<Vec<_>>(), "n = {n}");
+            let expected: Vec<_> = expected.into_iter().collect();
+            for packed in [true, false] {
+                let mut got = Vec::new();
+                groups(&v, n, packed, |a, b, g| {
+                    got.push(((a, b), g.iter().map(|&k| half_edge(k)).collect::<Vec<_>>()))
+                });
+                assert_eq!(got, expected, "n = {n}, packed {packed}");
+            }
         }
     }
 }

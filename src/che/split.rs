@@ -7,6 +7,112 @@ use super::report::push_example;
 use crate::NONE;
 use crate::dsu::Dsu;
 
+fn test(bits: &[u64], i: u32) -> bool {
+    (bits[(i >> 6) as usize] >> (i & 63)) & 1 == 1
+}
+
+fn set(bits: &mut [u64], i: u32) {
+    bits[(i >> 6) as usize] |= 1 << (i & 63);
+}
+
+/// Walks the fan of `h`'s origin through `h`: counter-clockwise until back at `h` (a closed
+/// fan) or the boundary, then clockwise from `h` for the rest of an open fan. Calls `visit`
+/// on every half-edge of the fan; returns the fan's `VH` half-edge (its outgoing boundary
+/// half-edge, or `h` when closed) and its size.
+fn walk_fan(o: &[u32], h: u32, visit: &mut impl FnMut(u32)) -> (u32, u32) {
+    let mut count = 1;
+    visit(h);
+    let mut g = h;
+    loop {
+        let around = o[prev(g) as usize];
+        if around == h {
+            return (h, count);
+        }
+        if around == NONE {
+            break;
+        }
+        g = around;
+        count += 1;
+        visit(g);
+    }
+    let mut start = h;
+    loop {
+        let back = o[start as usize];
+        if back == NONE {
+            return (start, count);
+        }
+        start = next(back);
+        count += 1;
+        visit(start);
+    }
+}
+
+/// `VH` of every vertex whose outgoing half-edges form one fan, and the vertices whose do
+/// not (several fans). One counting pass finds each vertex's first outgoing half-edge and
+/// its number of them; then a walk from that half-edge must meet them all. The walks are
+/// dependent chains of random `O` loads, so `LANES` of them advance in step: their cache
+/// misses overlap instead of queueing.
+fn single_fans(v: &[u32], o: &[u32], n_vertices: usize) -> (Vec<u32>, Vec<u32>) {
+    const LANES: usize = 8;
+    let mut vh = crate::pages::filled(n_vertices, NONE);
+    let mut degree = crate::pages::filled(n_vertices, 0u32);
+    for h in (0..v.len() as u32).rev() {
+        let x = v[h as usize] as usize;
+        vh[x] = h;
+        degree[x] += 1;
+    }
+    let mut several = Vec::new();
+    let mut lane = [(0u32, 0u32, 0u32, false); LANES]; // (start, current, count, walking)
+    let mut open: Vec<u32> = Vec::new();
+    let mut x = 0usize;
+    while x < n_vertices {
+        let mut vertices = [0u32; LANES];
+        let mut n = 0;
+        while n < LANES && x < n_vertices {
+            if vh[x] != NONE {
+                vertices[n] = x as u32;
+                lane[n] = (vh[x], vh[x], 1, true);
+                n += 1;
+            }
+            x += 1;
+        }
+        let mut walking = n;
+        while walking > 0 {
+            for l in lane[..n].iter_mut().filter(|l| l.3) {
+                let around = o[prev(l.1) as usize];
+                if around == l.0 || around == NONE {
+                    l.3 = false;
+                    walking -= 1;
+                    if around == NONE {
+                        l.2 = NONE; // open: finished below
+                    }
+                } else {
+                    l.1 = around;
+                    l.2 += 1;
+                }
+            }
+        }
+        for (&vertex, l) in vertices[..n].iter().zip(&lane[..n]) {
+            if l.2 == NONE {
+                open.push(vertex);
+            } else if l.2 != degree[vertex as usize] {
+                several.push(vertex);
+            }
+        }
+    }
+    // Boundary vertices: the whole walk again, with the clockwise part (rare enough).
+    for x in open {
+        let (start, count) = walk_fan(o, vh[x as usize], &mut |_| {});
+        if count == degree[x as usize] {
+            vh[x as usize] = start;
+        } else {
+            several.push(x);
+        }
+    }
+    several.sort_unstable();
+    (vh, several)
+}
+
 pub(crate) struct Split {
     /// Origins of the appended copies (input ids), in order of creation.
     pub copies: Vec<u32>,
@@ -22,60 +128,40 @@ pub(crate) struct Split {
 
 /// Rewrites `v` so that every vertex id names one fan. `seams` (sorted, pairs running the
 /// same way) tell which extra fans are only cut by a seam, not non-manifold in the input.
+///
+/// Most vertices are manifold: one walk from their first outgoing half-edge meets all of
+/// them ([`single_fans`], several walks at a time). Only the others take the general walk
+/// over every one of their half-edges, in half-edge order, which numbers the copies.
 pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) -> Split {
-    let mut visited = vec![0u64; v.len().div_ceil(64)];
-    let mut vh = vec![NONE; n_vertices];
+    let (mut vh, several) = single_fans(v, o, n_vertices);
     let mut copies: Vec<u32> = Vec::new();
-    let test = |bits: &[u64], i: usize| (bits[i >> 6] >> (i & 63)) & 1 == 1;
-    fn set(bits: &mut [u64], i: usize) {
-        bits[i >> 6] |= 1 << (i & 63);
-    }
-    for h in 0..v.len() as u32 {
-        if test(&visited, h as usize) {
-            continue;
+    if !several.is_empty() {
+        let mut pending = vec![0u64; n_vertices.div_ceil(64)];
+        for &x in &several {
+            pending[(x >> 6) as usize] |= 1 << (x & 63);
+            vh[x as usize] = NONE;
         }
-        let vertex = v[h as usize];
-        let id = if vh[vertex as usize] != NONE {
-            copies.push(vertex);
-            vh.push(NONE);
-            (n_vertices + copies.len() - 1) as u32
-        } else {
-            vertex
-        };
-        // Counter-clockwise from `h` until back at `h` (a closed fan, the common case) or
-        // the boundary; then clockwise from `h` for the rest of an open fan.
-        let mut g = h;
-        let closed = loop {
-            set(&mut visited, g as usize);
-            if id != vertex {
+        let is_pending = |x: u32| (pending[(x >> 6) as usize] >> (x & 63)) & 1 == 1;
+        let mut visited = vec![0u64; v.len().div_ceil(64)];
+        for h in 0..v.len() as u32 {
+            let vertex = v[h as usize];
+            if (vertex as usize) >= n_vertices || !is_pending(vertex) || test(&visited, h) {
+                continue;
+            }
+            let id = if vh[vertex as usize] != NONE {
+                copies.push(vertex);
+                vh.push(NONE);
+                (n_vertices + copies.len() - 1) as u32
+            } else {
+                vertex
+            };
+            let mut fan = |g: u32| {
+                set(&mut visited, g);
                 v[g as usize] = id;
-            }
-            let around = o[prev(g) as usize];
-            if around == NONE {
-                break false;
-            }
-            if around == h {
-                break true;
-            }
-            g = around;
-        };
-        let mut start = h;
-        if !closed {
-            loop {
-                let back = o[start as usize];
-                if back == NONE {
-                    break;
-                }
-                start = next(back);
-                set(&mut visited, start as usize);
-                if id != vertex {
-                    v[start as usize] = id;
-                }
-            }
+            };
+            vh[id as usize] = walk_fan(o, h, &mut fan).0;
         }
-        vh[id as usize] = start;
     }
-
     let mut split_origins: Vec<u32> = copies.clone();
     split_origins.sort_unstable();
     split_origins.dedup();

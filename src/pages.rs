@@ -24,6 +24,15 @@ pub(crate) fn filled<T: Clone>(len: usize, value: T) -> Vec<T> {
     v
 }
 
+/// `vec![0; len]`: fresh pages that the kernel zeroes, not written by us before use.
+pub(crate) fn zeroed<T: Copy + Default>(len: usize) -> Vec<T> {
+    // `vec!` of a zero integer allocates zeroed memory without writing it, so the advice
+    // still comes before the first touch.
+    let v = vec![T::default(); len];
+    advise(&v);
+    v
+}
+
 #[cfg(target_os = "linux")]
 fn advise<T>(v: &Vec<T>) {
     let bytes = v.capacity() * std::mem::size_of::<T>();
@@ -58,6 +67,8 @@ mod tests {
             assert!(v.iter().all(|&x| x == 7));
             let w: Vec<u64> = super::with_capacity(len);
             assert!(w.is_empty() && w.capacity() >= len);
+            let z: Vec<u64> = super::zeroed(len);
+            assert!(z.len() == len && z.iter().all(|&x| x == 0));
         }
     }
 }

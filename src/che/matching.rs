@@ -49,11 +49,11 @@ fn groups(v: &[u32], n_vertices: usize, allow_packed: bool, mut f: impl FnMut(u3
     }
     let mut fill = start.clone();
     let fine_mask = (1u32 << shift) - 1;
-    let mut keys: Vec<u64> = crate::pages::filled(v.len(), 0);
+    let mut keys: Vec<u64> = crate::pages::zeroed(v.len());
     let mut mins: Vec<u32> = if packed {
         Vec::new()
     } else {
-        crate::pages::filled(v.len(), 0)
+        crate::pages::zeroed(v.len())
     };
     for h in 0..v.len() as u32 {
         let (min, max) = ends(h);

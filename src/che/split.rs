@@ -55,7 +55,7 @@ fn walk_fan(o: &[u32], h: u32, visit: &mut impl FnMut(u32)) -> (u32, u32) {
 fn single_fans(v: &[u32], o: &[u32], n_vertices: usize) -> (Vec<u32>, Vec<u32>) {
     const LANES: usize = 8;
     let mut vh = crate::pages::filled(n_vertices, NONE);
-    let mut degree = crate::pages::filled(n_vertices, 0u32);
+    let mut degree: Vec<u32> = crate::pages::zeroed(n_vertices);
     for h in (0..v.len() as u32).rev() {
         let x = v[h as usize] as usize;
         vh[x] = h;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The one test command. On a bare Debian 12 with Rust it installs what it needs, then runs
 # every test: formatting and lints, the Rust unit, property and integration tests (with
-# the header drift test), the C and C++ tests against the package installed into a
+# the header drift test), a fixed-seed fuzz pass of every reader and builder, the C and C++ tests against the package installed into a
 # temporary prefix (with valgrind), and the differential tests against OpenMesh and CGAL
 # on real meshes.
 set -euo pipefail
@@ -18,6 +18,9 @@ cargo clippy --all-targets --locked -- -D warnings
 
 step "cargo test"
 cargo test --locked
+
+step "fuzzing: every reader and both builders, fixed seed (scripts/fuzz.sh)"
+bash scripts/fuzz.sh --runs 20000
 
 step "real meshes (libcgal-demo) and tetrahedral meshes (tetgen)"
 bash scripts/fetch-meshes.sh

@@ -38,6 +38,7 @@ pub mod che_info;
 pub mod che_relations;
 pub mod che_star;
 pub mod che_views;
+mod che_walk;
 pub mod chf;
 pub mod chf_build;
 pub mod chf_csr;

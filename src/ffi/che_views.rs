@@ -121,3 +121,26 @@ pub unsafe extern "C" fn che_mesh_triangle_origins(
     // SAFETY: caller contract.
     unsafe { view(m, len, |m| Some(m.triangle_origins())) }
 }
+
+/// The edge-id directory, bits: one bit per half-edge, set on the canonical ones
+/// (`O[h] == TOPOMESH_NONE || h < O[h]`), 64 per word (`*len` words, `ceil(3T / 64)`).
+/// With `che_mesh_edge_rank_counts` it gives the edge of any half-edge in O(1) without a
+/// call: see `che_edge_of` in `topomesh_inline.h`. Computed from `O` on the first request
+/// (1.5 bits per half-edge, kept with the mesh until its level changes). NULL below level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_edge_rank_bits(m: *const CheMesh, len: *mut usize) -> *const u64 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.edge_ranks().map(|r| &r.bits[..])) }
+}
+
+/// The edge-id directory, counts: per word of `che_mesh_edge_rank_bits`, the number of
+/// canonical half-edges before it (so the edge of canonical half-edge `c` is
+/// `counts[c / 64]` plus the set bits below `c` in its word). NULL below level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_edge_rank_counts(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.edge_ranks().map(|r| &r.counts[..])) }
+}

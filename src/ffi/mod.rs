@@ -34,6 +34,7 @@ pub(crate) mod boundary;
 pub mod che;
 pub mod che_build;
 pub mod che_csr;
+mod che_edge_ranks;
 pub mod che_info;
 pub mod che_relations;
 pub mod che_star;

@@ -937,20 +937,14 @@ const uint32_t *che_mesh_vertex_origins(const struct che_mesh *m, size_t *len);
 const uint32_t *che_mesh_triangle_origins(const struct che_mesh *m, size_t *len);
 
 /**
- * The edge-id directory, bits: one bit per half-edge, set on the canonical ones
- * (`O[h] == TOPOMESH_NONE || h < O[h]`), 64 per word (`*len` words, `ceil(3T / 64)`).
- * With `che_mesh_edge_rank_counts` it gives the edge of any half-edge in O(1) without a
- * call: see `che_edge_of` in `topomesh_inline.h`. Computed from `O` on the first request
- * (1.5 bits per half-edge, kept with the mesh until its level changes). NULL below level 1.
+ * The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
+ * the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`
+ * (`O[h] == TOPOMESH_NONE || h < O[h]`, bit `h % 32`), the high 32 bits count the canonical
+ * half-edges before `32k`. With `O` it gives the edge of any half-edge in O(1) without a
+ * call: `che_edge_of` in `topomesh_inline.h`. Computed from `O` on the first request
+ * (2 bits per half-edge, kept with the mesh until its level changes). NULL below level 1.
  */
-const uint64_t *che_mesh_edge_rank_bits(const struct che_mesh *m, size_t *len);
-
-/**
- * The edge-id directory, counts: per word of `che_mesh_edge_rank_bits`, the number of
- * canonical half-edges before it (so the edge of canonical half-edge `c` is
- * `counts[c / 64]` plus the set bits below `c` in its word). NULL below level 1.
- */
-const uint32_t *che_mesh_edge_rank_counts(const struct che_mesh *m, size_t *len);
+const uint64_t *che_mesh_edge_ranks(const struct che_mesh *m, size_t *len);
 
 /**
  * The default CHF build options: level 2, not strict.

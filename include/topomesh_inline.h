@@ -59,25 +59,27 @@ static inline uint32_t chf_face_corner(uint32_t hf, uint32_t j) {
     return (hf & ~3u) | ((0x634B39u >> (2u * (3u * (hf & 3u) + j))) & 3u);
 }
 
-/* The number of set bits of x. */
-static inline uint32_t topomesh_popcount64(uint64_t x) {
-#if defined(__GNUC__) || defined(__clang__)
-    return (uint32_t)__builtin_popcountll(x);
+/* The number of set bits of x: the instruction when the target has it, else a few
+   inline operations (cheaper than the compiler's library call for __builtin_popcount on
+   baseline x86-64). */
+static inline uint32_t topomesh_popcount32(uint32_t x) {
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__POPCNT__) || !defined(__x86_64__))
+    return (uint32_t)__builtin_popcount(x);
 #else
-    x = x - ((x >> 1) & 0x5555555555555555ull);
-    x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
-    x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Full;
-    return (uint32_t)((x * 0x0101010101010101ull) >> 56);
+    x = x - ((x >> 1) & 0x55555555u);
+    x = (x & 0x33333333u) + ((x >> 2) & 0x33333333u);
+    x = (x + (x >> 4)) & 0x0F0F0F0Fu;
+    return (x * 0x01010101u) >> 24;
 #endif
 }
 
 /* The edge of half-edge h (< 3 * num_triangles), from O (che_mesh_opposites) and the
-   edge-id directory (che_mesh_edge_rank_bits, che_mesh_edge_rank_counts): the rank of its
-   canonical half-edge (h, or O[h] when that is smaller) among the canonical ones. */
-static inline uint32_t che_edge_of(const uint32_t *O, const uint64_t *bits, const uint32_t *counts,
-                                   uint32_t h) {
-    uint32_t g = O[h], c = (g != TOPOMESH_NONE && g < h) ? g : h;
-    return counts[c >> 6] + topomesh_popcount64(bits[c >> 6] & ((UINT64_C(1) << (c & 63u)) - 1u));
+   edge-id directory (che_mesh_edge_ranks): the rank of its canonical half-edge (h, or O[h]
+   when that is smaller) among the canonical ones. */
+static inline uint32_t che_edge_of(const uint32_t *O, const uint64_t *ranks, uint32_t h) {
+    const uint32_t g = O[h], c = (g != TOPOMESH_NONE && g < h) ? g : h;
+    const uint64_t d = ranks[c >> 5];
+    return (uint32_t)(d >> 32) + topomesh_popcount32((uint32_t)d & ((1u << (c & 31u)) - 1u));
 }
 
 struct che_mesh;
@@ -89,12 +91,11 @@ typedef struct che_star_iter {
     const struct che_mesh *mesh;
     const uint32_t *v;           /* V, O and the edge-id directory from level 2, else NULL */
     const uint32_t *o;
-    const uint64_t *edge_bits;
-    const uint32_t *edge_counts;
+    const uint64_t *edge_ranks;
     uint32_t start;
     uint32_t cur;
     uint32_t tail;
-    uint32_t reserved;
+    uint32_t cur_opposite;       /* O[cur]: the previous step's prev(h) */
 } che_star_iter;
 
 /* One step of a rotation around a vertex v, counter-clockwise seen from outside.
@@ -125,30 +126,34 @@ bool che_star_advance(struct che_star_iter *it, struct che_star_step *step);
    level 2, without a call into the library; below, each step is che_star_advance. */
 static inline bool che_star_next(che_star_iter *it, che_star_step *step) {
     if (it == NULL || step == NULL || it->o == NULL) return che_star_advance(it, step);
-    /* Everything is read before anything is written (step may alias nothing, but the
-       compiler cannot know). */
+    /* Everything is read before anything is written (the compiler cannot know that step
+       aliases nothing). */
     const uint32_t *const O = it->o;
     const uint32_t cur = it->cur, tail = it->tail;
-    uint32_t h, vertex, triangle;
+    uint32_t h, vertex, triangle, canonical;
     if (cur != TOPOMESH_NONE) {
-        const uint32_t p = che_prev(cur), g = O[p];
+        const uint32_t p = che_prev(cur), g = O[p], o = it->cur_opposite;
         h = cur;
         vertex = it->v[che_next(cur)];
         triangle = che_tri(cur);
+        canonical = (o != TOPOMESH_NONE && o < cur) ? o : cur;
         it->cur = (g == TOPOMESH_NONE || g == it->start) ? TOPOMESH_NONE : g;
+        it->cur_opposite = p; /* O[g] == p */
         if (g == TOPOMESH_NONE) it->tail = p;
     } else if (tail != TOPOMESH_NONE) {
-        h = tail;
+        h = canonical = tail; /* a boundary half-edge is its edge's canonical one */
         vertex = it->v[tail];
         triangle = TOPOMESH_NONE;
         it->tail = TOPOMESH_NONE;
     } else {
         return false;
     }
-    const uint32_t edge = che_edge_of(O, it->edge_bits, it->edge_counts, h);
+    /* The edge of h: the rank of its canonical half-edge (see che_edge_of). */
+    const uint64_t d = it->edge_ranks[canonical >> 5];
     step->half_edge = h;
     step->vertex = vertex;
-    step->edge = edge;
+    step->edge = (uint32_t)(d >> 32) +
+                 topomesh_popcount32((uint32_t)d & ((1u << (canonical & 31u)) - 1u));
     step->triangle = triangle;
     return true;
 }

@@ -54,24 +54,23 @@ static void star_matches_relations(const che_mesh *m) {
 
 /* The edge-id directory gives che_half_edge_edge inline, from level 1; NULL at level 0. */
 static void edge_ranks_match(const che_mesh *m) {
-    size_t nb = 7, nc = 7, no = 0;
-    const uint64_t *bits = che_mesh_edge_rank_bits(m, &nb);
-    const uint32_t *counts = che_mesh_edge_rank_counts(m, &nc);
+    size_t nr = 7, no = 0;
+    const uint64_t *ranks = che_mesh_edge_ranks(m, &nr);
     const uint32_t *O = che_mesh_opposites(m, &no);
     const size_t nh = che_mesh_num_half_edges(m);
     if (che_mesh_level(m) == 0) {
-        CHECK(bits == NULL && nb == 0 && counts == NULL && nc == 0);
+        CHECK(ranks == NULL && nr == 0);
         return;
     }
-    CHECK(bits != NULL && counts != NULL && O != NULL);
-    CHECK(nb == (nh + 63) / 64 && nc == nb && no == nh);
+    CHECK(ranks != NULL && O != NULL);
+    CHECK(nr == (nh + 31) / 32 && no == nh);
     for (uint32_t h = 0; h < nh; h++) {
         uint32_t e = TOPOMESH_NONE;
         CHECK_OK(che_half_edge_edge(m, h, &e));
-        CHECK(che_edge_of(O, bits, counts, h) == e);
+        CHECK(che_edge_of(O, ranks, h) == e);
     }
-    /* The same pointers again (computed once, kept with the mesh). */
-    CHECK(che_mesh_edge_rank_bits(m, NULL) == bits && che_mesh_edge_rank_counts(m, NULL) == counts);
+    /* The same pointer again (computed once, kept with the mesh). */
+    CHECK(che_mesh_edge_ranks(m, NULL) == ranks);
 }
 
 static void test_star(void) {
@@ -108,9 +107,7 @@ static void test_star(void) {
         edge_ranks_match(m);
     }
     size_t len = 9;
-    CHECK(che_mesh_edge_rank_bits(NULL, &len) == NULL && len == 0);
-    len = 9;
-    CHECK(che_mesh_edge_rank_counts(NULL, &len) == NULL && len == 0);
+    CHECK(che_mesh_edge_ranks(NULL, &len) == NULL && len == 0);
     che_mesh_free(m);
 
     /* A 12 x 12 grid (288 triangles, several words of the edge-id directory). */

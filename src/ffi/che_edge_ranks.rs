@@ -1,44 +1,45 @@
 //! The edge-id rank directory a C host needs to turn a half-edge into its edge id inline.
 //!
 //! Edge ids are the rank of the canonical half-edge (`O[h] == NONE || h < O[h]`) among the
-//! canonical half-edges. The directory is one bit per half-edge (set on canonical ones,
-//! 64 per word) and, per word, the number of set bits before it: the edge of `h` is
-//! `counts[c / 64] + popcount(bits[c / 64] & ((1 << c % 64) - 1))` with `c` the canonical
-//! half-edge of `h` (`che_edge_of` in `topomesh_inline.h`). It is computed from `O` alone
-//! (1.5 bits per half-edge), on the first request, and kept with the handle until its
-//! level changes. The core keeps the same bits internally but does not expose them; a
-//! borrowed view of those would spare this copy.
+//! canonical half-edges. The directory has one 64-bit entry per 32 half-edges: its low 32
+//! bits flag the canonical ones (bit `i` for half-edge `32 k + i`), its high 32 bits count
+//! the canonical half-edges before `32 k`. The edge of `h` is then
+//! `(d[c / 32] >> 32) + popcount(d[c / 32] & ((1 << c % 32) - 1))` with `c` the canonical
+//! half-edge of `h` (`che_edge_of` in `topomesh_inline.h`): one load besides `O`, which a
+//! star walk has at hand. It is computed from `O` alone (2 bits per half-edge), on the
+//! first request, and kept with the handle until its level changes. The core keeps similar
+//! bits internally but does not expose them; a borrowed view of those would spare this
+//! copy, though its split layout (bits and counts apart) costs a second load per lookup.
 
 use crate::NONE;
 
-/// Bits and per-word counts of the canonical half-edges.
+/// Half-edges per directory entry.
+const SPAN: usize = 32;
+
+/// One entry per 32 half-edges: canonical flags (low half), count before (high half).
 #[derive(Debug, Default)]
 pub(crate) struct EdgeRanks {
-    pub(crate) bits: Box<[u64]>,
-    pub(crate) counts: Box<[u32]>,
+    pub(crate) entries: Box<[u64]>,
 }
 
 impl EdgeRanks {
     /// From the opposites `o` (one per half-edge). Fails (`None`) when the edge count does
     /// not fit 32 bits, which a built mesh never has.
     pub(crate) fn from_opposites(o: &[u32]) -> Option<Self> {
-        let mut bits = Vec::with_capacity(o.len().div_ceil(64));
-        let mut counts = Vec::with_capacity(o.len().div_ceil(64));
+        let mut entries = Vec::with_capacity(o.len().div_ceil(SPAN));
         let mut total = 0u32;
-        for (w, chunk) in o.chunks(64).enumerate() {
-            let base = 64 * w;
-            let mut word = 0u64;
+        for (k, chunk) in o.chunks(SPAN).enumerate() {
+            let base = SPAN * k;
+            let mut flags = 0u32;
             for (i, &g) in chunk.iter().enumerate() {
                 let canonical = g == NONE || ((base + i) as u64) < u64::from(g);
-                word |= u64::from(canonical) << i;
+                flags |= u32::from(canonical) << i;
             }
-            counts.push(total);
-            total = total.checked_add(word.count_ones())?;
-            bits.push(word);
+            entries.push(u64::from(total) << 32 | u64::from(flags));
+            total = total.checked_add(flags.count_ones())?;
         }
         Some(EdgeRanks {
-            bits: bits.into_boxed_slice(),
-            counts: counts.into_boxed_slice(),
+            entries: entries.into_boxed_slice(),
         })
     }
 
@@ -47,11 +48,11 @@ impl EdgeRanks {
     pub(crate) fn edge_of(&self, o: &[u32], h: u32) -> u32 {
         let g = o[h as usize];
         let c = if g != NONE && g < h { g } else { h } as usize;
-        let mask = (1u64 << (c & 63)) - 1;
-        self.counts[c >> 6] + (self.bits[c >> 6] & mask).count_ones()
+        let d = self.entries[c / SPAN];
+        let mask = (1u32 << (c % SPAN)) - 1;
+        (d >> 32) as u32 + (d as u32 & mask).count_ones()
     }
 }
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -35,12 +35,13 @@ pub struct CheStarIter {
     /// all NULL otherwise.
     v: *const u32,
     o: *const u32,
-    edge_bits: *const u64,
-    edge_counts: *const u32,
+    edge_ranks: *const u64,
     start: u32,
     cur: u32,
     tail: u32,
-    reserved: u32,
+    /// `O[cur]` (when `cur` is not NONE): the previous step's `prev(h)`, so that the inline
+    /// step finds the edge of `cur` without loading it.
+    cur_opposite: u32,
 }
 
 /// One step of a rotation around a vertex `v`, counter-clockwise seen from outside.
@@ -76,10 +77,9 @@ pub unsafe extern "C" fn che_star_begin(m: *const CheMesh, v: u32, it: *mut CheS
             (Some(_), Some(o)) => mesh.edge_ranks().map(|r| (o, r)),
             _ => None,
         };
-        let (o, edge_bits, edge_counts) = inline
-            .map_or((ptr::null(), ptr::null(), ptr::null()), |(o, r)| {
-                (o.as_ptr(), r.bits.as_ptr(), r.counts.as_ptr())
-            });
+        let (o, edge_ranks) = inline.map_or((ptr::null(), ptr::null()), |(o, r)| {
+            (o.as_ptr(), r.entries.as_ptr())
+        });
         it.set(CheStarIter {
             mesh: m,
             v: if o.is_null() {
@@ -88,12 +88,15 @@ pub unsafe extern "C" fn che_star_begin(m: *const CheMesh, v: u32, it: *mut CheS
                 mesh.che.half_edge_vertices().as_ptr()
             },
             o,
-            edge_bits,
-            edge_counts,
+            edge_ranks,
             start,
             cur: start,
             tail: NONE,
-            reserved: 0,
+            cur_opposite: if start == NONE {
+                NONE
+            } else {
+                mesh.che.opposite(start)
+            },
         });
         Ok(())
     })
@@ -123,6 +126,7 @@ pub unsafe extern "C" fn che_star_advance(it: *mut CheStarIter, step: *mut CheSt
                 it.cur = NONE;
             } else {
                 it.cur = around;
+                it.cur_opposite = p;
             }
             step.set(CheStarStep {
                 half_edge: h,

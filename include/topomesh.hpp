@@ -228,7 +228,12 @@ public:
         using pointer = void;
         using reference = value_type;
 
-        value_type operator*() const { return Proj{}(current_); }
+        value_type operator*() const {
+            if constexpr (!Proj::needs_edge) {
+                if (V_ != nullptr) return value_type{batch_[i_]};
+            }
+            return Proj{}(current_);
+        }
         Iterator &operator++() {
             advance();
             return *this;
@@ -241,31 +246,40 @@ public:
 
     private:
         friend class StarRange;
-        Iterator(const che_mesh *m, const detail::SurfaceViews &views, VertexId v) {
-            if (!Proj::needs_edge && views.VH != nullptr && views.vertex(v.value())) {
-                V_ = views.V;
-                O_ = views.O;
-                start_ = cur_ = views.VH[v.value()];
-            } else {
-                // Through a local: the iterator's own address never escapes, so the
-                // compiler may keep its fields in registers.
-                che_star_iter it;
-                detail::check(che_star_begin(m, v.value(), &it));
-                it_ = it;
+        // Inline, the walk runs in batches of up to kBatch steps over local variables
+        // (the iterator itself lives in memory: stepping it one at a time would put a
+        // store and a reload on the rotation's dependency chain); the C iterator's state
+        // lives in the range (`c`).
+        static constexpr unsigned kBatch = Proj::needs_edge ? 1u : 16u;
+        Iterator(const che_mesh *m, const detail::SurfaceViews &views, VertexId v,
+                 che_star_iter *c) {
+            if constexpr (!Proj::needs_edge) {
+                if (views.VH != nullptr && views.vertex(v.value())) {
+                    V_ = views.V;
+                    O_ = views.O;
+                    start_ = cur_ = views.VH[v.value()];
+                    refill();
+                    return;
+                }
             }
+            detail::check(che_star_begin(m, v.value(), c));
+            c_ = c;
             advance();
         }
         void advance() {
             if (V_ != nullptr) {
-                advance_inline();
+                if (++i_ < n_) return;
+                if (n_ < kBatch) {
+                    done_ = true;
+                    return;
+                }
+                refill();
                 return;
             }
             che_star_step s;
-            che_star_iter it = it_;
             bool more;
-            while ((more = che_star_next(&it, &s)) && SkipClosing && s.triangle == none) {
+            while ((more = che_star_next(c_, &s)) && SkipClosing && s.triangle == none) {
             }
-            it_ = it;
             if (!more) {
                 done_ = true;
                 return;
@@ -273,37 +287,56 @@ public:
             current_ = StarStep{HalfEdgeId{s.half_edge}, VertexId{s.vertex}, EdgeId{s.edge},
                                 TriangleId{s.triangle}};
         }
-        // The same rotation as the library's (counter-clockwise, from the boundary); the
-        // edge is not computed (Proj does not read it).
-        void advance_inline() {
-            if (cur_ != none) {
-                const std::uint32_t h = cur_, p = che_prev(h), g = O_[p];
-                cur_ = (g == none || g == start_) ? none : g;
-                if (g == none) tail_ = p;
-                current_ = StarStep{HalfEdgeId{h}, VertexId{V_[che_next(h)]}, EdgeId{none},
-                                    TriangleId{che_tri(h)}};
-                return;
-            }
-            if (!SkipClosing && tail_ != none) {
-                current_ = StarStep{HalfEdgeId{tail_}, VertexId{V_[tail_]}, EdgeId{none},
-                                    TriangleId{none}};
-                tail_ = none;
-                return;
-            }
-            done_ = true;
+        // The next steps of the same rotation as the library's (counter-clockwise, from the
+        // boundary), projected; the edge is not computed (Proj does not read it).
+        void refill() {
+            if constexpr (!Proj::needs_edge) refill_inline();
         }
-        che_star_iter it_{};
+        void refill_inline() {
+            const std::uint32_t *const V = V_, *const O = O_;
+            const std::uint32_t start = start_;
+            std::uint32_t cur = cur_, tail = tail_;
+            unsigned n = 0;
+            while (n < kBatch) {
+                if (cur != none) {
+                    const std::uint32_t h = cur, p = che_prev(h), g = O[p];
+                    cur = (g == none || g == start) ? none : g;
+                    if (g == none) tail = p;
+                    batch_[n++] = Proj{}(StarStep{HalfEdgeId{h}, VertexId{V[che_next(h)]},
+                                                  EdgeId{none}, TriangleId{che_tri(h)}})
+                                      .value();
+                } else if (!SkipClosing && tail != none) {
+                    batch_[n++] = Proj{}(StarStep{HalfEdgeId{tail}, VertexId{V[tail]},
+                                                  EdgeId{none}, TriangleId{none}})
+                                      .value();
+                    tail = none;
+                } else {
+                    break;
+                }
+            }
+            cur_ = cur;
+            tail_ = tail;
+            n_ = n;
+            i_ = 0;
+            done_ = n == 0;
+        }
+        che_star_iter *c_ = nullptr;
         StarStep current_{};
         bool done_ = false;
         const std::uint32_t *V_ = nullptr;
         const std::uint32_t *O_ = nullptr;
         std::uint32_t start_ = none, cur_ = none, tail_ = none;
+        unsigned i_ = 0, n_ = 0;
+        std::uint32_t batch_[kBatch]; // raw ids of the inline steps i_ .. n_ - 1
     };
 
-    StarRange(const che_mesh *m, const detail::SurfaceViews &views, VertexId v) noexcept
+    /// `views` belongs to the Surface the range comes from (a moved-from Surface has none:
+    /// its ranges then go through the C API, on the handle they were made with).
+    StarRange(const che_mesh *m, const detail::SurfaceViews *views, VertexId v) noexcept
         : m_(m), views_(views), v_(v) {}
-    /// Throws Error when the vertex is out of range.
-    Iterator begin() const { return Iterator(m_, views_, v_); }
+    /// Throws Error when the vertex is out of range. A range is walked by one iterator at
+    /// a time (an input range: begin() again restarts the walk).
+    Iterator begin() const { return Iterator(m_, *views_, v_, &c_); }
     Sentinel end() const noexcept { return {}; }
 
     /// The whole range as a vector.
@@ -315,8 +348,9 @@ public:
 
 private:
     const che_mesh *m_;
-    detail::SurfaceViews views_;
+    const detail::SurfaceViews *views_;
     VertexId v_;
+    mutable che_star_iter c_{}; // the C iterator's state, when the walk is not inline
 };
 
 namespace detail {
@@ -446,13 +480,13 @@ public:
     std::size_t num_boundary_curves() const noexcept { return che_mesh_num_boundary_curves(m_); }
 
     // Stars (counter-clockwise seen from outside): inline from level 2, see StarRange.
-    Star star(VertexId v) const noexcept { return Star(m_, views_, v); }
+    Star star(VertexId v) const noexcept { return Star(m_, &views_, v); }
     VerticesAround vertices_around(VertexId v) const noexcept {
-        return VerticesAround(m_, views_, v);
+        return VerticesAround(m_, &views_, v);
     }
-    EdgesAround edges_around(VertexId v) const noexcept { return EdgesAround(m_, views_, v); }
+    EdgesAround edges_around(VertexId v) const noexcept { return EdgesAround(m_, &views_, v); }
     TrianglesAround triangles_around(VertexId v) const noexcept {
-        return TrianglesAround(m_, views_, v);
+        return TrianglesAround(m_, &views_, v);
     }
 
     // Fixed-size relations (inline where the level stores what they read).

@@ -234,6 +234,25 @@ static void test_inline_paths() {
         Surface t = std::move(s);
         check_against_c_api(t);
     }
+    // High degrees (the inline walk goes in batches of 16 steps): an open fan of 40
+    // triangles and a closed one of 32 (a double cone), around vertex 0.
+    for (std::uint32_t k : {15u, 16u, 17u, 32u, 40u}) {
+        std::vector<std::uint32_t> fan;
+        for (std::uint32_t i = 0; i < k; i++) fan.insert(fan.end(), {0, 1 + i, 2 + i});
+        std::vector<std::uint32_t> cone;
+        for (std::uint32_t i = 0; i < k; i++) {
+            const std::uint32_t a = 1 + i, b = 1 + (i + 1) % k;
+            cone.insert(cone.end(), {0, a, b, k + 1, b, a});
+        }
+        for (std::uint32_t level = 1; level <= 3; level++) {
+            Surface f = Surface::from_triangles(fan, k + 2, {}, Options{level, false});
+            check_against_c_api(f);
+            CHECK(raw(f.vertices_around(VertexId{0})).size() == k + 1);
+            Surface c = Surface::from_triangles(cone, k + 2, {}, Options{level, false});
+            check_against_c_api(c);
+            CHECK(raw(c.triangles_around(VertexId{0})).size() == k);
+        }
+    }
     // Ranges taken from a Surface without a handle fail as the C API does.
     Surface empty(nullptr);
     CHECK_THROWS(empty.vertices_around(VertexId{0}).begin(), TOPOMESH_STATUS_NULL_ARGUMENT, "m");

@@ -344,36 +344,6 @@ typedef struct che_memory {
 } che_memory;
 
 /**
- * The state of a rotation around a vertex. Its fields are private: set them only with
- * `che_star_begin`. It borrows the mesh: do not free the mesh while iterating.
- */
-typedef struct che_star_iter {
-    const struct che_mesh *mesh;
-    uint32_t start;
-    uint32_t cur;
-    uint32_t tail;
-    uint32_t reserved;
-} che_star_iter;
-
-/**
- * One step of a rotation around a vertex `v`, counter-clockwise seen from outside.
- *
- * For each triangle around `v`: `half_edge` is its outgoing half-edge `v -> w`,
- * `vertex` is `w`, `edge` the edge of `v -> w`, `triangle` the triangle of `half_edge`.
- * On a boundary vertex the rotation starts at the outgoing boundary half-edge and ends
- * with one more step for the incoming boundary half-edge `u -> v`: `half_edge` is that
- * half-edge, `vertex` is `u`, `edge` its edge, and `triangle` is `TOPOMESH_NONE`. So the
- * steps give exactly `che_vertex_vertices` and `che_vertex_edges`, and the steps with a
- * triangle give `che_vertex_triangles`.
- */
-typedef struct che_star_step {
-    uint32_t half_edge;
-    uint32_t vertex;
-    uint32_t edge;
-    uint32_t triangle;
-} che_star_step;
-
-/**
  * How to build a CHF.
  */
 typedef struct chf_build_options {
@@ -906,15 +876,17 @@ topomesh_status che_vertex_is_boundary(const struct che_mesh *m, uint32_t v, boo
 topomesh_status che_edge_is_boundary(const struct che_mesh *m, uint32_t e, bool *out);
 
 /**
- * Starts a rotation around vertex `v` in `*it` (an isolated vertex has no steps).
+ * Starts a rotation around vertex `v` in `*it` (an isolated vertex has no steps). From
+ * level 2 the iterator holds the zero-copy arrays, so that `che_star_next` steps inline.
  */
 topomesh_status che_star_begin(const struct che_mesh *m, uint32_t v, struct che_star_iter *it);
 
 /**
- * Writes the next step into `*step` and returns true, or returns false at the end (also
+ * The library's step of `che_star_next` (which calls it when it cannot step inline):
+ * writes the next step into `*step` and returns true, or returns false at the end (also
  * when `it` or `step` is NULL). O(1) per step from level 2 (edge ids are O(T) below).
  */
-bool che_star_next(struct che_star_iter *it, struct che_star_step *step);
+bool che_star_advance(struct che_star_iter *it, struct che_star_step *step);
 
 /**
  * `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
@@ -963,6 +935,16 @@ const uint32_t *che_mesh_vertex_origins(const struct che_mesh *m, size_t *len);
  * where degenerate triangles were dropped).
  */
 const uint32_t *che_mesh_triangle_origins(const struct che_mesh *m, size_t *len);
+
+/**
+ * The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
+ * the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`
+ * (`O[h] == TOPOMESH_NONE || h < O[h]`, bit `h % 32`), the high 32 bits count the canonical
+ * half-edges before `32k`. With `O` it gives the edge of any half-edge in O(1) without a
+ * call: `che_edge_of` in `topomesh_inline.h`. Computed from `O` on the first request
+ * (2 bits per half-edge, kept with the mesh until its level changes). NULL below level 1.
+ */
+const uint64_t *che_mesh_edge_ranks(const struct che_mesh *m, size_t *len);
 
 /**
  * The default CHF build options: level 2, not strict.

@@ -12,7 +12,10 @@
 //   detail).
 // - Ids are strong types (VertexId, EdgeId, TriangleId, HalfEdgeId; FaceId, TetrahedronId,
 //   HalfFaceId for volumes); an invalid id (TOPOMESH_NONE) has valid() == false.
-// - Surface stars are ranges over the C stack iterator: no allocation. Volume relations
+// - Surface stars are ranges with no allocation; a Surface keeps the zero-copy arrays of
+//   its level (V, O, VH, EH) and its ranges and fixed-size relations step inline over
+//   them, with the range checks of the C API (a failing id goes through the C call, which
+//   reports it); what the level does not store goes through the C API. Volume relations
 //   around a vertex or an edge return an IdList (a std::vector of ids); the bounded ones
 //   a std::array or a SmallIds.
 // - Views are Span<T> (pointer + size) into the structure, valid until the mesh is
@@ -174,8 +177,43 @@ struct StarStep {
     bool closing() const noexcept { return !triangle.valid(); }
 };
 
-/// A range over the star of a vertex, on the C stack iterator. `Proj` picks what each
-/// step yields; steps without a triangle are skipped when `SkipClosing`.
+namespace detail {
+
+/// The zero-copy arrays of a Surface's level (NULL where the level stores none) and its
+/// counts: what the inline paths read. Fetched when the Surface gets its handle and when
+/// its level changes.
+struct SurfaceViews {
+    const std::uint32_t *V = nullptr;  // from level 0
+    const std::uint32_t *O = nullptr;  // from level 1
+    const std::uint32_t *VH = nullptr; // from level 2
+    const std::uint32_t *EH = nullptr; // from level 2
+    std::uint32_t nv = 0, nt = 0, ne = 0;
+
+    void fetch(const che_mesh *m) noexcept {
+        if (m == nullptr) { // no calls: they would record a NULL_ARGUMENT detail
+            *this = SurfaceViews{};
+            return;
+        }
+        V = che_mesh_half_edge_vertices(m, nullptr);
+        O = che_mesh_opposites(m, nullptr);
+        VH = che_mesh_vertex_half_edges(m, nullptr);
+        EH = che_mesh_edge_half_edges(m, nullptr);
+        nv = static_cast<std::uint32_t>(che_mesh_num_vertices(m));
+        nt = static_cast<std::uint32_t>(che_mesh_num_triangles(m));
+        ne = static_cast<std::uint32_t>(che_mesh_num_edges(m));
+    }
+    bool vertex(std::uint32_t v) const noexcept { return v < nv; }
+    bool triangle(std::uint32_t t) const noexcept { return t < nt; }
+    bool edge(std::uint32_t e) const noexcept { return e < ne; }
+    bool half_edge(std::uint32_t h) const noexcept { return h / 3u < nt; }
+};
+
+} // namespace detail
+
+/// A range over the star of a vertex. `Proj` picks what each step yields; steps without a
+/// triangle are skipped when `SkipClosing`. From level 2 the steps that need no edge id
+/// walk V, O and VH inline (no call into the library at all); the others use the C stack
+/// iterator (whose che_star_next is inline from level 2 too).
 template <class Proj, bool SkipClosing> class StarRange {
 public:
     using value_type = decltype(Proj{}(StarStep{}));
@@ -190,7 +228,12 @@ public:
         using pointer = void;
         using reference = value_type;
 
-        value_type operator*() const { return Proj{}(current_); }
+        value_type operator*() const {
+            if constexpr (!Proj::needs_edge) {
+                if (V_ != nullptr) return value_type{batch_[i_]};
+            }
+            return Proj{}(current_);
+        }
         Iterator &operator++() {
             advance();
             return *this;
@@ -203,62 +246,97 @@ public:
 
     private:
         friend class StarRange;
-        Iterator(const che_mesh *m, VertexId v) {
-            detail::check(che_star_begin(m, v.value(), &it_));
-            // From level 2, steps that need no edge id walk V, O and VH inline instead
-            // of calling into the library once per step.
-            const std::uint32_t *vh = Proj::needs_edge ? nullptr : che_mesh_vertex_half_edges(m, nullptr);
-            if (vh != nullptr) {
-                V_ = che_mesh_half_edge_vertices(m, nullptr);
-                O_ = che_mesh_opposites(m, nullptr);
-                start_ = cur_ = vh[v.value()];
+        // Inline, the walk runs in batches of up to kBatch steps over local variables
+        // (the iterator itself lives in memory: stepping it one at a time would put a
+        // store and a reload on the rotation's dependency chain); the C iterator's state
+        // lives in the range (`c`).
+        static constexpr unsigned kBatch = Proj::needs_edge ? 1u : 16u;
+        Iterator(const che_mesh *m, const detail::SurfaceViews &views, VertexId v,
+                 che_star_iter *c) {
+            if constexpr (!Proj::needs_edge) {
+                if (views.VH != nullptr && views.vertex(v.value())) {
+                    V_ = views.V;
+                    O_ = views.O;
+                    start_ = cur_ = views.VH[v.value()];
+                    refill();
+                    return;
+                }
             }
+            detail::check(che_star_begin(m, v.value(), c));
+            c_ = c;
             advance();
         }
         void advance() {
             if (V_ != nullptr) {
-                advance_inline();
-                return;
-            }
-            che_star_step s;
-            do {
-                if (!che_star_next(&it_, &s)) {
+                if (++i_ < n_) return;
+                if (n_ < kBatch) {
                     done_ = true;
                     return;
                 }
-            } while (SkipClosing && s.triangle == none);
+                refill();
+                return;
+            }
+            che_star_step s;
+            bool more;
+            while ((more = che_star_next(c_, &s)) && SkipClosing && s.triangle == none) {
+            }
+            if (!more) {
+                done_ = true;
+                return;
+            }
             current_ = StarStep{HalfEdgeId{s.half_edge}, VertexId{s.vertex}, EdgeId{s.edge},
                                 TriangleId{s.triangle}};
         }
-        // The same rotation as the library's (counter-clockwise, from the boundary).
-        void advance_inline() {
-            if (cur_ != none) {
-                const std::uint32_t h = cur_, p = che_prev(h), g = O_[p];
-                cur_ = (g == none || g == start_) ? none : g;
-                if (g == none) tail_ = p;
-                current_ = StarStep{HalfEdgeId{h}, VertexId{V_[che_next(h)]}, EdgeId{none},
-                                    TriangleId{che_tri(h)}};
-                return;
-            }
-            if (!SkipClosing && tail_ != none) {
-                current_ = StarStep{HalfEdgeId{tail_}, VertexId{V_[tail_]}, EdgeId{none},
-                                    TriangleId{none}};
-                tail_ = none;
-                return;
-            }
-            done_ = true;
+        // The next steps of the same rotation as the library's (counter-clockwise, from the
+        // boundary), projected; the edge is not computed (Proj does not read it).
+        void refill() {
+            if constexpr (!Proj::needs_edge) refill_inline();
         }
-        che_star_iter it_{};
+        void refill_inline() {
+            const std::uint32_t *const V = V_, *const O = O_;
+            const std::uint32_t start = start_;
+            std::uint32_t cur = cur_, tail = tail_;
+            unsigned n = 0;
+            while (n < kBatch) {
+                if (cur != none) {
+                    const std::uint32_t h = cur, p = che_prev(h), g = O[p];
+                    cur = (g == none || g == start) ? none : g;
+                    if (g == none) tail = p;
+                    batch_[n++] = Proj{}(StarStep{HalfEdgeId{h}, VertexId{V[che_next(h)]},
+                                                  EdgeId{none}, TriangleId{che_tri(h)}})
+                                      .value();
+                } else if (!SkipClosing && tail != none) {
+                    batch_[n++] = Proj{}(StarStep{HalfEdgeId{tail}, VertexId{V[tail]},
+                                                  EdgeId{none}, TriangleId{none}})
+                                      .value();
+                    tail = none;
+                } else {
+                    break;
+                }
+            }
+            cur_ = cur;
+            tail_ = tail;
+            n_ = n;
+            i_ = 0;
+            done_ = n == 0;
+        }
+        che_star_iter *c_ = nullptr;
         StarStep current_{};
         bool done_ = false;
         const std::uint32_t *V_ = nullptr;
         const std::uint32_t *O_ = nullptr;
         std::uint32_t start_ = none, cur_ = none, tail_ = none;
+        unsigned i_ = 0, n_ = 0;
+        std::uint32_t batch_[kBatch]; // raw ids of the inline steps i_ .. n_ - 1
     };
 
-    StarRange(const che_mesh *m, VertexId v) noexcept : m_(m), v_(v) {}
-    /// Throws Error when the vertex is out of range.
-    Iterator begin() const { return Iterator(m_, v_); }
+    /// `views` belongs to the Surface the range comes from (a moved-from Surface has none:
+    /// its ranges then go through the C API, on the handle they were made with).
+    StarRange(const che_mesh *m, const detail::SurfaceViews *views, VertexId v) noexcept
+        : m_(m), views_(views), v_(v) {}
+    /// Throws Error when the vertex is out of range. A range is walked by one iterator at
+    /// a time (an input range: begin() again restarts the walk).
+    Iterator begin() const { return Iterator(m_, *views_, v_, &c_); }
     Sentinel end() const noexcept { return {}; }
 
     /// The whole range as a vector.
@@ -270,7 +348,9 @@ public:
 
 private:
     const che_mesh *m_;
+    const detail::SurfaceViews *views_;
     VertexId v_;
+    mutable che_star_iter c_{}; // the C iterator's state, when the walk is not inline
 };
 
 namespace detail {
@@ -356,28 +436,42 @@ public:
     }
 
     /// Takes ownership of a handle from the C API.
-    explicit Surface(che_mesh *adopt) noexcept : m_(adopt) {}
+    explicit Surface(che_mesh *adopt) noexcept : m_(adopt) { views_.fetch(m_); }
     Surface(const Surface &) = delete;
     Surface &operator=(const Surface &) = delete;
-    Surface(Surface &&other) noexcept : m_(std::exchange(other.m_, nullptr)) {}
+    Surface(Surface &&other) noexcept
+        : m_(std::exchange(other.m_, nullptr)), views_(std::exchange(other.views_, {})) {}
     Surface &operator=(Surface &&other) noexcept {
         if (this != &other) {
             che_mesh_free(m_);
             m_ = std::exchange(other.m_, nullptr);
+            views_ = std::exchange(other.views_, {});
         }
         return *this;
     }
     ~Surface() { che_mesh_free(m_); }
 
     const che_mesh *handle() const noexcept { return m_; }
+    /// The handle, to pass to the C API. Change its level only with build_level(), or call
+    /// refresh() after changing it through the handle: the Surface keeps the zero-copy
+    /// arrays of the level it last saw.
     che_mesh *handle() noexcept { return m_; }
     /// Gives up ownership; the caller frees with che_mesh_free.
-    che_mesh *release() noexcept { return std::exchange(m_, nullptr); }
+    che_mesh *release() noexcept {
+        views_ = {};
+        return std::exchange(m_, nullptr);
+    }
+    /// Fetches the zero-copy arrays again (after a level change made through handle()).
+    void refresh() noexcept { views_.fetch(m_); }
 
     // Level and counts.
     std::uint32_t level() const noexcept { return che_mesh_level(m_); }
     /// Raises or lowers the level; invalidates views.
-    void build_level(std::uint32_t level) { detail::check(che_mesh_build_level(m_, level)); }
+    void build_level(std::uint32_t level) {
+        const topomesh_status s = che_mesh_build_level(m_, level);
+        views_.fetch(m_);
+        detail::check(s);
+    }
     std::size_t num_vertices() const noexcept { return che_mesh_num_vertices(m_); }
     std::size_t num_input_vertices() const noexcept { return che_mesh_num_input_vertices(m_); }
     std::size_t num_triangles() const noexcept { return che_mesh_num_triangles(m_); }
@@ -385,26 +479,43 @@ public:
     std::size_t num_half_edges() const noexcept { return che_mesh_num_half_edges(m_); }
     std::size_t num_boundary_curves() const noexcept { return che_mesh_num_boundary_curves(m_); }
 
-    // Stars: ranges over the C stack iterator (counter-clockwise seen from outside).
-    Star star(VertexId v) const noexcept { return Star(m_, v); }
-    VerticesAround vertices_around(VertexId v) const noexcept { return VerticesAround(m_, v); }
-    EdgesAround edges_around(VertexId v) const noexcept { return EdgesAround(m_, v); }
+    // Stars (counter-clockwise seen from outside): inline from level 2, see StarRange.
+    Star star(VertexId v) const noexcept { return Star(m_, &views_, v); }
+    VerticesAround vertices_around(VertexId v) const noexcept {
+        return VerticesAround(m_, &views_, v);
+    }
+    EdgesAround edges_around(VertexId v) const noexcept { return EdgesAround(m_, &views_, v); }
     TrianglesAround triangles_around(VertexId v) const noexcept {
-        return TrianglesAround(m_, v);
+        return TrianglesAround(m_, &views_, v);
     }
 
-    // Fixed-size relations.
+    // Fixed-size relations (inline where the level stores what they read).
     std::array<VertexId, 2> edge_vertices(EdgeId e) const {
+        if (views_.EH != nullptr && views_.edge(e.value())) {
+            const std::uint32_t h = views_.EH[e.value()];
+            return {VertexId{views_.V[h]}, VertexId{views_.V[che_next(h)]}};
+        }
         auto ids = fixed<2>(che_edge_vertices, e.value());
         return {VertexId{ids[0]}, VertexId{ids[1]}};
     }
     SmallIds<TriangleId, 2> edge_triangles(EdgeId e) const {
+        if (views_.EH != nullptr && views_.edge(e.value())) {
+            const std::uint32_t h = views_.EH[e.value()], g = views_.O[h];
+            SmallIds<TriangleId, 2> out;
+            out.push_back(TriangleId{che_tri(h)});
+            if (g != none) out.push_back(TriangleId{che_tri(g)});
+            return out;
+        }
         return small<TriangleId, 2>(che_edge_triangles, e.value());
     }
     SmallIds<EdgeId, 4> edge_edges(EdgeId e) const {
         return small<EdgeId, 4>(che_edge_edges, e.value());
     }
     std::array<VertexId, 3> triangle_vertices(TriangleId t) const {
+        if (views_.V != nullptr && views_.triangle(t.value())) {
+            const std::uint32_t *c = views_.V + che_first(t.value());
+            return {VertexId{c[0]}, VertexId{c[1]}, VertexId{c[2]}};
+        }
         auto ids = fixed<3>(che_triangle_vertices, t.value());
         return {VertexId{ids[0]}, VertexId{ids[1]}, VertexId{ids[2]}};
     }
@@ -414,6 +525,10 @@ public:
     }
     /// The triangle across each edge; invalid across a boundary edge.
     std::array<TriangleId, 3> triangle_triangles(TriangleId t) const {
+        if (views_.O != nullptr && views_.triangle(t.value())) {
+            const std::uint32_t *o = views_.O + che_first(t.value());
+            return {across(o[0]), across(o[1]), across(o[2])};
+        }
         auto ids = fixed<3>(che_triangle_triangles, t.value());
         return {TriangleId{ids[0]}, TriangleId{ids[1]}, TriangleId{ids[2]}};
     }
@@ -431,28 +546,37 @@ public:
 
     // Half-edge helpers and boundary tests.
     HalfEdgeId opposite(HalfEdgeId h) const {
+        if (views_.O != nullptr && views_.half_edge(h.value())) return HalfEdgeId{views_.O[h.value()]};
         return HalfEdgeId{value(che_half_edge_opposite, h.value())};
     }
     EdgeId edge(HalfEdgeId h) const { return EdgeId{value(che_half_edge_edge, h.value())}; }
     /// The boundary curve of h, or `none`.
     std::uint32_t curve(HalfEdgeId h) const { return value(che_half_edge_curve, h.value()); }
     HalfEdgeId half_edge(VertexId v) const {
+        if (views_.VH != nullptr && views_.vertex(v.value())) return HalfEdgeId{views_.VH[v.value()]};
         return HalfEdgeId{value(che_vertex_half_edge, v.value())};
     }
     HalfEdgeId half_edge(EdgeId e) const {
+        if (views_.EH != nullptr && views_.edge(e.value())) return HalfEdgeId{views_.EH[e.value()]};
         return HalfEdgeId{value(che_edge_half_edge, e.value())};
     }
     VertexId origin(HalfEdgeId h) const {
+        if (views_.V != nullptr && views_.half_edge(h.value())) return VertexId{views_.V[h.value()]};
         Span<std::uint32_t> v = half_edge_vertices();
         return VertexId{v.at(h.value())};
     }
     VertexId target(HalfEdgeId h) const { return origin(next(h)); }
     bool is_boundary(VertexId v) const {
+        if (views_.VH != nullptr && views_.vertex(v.value())) {
+            const std::uint32_t h = views_.VH[v.value()];
+            return h != none && views_.O[h] == none;
+        }
         bool b = false;
         detail::check(che_vertex_is_boundary(m_, v.value(), &b));
         return b;
     }
     bool is_boundary(EdgeId e) const {
+        if (views_.EH != nullptr && views_.edge(e.value())) return views_.O[views_.EH[e.value()]] == none;
         bool b = false;
         detail::check(che_edge_is_boundary(m_, e.value(), &b));
         return b;
@@ -512,6 +636,9 @@ private:
                                       std::uint32_t *, std::size_t, std::size_t *,
                                       std::size_t *);
 
+    static TriangleId across(std::uint32_t g) noexcept {
+        return TriangleId{g == none ? none : che_tri(g)};
+    }
     template <std::size_t N> std::array<std::uint32_t, N> fixed(RelationFn f, std::uint32_t id) const {
         std::array<std::uint32_t, N> ids{};
         std::size_t len = 0;
@@ -551,6 +678,7 @@ private:
     }
 
     che_mesh *m_ = nullptr;
+    detail::SurfaceViews views_;
 };
 
 /// The structure's name in the papers.

@@ -35,7 +35,42 @@ static void star_matches_relations(const che_mesh *m) {
         CHECK(i == nvv && t == nvf);
         /* Exhausted stays exhausted. */
         CHECK(!che_star_next(&it, &s));
+
+        /* The library's step gives the same steps as the inline one (from level 2 the
+           inline step reads V, O and the edge-id directory; below it is this call). */
+        che_star_iter a, b;
+        che_star_step sa, sb;
+        CHECK_OK(che_star_begin(m, v, &a));
+        CHECK_OK(che_star_begin(m, v, &b));
+        for (;;) {
+            bool more_a = che_star_advance(&a, &sa), more_b = che_star_next(&b, &sb);
+            CHECK(more_a == more_b);
+            if (!more_a || !more_b) break;
+            CHECK(sa.half_edge == sb.half_edge && sa.vertex == sb.vertex && sa.edge == sb.edge &&
+                  sa.triangle == sb.triangle);
+        }
     }
+}
+
+/* The edge-id directory gives che_half_edge_edge inline, from level 1; NULL at level 0. */
+static void edge_ranks_match(const che_mesh *m) {
+    size_t nr = 7, no = 0;
+    const uint64_t *ranks = che_mesh_edge_ranks(m, &nr);
+    const uint32_t *O = che_mesh_opposites(m, &no);
+    const size_t nh = che_mesh_num_half_edges(m);
+    if (che_mesh_level(m) == 0) {
+        CHECK(ranks == NULL && nr == 0);
+        return;
+    }
+    CHECK(ranks != NULL && O != NULL);
+    CHECK(nr == (nh + 31) / 32 && no == nh);
+    for (uint32_t h = 0; h < nh; h++) {
+        uint32_t e = TOPOMESH_NONE;
+        CHECK_OK(che_half_edge_edge(m, h, &e));
+        CHECK(che_edge_of(O, ranks, h) == e);
+    }
+    /* The same pointer again (computed once, kept with the mesh). */
+    CHECK(che_mesh_edge_ranks(m, NULL) == ranks);
 }
 
 static void test_star(void) {
@@ -56,13 +91,41 @@ static void test_star(void) {
     CHECK_STATUS(che_star_begin(m, 4, &it), TOPOMESH_STATUS_OUT_OF_RANGE);
     CHECK_DETAIL("vertex 4");
     CHECK(!che_star_next(NULL, &s));
+    CHECK(!che_star_advance(NULL, &s));
     CHECK_OK(che_star_begin(m, 0, &it));
     CHECK(!che_star_next(&it, NULL));
+    CHECK(!che_star_advance(&it, NULL));
     for (uint32_t level = 0; level <= 3; level++) {
         CHECK_OK(che_mesh_build_level(m, level));
         star_matches_relations(m);
+        edge_ranks_match(m);
     }
+    /* Down and up again: the directory follows the level. */
+    for (uint32_t level = 3; level-- > 0;) {
+        CHECK_OK(che_mesh_build_level(m, level));
+        star_matches_relations(m);
+        edge_ranks_match(m);
+    }
+    size_t len = 9;
+    CHECK(che_mesh_edge_ranks(NULL, &len) == NULL && len == 0);
     che_mesh_free(m);
+
+    /* A 12 x 12 grid (288 triangles, several words of the edge-id directory). */
+    enum { G = 12 };
+    uint32_t grid[2 * G * G * 3];
+    size_t k = 0;
+    for (uint32_t i = 0; i < G; i++)
+        for (uint32_t j = 0; j < G; j++) {
+            uint32_t a = i * (G + 1) + j, b = a + 1, c = a + G + 1, d = c + 1;
+            uint32_t quad[6] = {a, b, d, a, d, c};
+            for (int q = 0; q < 6; q++) grid[k++] = quad[q];
+        }
+    for (uint32_t level = 0; level <= 3; level++) {
+        m = make(grid, 2 * G * G, (G + 1) * (G + 1), NULL, level);
+        star_matches_relations(m);
+        edge_ranks_match(m);
+        che_mesh_free(m);
+    }
 
     const uint32_t *fixtures[] = {TETRA, BOWTIE, FIN, MOEBIUS, DEGEN};
     const size_t nt[] = {4, 2, 3, 6, 3}, nv[] = {4, 5, 5, 6, 5};
@@ -70,6 +133,7 @@ static void test_star(void) {
         for (uint32_t level = 0; level <= 3; level++) {
             m = make(fixtures[f], nt[f], nv[f], NULL, level);
             star_matches_relations(m);
+            edge_ranks_match(m);
             che_mesh_free(m);
         }
     }

@@ -1,6 +1,7 @@
 // The C++17 wrapper: RAII, moves, strong ids, ranges, spans, CSR, errors.
 #include <topomesh/topomesh.hpp>
 
+#include <array>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -139,6 +140,125 @@ static void test_relations_and_ranges() {
     CHECK(first_half_edge(TriangleId{2}) == HalfEdgeId{6});
 }
 
+// The C API's answer for one element, as raw ids.
+template <class F> static std::vector<std::uint32_t> c_answer(F f, const che_mesh *m, std::uint32_t id) {
+    std::size_t len = 0;
+    if (f(m, id, nullptr, 0, &len) != TOPOMESH_STATUS_OK) return {none};
+    std::vector<std::uint32_t> out(len);
+    if (len && f(m, id, out.data(), len, &len) != TOPOMESH_STATUS_OK) return {none};
+    return out;
+}
+template <class T, std::size_t N> static std::vector<std::uint32_t> raw(const std::array<T, N> &a) {
+    std::vector<std::uint32_t> out;
+    for (auto id : a) out.push_back(id.value());
+    return out;
+}
+
+// Every range and fixed-size relation of the wrapper (inline where the level stores the
+// arrays) gives the C API's answer, at every level and after level changes.
+static void check_against_c_api(const Surface &s) {
+    const che_mesh *m = s.handle();
+    for (std::uint32_t v = 0; v < s.num_vertices(); v++) {
+        CHECK(raw(s.vertices_around(VertexId{v})) == c_answer(che_vertex_vertices, m, v));
+        CHECK(raw(s.edges_around(VertexId{v})) == c_answer(che_vertex_edges, m, v));
+        CHECK(raw(s.triangles_around(VertexId{v})) == c_answer(che_vertex_triangles, m, v));
+        std::vector<std::uint32_t> star;
+        for (const StarStep &st : s.star(VertexId{v})) star.push_back(st.vertex.value());
+        CHECK(star == c_answer(che_vertex_vertices, m, v));
+        std::uint32_t h = 0;
+        bool b = false;
+        CHECK(che_vertex_half_edge(m, v, &h) == TOPOMESH_STATUS_OK && s.half_edge(VertexId{v}).value() == h);
+        CHECK(che_vertex_is_boundary(m, v, &b) == TOPOMESH_STATUS_OK && s.is_boundary(VertexId{v}) == b);
+    }
+    for (std::uint32_t e = 0; e < s.num_edges(); e++) {
+        CHECK(raw(s.edge_vertices(EdgeId{e})) == c_answer(che_edge_vertices, m, e));
+        CHECK(raw(s.edge_triangles(EdgeId{e})) == c_answer(che_edge_triangles, m, e));
+        std::uint32_t h = 0;
+        bool b = false;
+        CHECK(che_edge_half_edge(m, e, &h) == TOPOMESH_STATUS_OK && s.half_edge(EdgeId{e}).value() == h);
+        CHECK(che_edge_is_boundary(m, e, &b) == TOPOMESH_STATUS_OK && s.is_boundary(EdgeId{e}) == b);
+    }
+    for (std::uint32_t t = 0; t < s.num_triangles(); t++) {
+        CHECK(raw(s.triangle_vertices(TriangleId{t})) == c_answer(che_triangle_vertices, m, t));
+        CHECK(raw(s.triangle_triangles(TriangleId{t})) == c_answer(che_triangle_triangles, m, t));
+    }
+    for (std::uint32_t h = 0; h < s.num_half_edges(); h++) {
+        std::uint32_t o = 0;
+        CHECK(che_half_edge_opposite(m, h, &o) == TOPOMESH_STATUS_OK && s.opposite(HalfEdgeId{h}).value() == o);
+        CHECK(s.origin(HalfEdgeId{h}) == VertexId{s.half_edge_vertices()[h]});
+    }
+    // Past the end: the C API's errors, whatever the path.
+    const std::uint32_t nv = static_cast<std::uint32_t>(s.num_vertices()),
+                        ne = static_cast<std::uint32_t>(s.num_edges()),
+                        nt = static_cast<std::uint32_t>(s.num_triangles()),
+                        nh = static_cast<std::uint32_t>(s.num_half_edges());
+    CHECK_THROWS(s.vertices_around(VertexId{nv}).begin(), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+    CHECK_THROWS(s.triangles_around(VertexId{nv}).begin(), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+    CHECK_THROWS(s.half_edge(VertexId{nv}), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+    CHECK_THROWS(s.is_boundary(VertexId{nv}), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+    CHECK_THROWS(s.edge_vertices(EdgeId{ne}), TOPOMESH_STATUS_OUT_OF_RANGE, "edge");
+    CHECK_THROWS(s.edge_triangles(EdgeId{ne}), TOPOMESH_STATUS_OUT_OF_RANGE, "edge");
+    CHECK_THROWS(s.half_edge(EdgeId{ne}), TOPOMESH_STATUS_OUT_OF_RANGE, "edge");
+    CHECK_THROWS(s.is_boundary(EdgeId{ne}), TOPOMESH_STATUS_OUT_OF_RANGE, "edge");
+    CHECK_THROWS(s.triangle_vertices(TriangleId{nt}), TOPOMESH_STATUS_OUT_OF_RANGE, "triangle");
+    CHECK_THROWS(s.triangle_triangles(TriangleId{nt}), TOPOMESH_STATUS_OUT_OF_RANGE, "triangle");
+    CHECK_THROWS(s.opposite(HalfEdgeId{nh}), TOPOMESH_STATUS_OUT_OF_RANGE, "half-edge");
+    CHECK_THROWS(s.opposite(HalfEdgeId{}), TOPOMESH_STATUS_OUT_OF_RANGE, "half-edge");
+}
+
+static void test_inline_paths() {
+    // A 6 x 6 grid with its middle quad missing (a boundary inside), plus a tetrahedron.
+    std::vector<std::uint32_t> tris;
+    const std::uint32_t g = 6;
+    for (std::uint32_t i = 0; i < g; i++)
+        for (std::uint32_t j = 0; j < g; j++) {
+            if (i == 2 && j == 2) continue;
+            std::uint32_t a = i * (g + 1) + j, b = a + 1, c = a + g + 1, d = c + 1;
+            tris.insert(tris.end(), {a, b, d, a, d, c});
+        }
+    const std::uint32_t nv = (g + 1) * (g + 1);
+    for (std::uint32_t x : TETRA) tris.push_back(nv + x);
+    for (std::uint32_t level = 0; level <= 3; level++) {
+        Surface s = Surface::from_triangles(tris, nv + 4, {}, Options{level, false});
+        check_against_c_api(s);
+        // Level changes through the wrapper refetch the arrays.
+        for (std::uint32_t other : {3u, 1u, 0u, 2u}) {
+            s.build_level(other);
+            check_against_c_api(s);
+        }
+        // Through the C handle, then refresh().
+        CHECK(che_mesh_build_level(s.handle(), level) == TOPOMESH_STATUS_OK);
+        s.refresh();
+        check_against_c_api(s);
+        // A moved Surface keeps its arrays; the moved-from one has none and no handle.
+        Surface t = std::move(s);
+        check_against_c_api(t);
+    }
+    // High degrees (the inline walk goes in batches of 16 steps): an open fan of 40
+    // triangles and a closed one of 32 (a double cone), around vertex 0.
+    for (std::uint32_t k : {15u, 16u, 17u, 32u, 40u}) {
+        std::vector<std::uint32_t> fan;
+        for (std::uint32_t i = 0; i < k; i++) fan.insert(fan.end(), {0, 1 + i, 2 + i});
+        std::vector<std::uint32_t> cone;
+        for (std::uint32_t i = 0; i < k; i++) {
+            const std::uint32_t a = 1 + i, b = 1 + (i + 1) % k;
+            cone.insert(cone.end(), {0, a, b, k + 1, b, a});
+        }
+        for (std::uint32_t level = 1; level <= 3; level++) {
+            Surface f = Surface::from_triangles(fan, k + 2, {}, Options{level, false});
+            check_against_c_api(f);
+            CHECK(raw(f.vertices_around(VertexId{0})).size() == k + 1);
+            Surface c = Surface::from_triangles(cone, k + 2, {}, Options{level, false});
+            check_against_c_api(c);
+            CHECK(raw(c.triangles_around(VertexId{0})).size() == k);
+        }
+    }
+    // Ranges taken from a Surface without a handle fail as the C API does.
+    Surface empty(nullptr);
+    CHECK_THROWS(empty.vertices_around(VertexId{0}).begin(), TOPOMESH_STATUS_NULL_ARGUMENT, "m");
+    CHECK_THROWS(empty.triangle_triangles(TriangleId{0}), TOPOMESH_STATUS_NULL_ARGUMENT, "m");
+}
+
 static void test_views_csr_summary() {
     Surface s = Surface::from_triangles(STRIP, 4, STRIP_POS, {1});
     CHECK((s.half_edge_vertices().to_vector() == STRIP));
@@ -191,6 +311,7 @@ int main() {
         test_build_and_counts();
         test_moves();
         test_relations_and_ranges();
+        test_inline_paths();
         test_views_csr_summary();
     } catch (const std::exception &e) {
         std::fprintf(stderr, "unexpected exception: %s\n", e.what());

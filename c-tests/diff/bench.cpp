@@ -241,9 +241,10 @@ private:
     return r;
   }
 
-  // The header-only C++ wrapper (topomesh.hpp): star ranges over the C stack iterator,
-  // fixed-size relations into std::array / SmallIds, curves into a std::vector. It borrows
-  // the handle (released before the Surface is destroyed).
+  // The header-only C++ wrapper (topomesh.hpp): from level 2 its star ranges and fixed-size
+  // relations step inline over the arrays the Surface keeps (FF from level 1); otherwise
+  // they call the C API. Curves go into a std::vector. It borrows the handle (released
+  // before the Surface is destroyed).
   template <class F> auto with_surface(F &&f) {
     topomesh::Surface surf(m_);
     struct Release {

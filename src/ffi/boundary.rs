@@ -82,6 +82,7 @@ pub(crate) fn fail(e: Error) -> Status {
 
 /// Runs an export body: `Ok` -> `TOPOMESH_STATUS_OK`; an error or a panic -> its status,
 /// with the detail recorded for `topomesh_last_error`. Nothing unwinds past this.
+#[inline(always)]
 pub(crate) fn guard(body: impl FnOnce() -> Result<()>) -> Status {
     match catch_unwind(AssertUnwindSafe(body)) {
         Ok(Ok(())) => Status::Ok,
@@ -92,6 +93,7 @@ pub(crate) fn guard(body: impl FnOnce() -> Result<()>) -> Status {
 
 /// Runs an export body that returns a value rather than a status (counts, views): on an
 /// error or a panic, records the detail and returns `fallback`.
+#[inline(always)]
 pub(crate) fn guard_or<T>(fallback: T, body: impl FnOnce() -> Result<T>) -> T {
     match catch_unwind(AssertUnwindSafe(body)) {
         Ok(Ok(v)) => v,
@@ -310,6 +312,7 @@ impl<'a, T> Sink<'a, T> {
 /// # Safety
 /// `h` is NULL or a live handle; `buf` NULL or valid for `cap` writes; `out_len` NULL or
 /// valid for one write.
+#[inline(always)]
 pub(crate) unsafe fn ids_answer<H>(
     h: *const H,
     buf: *mut u32,
@@ -329,6 +332,7 @@ pub(crate) unsafe fn ids_answer<H>(
 ///
 /// # Safety
 /// `h` is NULL or a live handle; `out` NULL or valid for one write.
+#[inline(always)]
 pub(crate) unsafe fn value_answer<H, T>(
     h: *const H,
     out: *mut T,

@@ -1,6 +1,7 @@
 //! The `che_mesh` handle: a boxed [`Che`] plus the identity origin maps, materialised on
 //! the first request for a zero-copy view (the core stores none when they are the identity).
 
+use super::che_edge_ranks::EdgeRanks;
 use crate::che::{BuildOptions, Che};
 use crate::error::{Error, Result};
 use std::sync::OnceLock;
@@ -11,6 +12,9 @@ pub struct CheMesh {
     pub(crate) che: Che,
     vertex_origins: OnceLock<Box<[u32]>>,
     triangle_origins: OnceLock<Box<[u32]>>,
+    /// The edge-id directory of the current level (see `che_edge_ranks`); reset when the
+    /// level changes.
+    edge_ranks: OnceLock<Option<EdgeRanks>>,
 }
 
 impl CheMesh {
@@ -19,7 +23,21 @@ impl CheMesh {
             che,
             vertex_origins: OnceLock::new(),
             triangle_origins: OnceLock::new(),
+            edge_ranks: OnceLock::new(),
         }
+    }
+
+    /// The edge-id rank directory, computed from `O` on first use; `None` below level 1.
+    pub(crate) fn edge_ranks(&self) -> Option<&EdgeRanks> {
+        self.edge_ranks
+            .get_or_init(|| self.che.opposites().and_then(EdgeRanks::from_opposites))
+            .as_ref()
+    }
+
+    /// Changes the level; views (the edge-id directory too) are invalid afterwards.
+    pub(crate) fn build_level(&mut self, level: u8) -> Result<()> {
+        self.edge_ranks = OnceLock::new();
+        self.che.build_level(level)
     }
 
     /// Structure vertex -> input vertex, identity included (origins do not depend on the level).

@@ -187,7 +187,7 @@ pub unsafe extern "C" fn che_mesh_build_level(m: *mut CheMesh, level: u32) -> St
     guard(|| {
         // SAFETY: caller contract: NULL or a live handle, not shared during the call.
         let m = unsafe { handle_mut(m, "m")? };
-        m.che.build_level(level_arg(level)?)
+        m.build_level(level_arg(level)?)
     })
 }
 

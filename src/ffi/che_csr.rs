@@ -6,11 +6,14 @@
 //! written. Exactly one NULL buffer gives NULL_ARGUMENT. A buffer too small gives
 //! BUFFER_TOO_SMALL with both needed lengths written (the buffers then hold a prefix).
 //! Rows are in the order of the one-element calls. O(T) at every level: from level 2 the
-//! rows stream from the structure; below, the core's bulk sweep computes the missing
-//! tables once (O(T) temporary memory).
+//! rows stream from the structure; at level 1 VV and VF stream the same walk over a
+//! starting half-edge per vertex found in one pass (4 bytes per vertex of temporary
+//! memory); otherwise the core's bulk sweep computes the missing tables once (O(T)
+//! temporary memory).
 
 use super::boundary::{CsrSink, guard, handle};
 use super::che::CheMesh;
+use super::che_walk::{Walk, vertex_half_edges};
 use super::status::Status;
 use crate::NONE;
 use crate::che::{Che, Csr, tri};
@@ -34,6 +37,29 @@ fn vertex_rows(
             s.row();
             csr.get(v).iter().for_each(|&x| s.push(x));
         }
+    }
+}
+
+/// VV or VF rows: `row` walks each star (from level 1), else the core's bulk answer is copied.
+fn star_rows(
+    che: &Che,
+    s: &mut CsrSink<'_>,
+    row: impl Fn(&Walk<'_>, u32, &mut CsrSink<'_>),
+    bulk: impl Fn(&Che) -> Csr,
+) {
+    let found;
+    let walk = match (Walk::of(che), che.opposites()) {
+        (Some(w), _) => w,
+        (None, Some(o)) => {
+            let v = che.half_edge_vertices();
+            found = vertex_half_edges(che.num_vertices(), v, o);
+            Walk { v, o, vh: &found }
+        }
+        (None, None) => return vertex_rows(che, s, |_, _, _| {}, bulk),
+    };
+    for v in 0..che.num_vertices() as u32 {
+        s.row();
+        row(&walk, v, s);
     }
 }
 
@@ -95,10 +121,10 @@ pub unsafe extern "C" fn che_mesh_vertex_vertices_csr(
             n_offsets,
             n_indices,
             |che, s| {
-                vertex_rows(
+                star_rows(
                     che,
                     s,
-                    |che, v, s| che.vertex_vertices(v).for_each(|x| s.push(x)),
+                    |w, v, s| w.vertex_vertices(v, &mut |x| s.push(x)),
                     Che::all_vertex_vertices,
                 );
                 Ok(())
@@ -163,10 +189,10 @@ pub unsafe extern "C" fn che_mesh_vertex_triangles_csr(
             n_offsets,
             n_indices,
             |che, s| {
-                vertex_rows(
+                star_rows(
                     che,
                     s,
-                    |che, v, s| che.vertex_triangles(v).for_each(|x| s.push(x)),
+                    |w, v, s| w.vertex_triangles(v, &mut |x| s.push(x)),
                     Che::all_vertex_triangles,
                 );
                 Ok(())

@@ -8,7 +8,10 @@
 
 use super::boundary::{ids_answer, value_answer};
 use super::che::CheMesh;
+use super::che_walk::{Walk, across};
 use super::status::Status;
+use crate::NONE;
+use crate::che::{first, next, tri};
 use crate::error::Error;
 
 /// VV: the vertices around `v`, counter-clockwise seen from outside. On a boundary vertex
@@ -27,7 +30,10 @@ pub unsafe extern "C" fn che_vertex_vertices(
     unsafe {
         ids_answer(m, buf, cap, out_len, |m, s| {
             m.che.check_vertex(v)?;
-            s.extend(m.che.vertex_vertices(v));
+            match Walk::of(&m.che) {
+                Some(w) => w.vertex_vertices(v, &mut |x| s.push(x)),
+                None => s.extend(m.che.vertex_vertices(v)),
+            }
             Ok(())
         })
     }
@@ -67,7 +73,10 @@ pub unsafe extern "C" fn che_vertex_triangles(
     unsafe {
         ids_answer(m, buf, cap, out_len, |m, s| {
             m.che.check_vertex(v)?;
-            s.extend(m.che.vertex_triangles(v));
+            match Walk::of(&m.che) {
+                Some(w) => w.vertex_triangles(v, &mut |x| s.push(x)),
+                None => s.extend(m.che.vertex_triangles(v)),
+            }
             Ok(())
         })
     }
@@ -87,7 +96,13 @@ pub unsafe extern "C" fn che_edge_vertices(
     unsafe {
         ids_answer(m, buf, cap, out_len, |m, s| {
             m.che.check_edge(e)?;
-            s.extend(m.che.edge_vertices(e));
+            match m.che.edge_half_edges() {
+                Some(eh) => {
+                    let (h, v) = (eh[e as usize], m.che.half_edge_vertices());
+                    s.extend([v[h as usize], v[next(h) as usize]]);
+                }
+                None => s.extend(m.che.edge_vertices(e)),
+            }
             Ok(())
         })
     }
@@ -127,7 +142,17 @@ pub unsafe extern "C" fn che_edge_triangles(
     unsafe {
         ids_answer(m, buf, cap, out_len, |m, s| {
             m.che.check_edge(e)?;
-            s.extend(m.che.edge_triangles(e));
+            match (m.che.edge_half_edges(), m.che.opposites()) {
+                (Some(eh), Some(o)) => {
+                    let h = eh[e as usize];
+                    s.push(tri(h));
+                    let g = o[h as usize];
+                    if g != NONE {
+                        s.push(tri(g));
+                    }
+                }
+                _ => s.extend(m.che.edge_triangles(e)),
+            }
             Ok(())
         })
     }
@@ -147,7 +172,8 @@ pub unsafe extern "C" fn che_triangle_vertices(
     unsafe {
         ids_answer(m, buf, cap, out_len, |m, s| {
             m.che.check_triangle(t)?;
-            s.extend(m.che.triangle_vertices(t));
+            let h = first(t) as usize;
+            s.extend(m.che.half_edge_vertices()[h..h + 3].iter().copied());
             Ok(())
         })
     }
@@ -187,7 +213,13 @@ pub unsafe extern "C" fn che_triangle_triangles(
     unsafe {
         ids_answer(m, buf, cap, out_len, |m, s| {
             m.che.check_triangle(t)?;
-            s.extend(m.che.triangle_triangles(t));
+            match m.che.opposites() {
+                Some(o) => {
+                    let h = first(t) as usize;
+                    s.extend([across(o, h), across(o, h + 1), across(o, h + 2)]);
+                }
+                None => s.extend(m.che.triangle_triangles(t)),
+            }
             Ok(())
         })
     }

@@ -121,3 +121,15 @@ pub unsafe extern "C" fn che_mesh_triangle_origins(
     // SAFETY: caller contract.
     unsafe { view(m, len, |m| Some(m.triangle_origins())) }
 }
+
+/// The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
+/// the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`
+/// (`O[h] == TOPOMESH_NONE || h < O[h]`, bit `h % 32`), the high 32 bits count the canonical
+/// half-edges before `32k`. With `O` it gives the edge of any half-edge in O(1) without a
+/// call: `che_edge_of` in `topomesh_inline.h`. Computed from `O` on the first request
+/// (2 bits per half-edge, kept with the mesh until its level changes). NULL below level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_edge_ranks(m: *const CheMesh, len: *mut usize) -> *const u64 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.edge_ranks().map(|r| &r.entries[..])) }
+}

@@ -8,8 +8,10 @@
 //!   `topomesh_version`;
 //! - `che`: the `che_mesh` handle and build options; `che_build` (create, load, free,
 //!   level, counts), `che_relations` (one element at a time), `che_star` (stack
-//!   iterator), `che_csr` (bulk), `che_views` (zero-copy), `che_info` (summary, report,
-//!   memory).
+//!   iterator; its step is inline in `topomesh_inline.h` from level 2), `che_csr` (bulk),
+//!   `che_views` (zero-copy), `che_info` (summary, report, memory); `che_walk` (the
+//!   array walks the per-element and bulk calls share) and `che_edge_ranks` (the edge-id
+//!   directory behind `che_mesh_edge_ranks`).
 //! - `chf`: the `chf_mesh` handle and build options, the same shape: `chf_build`,
 //!   `chf_relations` (the 16 relations), `chf_half_faces` (boundary tests, half-face
 //!   helpers), `chf_csr`, `chf_views`, `chf_info`, `chf_surface` (the boundary surface as
@@ -34,10 +36,12 @@ pub(crate) mod boundary;
 pub mod che;
 pub mod che_build;
 pub mod che_csr;
+mod che_edge_ranks;
 pub mod che_info;
 pub mod che_relations;
 pub mod che_star;
 pub mod che_views;
+mod che_walk;
 pub mod chf;
 pub mod chf_build;
 pub mod chf_csr;

@@ -45,7 +45,7 @@ fn star_iterator_matches_the_core_rotation() {
                 assert_eq!(unsafe { che_star_begin(m, v, it.as_mut_ptr()) }, Status::Ok);
                 let mut got = Vec::new();
                 // SAFETY: the iterator was begun on a live mesh; `step` is a local.
-                while unsafe { che_star_next(it.as_mut_ptr(), &mut step) } {
+                while unsafe { che_star_advance(it.as_mut_ptr(), &mut step) } {
                     got.push(step.vertex);
                 }
                 assert_eq!(

@@ -1215,9 +1215,9 @@ topomesh_status chf_mesh_report_examples(const struct chf_mesh *m,
 topomesh_status chf_mesh_memory(const struct chf_mesh *m, struct chf_memory *out);
 
 /**
- * VV: the vertices sharing an edge with `v`, each once, in the breadth-first order of its
- * star (tetrahedra reached across the faces holding `v`; there is no rotation order
- * around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
+ * VV: the vertices sharing an edge with `v`, each once, in increasing order (found by a
+ * walk over its star, the tetrahedra reached across the faces holding `v`; there is no
+ * rotation order around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
  * each call also computes the missing tables, O(T).
  */
 topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
@@ -1227,7 +1227,7 @@ topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
                                     size_t *out_len);
 
 /**
- * VE: the edges holding `v`, each once, in the order of its star. O(star) from level 2.
+ * VE: the edges holding `v`, each once, in increasing order. O(star) from level 2.
  */
 topomesh_status chf_vertex_edges(const struct chf_mesh *m,
                                  uint32_t v,
@@ -1236,7 +1236,7 @@ topomesh_status chf_vertex_edges(const struct chf_mesh *m,
                                  size_t *out_len);
 
 /**
- * VF: the faces holding `v`, each once, in the order of its star. O(star) from level 2.
+ * VF: the faces holding `v`, each once, in increasing order. O(star) from level 2.
  */
 topomesh_status chf_vertex_faces(const struct chf_mesh *m,
                                  uint32_t v,
@@ -1245,8 +1245,8 @@ topomesh_status chf_vertex_faces(const struct chf_mesh *m,
                                  size_t *out_len);
 
 /**
- * VT: the tetrahedra holding `v`, each once, breadth-first from the half-face
- * `chf_vertex_half_face` gives. O(star) from level 2.
+ * VT: the tetrahedra holding `v`, each once, in increasing order (a walk over its star
+ * from the half-face `chf_vertex_half_face` gives). O(star) from level 2.
  */
 topomesh_status chf_vertex_tetrahedra(const struct chf_mesh *m,
                                       uint32_t v,

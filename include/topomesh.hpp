@@ -649,7 +649,7 @@ public:
         return chf_mesh_num_boundary_components(m_);
     }
 
-    // Around a vertex (each once, in the breadth-first order of its star) and around an
+    // Around a vertex (each once, in increasing order) and around an
     // edge (rotation order, from the boundary on a boundary edge).
     IdList<VertexId> vertex_vertices(VertexId v) const {
         return list<VertexId>(chf_vertex_vertices, v.value());

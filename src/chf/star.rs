@@ -1,17 +1,23 @@
 //! The star of a vertex: its tetrahedra, breadth-first from the start half-face (`VH`),
 //! crossing the three half-faces of each that hold the vertex. Every tetrahedron is met
 //! three times or so, so the walk keeps a visited set inline in the iterator: the
-//! tetrahedra met so far, checked by a branch-free scan while there are at most [`INLINE`]
-//! (no allocation, no hash), then a hash set on the heap, doubling as it grows: the one
-//! allocation a vertex query may make. (A star cannot be enumerated without marks in
-//! general: its dual is the link of the vertex, an arbitrary surface.)
+//! tetrahedra met so far, checked by a branch-free scan of the used part (eight at a time)
+//! while there are at most [`INLINE`] (no allocation, no hash), then a hash set on the
+//! heap, doubling as it grows: the one allocation a vertex query may make. (A star cannot
+//! be enumerated without marks in general: its dual is the link of the vertex, an
+//! arbitrary surface.)
+//!
+//! The answers (VV, VE, VF, VT) come in increasing id order: the walk collects them in a
+//! second set of the same kind and sorts it, so that they are the rows the bulk calls
+//! build by counting (`bulk.rs`), and the same at every level. The walk runs when the
+//! query is made; the iterator then hands out the sorted ids.
 //!
 //! Why the walk goes a breadth-first level at a time: on a large mesh the tetrahedra of a
 //! star are far apart in memory, and each one read is a cache miss (its `V` and its `O`).
 //! Read one after the other, with the next one's address known only once the previous
 //! has arrived, a star costs its size in memory latencies; so when a level starts, every
 //! tetrahedron of it is read once at the same time (the misses overlap) and then visited
-//! from the cache. The order is the plain breadth-first one.
+//! from the cache.
 
 use super::Chf;
 use super::ids::{edge_index, first, tet};
@@ -77,9 +83,12 @@ impl Visited {
     #[inline(always)]
     fn add(&mut self, t: u32) -> bool {
         if self.heap_items.is_empty() {
-            // A scan of the whole array (unused entries are `NONE`, never a tetrahedron)
-            // with no early exit: a few vector compares and no branch to mispredict.
-            let seen = self.items.iter().fold(false, |seen, &x| seen | (x == t));
+            // A scan of the used part rounded up to eight (unused entries are `NONE`, never
+            // an id) with no early exit: a few vector compares and no branch to mispredict.
+            let used = (self.len + 7) & !7;
+            let seen = self.items[..used].chunks_exact(8).fold(false, |seen, c| {
+                seen | c.iter().fold(false, |s, &x| s | (x == t))
+            });
             if seen {
                 return false;
             }
@@ -104,6 +113,26 @@ impl Visited {
             }
         }
         true
+    }
+
+    /// The ids, in insertion order (or sorted after [`Visited::sort`]).
+    #[inline]
+    fn as_slice(&self) -> &[u32] {
+        if self.heap_items.is_empty() {
+            &self.items[..self.len]
+        } else {
+            &self.heap_items
+        }
+    }
+
+    /// Sorts the ids; no insertion may follow.
+    fn sort(&mut self) {
+        if self.heap_items.is_empty() {
+            self.items[..self.len].sort_unstable();
+        } else {
+            self.heap_items.sort_unstable();
+            self.heap_table = Vec::new();
+        }
     }
 
     /// The star is larger than the inline capacity: items and a hash set to the heap.
@@ -191,125 +220,112 @@ enum Kind {
     Tetrahedra,
 }
 
-/// The vertices, edges, faces or tetrahedra around a vertex, each once, in the
-/// breadth-first order of its star (there is no rotation order around a vertex in 3D).
-/// Allocation-free at level 2 and up for stars of up to [`super::STAR_INLINE`] tetrahedra.
+/// The vertices, edges, faces or tetrahedra around a vertex, each once, in increasing id
+/// order (there is no rotation order around a vertex in 3D). Allocation-free for stars of
+/// up to [`super::STAR_INLINE`] tetrahedra (and answers of up to as many ids).
 #[derive(Clone, Debug)]
 pub struct VertexIds<'a> {
-    view: View<'a>,
-    star: Star,
-    kind: Kind,
-    pending: [u32; 3],
-    len: u8,
-    pos: u8,
+    ids: Visited,
+    pos: usize,
+    _mesh: std::marker::PhantomData<&'a Chf>,
 }
 
 impl Iterator for VertexIds<'_> {
     type Item = u32;
 
+    #[inline]
     fn next(&mut self) -> Option<u32> {
-        loop {
-            if self.pos < self.len {
-                self.pos += 1;
-                return Some(self.pending[self.pos as usize - 1]);
-            }
-            let view = &self.view;
-            let (t, i) = match self.kind {
-                Kind::Tetrahedra => self.star.next(view, |_| 0),
-                Kind::Faces => self.star.next(view, |t| view.faces.word(4 * t as usize)),
-                Kind::Edges => self.star.next(view, |t| view.edges.word(6 * t as usize)),
-                Kind::Vertices => self
-                    .star
-                    .next(view, |t| view.edges.bits_word(6 * t as usize)),
-            }?;
-            self.pos = 0;
-            self.len = 0;
-            if self.kind == Kind::Tetrahedra {
-                self.pending[0] = t;
-                self.len = 1;
-                continue;
-            }
-            let x = self.star.vertex;
-            let view = &self.view;
-            for j in (0..4).filter(|&j| j != i) {
-                let id = match self.kind {
-                    Kind::Faces => {
-                        // Each face once: from its canonical half-face.
-                        let hf = first(t) + j;
-                        (view.canonical_half_face(hf) == hf)
-                            .then(|| view.faces.rank(hf as usize) as u32)
-                    }
-                    Kind::Edges | Kind::Vertices => {
-                        // Each edge once: from its canonical slot.
-                        let s = 6 * t as u64 + edge_index(i, j) as u64;
-                        if !view.edges.get(s as usize) {
-                            None
-                        } else if self.kind == Kind::Edges {
-                            Some(view.edges.rank(s as usize) as u32)
-                        } else {
-                            let w = view.v[(first(t) + j) as usize];
-                            first_fan(view, x, w, s).then_some(w)
-                        }
-                    }
-                    Kind::Tetrahedra => unreachable!(),
-                };
-                if let Some(id) = id {
-                    self.pending[self.len as usize] = id;
-                    self.len += 1;
-                }
-            }
-        }
+        let x = self.ids.as_slice().get(self.pos).copied();
+        self.pos += x.is_some() as usize;
+        x
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        let n = self.ids.len - self.pos;
+        (n, Some(n))
     }
 }
 
+impl ExactSizeIterator for VertexIds<'_> {}
 impl std::iter::FusedIterator for VertexIds<'_> {}
 
-/// Is canonical slot `s` of pair `{x, w}` the one VV reports `w` from? Yes unless the pair
-/// carries several fans and `s` is not the first.
-#[inline]
-fn first_fan(view: &View, x: u32, w: u32, s: u64) -> bool {
-    if view.multi_fan.is_empty() {
-        return true;
+/// Walks the star of `x` on `view` and collects the ids of `kind`, sorted.
+fn collect(view: &View, x: u32, kind: Kind) -> Visited {
+    let mut star = Star::new(x, view.start_half_face(x));
+    if kind == Kind::Tetrahedra {
+        while star.next(view, |_| 0).is_some() {}
+        let mut ids = star.seen;
+        ids.sort();
+        return ids;
     }
-    let (a, b) = (x.min(w), x.max(w));
-    match view.multi_fan.binary_search_by(|m| (m.a, m.b).cmp(&(a, b))) {
-        Ok(k) => view.multi_fan[k].first_slot == s,
-        Err(_) => true,
+    let mut out = Visited::new();
+    match kind {
+        Kind::Vertices => {
+            while let Some((t, i)) = star.next(view, |_| 0) {
+                let base = first(t) as usize;
+                for j in 0..4 {
+                    if j != i as usize {
+                        out.add(view.v[base + j]);
+                    }
+                }
+            }
+        }
+        Kind::Faces => {
+            while let Some((t, i)) = star.next(view, |t| view.faces.word(4 * t as usize)) {
+                for j in (0..4).filter(|&j| j != i) {
+                    // Each face once: from its canonical half-face.
+                    let hf = first(t) + j;
+                    if view.canonical_half_face(hf) == hf {
+                        out.add(view.faces.rank(hf as usize) as u32);
+                    }
+                }
+            }
+        }
+        Kind::Edges => {
+            while let Some((t, i)) = star.next(view, |t| view.edges.word(6 * t as usize)) {
+                for j in (0..4).filter(|&j| j != i) {
+                    // Each edge once: from its canonical slot.
+                    let s = 6 * t as usize + edge_index(i, j) as usize;
+                    if view.edges.get(s) {
+                        out.add(view.edges.rank(s) as u32);
+                    }
+                }
+            }
+        }
+        Kind::Tetrahedra => unreachable!(),
     }
+    out.sort();
+    out
 }
 
 impl Chf {
     fn vertex_ids(&self, v: u32, kind: Kind) -> VertexIds<'_> {
         let need = match kind {
             Kind::Faces => Need::FACES,
-            Kind::Edges | Kind::Vertices => Need::EDGES,
-            Kind::Tetrahedra => Need::NOTHING,
+            Kind::Edges => Need::EDGES,
+            Kind::Vertices | Kind::Tetrahedra => Need::NOTHING,
         };
-        let view = self.view(need);
-        let star = Star::new(v, view.start_half_face(v));
         VertexIds {
-            view,
-            star,
-            kind,
-            pending: [NONE; 3],
-            len: 0,
+            ids: collect(&self.view(need), v, kind),
             pos: 0,
+            _mesh: std::marker::PhantomData,
         }
     }
 
-    /// VV: the vertices sharing an edge with `v`, each once. O(star) at level 2.
+    /// VV: the vertices sharing an edge with `v`, each once, in increasing order. O(star)
+    /// at level 2.
     pub fn vertex_vertices(&self, v: u32) -> VertexIds<'_> {
         self.vertex_ids(v, Kind::Vertices)
     }
-    /// VE: the edges holding `v`, each once. O(star) at level 2.
+    /// VE: the edges holding `v`, each once, in increasing order. O(star) at level 2.
     pub fn vertex_edges(&self, v: u32) -> VertexIds<'_> {
         self.vertex_ids(v, Kind::Edges)
     }
-    /// VF: the faces holding `v`, each once. O(star) at level 2.
+    /// VF: the faces holding `v`, each once, in increasing order. O(star) at level 2.
     pub fn vertex_faces(&self, v: u32) -> VertexIds<'_> {
         self.vertex_ids(v, Kind::Faces)
     }
-    /// VT: the tetrahedra holding `v`, each once. O(star) at level 2.
+    /// VT: the tetrahedra holding `v`, each once, in increasing order. O(star) at level 2.
     pub fn vertex_tetrahedra(&self, v: u32) -> VertexIds<'_> {
         self.vertex_ids(v, Kind::Tetrahedra)
     }
@@ -332,5 +348,13 @@ mod tests {
         for i in 0..1000 {
             assert_eq!(seen.get(i), i as u32 * 7919 % 1009);
         }
+        seen.sort();
+        assert!(seen.as_slice().windows(2).all(|w| w[0] < w[1]));
+        let mut small = Visited::new();
+        for t in [9, 3, 9, 12, 1, 3] {
+            small.add(t);
+        }
+        small.sort();
+        assert_eq!(small.as_slice(), &[1, 3, 9, 12]);
     }
 }

@@ -5,8 +5,8 @@
 //! walk: count the occurrences per vertex, prefix sums, then place each id in its rows in
 //! increasing id order, which is the order of the one-element calls. VT scans `V`; VF and
 //! VE scan the canonical half-faces and edge slots (ranks the view computes below level
-//! 2); VV reads the VT rows and keeps the first occurrence of each neighbour with a mark
-//! per vertex, then sorts each row. Around the edges (ET, EF) the rows are the rotations,
+//! 2); VV takes both ends of every canonical edge slot, then sorts each row and drops the
+//! repeats. Every pass reads `V` in order (sequential memory). Around the edges (ET, EF) the rows are the rotations,
 //! walked on one view shared by all of them.
 
 use super::Chf;
@@ -109,29 +109,45 @@ impl Chf {
     }
 
     /// VV for every vertex: row `v` is [`Chf::vertex_vertices`]`(v)`. O(T) at every level
-    /// (plus sorting the rows).
+    /// (plus sorting the rows): both ends of every canonical edge slot, read in
+    /// tetrahedron order (sequential memory), then each row sorted and its repeats (a pair
+    /// of vertices with several fans) dropped.
     pub fn all_vertex_vertices(&self) -> ChfCsr {
-        let vt = self.all_vertex_tetrahedra();
-        let n = self.n_vertices;
-        let mut mark = vec![NONE; n];
-        let mut offsets = Vec::with_capacity(n + 1);
-        let mut indices = Vec::with_capacity(vt.indices.len());
-        offsets.push(0u32);
-        for x in 0..n {
-            let start = indices.len();
-            for &t in vt.row(x) {
-                let base = 4 * t as usize;
-                for &w in &self.v[base..base + 4] {
-                    if w != x as u32 && mark[w as usize] != x as u32 {
-                        mark[w as usize] = x as u32;
-                        indices.push(w);
+        let view = self.view(Need::EDGES);
+        let bits = &view.edges;
+        let v = &self.v;
+        let mut c = by_counting(self.n_vertices, |f| {
+            for (t, q) in v.chunks_exact(4).enumerate() {
+                for (k, [a, b]) in EDGE.iter().enumerate() {
+                    if bits.get(6 * t + k) {
+                        let (x, y) = (q[*a as usize], q[*b as usize]);
+                        f(x, y);
+                        f(y, x);
                     }
                 }
             }
-            indices[start..].sort_unstable();
-            offsets.push(indices.len() as u32);
+        });
+        // Sort each row and drop repeats, compacting in place.
+        let mut end = 0usize;
+        let mut start = 0usize;
+        for x in 0..self.n_vertices {
+            let stop = c.offsets[x + 1] as usize;
+            c.indices[start..stop].sort_unstable();
+            c.offsets[x] = end as u32;
+            let mut last = NONE;
+            for k in start..stop {
+                let w = c.indices[k];
+                if w != last {
+                    c.indices[end] = w;
+                    end += 1;
+                    last = w;
+                }
+            }
+            start = stop;
         }
-        ChfCsr { offsets, indices }
+        c.offsets[self.n_vertices] = end as u32;
+        c.indices.truncate(end);
+        c
     }
 
     /// ET for every edge: calls `row(e, tetrahedra)` for each edge in order, with the

@@ -135,12 +135,9 @@ impl Chf {
                 tets.len()
             )));
         }
-        // A copy (the build copies the ids anyway): `as_chunks` is newer than our MSRV.
-        let quads: Vec<[u32; 4]> = tets
-            .chunks_exact(4)
-            .map(|q| [q[0], q[1], q[2], q[3]])
-            .collect();
-        Self::from_tetrahedra(&quads, n_vertices, positions, options)
+        // A view of the same memory, no copy: the build's peak is what it allocates.
+        let (quads, _) = tets.as_chunks::<4>();
+        Self::from_tetrahedra(quads, n_vertices, positions, options)
     }
 
     pub fn level(&self) -> u8 {

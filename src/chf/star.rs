@@ -27,13 +27,76 @@ use crate::NONE;
 /// Stars up to this many tetrahedra are walked without allocation.
 pub const INLINE: usize = 64;
 
-/// The tetrahedra met so far, in breadth-first order, and past [`INLINE`] a hash set of
-/// them.
+/// Ids in the order they came, [`INLINE`] of them inline, then all of them on the heap.
 #[derive(Clone, Debug)]
-struct Visited {
+struct Ids {
     items: [u32; INLINE],
     len: usize,
-    heap_items: Vec<u32>,
+    heap: Vec<u32>,
+}
+
+impl Ids {
+    fn new() -> Self {
+        Ids {
+            items: [NONE; INLINE],
+            len: 0,
+            heap: Vec::new(),
+        }
+    }
+
+    #[inline]
+    fn get(&self, i: usize) -> u32 {
+        if self.heap.is_empty() {
+            self.items[i]
+        } else {
+            self.heap[i]
+        }
+    }
+
+    #[inline]
+    fn push(&mut self, x: u32) {
+        if self.len < INLINE {
+            self.items[self.len] = x;
+        } else {
+            if self.heap.is_empty() {
+                self.heap.reserve(4 * INLINE);
+                self.heap.extend_from_slice(&self.items);
+            }
+            self.heap.push(x);
+        }
+        self.len += 1;
+    }
+
+    /// The ids, in the order they came (or sorted after [`Ids::sort`]).
+    #[inline]
+    fn as_slice(&self) -> &[u32] {
+        if self.heap.is_empty() {
+            &self.items[..self.len]
+        } else {
+            &self.heap
+        }
+    }
+
+    fn sort(&mut self) {
+        if self.heap.is_empty() {
+            self.items[..self.len].sort_unstable();
+        } else {
+            self.heap.sort_unstable();
+        }
+    }
+}
+
+/// Slots of the inline hash table: twice [`INLINE`], so at most half full.
+const TABLE: usize = 2 * INLINE;
+
+/// A set of ids with their order of arrival: an open-addressing hash table of
+/// [`TABLE`] inline slots (scalar loads and stores: no vector scan over entries just
+/// written, which would wait on store forwarding), then, past [`INLINE`] ids, a table on
+/// the heap that doubles as it grows.
+#[derive(Clone, Debug)]
+struct Visited {
+    ids: Ids,
+    table: [u32; TABLE],
     heap_table: Vec<u32>,
 }
 
@@ -44,15 +107,16 @@ fn probe_start(x: u32, cap: usize) -> usize {
 }
 
 /// Inserts into an open-addressing table; false if already there.
-#[inline]
+#[inline(always)]
 fn insert(table: &mut [u32], x: u32) -> bool {
     let mask = table.len() - 1;
     let mut i = probe_start(x, table.len());
     loop {
-        if table[i] == x {
+        let y = table[i];
+        if y == x {
             return false;
         }
-        if table[i] == NONE {
+        if y == NONE {
             table[i] = x;
             return true;
         }
@@ -63,85 +127,46 @@ fn insert(table: &mut [u32], x: u32) -> bool {
 impl Visited {
     fn new() -> Self {
         Visited {
-            items: [NONE; INLINE],
-            len: 0,
-            heap_items: Vec::new(),
+            ids: Ids::new(),
+            table: [NONE; TABLE],
             heap_table: Vec::new(),
         }
     }
 
     #[inline]
-    fn get(&self, i: usize) -> u32 {
-        if self.heap_items.is_empty() {
-            self.items[i]
-        } else {
-            self.heap_items[i]
-        }
+    fn len(&self) -> usize {
+        self.ids.len
     }
 
-    /// Adds `t` unless already there; false if it was.
-    #[inline(always)]
-    fn add(&mut self, t: u32) -> bool {
-        if self.heap_items.is_empty() {
-            // A scan of the used part rounded up to eight (unused entries are `NONE`, never
-            // an id) with no early exit: a few vector compares and no branch to mispredict.
-            let used = (self.len + 7) & !7;
-            let seen = self.items[..used].chunks_exact(8).fold(false, |seen, c| {
-                seen | c.iter().fold(false, |s, &x| s | (x == t))
-            });
-            if seen {
-                return false;
-            }
-            if self.len < INLINE {
-                self.items[self.len] = t;
-                self.len += 1;
-                return true;
-            }
-            self.spill();
-        }
-        if !insert(&mut self.heap_table, t) {
-            return false;
-        }
-        self.heap_items.push(t);
-        self.len += 1;
-        if 2 * self.len > self.heap_table.len() {
-            let cap = 2 * self.heap_table.len();
-            self.heap_table.clear();
-            self.heap_table.resize(cap, NONE);
-            for &x in &self.heap_items {
-                insert(&mut self.heap_table, x);
-            }
-        }
-        true
-    }
-
-    /// The ids, in insertion order (or sorted after [`Visited::sort`]).
     #[inline]
-    fn as_slice(&self) -> &[u32] {
-        if self.heap_items.is_empty() {
-            &self.items[..self.len]
-        } else {
-            &self.heap_items
-        }
+    fn get(&self, i: usize) -> u32 {
+        self.ids.get(i)
     }
 
-    /// Sorts the ids; no insertion may follow.
-    fn sort(&mut self) {
-        if self.heap_items.is_empty() {
-            self.items[..self.len].sort_unstable();
+    /// Adds `x` unless already there; false if it was.
+    #[inline(always)]
+    fn add(&mut self, x: u32) -> bool {
+        let new = if self.heap_table.is_empty() {
+            insert(&mut self.table, x)
         } else {
-            self.heap_items.sort_unstable();
-            self.heap_table = Vec::new();
+            insert(&mut self.heap_table, x)
+        };
+        if new {
+            self.ids.push(x);
+            if self.ids.len == INLINE || 2 * self.ids.len > self.heap_table.len().max(TABLE) {
+                self.grow();
+            }
         }
+        new
     }
 
-    /// The star is larger than the inline capacity: items and a hash set to the heap.
+    /// The table is half full: a table twice as large on the heap.
     #[cold]
-    fn spill(&mut self) {
-        self.heap_items.reserve(4 * INLINE);
-        self.heap_items.extend_from_slice(&self.items);
-        self.heap_table = vec![NONE; 8 * INLINE];
-        for &x in &self.heap_items {
+    fn grow(&mut self) {
+        let cap = (2 * self.heap_table.len()).max(2 * TABLE);
+        self.heap_table.clear();
+        self.heap_table.resize(cap, NONE);
+        for &x in self.ids.as_slice() {
             insert(&mut self.heap_table, x);
         }
     }
@@ -178,12 +203,12 @@ impl Star {
     /// the caller will need of each tetrahedron besides `V` and `O` (see the module doc).
     #[inline]
     pub(crate) fn next(&mut self, view: &View, ahead: impl Fn(u32) -> u32) -> Option<(u32, u32)> {
-        if self.head == self.seen.len {
+        if self.head == self.seen.len() {
             return None;
         }
         if self.head == self.level_end {
             // A new level: read all of it at once.
-            self.level_end = self.seen.len;
+            self.level_end = self.seen.len();
             let mut touched = self.touched;
             for k in self.head..self.level_end {
                 let t = self.seen.get(k) as usize;
@@ -202,9 +227,10 @@ impl Star {
             q[i as usize], self.vertex,
             "a star tetrahedron holds its vertex"
         );
-        for hf in base..base + 4 {
-            let g = view.o[hf as usize];
-            if hf != base + i && g != NONE {
+        // The three faces holding the vertex: all but face `i`.
+        for k in 1..4 {
+            let g = view.o[(base + ((i + k) & 3)) as usize];
+            if g != NONE {
                 self.seen.add(tet(g));
             }
         }
@@ -225,7 +251,7 @@ enum Kind {
 /// up to [`super::STAR_INLINE`] tetrahedra (and answers of up to as many ids).
 #[derive(Clone, Debug)]
 pub struct VertexIds<'a> {
-    ids: Visited,
+    ids: Ids,
     pos: usize,
     _mesh: std::marker::PhantomData<&'a Chf>,
 }
@@ -250,11 +276,11 @@ impl ExactSizeIterator for VertexIds<'_> {}
 impl std::iter::FusedIterator for VertexIds<'_> {}
 
 /// Walks the star of `x` on `view` and collects the ids of `kind`, sorted.
-fn collect(view: &View, x: u32, kind: Kind) -> Visited {
+fn collect(view: &View, x: u32, kind: Kind) -> Ids {
     let mut star = Star::new(x, view.start_half_face(x));
     if kind == Kind::Tetrahedra {
         while star.next(view, |_| 0).is_some() {}
-        let mut ids = star.seen;
+        let mut ids = star.seen.ids;
         ids.sort();
         return ids;
     }
@@ -262,19 +288,17 @@ fn collect(view: &View, x: u32, kind: Kind) -> Visited {
     match kind {
         Kind::Vertices => {
             while let Some((t, i)) = star.next(view, |_| 0) {
-                let base = first(t) as usize;
-                for j in 0..4 {
-                    if j != i as usize {
-                        out.add(view.v[base + j]);
-                    }
+                let base = first(t);
+                for k in 1..4 {
+                    out.add(view.v[(base + ((i + k) & 3)) as usize]);
                 }
             }
         }
         Kind::Faces => {
             while let Some((t, i)) = star.next(view, |t| view.faces.word(4 * t as usize)) {
-                for j in (0..4).filter(|&j| j != i) {
+                for k in 1..4 {
                     // Each face once: from its canonical half-face.
-                    let hf = first(t) + j;
+                    let hf = first(t) + ((i + k) & 3);
                     if view.canonical_half_face(hf) == hf {
                         out.add(view.faces.rank(hf as usize) as u32);
                     }
@@ -283,9 +307,9 @@ fn collect(view: &View, x: u32, kind: Kind) -> Visited {
         }
         Kind::Edges => {
             while let Some((t, i)) = star.next(view, |t| view.edges.word(6 * t as usize)) {
-                for j in (0..4).filter(|&j| j != i) {
+                for k in 1..4 {
                     // Each edge once: from its canonical slot.
-                    let s = 6 * t as usize + edge_index(i, j) as usize;
+                    let s = 6 * t as usize + edge_index(i, (i + k) & 3) as usize;
                     if view.edges.get(s) {
                         out.add(view.edges.rank(s) as u32);
                     }
@@ -294,8 +318,9 @@ fn collect(view: &View, x: u32, kind: Kind) -> Visited {
         }
         Kind::Tetrahedra => unreachable!(),
     }
-    out.sort();
-    out
+    let mut ids = out.ids;
+    ids.sort();
+    ids
 }
 
 impl Chf {
@@ -338,23 +363,25 @@ mod tests {
     #[test]
     fn visited_spills_and_keeps_order() {
         let mut seen = Visited::new();
-        assert!(seen.add(5) && !seen.add(5) && seen.len == 1);
+        assert!(seen.add(5) && !seen.add(5) && seen.len() == 1);
         let mut seen = Visited::new();
         for t in 0..1000u32 {
             assert!(seen.add(t * 7919 % 1009));
             assert!(!seen.add(t * 7919 % 1009));
         }
-        assert_eq!(seen.len, 1000);
+        assert_eq!(seen.len(), 1000);
         for i in 0..1000 {
             assert_eq!(seen.get(i), i as u32 * 7919 % 1009);
         }
-        seen.sort();
-        assert!(seen.as_slice().windows(2).all(|w| w[0] < w[1]));
+        let mut ids = seen.ids;
+        ids.sort();
+        assert!(ids.as_slice().windows(2).all(|w| w[0] < w[1]));
         let mut small = Visited::new();
-        for t in [9, 3, 9, 12, 1, 3] {
+        for t in [9, 3, 9, 12, 1, 3, NONE - 1] {
             small.add(t);
         }
-        small.sort();
-        assert_eq!(small.as_slice(), &[1, 3, 9, 12]);
+        let mut ids = small.ids;
+        ids.sort();
+        assert_eq!(ids.as_slice(), &[1, 3, 9, 12, NONE - 1]);
     }
 }

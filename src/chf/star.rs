@@ -77,6 +77,17 @@ impl Ids {
         }
     }
 
+    /// Sorts `from` and takes its ids (`self` empty): the used part only, or the heap.
+    fn copy_sorted(&mut self, from: &mut Ids) {
+        from.sort();
+        if from.heap.is_empty() {
+            self.items[..from.len].copy_from_slice(&from.items[..from.len]);
+        } else {
+            self.heap = std::mem::take(&mut from.heap);
+        }
+        self.len = from.len;
+    }
+
     fn sort(&mut self) {
         if self.heap.is_empty() {
             self.items[..self.len].sort_unstable();
@@ -143,9 +154,29 @@ impl Visited {
         self.ids.get(i)
     }
 
-    /// Adds `x` unless already there; false if it was.
+    /// Adds `x` unless already there; false if it was. The common case (inline, and the
+    /// first slot probed holds `x` or nothing) takes no branch on whether `x` is new: the
+    /// slot and the next list entry are written whatever the answer (an entry past the
+    /// end is never read), and the length grows by the answer.
     #[inline(always)]
     fn add(&mut self, x: u32) -> bool {
+        if self.ids.len < INLINE - 1 && self.heap_table.is_empty() {
+            let h = probe_start(x, TABLE);
+            let y = self.table[h];
+            let new = y == NONE;
+            if new | (y == x) {
+                self.table[h] = x;
+                self.ids.items[self.ids.len] = x;
+                self.ids.len += new as usize;
+                return new;
+            }
+        }
+        self.add_probing(x)
+    }
+
+    /// [`Visited::add`] past a collision, near the inline capacity or on the heap.
+    #[inline(never)]
+    fn add_probing(&mut self, x: u32) -> bool {
         let new = if self.heap_table.is_empty() {
             insert(&mut self.table, x)
         } else {
@@ -276,13 +307,13 @@ impl ExactSizeIterator for VertexIds<'_> {}
 impl std::iter::FusedIterator for VertexIds<'_> {}
 
 /// Walks the star of `x` on `view` and collects the ids of `kind`, sorted.
-fn collect(view: &View, x: u32, kind: Kind) -> Ids {
+/// The answer lands in `into` (empty), sorted: only the ids are copied, not the arrays.
+fn collect(view: &View, x: u32, kind: Kind, into: &mut Ids) {
     let mut star = Star::new(x, view.start_half_face(x));
     if kind == Kind::Tetrahedra {
         while star.next(view, |_| 0).is_some() {}
-        let mut ids = star.seen.ids;
-        ids.sort();
-        return ids;
+        into.copy_sorted(&mut star.seen.ids);
+        return;
     }
     let mut out = Visited::new();
     match kind {
@@ -318,9 +349,7 @@ fn collect(view: &View, x: u32, kind: Kind) -> Ids {
         }
         Kind::Tetrahedra => unreachable!(),
     }
-    let mut ids = out.ids;
-    ids.sort();
-    ids
+    into.copy_sorted(&mut out.ids);
 }
 
 impl Chf {
@@ -330,11 +359,13 @@ impl Chf {
             Kind::Edges => Need::EDGES,
             Kind::Vertices | Kind::Tetrahedra => Need::NOTHING,
         };
-        VertexIds {
-            ids: collect(&self.view(need), v, kind),
+        let mut it = VertexIds {
+            ids: Ids::new(),
             pos: 0,
             _mesh: std::marker::PhantomData,
-        }
+        };
+        collect(&self.view(need), v, kind, &mut it.ids);
+        it
     }
 
     /// VV: the vertices sharing an edge with `v`, each once, in increasing order. O(star)

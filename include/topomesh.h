@@ -1197,9 +1197,9 @@ topomesh_status chf_mesh_report_examples(const struct chf_mesh *m,
 topomesh_status chf_mesh_memory(const struct chf_mesh *m, struct chf_memory *out);
 
 /**
- * VV: the vertices sharing an edge with `v`, each once, in the breadth-first order of its
- * star (tetrahedra reached across the faces holding `v`; there is no rotation order
- * around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
+ * VV: the vertices sharing an edge with `v`, each once, in increasing order (found by a
+ * walk over its star, the tetrahedra reached across the faces holding `v`; there is no
+ * rotation order around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
  * each call also computes the missing tables, O(T).
  */
 topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
@@ -1209,7 +1209,7 @@ topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
                                     size_t *out_len);
 
 /**
- * VE: the edges holding `v`, each once, in the order of its star. O(star) from level 2.
+ * VE: the edges holding `v`, each once, in increasing order. O(star) from level 2.
  */
 topomesh_status chf_vertex_edges(const struct chf_mesh *m,
                                  uint32_t v,
@@ -1218,7 +1218,7 @@ topomesh_status chf_vertex_edges(const struct chf_mesh *m,
                                  size_t *out_len);
 
 /**
- * VF: the faces holding `v`, each once, in the order of its star. O(star) from level 2.
+ * VF: the faces holding `v`, each once, in increasing order. O(star) from level 2.
  */
 topomesh_status chf_vertex_faces(const struct chf_mesh *m,
                                  uint32_t v,
@@ -1227,8 +1227,8 @@ topomesh_status chf_vertex_faces(const struct chf_mesh *m,
                                  size_t *out_len);
 
 /**
- * VT: the tetrahedra holding `v`, each once, breadth-first from the half-face
- * `chf_vertex_half_face` gives. O(star) from level 2.
+ * VT: the tetrahedra holding `v`, each once, in increasing order (a walk over its star
+ * from the half-face `chf_vertex_half_face` gives). O(star) from level 2.
  */
 topomesh_status chf_vertex_tetrahedra(const struct chf_mesh *m,
                                       uint32_t v,
@@ -1369,12 +1369,53 @@ topomesh_status chf_tetrahedron_tetrahedra(const struct chf_mesh *m,
 topomesh_status chf_mesh_boundary(const struct chf_mesh *m, struct che_mesh **out);
 
 /**
- * Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface. This counts the
- * structure (each half-face of a non-manifold face too), unlike `boundary_faces` in
- * `chf_summary`, which counts input faces with one tetrahedron. O(1) at level 3, O(T)
- * below; 0 for NULL.
+ * Boundary faces: faces with exactly one tetrahedron (as `boundary_faces` in
+ * `chf_summary`). The half-faces of faces shared by 3+ tetrahedra
+ * (`chf_mesh_num_non_manifold_half_faces`) and of orientation seams
+ * (`chf_mesh_num_seam_half_faces`) are unpaired too but are not boundary faces; all three
+ * together are the triangles of `chf_mesh_boundary`'s surface
+ * (`chf_mesh_num_boundary_triangles`). O(1) at level 3, O(T) below; 0 for NULL.
  */
 size_t chf_mesh_num_boundary_faces(const struct chf_mesh *m);
+
+/**
+ * Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface, that is
+ * `chf_mesh_num_boundary_faces + chf_mesh_num_non_manifold_half_faces +
+ * chf_mesh_num_seam_half_faces`. O(1) at level 3, O(T) below; 0 for NULL.
+ */
+size_t chf_mesh_num_boundary_triangles(const struct chf_mesh *m);
+
+/**
+ * Half-faces of non-manifold faces (faces shared by 3+ tetrahedra: one per tetrahedron,
+ * each unpaired). O(1); 0 for NULL.
+ */
+size_t chf_mesh_num_non_manifold_half_faces(const struct chf_mesh *m);
+
+/**
+ * Half-faces on orientation seams (a face of two tetrahedra whose orientations disagree,
+ * in a non-orientable component: both unpaired). O(1); 0 for NULL.
+ */
+size_t chf_mesh_num_seam_half_faces(const struct chf_mesh *m);
+
+/**
+ * Boundary vertices: the vertices of the unpaired half-faces, the vertices of
+ * `chf_mesh_boundary`'s surface before its own split. O(1) at level 3, O(T) below; 0 for
+ * NULL.
+ */
+size_t chf_mesh_num_boundary_vertices(const struct chf_mesh *m);
+
+/**
+ * The boundary-surface vertex of volume vertex `v` into `*out`, `TOPOMESH_NONE` off the
+ * boundary.
+ */
+topomesh_status chf_vertex_boundary_vertex(const struct chf_mesh *m, uint32_t v, uint32_t *out);
+
+/**
+ * The volume vertex of vertex `b` of `chf_mesh_boundary`'s surface into `*out` (copies
+ * the surface split map to the vertex they come from); `b` out of range gives
+ * OUT_OF_RANGE.
+ */
+topomesh_status chf_boundary_vertex_vertex(const struct chf_mesh *m, uint32_t b, uint32_t *out);
 
 /**
  * Boundary components of the structure (after the vertex split): components of the
@@ -1392,7 +1433,7 @@ topomesh_status chf_half_face_boundary_triangle(const struct chf_mesh *m,
 
 /**
  * The half-face of boundary triangle `k` into `*out`; `k` out of range (see
- * `chf_mesh_num_boundary_faces`) gives OUT_OF_RANGE.
+ * `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE.
  */
 topomesh_status chf_boundary_triangle_half_face(const struct chf_mesh *m,
                                                 uint32_t k,
@@ -1410,7 +1451,7 @@ topomesh_status chf_boundary_triangle_face(const struct chf_mesh *m, uint32_t k,
 
 /**
  * The boundary component of vertex `v` into `*out` (`TOPOMESH_NONE` off the boundary;
- * see `chf_mesh_vertex_boundary_components`).
+ * see `chf_mesh_boundary_vertex_components` for the array at level 3).
  */
 topomesh_status chf_vertex_boundary_component(const struct chf_mesh *m, uint32_t v, uint32_t *out);
 
@@ -1445,11 +1486,19 @@ const uint32_t *chf_mesh_face_half_faces(const struct chf_mesh *m, size_t *len);
 const uint32_t *chf_mesh_boundary_half_faces(const struct chf_mesh *m, size_t *len);
 
 /**
- * The boundary component of every vertex (`num_vertices` entries; `TOPOMESH_NONE` off
- * the boundary): components of the boundary faces joined through shared vertices,
- * numbered in order of their first boundary half-face. NULL below level 3.
+ * The boundary vertices in increasing order (`chf_mesh_num_boundary_vertices` entries):
+ * vertex `b` of `chf_mesh_boundary`'s surface is volume vertex `[b]` (copies the surface
+ * splits come after, see `chf_boundary_vertex_vertex`). NULL below level 3.
  */
-const uint32_t *chf_mesh_vertex_boundary_components(const struct chf_mesh *m, size_t *len);
+const uint32_t *chf_mesh_boundary_vertices(const struct chf_mesh *m, size_t *len);
+
+/**
+ * The boundary component of every boundary vertex (indexed like
+ * `chf_mesh_boundary_vertices`): components of the boundary triangles joined through
+ * shared vertices, numbered in order of their first boundary half-face. NULL below level
+ * 3 (then use `chf_vertex_boundary_component`).
+ */
+const uint32_t *chf_mesh_boundary_vertex_components(const struct chf_mesh *m, size_t *len);
 
 /**
  * Positions: x, y, z per structure vertex (copies repeat their origin's position);

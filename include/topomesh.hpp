@@ -758,12 +758,26 @@ public:
     std::size_t num_faces() const noexcept { return chf_mesh_num_faces(m_); }
     std::size_t num_edges() const noexcept { return chf_mesh_num_edges(m_); }
     std::size_t num_half_faces() const noexcept { return chf_mesh_num_half_faces(m_); }
+    /// Faces with exactly one tetrahedron.
     std::size_t num_boundary_faces() const noexcept { return chf_mesh_num_boundary_faces(m_); }
+    /// Unpaired half-faces (boundary faces, non-manifold and seam half-faces): the
+    /// triangles of boundary().
+    std::size_t num_boundary_triangles() const noexcept {
+        return chf_mesh_num_boundary_triangles(m_);
+    }
+    std::size_t num_non_manifold_half_faces() const noexcept {
+        return chf_mesh_num_non_manifold_half_faces(m_);
+    }
+    std::size_t num_seam_half_faces() const noexcept { return chf_mesh_num_seam_half_faces(m_); }
+    /// The vertices of boundary() (before its own split).
+    std::size_t num_boundary_vertices() const noexcept {
+        return chf_mesh_num_boundary_vertices(m_);
+    }
     std::size_t num_boundary_components() const noexcept {
         return chf_mesh_num_boundary_components(m_);
     }
 
-    // Around a vertex (each once, in the breadth-first order of its star) and around an
+    // Around a vertex (each once, in increasing order) and around an
     // edge (rotation order, from the boundary on a boundary edge).
     IdList<VertexId> vertex_vertices(VertexId v) const {
         return list<VertexId>(chf_vertex_vertices, v.value());
@@ -829,7 +843,8 @@ public:
     bool is_boundary(FaceId f) const { return flag(chf_face_is_boundary, f.value()); }
 
     // The boundary surface and its maps.
-    /// The boundary as a new Surface (level 3; interior vertices are isolated vertices).
+    /// The boundary as a new Surface (level 3). Its vertices are the boundary vertices only,
+    /// with compact ids: see boundary_vertex() and volume_vertex().
     Surface boundary() const {
         che_mesh *s = nullptr;
         detail::check(chf_mesh_boundary(m_, &s));
@@ -852,6 +867,14 @@ public:
     std::uint32_t boundary_component(VertexId v) const {
         return value(chf_vertex_boundary_component, v.value());
     }
+    /// The vertex of boundary() that v is, or invalid off the boundary.
+    VertexId boundary_vertex(VertexId v) const {
+        return VertexId{value(chf_vertex_boundary_vertex, v.value())};
+    }
+    /// The volume vertex of vertex b of boundary() (copies its split made included).
+    VertexId volume_vertex(VertexId b) const {
+        return VertexId{value(chf_boundary_vertex_vertex, b.value())};
+    }
 
     // Zero-copy views (empty below the level that stores them).
     Span<std::uint32_t> half_face_vertices() const { return view(chf_mesh_half_face_vertices); }
@@ -861,8 +884,10 @@ public:
     Span<std::uint32_t> boundary_half_faces() const {
         return view(chf_mesh_boundary_half_faces);
     }
-    Span<std::uint32_t> vertex_boundary_components() const {
-        return view(chf_mesh_vertex_boundary_components);
+    /// Boundary vertex -> volume vertex, and the component of each boundary vertex.
+    Span<std::uint32_t> boundary_vertices() const { return view(chf_mesh_boundary_vertices); }
+    Span<std::uint32_t> boundary_vertex_components() const {
+        return view(chf_mesh_boundary_vertex_components);
     }
     Span<std::uint32_t> vertex_origins() const { return view(chf_mesh_vertex_origins); }
     Span<std::uint32_t> tetrahedron_origins() const {

@@ -223,6 +223,26 @@ fn chf_three_tetrahedra_on_one_face() {
         (12, 18, 12)
     );
     assert_eq!(chf.non_manifold_half_faces(), &[3, 7, 11]);
+    // The shared face is no boundary face: 9 of them; its three half-faces are unpaired and
+    // make three more triangles of the boundary surface (three closed tetrahedra after the
+    // split, so three spheres).
+    assert_eq!(chf.num_boundary_faces(), 9);
+    assert_eq!(chf.num_non_manifold_half_faces(), 3);
+    assert_eq!(chf.num_seam_half_faces(), 0);
+    assert_eq!(chf.num_boundary_triangles(), 12);
+    assert_eq!(chf.num_boundary_vertices(), 12);
+    let che = chf.boundary().unwrap().summary();
+    assert_eq!(
+        (che.vertices, che.isolated_vertices, che.components),
+        (12, 0, 3)
+    );
+    assert_eq!(che.euler_characteristic, 6);
+    for level in 0..3 {
+        let mut low = chf.clone();
+        low.build_level(level).unwrap();
+        assert_eq!(low.num_boundary_faces(), 9, "level {level}");
+        assert_eq!(low.num_boundary_triangles(), 12, "level {level}");
+    }
     let strict = Chf::from_tetrahedra(
         &tets,
         6,
@@ -262,6 +282,49 @@ fn chf_cavity_has_two_boundary_components() {
     assert_eq!(chf.num_boundary_components(), 2);
     let che = chf.boundary().unwrap().summary();
     assert_eq!((che.components, che.genus, che.boundary_curves), (2, 0, 0));
+    // Two spheres, no interior vertex among them.
+    assert_eq!((che.vertices, che.isolated_vertices), (64, 0));
+    assert_eq!(che.euler_characteristic, 4);
+    assert_eq!(chf.num_boundary_faces(), 120);
+    // The inner sphere's 8 vertices form component 1.
+    let inner = chf
+        .boundary_vertices()
+        .iter()
+        .filter(|&&v| chf.boundary_component(v) == 1)
+        .count();
+    assert_eq!(inner, 8);
+}
+
+#[test]
+fn chf_boundary_of_a_ball_holds_only_boundary_vertices() {
+    // A 3x3x3 box of cells: 64 vertices, 8 of them interior.
+    let full = cube(3, 3, 3, false);
+    let chf = build_checked(&full.tets, &full.positions, true);
+    assert_eq!(chf.num_boundary_vertices(), 56);
+    let che = chf.boundary().unwrap();
+    let s = che.summary();
+    assert_eq!((s.vertices, s.isolated_vertices, s.components), (56, 0, 1));
+    assert_eq!(
+        (s.euler_characteristic, s.genus, s.boundary_curves),
+        (2, 0, 0)
+    );
+    assert_eq!(chf.summary().boundary_vertices, 56);
+    // The interior ones map to no boundary vertex.
+    let interior: Vec<u32> = (0..64)
+        .filter(|&v| chf.boundary_vertex(v) == NONE)
+        .collect();
+    assert_eq!(interior.len(), 8);
+    assert!(interior.iter().all(|&v| !chf.is_boundary_vertex(v)));
+    // Positions follow the compact ids.
+    for b in 0..56u32 {
+        let v = chf.boundary_vertex_volume_vertex(b);
+        assert_eq!(che.positions()[b as usize], chf.positions()[v as usize]);
+    }
+    // The same surface below level 3.
+    let mut low = chf.clone();
+    low.build_level(2).unwrap();
+    let t = low.boundary_surface().unwrap().summary();
+    assert_eq!(t, s);
 }
 
 #[test]
@@ -287,6 +350,9 @@ fn chf_solid_torus() {
         (1, 1, 0)
     );
     assert!(che.manifold && che.orientable);
+    // Every vertex of the ring is on its boundary.
+    assert_eq!((che.vertices, che.isolated_vertices), (32, 0));
+    assert_eq!(chf.boundary().unwrap().summary(), che);
 }
 
 #[test]

@@ -217,7 +217,25 @@ static void test_non_manifold_face(void) {
     chf_summary s;
     CHECK_OK(chf_mesh_summary(m, &s));
     CHECK(s.non_manifold_faces == 1 && !s.manifold && s.tetrahedra == 3);
-    CHECK(chf_mesh_num_faces(m) == 12 && chf_mesh_num_boundary_faces(m) == 12);
+    /* 9 faces with one tetrahedron; the three unpaired half-faces of the shared face are
+       no boundary faces, but they are triangles of the boundary surface. */
+    CHECK(chf_mesh_num_faces(m) == 12 && chf_mesh_num_boundary_faces(m) == 9);
+    CHECK(s.boundary_faces == 9);
+    CHECK(chf_mesh_num_non_manifold_half_faces(m) == 3 && chf_mesh_num_seam_half_faces(m) == 0);
+    CHECK(chf_mesh_num_boundary_triangles(m) == 12);
+    for (uint32_t level = 0; level < 3; level++) {
+        CHECK_OK(chf_mesh_build_level(m, level));
+        CHECK(chf_mesh_num_boundary_faces(m) == 9 && chf_mesh_num_boundary_triangles(m) == 12);
+    }
+    CHECK_OK(chf_mesh_build_level(m, 3));
+    che_mesh *b = NULL;
+    CHECK_OK(chf_mesh_boundary(m, &b));
+    che_summary cs;
+    CHECK_OK(che_mesh_summary(b, &cs));
+    /* Three closed tetrahedra after the split: three spheres, 12 vertices. */
+    CHECK(cs.triangles == 12 && cs.vertices == 12 && cs.isolated_vertices == 0);
+    CHECK(cs.components == 3 && cs.euler_characteristic == 6);
+    che_mesh_free(b);
     uint32_t ex[8];
     size_t len = 0;
     CHECK_OK(chf_mesh_report_examples(m, CHF_REPORT_KIND_NON_MANIFOLD_FACE, ex, 8, &len));

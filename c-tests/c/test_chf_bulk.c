@@ -117,7 +117,8 @@ static void test_views(void) {
     CHECK(chf_mesh_vertex_half_faces(m, &len) == NULL && len == 0);
     CHECK(chf_mesh_face_half_faces(m, &len) == NULL && len == 0);
     CHECK(chf_mesh_boundary_half_faces(m, &len) == NULL && len == 0);
-    CHECK(chf_mesh_vertex_boundary_components(m, &len) == NULL && len == 0);
+    CHECK(chf_mesh_boundary_vertex_components(m, &len) == NULL && len == 0);
+    CHECK(chf_mesh_boundary_vertices(m, &len) == NULL && len == 0);
     const double *P = chf_mesh_positions(m, &len);
     CHECK(P != NULL && len == 15);
     if (P) CHECK(memcmp(P, PAIR_POS, sizeof PAIR_POS) == 0);
@@ -150,9 +151,12 @@ static void test_views(void) {
     const uint32_t *BH = chf_mesh_boundary_half_faces(m, &len);
     CHECK(BH != NULL && len == 6);
     if (BH) CHECK_IDS(BH, len, 1, 2, 3, 5, 6, 7);
-    const uint32_t *BC = chf_mesh_vertex_boundary_components(m, &len);
+    const uint32_t *BC = chf_mesh_boundary_vertex_components(m, &len);
     CHECK(BC != NULL && len == 5);
     if (BC) CHECK_IDS(BC, len, 0, 0, 0, 0, 0);
+    const uint32_t *BV = chf_mesh_boundary_vertices(m, &len);
+    CHECK(BV != NULL && len == 5);
+    if (BV) CHECK_IDS(BV, len, 0, 1, 2, 3, 4);
 
     /* Going down drops them again. */
     CHECK_OK(chf_mesh_build_level(m, 1));
@@ -170,7 +174,8 @@ static void test_views(void) {
     CHECK(chf_mesh_vertex_half_faces(NULL, &len) == NULL);
     CHECK(chf_mesh_face_half_faces(NULL, &len) == NULL);
     CHECK(chf_mesh_boundary_half_faces(NULL, &len) == NULL);
-    CHECK(chf_mesh_vertex_boundary_components(NULL, &len) == NULL);
+    CHECK(chf_mesh_boundary_vertex_components(NULL, &len) == NULL);
+    CHECK(chf_mesh_boundary_vertices(NULL, &len) == NULL);
     chf_mesh_free(m);
 
     /* The O and VH invariants, walked with the inline arithmetic. */
@@ -223,7 +228,11 @@ static void check_boundary(const char *name, const chf_mesh *m, size_t want_tria
     CHECK_OK(chf_mesh_boundary(m, &s));
     CHECK(s != NULL && che_mesh_level(s) == 3);
     CHECK(che_mesh_num_triangles(s) == want_triangles);
+    CHECK(chf_mesh_num_boundary_triangles(m) == want_triangles);
+    /* Manifold fixtures: every unpaired half-face is a boundary face. */
     CHECK(chf_mesh_num_boundary_faces(m) == want_triangles);
+    CHECK(chf_mesh_num_non_manifold_half_faces(m) == 0 && chf_mesh_num_seam_half_faces(m) == 0);
+    CHECK(chf_mesh_num_boundary_vertices(m) == want_vertices);
     che_summary sum;
     CHECK_OK(che_mesh_summary(s, &sum));
     CHECK(sum.vertices == want_vertices && sum.edges == want_edges);
@@ -244,7 +253,14 @@ static void check_boundary(const char *name, const chf_mesh *m, size_t want_tria
         CHECK(back == hf);
         CHECK_OK(che_triangle_vertices(s, k, tv, 3, &n));
         CHECK_OK(chf_face_vertices(m, f, fv, 3, &n));
-        CHECK(memcmp(tv, fv, sizeof tv) == 0);
+        /* Compact boundary vertex ids, mapped both ways. */
+        for (int j = 0; j < 3; j++) {
+            uint32_t v = 0, b = 0;
+            CHECK_OK(chf_boundary_vertex_vertex(m, tv[j], &v));
+            CHECK(v == fv[j]);
+            CHECK_OK(chf_vertex_boundary_vertex(m, fv[j], &b));
+            CHECK(b == tv[j]);
+        }
         /* Its vertices are boundary vertices, in one boundary component. */
         uint32_t c0 = 0, c = 0;
         CHECK_OK(chf_vertex_boundary_component(m, fv[0], &c0));
@@ -286,10 +302,12 @@ static void test_boundary(void) {
         check_boundary("pair", m, 6, 5, 9, 2, 0, 1);
         chf_mesh_free(m);
 
-        /* The interior vertex 4 is an isolated vertex of the surface: it counts in V. */
+        /* The interior vertex 4 is not a vertex of the surface. */
         m = make_chf(STAR, 4, 5, STAR_POS, level);
-        check_boundary("star", m, 4, 5, 6, 3, 1, 1);
+        check_boundary("star", m, 4, 4, 6, 2, 0, 1);
         uint32_t c = 0;
+        CHECK_OK(chf_vertex_boundary_vertex(m, 4, &c));
+        CHECK(c == TOPOMESH_NONE);
         bool yes = true;
         CHECK_OK(chf_vertex_boundary_component(m, 4, &c));
         CHECK(c == TOPOMESH_NONE);
@@ -337,6 +355,16 @@ static void test_boundary(void) {
     CHECK_STATUS(chf_vertex_boundary_component(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
     CHECK_DETAIL("vertex 8");
     CHECK_STATUS(chf_vertex_boundary_component(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(chf_vertex_boundary_vertex(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_DETAIL("vertex 8");
+    CHECK_STATUS(chf_vertex_boundary_vertex(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(chf_vertex_boundary_vertex(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(chf_boundary_vertex_vertex(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_DETAIL("boundary vertex 8");
+    CHECK_STATUS(chf_boundary_vertex_vertex(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(chf_boundary_vertex_vertex(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK(chf_mesh_num_boundary_triangles(NULL) == 0 && chf_mesh_num_boundary_vertices(NULL) == 0);
+    CHECK(chf_mesh_num_non_manifold_half_faces(NULL) == 0 && chf_mesh_num_seam_half_faces(NULL) == 0);
     chf_mesh_free(m);
 }
 

@@ -117,8 +117,9 @@ static void test_pair(void) {
     CHECK_IDS(b, n, 0, 2, 3, 5, 6);
     CHECK_OK(chf_vertex_tetrahedra(m, 1, b, 16, &n));
     CHECK_IDS(b, n, 0, 1);
+    /* Around a vertex: increasing order. */
     CHECK_OK(chf_vertex_vertices(m, 4, b, 16, &n));
-    CHECK_IDS(b, n, 1, 3, 2);
+    CHECK_IDS(b, n, 1, 2, 3);
     CHECK_OK(chf_vertex_edges(m, 4, b, 16, &n));
     CHECK_IDS(b, n, 6, 7, 8);
     CHECK_OK(chf_vertex_faces(m, 4, b, 16, &n));

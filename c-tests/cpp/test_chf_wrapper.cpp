@@ -171,7 +171,8 @@ static void test_views_csr_boundary_summary() {
     CHECK((v.half_face_vertices().to_vector() == PAIR));
     CHECK(v.opposites().size() == 8 && v.opposites()[0] == 4 && v.opposites()[1] == none);
     CHECK(v.vertex_half_faces().empty() && v.face_half_faces().empty());
-    CHECK(v.boundary_half_faces().empty() && v.vertex_boundary_components().empty());
+    CHECK(v.boundary_half_faces().empty() && v.boundary_vertex_components().empty());
+    CHECK(v.boundary_vertices().empty());
     CHECK((v.positions().to_vector() == PAIR_POS));
     CHECK((v.vertex_origins().to_vector() == U{0, 1, 2, 3, 4}));
     CHECK((v.tetrahedron_origins().to_vector() == U{0, 1}));
@@ -179,7 +180,10 @@ static void test_views_csr_boundary_summary() {
     CHECK((v.vertex_half_faces().to_vector() == U{1, 2, 1, 1, 5}));
     CHECK((v.face_half_faces().to_vector() == U{0, 1, 2, 3, 5, 6, 7}));
     CHECK((v.boundary_half_faces().to_vector() == U{1, 2, 3, 5, 6, 7}));
-    CHECK((v.vertex_boundary_components().to_vector() == U{0, 0, 0, 0, 0}));
+    CHECK((v.boundary_vertex_components().to_vector() == U{0, 0, 0, 0, 0}));
+    CHECK((v.boundary_vertices().to_vector() == U{0, 1, 2, 3, 4}));
+    CHECK(v.num_boundary_vertices() == 5 && v.num_boundary_triangles() == 6);
+    CHECK(v.num_non_manifold_half_faces() == 0 && v.num_seam_half_faces() == 0);
     // The outward corners of a half-face, from the views and the arithmetic.
     Span<std::uint32_t> V = v.half_face_vertices();
     U corners;
@@ -209,7 +213,10 @@ static void test_views_csr_boundary_summary() {
             CHECK(cube.half_face(f) == cube.boundary_half_face(t));
             auto a = skin.triangle_vertices(t);
             auto b = cube.face_vertices(f);
-            CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
+            for (int j = 0; j < 3; j++) {
+                CHECK(cube.volume_vertex(a[j]) == b[j]);
+                CHECK(cube.boundary_vertex(b[j]) == a[j]);
+            }
         }
         CHECK(!cube.boundary_triangle(cube.tetrahedron_faces(TetrahedronId{4})[0]).valid());
         CHECK(cube.boundary_component(VertexId{7}) == 0);

@@ -177,12 +177,22 @@ void run(const TetSoup &s, const Expect &ex, CgalExpect cgal_expect, const std::
       } else {
         che_summary cs{};
         che_mesh_summary(b, &cs);
-        expect_eq(bd, "boundary triangles (che) vs chf_mesh_num_boundary_faces", long(chf_mesh_num_boundary_faces(tm.m)),
-                  long(cs.triangles));
+        expect_eq(bd, "boundary triangles (che) vs chf_mesh_num_boundary_triangles",
+                  long(chf_mesh_num_boundary_triangles(tm.m)), long(cs.triangles));
+        // Faces with one tetrahedron, whatever the non-manifold faces and seams.
+        expect_eq(bd, "chf_mesh_num_boundary_faces", os.boundary_faces, long(chf_mesh_num_boundary_faces(tm.m)));
+        expect_eq(bd, "boundary faces + non-manifold + seam half-faces = boundary triangles",
+                  long(chf_mesh_num_boundary_triangles(tm.m)),
+                  long(chf_mesh_num_boundary_faces(tm.m) + chf_mesh_num_non_manifold_half_faces(tm.m) +
+                       chf_mesh_num_seam_half_faces(tm.m)));
+        // Only boundary vertices in the surface.
+        expect_eq(bd, "isolated vertices of the boundary surface", 0, long(cs.isolated_vertices));
+        expect_eq(bd, "chf_mesh_num_boundary_vertices vs the surface's input vertices",
+                  long(chf_mesh_num_boundary_vertices(tm.m)), long(che_mesh_num_input_vertices(b)));
         if (sum.manifold) {
           expect_eq(bd, "boundary triangles", os.boundary_faces, long(cs.triangles));
-          expect_eq(bd, "boundary chi (che: non-isolated V - E + T)", 0,
-                    long(cs.vertices - cs.isolated_vertices) - long(cs.edges) + long(cs.triangles) - os.boundary_euler);
+          expect_eq(bd, "boundary vertices", os.boundary_vertices, long(cs.vertices));
+          expect_eq(bd, "boundary chi (che: V - E + T)", os.boundary_euler, long(cs.euler_characteristic));
           expect_eq(bd, "boundary curves of the boundary surface", 0, long(cs.boundary_curves));
           expect_eq(bd, "chf_mesh_num_boundary_components", os.boundary_components,
                     long(chf_mesh_num_boundary_components(tm.m)));

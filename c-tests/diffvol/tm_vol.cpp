@@ -250,9 +250,17 @@ Answers tm_answers(const TetSoup &s, chf_mesh *m, const std::string &side, Diff 
       in.add("boundary faces from chf_face_is_boundary/chf_face_vertices (" + std::to_string(by_face.size()) +
              ") differ from TT's NONE slots (" + std::to_string(tt_boundary.size()) + ")");
   }
-  if (a.boundary_faces.size() != chf_mesh_num_boundary_faces(m))
-    in.add("chf_mesh_num_boundary_faces = " + std::to_string(chf_mesh_num_boundary_faces(m)) + ", but " +
+  // Unpaired half-faces are the boundary surface's triangles; the faces with one
+  // tetrahedron leave out the non-manifold and seam half-faces.
+  if (a.boundary_faces.size() != chf_mesh_num_boundary_triangles(m))
+    in.add("chf_mesh_num_boundary_triangles = " + std::to_string(chf_mesh_num_boundary_triangles(m)) + ", but " +
            std::to_string(a.boundary_faces.size()) + " unpaired half-faces");
+  if (chf_mesh_num_boundary_faces(m) + chf_mesh_num_non_manifold_half_faces(m) + chf_mesh_num_seam_half_faces(m) !=
+      a.boundary_faces.size())
+    in.add("chf_mesh_num_boundary_faces + non-manifold + seam half-faces = " +
+           std::to_string(chf_mesh_num_boundary_faces(m) + chf_mesh_num_non_manifold_half_faces(m) +
+                          chf_mesh_num_seam_half_faces(m)) +
+           ", but " + std::to_string(a.boundary_faces.size()) + " unpaired half-faces");
   return a;
 }
 

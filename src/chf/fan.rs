@@ -39,7 +39,29 @@ pub struct EdgeIds<'a> {
     pos: u8,
 }
 
-impl EdgeIds<'_> {
+impl<'a> EdgeIds<'a> {
+    fn with_kind(view: View<'a>, e: u32, kind: Kind) -> Self {
+        let start = view.edge_half_edge(e);
+        EdgeIds {
+            view,
+            kind,
+            start,
+            cur: start,
+            first_pending: kind != Kind::Tetrahedra,
+            first_edges: [NONE; 2],
+            pending: [NONE; 2],
+            len: 0,
+            pos: 0,
+        }
+    }
+
+    /// ET (or EF with `faces`) of edge `e` on a view with the edge ranks (and the face
+    /// ranks for EF), for the bulk calls.
+    pub(crate) fn on(view: View<'a>, e: u32, faces: bool) -> Self {
+        let kind = if faces { Kind::Faces } else { Kind::Tetrahedra };
+        Self::with_kind(view, e, kind)
+    }
+
     /// The next half-edge of the rotation lying on a new face; `true` with the last face
     /// of an open fan.
     fn next_face(&mut self) -> Option<(HalfEdge, bool)> {
@@ -116,21 +138,8 @@ impl Chf {
             },
             Kind::Edges | Kind::Tetrahedra => Need::EDGES,
         };
-        let view = self.view(need);
-        let start = view.edge_half_edge(e);
-        EdgeIds {
-            view,
-            kind,
-            start,
-            cur: start,
-            first_pending: kind != Kind::Tetrahedra,
-            first_edges: [NONE; 2],
-            pending: [NONE; 2],
-            len: 0,
-            pos: 0,
-        }
+        EdgeIds::with_kind(self.view(need), e, kind)
     }
-
     /// EE: the edges sharing a face with `e`, each once, in rotation order. O(k) walks of
     /// the neighbouring edges' fans at level 2.
     pub fn edge_edges(&self, e: u32) -> EdgeIds<'_> {

@@ -20,7 +20,7 @@
 //!
 //! | relation | answer | cost at level 2 |
 //! |---|---|---|
-//! | VV, VE, VF, VT | each once, breadth-first over the star | O(S) |
+//! | VV, VE, VF, VT | each once, in increasing order (a walk over the star, sorted) | O(S) |
 //! | EV | the canonical half-edge's origin and target | O(1) |
 //! | ET, EF | rotation order, from the boundary on a boundary edge | O(k) |
 //! | EE | the two other edges of each face of EF, each once | O(k) walks |
@@ -34,6 +34,7 @@
 //! per-slot edge array would make it O(1) for 24 bytes per tetrahedron (see `edges.rs`).
 
 mod build;
+mod bulk;
 mod edges;
 mod fan;
 pub mod ids;
@@ -55,6 +56,7 @@ mod view;
 
 pub use crate::Ids;
 pub use build::{ChfBuildOptions, MAX_TETRAHEDRA};
+pub use bulk::ChfCsr;
 pub use fan::EdgeIds;
 pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use memory::ChfMemory;
@@ -133,12 +135,9 @@ impl Chf {
                 tets.len()
             )));
         }
-        // A copy (the build copies the ids anyway): `as_chunks` is newer than our MSRV.
-        let quads: Vec<[u32; 4]> = tets
-            .chunks_exact(4)
-            .map(|q| [q[0], q[1], q[2], q[3]])
-            .collect();
-        Self::from_tetrahedra(&quads, n_vertices, positions, options)
+        // A view of the same memory, no copy: the build's peak is what it allocates.
+        let (quads, _) = tets.as_chunks::<4>();
+        Self::from_tetrahedra(quads, n_vertices, positions, options)
     }
 
     pub fn level(&self) -> u8 {

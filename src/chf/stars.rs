@@ -88,7 +88,13 @@ pub(crate) fn stars(
         } else {
             Vec::new()
         },
-        edge_slots: Vec::new(),
+        // About one edge per vertex and per tetrahedron, plus one per boundary face pair
+        // (Euler): reserved at once, so that growing by doubling copies nothing at the peak.
+        edge_slots: if tables {
+            Vec::with_capacity(n_vertices + v.len() / 4 + v.len() / 16)
+        } else {
+            Vec::new()
+        },
         num_edges: 0,
         input_edges: 0,
         non_manifold_edges: 0,

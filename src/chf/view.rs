@@ -159,6 +159,20 @@ impl View<'_> {
         self.o[hf as usize]
     }
 
+    /// The same view, borrowing what this one computed (for many queries on one view).
+    pub fn reborrow(&self) -> View<'_> {
+        View {
+            v: self.v,
+            o: Cow::Borrowed(&self.o),
+            faces: Cow::Borrowed(&*self.faces),
+            edges: Cow::Borrowed(&*self.edges),
+            vh: self.vh,
+            fh: self.fh,
+            eh: self.eh,
+            multi_fan: self.multi_fan,
+        }
+    }
+
     /// The half-face that names its face: itself on the boundary, else the smaller twin.
     #[inline]
     pub fn canonical_half_face(&self, hf: u32) -> u32 {

@@ -5,37 +5,35 @@
 //! *n_indices)`. Both buffers NULL (capacities 0) is a size query: OK, with both lengths
 //! written. Exactly one NULL buffer gives NULL_ARGUMENT. A buffer too small gives
 //! BUFFER_TOO_SMALL with both needed lengths written (the buffers then hold a prefix).
-//! Rows are the answers of the one-element calls, in the same order. O(T) at every level:
-//! from the level the rows need (2, or 1 for TT) they stream from the structure; below,
-//! the call builds a temporary copy of the structure at that level (O(T) time and
-//! temporary memory) and leaves the mesh at its level. A size query followed by the call
-//! does the work twice: callers that care raise the level first.
+//! Rows are the answers of the one-element calls, in the same order. O(T) at every level,
+//! without raising the level or copying the mesh: the rows around the vertices (VV, VE,
+//! VF, VT, each row in increasing id order) come from counting passes over `V` and the
+//! face and edge ranks, not from walks; ET and EF walk the rotations on one view; below
+//! the level that stores them, the call computes the ranks (and `O` at level 0) once, in
+//! temporary memory. A size query followed by the call does the work twice.
 
 use super::boundary::{CsrSink, guard, handle};
 use super::chf::ChfMesh;
 use super::status::Status;
 use crate::NONE;
-use crate::chf::Chf;
+use crate::chf::{Chf, ChfCsr};
 use crate::error::Result;
-use std::borrow::Cow;
 
-/// The structure at `level` or above: borrowed, or a temporary raised copy.
-fn at_least(chf: &Chf, level: u8) -> Result<Cow<'_, Chf>> {
-    if chf.level() >= level {
-        return Ok(Cow::Borrowed(chf));
+/// Copies the rows of a CSR computed in full.
+fn copy(s: &mut CsrSink<'_>, c: &ChfCsr) {
+    for i in 0..c.len() {
+        s.row();
+        for &x in c.row(i) {
+            s.push(x);
+        }
     }
-    let mut copy = chf.clone();
-    copy.build_level(level)?;
-    Ok(Cow::Owned(copy))
 }
 
-/// One row per element `0..n`, each the ids `row` yields.
-fn rows<I: IntoIterator<Item = u32>>(s: &mut CsrSink<'_>, n: usize, mut row: impl FnMut(u32) -> I) {
-    for x in 0..n as u32 {
-        s.row();
-        for y in row(x) {
-            s.push(y);
-        }
+/// Streams one row per call of `each`'s callback.
+fn stream(s: &mut CsrSink<'_>, row: impl IntoIterator<Item = u32>) {
+    s.row();
+    for x in row {
+        s.push(x);
     }
 }
 
@@ -97,8 +95,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
             n_offsets,
             n_indices,
             |chf, s| {
-                let chf = at_least(chf, 2)?;
-                rows(s, chf.num_vertices(), |x| chf.vertex_vertices(x));
+                copy(s, &chf.all_vertex_vertices());
                 Ok(())
             },
         )
@@ -127,8 +124,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
             n_offsets,
             n_indices,
             |chf, s| {
-                let chf = at_least(chf, 2)?;
-                rows(s, chf.num_vertices(), |x| chf.vertex_edges(x));
+                copy(s, &chf.all_vertex_edges());
                 Ok(())
             },
         )
@@ -157,8 +153,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
             n_offsets,
             n_indices,
             |chf, s| {
-                let chf = at_least(chf, 2)?;
-                rows(s, chf.num_vertices(), |x| chf.vertex_faces(x));
+                copy(s, &chf.all_vertex_faces());
                 Ok(())
             },
         )
@@ -187,8 +182,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
             n_offsets,
             n_indices,
             |chf, s| {
-                let chf = at_least(chf, 2)?;
-                rows(s, chf.num_vertices(), |x| chf.vertex_tetrahedra(x));
+                copy(s, &chf.all_vertex_tetrahedra());
                 Ok(())
             },
         )
@@ -217,8 +211,7 @@ pub unsafe extern "C" fn chf_mesh_edge_faces_csr(
             n_offsets,
             n_indices,
             |chf, s| {
-                let chf = at_least(chf, 2)?;
-                rows(s, chf.num_edges(), |x| chf.edge_faces(x));
+                chf.for_each_edge_faces(|_, row| stream(s, row));
                 Ok(())
             },
         )
@@ -247,8 +240,7 @@ pub unsafe extern "C" fn chf_mesh_edge_tetrahedra_csr(
             n_offsets,
             n_indices,
             |chf, s| {
-                let chf = at_least(chf, 2)?;
-                rows(s, chf.num_edges(), |x| chf.edge_tetrahedra(x));
+                chf.for_each_edge_tetrahedra(|_, row| stream(s, row));
                 Ok(())
             },
         )
@@ -279,13 +271,17 @@ pub unsafe extern "C" fn chf_mesh_tetrahedron_tetrahedra_csr(
             n_offsets,
             n_indices,
             |chf, s| {
-                let chf = at_least(chf, 1)?;
-                let o = chf.opposites().unwrap_or_default();
-                rows(s, chf.num_tetrahedra(), |t| {
-                    o[4 * t as usize..4 * t as usize + 4]
-                        .iter()
-                        .map(|&g| if g == NONE { NONE } else { g >> 2 })
-                });
+                let computed;
+                let o = match chf.opposites() {
+                    Some(o) => o,
+                    None => {
+                        computed = chf.all_opposites();
+                        &computed[..]
+                    }
+                };
+                for q in o.chunks_exact(4) {
+                    stream(s, q.iter().map(|&g| if g == NONE { NONE } else { g >> 2 }));
+                }
                 Ok(())
             },
         )

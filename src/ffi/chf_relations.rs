@@ -16,9 +16,9 @@ use super::boundary::ids_answer;
 use super::chf::ChfMesh;
 use super::status::Status;
 
-/// VV: the vertices sharing an edge with `v`, each once, in the breadth-first order of its
-/// star (tetrahedra reached across the faces holding `v`; there is no rotation order
-/// around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
+/// VV: the vertices sharing an edge with `v`, each once, in increasing order (found by a
+/// walk over its star, the tetrahedra reached across the faces holding `v`; there is no
+/// rotation order around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
 /// each call also computes the missing tables, O(T).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_vertices(
@@ -38,7 +38,7 @@ pub unsafe extern "C" fn chf_vertex_vertices(
     }
 }
 
-/// VE: the edges holding `v`, each once, in the order of its star. O(star) from level 2.
+/// VE: the edges holding `v`, each once, in increasing order. O(star) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_edges(
     m: *const ChfMesh,
@@ -57,7 +57,7 @@ pub unsafe extern "C" fn chf_vertex_edges(
     }
 }
 
-/// VF: the faces holding `v`, each once, in the order of its star. O(star) from level 2.
+/// VF: the faces holding `v`, each once, in increasing order. O(star) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_faces(
     m: *const ChfMesh,
@@ -76,8 +76,8 @@ pub unsafe extern "C" fn chf_vertex_faces(
     }
 }
 
-/// VT: the tetrahedra holding `v`, each once, breadth-first from the half-face
-/// `chf_vertex_half_face` gives. O(star) from level 2.
+/// VT: the tetrahedra holding `v`, each once, in increasing order (a walk over its star
+/// from the half-face `chf_vertex_half_face` gives). O(star) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_tetrahedra(
     m: *const ChfMesh,

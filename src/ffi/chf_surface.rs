@@ -4,10 +4,13 @@
 //! Triangle `k` of the boundary surface is the `k`-th unpaired half-face in increasing
 //! order (boundary faces, and also the half-faces of non-manifold faces and orientation
 //! seams, which the structure keeps unpaired), its corners in the half-face's outward
-//! order, its vertex ids the CHF's (interior vertices are isolated vertices of the CHE, so
-//! they count in its `che_summary`; vertices the CHE itself splits are appended after the
-//! CHF's, see its `che_mesh_vertex_origins`). Every call works at every level: O(1) per
-//! element at level 3, which stores the surface and the maps; O(T) per call below.
+//! order. Its vertices are the boundary vertices only, with compact ids: boundary vertex
+//! `b` is the `b`-th volume vertex on an unpaired half-face, in increasing id order, so the
+//! surface's `che_summary` (Euler characteristic, isolated vertices) is the boundary's.
+//! Vertices the CHE itself splits (a boundary pinched at a vertex) come after those, see
+//! its `che_mesh_vertex_origins`; `chf_boundary_vertex_vertex` maps any of them back to the
+//! volume. Every call works at every level: O(1) per element at level 3, which stores the
+//! surface and the maps; O(T) per call below.
 
 use super::boundary::{guard, guard_or, handle, handle_out, new_handle, value_answer};
 use super::che::CheMesh;
@@ -32,17 +35,109 @@ pub unsafe extern "C" fn chf_mesh_boundary(m: *const ChfMesh, out: *mut *mut Che
     })
 }
 
-/// Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface. This counts the
-/// structure (each half-face of a non-manifold face too), unlike `boundary_faces` in
-/// `chf_summary`, which counts input faces with one tetrahedron. O(1) at level 3, O(T)
-/// below; 0 for NULL.
+/// Boundary faces: faces with exactly one tetrahedron (as `boundary_faces` in
+/// `chf_summary`). The half-faces of faces shared by 3+ tetrahedra
+/// (`chf_mesh_num_non_manifold_half_faces`) and of orientation seams
+/// (`chf_mesh_num_seam_half_faces`) are unpaired too but are not boundary faces; all three
+/// together are the triangles of `chf_mesh_boundary`'s surface
+/// (`chf_mesh_num_boundary_triangles`). O(1) at level 3, O(T) below; 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_faces(m: *const ChfMesh) -> usize {
     guard_or(0, || {
         // SAFETY: caller contract: NULL or a live handle.
         let m = unsafe { handle(m, "m")? };
-        Ok(m.chf.boundary_half_faces().len())
+        Ok(m.chf.num_boundary_faces())
     })
+}
+
+/// Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface, that is
+/// `chf_mesh_num_boundary_faces + chf_mesh_num_non_manifold_half_faces +
+/// chf_mesh_num_seam_half_faces`. O(1) at level 3, O(T) below; 0 for NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_boundary_triangles(m: *const ChfMesh) -> usize {
+    guard_or(0, || {
+        // SAFETY: caller contract: NULL or a live handle.
+        let m = unsafe { handle(m, "m")? };
+        Ok(m.chf.num_boundary_triangles())
+    })
+}
+
+/// Half-faces of non-manifold faces (faces shared by 3+ tetrahedra: one per tetrahedron,
+/// each unpaired). O(1); 0 for NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_non_manifold_half_faces(m: *const ChfMesh) -> usize {
+    guard_or(0, || {
+        // SAFETY: caller contract: NULL or a live handle.
+        let m = unsafe { handle(m, "m")? };
+        Ok(m.chf.num_non_manifold_half_faces())
+    })
+}
+
+/// Half-faces on orientation seams (a face of two tetrahedra whose orientations disagree,
+/// in a non-orientable component: both unpaired). O(1); 0 for NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_seam_half_faces(m: *const ChfMesh) -> usize {
+    guard_or(0, || {
+        // SAFETY: caller contract: NULL or a live handle.
+        let m = unsafe { handle(m, "m")? };
+        Ok(m.chf.num_seam_half_faces())
+    })
+}
+
+/// Boundary vertices: the vertices of the unpaired half-faces, the vertices of
+/// `chf_mesh_boundary`'s surface before its own split. O(1) at level 3, O(T) below; 0 for
+/// NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_num_boundary_vertices(m: *const ChfMesh) -> usize {
+    guard_or(0, || {
+        // SAFETY: caller contract: NULL or a live handle.
+        let m = unsafe { handle(m, "m")? };
+        Ok(m.chf.num_boundary_vertices())
+    })
+}
+
+/// The boundary-surface vertex of volume vertex `v` into `*out`, `TOPOMESH_NONE` off the
+/// boundary.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_vertex_boundary_vertex(
+    m: *const ChfMesh,
+    v: u32,
+    out: *mut u32,
+) -> Status {
+    // SAFETY: caller contract.
+    unsafe {
+        value_answer(m, out, |m: &ChfMesh| {
+            m.chf.check_vertex(v)?;
+            Ok(m.chf.boundary_vertex(v))
+        })
+    }
+}
+
+/// The volume vertex of vertex `b` of `chf_mesh_boundary`'s surface into `*out` (copies
+/// the surface split map to the vertex they come from); `b` out of range gives
+/// OUT_OF_RANGE.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_boundary_vertex_vertex(
+    m: *const ChfMesh,
+    b: u32,
+    out: *mut u32,
+) -> Status {
+    // SAFETY: caller contract.
+    unsafe {
+        value_answer(m, out, |m: &ChfMesh| {
+            let v = m.chf.boundary_vertex_volume_vertex(b);
+            if v == NONE {
+                return Err(Error::out_of_range(format!(
+                    "boundary vertex {b} out of range (the boundary surface has {} vertices)",
+                    match m.chf.boundary() {
+                        Some(che) => che.num_vertices(),
+                        None => m.chf.boundary_surface()?.num_vertices(),
+                    }
+                )));
+            }
+            Ok(v)
+        })
+    }
 }
 
 /// Boundary components of the structure (after the vertex split): components of the
@@ -74,7 +169,7 @@ pub unsafe extern "C" fn chf_half_face_boundary_triangle(
 }
 
 /// The half-face of boundary triangle `k` into `*out`; `k` out of range (see
-/// `chf_mesh_num_boundary_faces`) gives OUT_OF_RANGE.
+/// `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_boundary_triangle_half_face(
     m: *const ChfMesh,
@@ -140,7 +235,7 @@ pub unsafe extern "C" fn chf_boundary_triangle_face(
 }
 
 /// The boundary component of vertex `v` into `*out` (`TOPOMESH_NONE` off the boundary;
-/// see `chf_mesh_vertex_boundary_components`).
+/// see `chf_mesh_boundary_vertex_components` for the array at level 3).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_boundary_component(
     m: *const ChfMesh,

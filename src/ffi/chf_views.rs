@@ -96,16 +96,34 @@ pub unsafe extern "C" fn chf_mesh_boundary_half_faces(
     }
 }
 
-/// The boundary component of every vertex (`num_vertices` entries; `TOPOMESH_NONE` off
-/// the boundary): components of the boundary faces joined through shared vertices,
-/// numbered in order of their first boundary half-face. NULL below level 3.
+/// The boundary vertices in increasing order (`chf_mesh_num_boundary_vertices` entries):
+/// vertex `b` of `chf_mesh_boundary`'s surface is volume vertex `[b]` (copies the surface
+/// splits come after, see `chf_boundary_vertex_vertex`). NULL below level 3.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_vertex_boundary_components(
+pub unsafe extern "C" fn chf_mesh_boundary_vertices(
     m: *const ChfMesh,
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.chf.boundary_components()) }
+    unsafe {
+        view(m, len, |m| match m.chf.boundary_vertices() {
+            Cow::Borrowed(s) => Some(s),
+            Cow::Owned(_) => None,
+        })
+    }
+}
+
+/// The boundary component of every boundary vertex (indexed like
+/// `chf_mesh_boundary_vertices`): components of the boundary triangles joined through
+/// shared vertices, numbered in order of their first boundary half-face. NULL below level
+/// 3 (then use `chf_vertex_boundary_component`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_boundary_vertex_components(
+    m: *const ChfMesh,
+    len: *mut usize,
+) -> *const u32 {
+    // SAFETY: caller contract.
+    unsafe { view(m, len, |m| m.chf.boundary_vertex_components()) }
 }
 
 /// Positions: x, y, z per structure vertex (copies repeat their origin's position);

@@ -156,13 +156,42 @@ pub fn check_invariants(chf: &Chf) {
     if let Some(che) = chf.boundary() {
         let hfs = chf.boundary_half_faces();
         assert_eq!(che.num_triangles(), hfs.len());
+        assert_eq!(chf.num_boundary_triangles(), hfs.len());
+        assert_eq!(
+            chf.num_boundary_faces()
+                + chf.non_manifold_half_faces().len()
+                + chf.seam_half_faces().len(),
+            hfs.len()
+        );
+        // Only boundary vertices, with compact ids both ways.
+        let bv = chf.boundary_vertices();
+        assert_eq!(che.num_input_vertices(), bv.len());
+        assert_eq!(che.summary().isolated_vertices, 0);
+        for (b, &v) in bv.iter().enumerate() {
+            assert_eq!(chf.boundary_vertex(v), b as u32);
+            assert_eq!(chf.boundary_vertex_volume_vertex(b as u32), v);
+            assert_eq!(
+                chf.boundary_vertex_components().unwrap()[b],
+                chf.boundary_component(v)
+            );
+        }
+        for c in 0..che.num_vertices() as u32 {
+            assert_eq!(
+                chf.boundary_vertex_volume_vertex(c),
+                bv[che.vertex_origin(c) as usize]
+            );
+        }
+        assert_eq!(
+            chf.boundary_vertex_volume_vertex(che.num_vertices() as u32),
+            NONE
+        );
         for (k, &hf) in hfs.iter().enumerate() {
             assert_eq!(chf.opposite(hf), NONE);
             assert_eq!(chf.boundary_triangle(hf), k as u32);
             assert_eq!(chf.boundary_triangle_half_face(k as u32), hf);
             let tri = che
                 .triangle_vertices(k as u32)
-                .map(|v| che.vertex_origin(v));
+                .map(|v| chf.boundary_vertex_volume_vertex(v));
             assert_eq!(
                 tri,
                 chf.half_face_vertices_of(hf),
@@ -174,6 +203,25 @@ pub fn check_invariants(chf: &Chf) {
         }
         for v in 0..chf.num_vertices() as u32 {
             assert_eq!(chf.boundary_component(v) != NONE, chf.is_boundary_vertex(v));
+            assert_eq!(chf.boundary_vertex(v) != NONE, chf.is_boundary_vertex(v));
+        }
+        // The same answers below level 3, computed for the call.
+        let mut low = chf.clone();
+        low.build_level(1).unwrap();
+        assert_eq!(low.num_boundary_faces(), chf.num_boundary_faces());
+        assert_eq!(low.num_boundary_triangles(), chf.num_boundary_triangles());
+        assert_eq!(low.num_boundary_vertices(), bv.len());
+        assert_eq!(&low.boundary_vertices()[..], &bv[..]);
+        assert_eq!(low.num_boundary_components(), chf.num_boundary_components());
+        for v in 0..chf.num_vertices().min(50) as u32 {
+            assert_eq!(low.boundary_vertex(v), chf.boundary_vertex(v));
+            assert_eq!(low.boundary_component(v), chf.boundary_component(v));
+        }
+        for c in 0..che.num_vertices().min(50) as u32 {
+            assert_eq!(
+                low.boundary_vertex_volume_vertex(c),
+                chf.boundary_vertex_volume_vertex(c)
+            );
         }
     }
 }

@@ -177,7 +177,7 @@ pub(crate) fn census(
         start[i + 1] += start[i];
     }
     let mut fill = start.clone();
-    let mut slots = vec![0u64; bits.ones()];
+    let mut slots: Vec<u64> = crate::pages::zeroed(bits.ones());
     for s in canonical() {
         let f = &mut fill[input_ends(s).0 as usize];
         slots[*f as usize] = s;

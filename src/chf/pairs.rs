@@ -32,7 +32,7 @@ impl Opposites {
         Opposites {
             n_hf,
             shift,
-            records: vec![0; n_hf],
+            records: crate::pages::zeroed(n_hf),
             fill: (0..n_windows as u32).map(|w| w << shift).collect(),
             staged: vec![[0; STAGE]; n_windows],
             staged_len: vec![0; n_windows],

@@ -30,7 +30,7 @@ pub(crate) fn soup(
     positions: &[DVec3],
     report: &mut ChfBuildReport,
 ) -> Result<Soup> {
-    let mut v: Vec<u32> = Vec::with_capacity(4 * tets.len());
+    let mut v: Vec<u32> = crate::pages::with_capacity(4 * tets.len());
     // Stays empty (the identity) until the first dropped tetrahedron.
     let mut tet_origin: Vec<u32> = Vec::new();
     let mut remapped = false;

@@ -84,14 +84,14 @@ pub(crate) fn stars(
         tables,
         split_needed: false,
         vh: if tables {
-            vec![NONE; n_vertices]
+            crate::pages::filled(n_vertices, NONE)
         } else {
             Vec::new()
         },
         // About one edge per vertex and per tetrahedron, plus one per boundary face pair
         // (Euler): reserved at once, so that growing by doubling copies nothing at the peak.
         edge_slots: if tables {
-            Vec::with_capacity(n_vertices + v.len() / 4 + v.len() / 16)
+            crate::pages::with_capacity(n_vertices + v.len() / 4 + v.len() / 16)
         } else {
             Vec::new()
         },
@@ -112,7 +112,7 @@ pub(crate) fn stars(
     let mut cursor = vec![0u32; n_fine];
     // Flat records, five `u32` each; one spare record at the end takes the writes of the
     // occurrences outside the round (so that the scatter has no branch).
-    let mut records: Vec<u32> = Vec::with_capacity(v.len().max(5 * (budget + 1)));
+    let mut records: Vec<u32> = crate::pages::with_capacity(v.len().max(5 * (budget + 1)));
     let mut local: Vec<Record> = Vec::new();
     let mut first = 0;
     while first < n_coarse {

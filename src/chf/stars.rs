@@ -112,7 +112,9 @@ pub(crate) fn stars(
     let mut cursor = vec![0u32; n_fine];
     // Flat records, five `u32` each; one spare record at the end takes the writes of the
     // occurrences outside the round (so that the scatter has no branch).
-    let mut records: Vec<u32> = crate::pages::with_capacity(v.len().max(5 * (budget + 1)));
+    // (A small mesh reserves what its one round needs, not the budget.)
+    let mut records: Vec<u32> =
+        crate::pages::with_capacity(v.len().max(5 * (budget.min(v.len()) + 1)));
     let mut local: Vec<Record> = Vec::new();
     let mut first = 0;
     while first < n_coarse {

@@ -1,7 +1,7 @@
 //! CHF build and sweeps: levels 1, 2 and 3 from arrays, and full TT, VT, ET and VV sweeps,
-//! on a generated box of 750k tetrahedra and on the TetGen meshes found in
-//! $TOPOMESH_MESH_DIR/tets (blobby-tets1M.1.ele and friends). Prints bytes per tetrahedron
-//! per level.
+//! on a generated box of 750k tetrahedra and on the TetGen meshes that
+//! `scripts/fetch-tets.sh` makes in ${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}/tets
+//! (knot1-16k, armadillo-101k, bunny00-1m). Prints bytes per tetrahedron per level.
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec3;
@@ -57,16 +57,17 @@ fn grid(n: u32) -> Input {
 
 fn inputs() -> Vec<Input> {
     let mut out = vec![grid(50)];
-    let dir = std::env::var("TOPOMESH_MESH_DIR").unwrap_or_default();
-    for name in [
-        "knot1-tets16k.1.ele",
-        "blobby-tets108k.1.ele",
-        "blobby-tets1M.1.ele",
-    ] {
+    let dir = std::env::var("TOPOMESH_MESH_DIR").unwrap_or_else(|_| {
+        format!(
+            "{}/.cache/topomesh/meshes",
+            std::env::var("HOME").unwrap_or_default()
+        )
+    });
+    for name in ["knot1-16k.ele", "armadillo-101k.ele", "bunny00-1m.ele"] {
         let path = std::path::Path::new(&dir).join("tets").join(name);
         if let Ok(data) = topomesh::io::read(&path) {
             out.push(Input {
-                name: name.trim_end_matches(".1.ele").into(),
+                name: name.trim_end_matches(".ele").into(),
                 tets: data.tetrahedra,
                 positions: data.positions,
             });

@@ -3,7 +3,7 @@
 # bulk calls, the zero-copy O view) against CGAL's Triangulation_3 built by
 # CGAL::build_triangulation, in one process, from the same arrays. Writes
 # BENCHMARKS-volumes.md (the "Volumes" section of BENCHMARKS.md) with the machine, the
-# flags and this command.
+# flags and this command; the text from a line `<!-- kept -->` on is kept as it was.
 #
 #   scripts/bench-volumes.sh [--reps N] [--prefix DIR] [--out FILE] [MESH...]
 #
@@ -99,5 +99,11 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
   echo "  entries a sweep visits (boundary NONE excluded): equal counts mean every library did the"
   echo "  same work."
   cat "$work/tables.md" | sed '1d'
-} > "$out"
+  # Hand-written text from the marker on (the targets, the analysis) is kept.
+  if [[ -f "$out" ]] && grep -q '^<!-- kept -->' "$out"; then
+    echo
+    sed -n '/^<!-- kept -->/,$p' "$out"
+  fi
+} > "$out.new"
+mv "$out.new" "$out"
 echo "== wrote $out"

@@ -2,7 +2,7 @@
 # Fetches the real meshes used by the differential tests and the benchmark into a cache
 # outside the repository, and generates the large benchmark meshes.
 #
-#   scripts/fetch-meshes.sh [--tets] [--list]
+#   scripts/fetch-meshes.sh [--list]
 #
 # Cache: ${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}. Idempotent: does nothing when
 # every file is present. Sources: Debian's libcgal-demo package (apt-get download, no
@@ -11,8 +11,7 @@
 #
 # Generated: bunny00-sub2.off (1,206,528 triangles) and bunny00-sub3.off (4,826,112), by
 # 1-to-4 midpoint subdivision of bunny00 (c-tests/diff/subdivide.cpp, built with g++).
-# --tets: also tetrahedral meshes made with tetgen from closed surfaces (about 16k, 108k
-# and 1M tetrahedra), as tets/<name>.1.node and tets/<name>.1.ele, numbered from 0.
+# Tetrahedral meshes are made from these surfaces by scripts/fetch-tets.sh.
 # --list: print the selected meshes and exit.
 set -euo pipefail
 
@@ -24,12 +23,10 @@ SUBDIVIDE_SRC="$HERE/../c-tests/diff/subdivide.cpp"
 LIST="$HERE/../c-tests/diff/meshes.txt"
 mapfile -t MESHES < <(sed 's/#.*//; s/[[:space:]]//g; /^$/d' "$LIST")
 GENERATED=(bunny00-sub2 bunny00-sub3)
-TETS=0
 for a in "$@"; do
   case "$a" in
-    --tets) TETS=1 ;;
     --list) printf '%s\n' "${MESHES[@]}"; exit 0 ;;
-    -h|--help) sed -n 2,17p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
     *) echo "fetch-meshes.sh: unknown argument $a" >&2; exit 2 ;;
   esac
 done
@@ -72,22 +69,4 @@ if ((need_gen)); then
   mv "$DIR/bunny00-sub3.off.part" "$DIR/bunny00-sub3.off"
 fi
 
-if ((TETS)); then
-  command -v tetgen >/dev/null || { echo "fetch-meshes: tetgen not installed" >&2; exit 1; }
-  mkdir -p "$DIR/tets"
-  # name, source surface, tetgen flags (-p: from the surface, -q: quality, -a: volume bound,
-  # -z: number from 0). Sizes with Debian's tetgen 1.5.0: 15,707 / 108,390 / 1,045,219.
-  while read -r name src flags; do
-    [[ -s "$DIR/tets/$name.1.ele" && -s "$DIR/tets/$name.1.node" ]] && continue
-    cp "$DIR/$src.off" "$DIR/tets/$name.off"
-    echo "fetch-meshes: tetgen $flags $name.off"
-    (cd "$DIR/tets" && tetgen $flags "$name.off" >/dev/null)
-    rm -f "$DIR/tets/$name.off" "$DIR/tets/$name.1.face" "$DIR/tets/$name.1.edge" \
-          "$DIR/tets/$name.1.smesh"
-  done <<'LIST'
-knot1-tets16k knot1 -pzQ
-blobby-tets108k blobby -pqzQ -a1.5e-6
-blobby-tets1M blobby -pqzQ -a1e-7
-LIST
-fi
 echo "fetch-meshes: $DIR ready"

@@ -346,6 +346,43 @@ pub(crate) unsafe fn value_answer<H, T>(
     })
 }
 
+/// Shared body of the CSR calls of both meshes: the handle and the buffers checked, the
+/// rows filled, the lengths written (see `che_csr.rs` for the contract).
+///
+/// # Safety
+/// `m` NULL or a live handle; each buffer NULL or valid for its capacity; each length
+/// pointer NULL or valid for one write.
+#[allow(clippy::too_many_arguments)]
+pub(crate) unsafe fn csr_answer<M>(
+    m: *const M,
+    offsets: *mut u32,
+    offsets_cap: usize,
+    indices: *mut u32,
+    indices_cap: usize,
+    n_offsets: *mut usize,
+    n_indices: *mut usize,
+    fill: impl FnOnce(&M, &mut CsrSink<'_>) -> Result<()>,
+) -> Status {
+    guard(|| {
+        // SAFETY: forwarded contract.
+        let (m, mut sink) = unsafe {
+            (
+                handle(m, "m")?,
+                CsrSink::new(
+                    offsets,
+                    offsets_cap,
+                    indices,
+                    indices_cap,
+                    n_offsets,
+                    n_indices,
+                )?,
+            )
+        };
+        fill(m, &mut sink)?;
+        sink.finish()
+    })
+}
+
 /// A bulk answer in compressed sparse rows: `offsets` (one per row, plus the end) and
 /// `indices`. Both buffers NULL (capacities 0) is a size query; exactly one NULL is an
 /// error.

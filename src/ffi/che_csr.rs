@@ -11,7 +11,7 @@
 //! memory); otherwise the core's bulk sweep computes the missing tables once (O(T)
 //! temporary memory).
 
-use super::boundary::{CsrSink, guard, handle};
+use super::boundary::{CsrSink, csr_answer};
 use super::che::CheMesh;
 use super::che_walk::{Walk, vertex_half_edges};
 use super::status::Status;
@@ -63,11 +63,10 @@ fn star_rows(
     }
 }
 
-/// Shared body of the CSR calls.
+/// The CSR calls' shared body on a `CheMesh` (see `boundary::csr_answer`).
 ///
 /// # Safety
-/// `m` NULL or a live handle; each buffer NULL or valid for its capacity; each length
-/// pointer NULL or valid for one write.
+/// As `boundary::csr_answer`.
 #[allow(clippy::too_many_arguments)]
 unsafe fn csr(
     m: *const CheMesh,
@@ -79,24 +78,19 @@ unsafe fn csr(
     n_indices: *mut usize,
     fill: impl FnOnce(&Che, &mut CsrSink<'_>) -> Result<()>,
 ) -> Status {
-    guard(|| {
-        // SAFETY: forwarded contract.
-        let (m, mut sink) = unsafe {
-            (
-                handle(m, "m")?,
-                CsrSink::new(
-                    offsets,
-                    offsets_cap,
-                    indices,
-                    indices_cap,
-                    n_offsets,
-                    n_indices,
-                )?,
-            )
-        };
-        fill(&m.che, &mut sink)?;
-        sink.finish()
-    })
+    // SAFETY: forwarded contract.
+    unsafe {
+        csr_answer(
+            m,
+            offsets,
+            offsets_cap,
+            indices,
+            indices_cap,
+            n_offsets,
+            n_indices,
+            |m: &CheMesh, s| fill(&m.che, s),
+        )
+    }
 }
 
 /// VV for every vertex (rows as `che_vertex_vertices`).

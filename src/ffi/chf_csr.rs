@@ -12,7 +12,7 @@
 //! the level that stores them, the call computes the ranks (and `O` at level 0) once, in
 //! temporary memory. A size query followed by the call does the work twice.
 
-use super::boundary::{CsrSink, guard, handle};
+use super::boundary::{CsrSink, csr_answer};
 use super::chf::ChfMesh;
 use super::status::Status;
 use crate::NONE;
@@ -37,11 +37,10 @@ fn stream(s: &mut CsrSink<'_>, row: impl IntoIterator<Item = u32>) {
     }
 }
 
-/// Shared body of the CSR calls.
+/// The CSR calls' shared body on a `ChfMesh` (see `boundary::csr_answer`).
 ///
 /// # Safety
-/// `m` NULL or a live handle; each buffer NULL or valid for its capacity; each length
-/// pointer NULL or valid for one write.
+/// As `boundary::csr_answer`.
 #[allow(clippy::too_many_arguments)]
 unsafe fn csr(
     m: *const ChfMesh,
@@ -53,24 +52,19 @@ unsafe fn csr(
     n_indices: *mut usize,
     fill: impl FnOnce(&Chf, &mut CsrSink<'_>) -> Result<()>,
 ) -> Status {
-    guard(|| {
-        // SAFETY: forwarded contract.
-        let (m, mut sink) = unsafe {
-            (
-                handle(m, "m")?,
-                CsrSink::new(
-                    offsets,
-                    offsets_cap,
-                    indices,
-                    indices_cap,
-                    n_offsets,
-                    n_indices,
-                )?,
-            )
-        };
-        fill(&m.chf, &mut sink)?;
-        sink.finish()
-    })
+    // SAFETY: forwarded contract.
+    unsafe {
+        csr_answer(
+            m,
+            offsets,
+            offsets_cap,
+            indices,
+            indices_cap,
+            n_offsets,
+            n_indices,
+            |m: &ChfMesh, s| fill(&m.chf, s),
+        )
+    }
 }
 
 /// VV for every vertex (rows as `chf_vertex_vertices`).

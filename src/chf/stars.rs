@@ -21,7 +21,9 @@ use super::pairs::Opposites;
 use crate::NONE;
 use crate::rank::RankBits;
 
-const COARSE_BITS: u32 = 9;
+/// 256 coarse buckets: the scatter's 256 write heads (a cache line each) stay in the L1
+/// cache (512 took about 4% longer on the 1M-tetrahedron build; 128 no better).
+const COARSE_BITS: u32 = 8;
 
 /// What the pass found.
 pub(crate) struct Stars {
@@ -67,7 +69,7 @@ pub(crate) fn stars(
     let collect = matches!(pairs, Pairs::Partners | Pairs::Opposites);
     let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
     // At most 2^16 vertices per coarse bucket, so that the second pass's counts stay small
-    // (past 2^25 vertices there are more than 512 coarse buckets).
+    // (past 2^24 vertices there are more than 256 coarse buckets).
     let shift = bits.saturating_sub(COARSE_BITS).min(16);
     let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
     let mut count = vec![0u32; n_coarse + 1];

@@ -229,30 +229,50 @@ impl Link {
         if !compact && self.stamp.is_empty() {
             self.stamp = vec![0; self.n_vertices];
         }
-        for (p, r) in star.iter().enumerate() {
-            let mut ids = [0u32; 3];
-            for s in 0..3 {
-                let y = r[2 + s] as usize;
-                self.first_corner[m as usize] = (3 * p + s) as u32;
-                let id = if compact {
-                    let e = self.stamp_compact[y];
+        if compact {
+            // Separate borrows, so that the stores below do not make the compiler reload
+            // the vectors after each one.
+            let stamps = &mut self.stamp_compact[..];
+            let verts = &mut self.verts[..];
+            let first_corner = &mut self.first_corner[..];
+            // The stamps are read at random (one per corner): read them all first, so that
+            // their cache misses overlap, then name the vertices from the L1 cache.
+            let mut touched = 0;
+            for r in star {
+                touched ^= stamps[r[2] as usize] ^ stamps[r[3] as usize] ^ stamps[r[4] as usize];
+            }
+            std::hint::black_box(touched);
+            for (p, r) in star.iter().enumerate() {
+                let mut ids = [0u32; 3];
+                for s in 0..3 {
+                    let y = r[2 + s] as usize;
+                    first_corner[m as usize] = (3 * p + s) as u32;
+                    let e = stamps[y];
                     let fresh = e & !0xFF != tag32;
                     let id = if fresh { m } else { e & 0xFF };
-                    self.stamp_compact[y] = tag32 | id;
+                    stamps[y] = tag32 | id;
                     m += fresh as u32;
-                    id
-                } else {
+                    verts[id as usize] = y as u32;
+                    ids[s] = id;
+                }
+                self.ids.push(ids);
+            }
+        } else {
+            for (p, r) in star.iter().enumerate() {
+                let mut ids = [0u32; 3];
+                for s in 0..3 {
+                    let y = r[2 + s] as usize;
+                    self.first_corner[m as usize] = (3 * p + s) as u32;
                     let e = self.stamp[y];
                     let fresh = e & !0xFFFF_FFFF != tag64;
                     let id = if fresh { m } else { e as u32 };
                     self.stamp[y] = tag64 | id as u64;
                     m += fresh as u32;
-                    id
-                };
-                self.verts[id as usize] = y as u32;
-                ids[s] = id;
+                    self.verts[id as usize] = y as u32;
+                    ids[s] = id;
+                }
+                self.ids.push(ids);
             }
-            self.ids.push(ids);
         }
         self.verts.truncate(m as usize);
         self.first_corner.truncate(m as usize);

@@ -1,20 +1,14 @@
 //! Making, freeing and re-levelling `che_mesh` handles, and their counts.
 
 use super::boundary::{
-    cstr_arg, free_handle, guard, guard_or, handle, handle_mut, handle_out, new_handle, slice_arg,
+    cstr_arg, free_handle, guard, guard_or, handle, handle_mut, handle_out, new_handle,
 };
 use super::che::{CheBuildOptions, CheMesh, level_arg};
+use super::mesh_arrays::{Cells, mesh_arrays};
 use super::status::Status;
 use crate::che::{BuildOptions, Che, MAX_TRIANGLES};
 use crate::error::{Error, Result};
-use glam::DVec3;
 use std::ffi::c_char;
-
-// Positions arrive as `3 * n` doubles and are viewed as `n` `DVec3` without a copy.
-const _: () = {
-    assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
-    assert!(std::mem::align_of::<DVec3>() == std::mem::align_of::<f64>());
-};
 
 /// Builds from C arrays (sizes checked before any slice is made).
 ///
@@ -28,28 +22,15 @@ unsafe fn build(
     positions: *const f64,
     options: BuildOptions,
 ) -> Result<CheMesh> {
-    if n_triangles > MAX_TRIANGLES {
-        return Err(Error::too_large(format!(
-            "{n_triangles} triangles: half-edge ids must fit below 2^32 - 1 \
-             (at most {MAX_TRIANGLES} triangles)"
-        )));
-    }
-    if n_vertices >= u32::MAX as usize {
-        return Err(Error::too_large(format!(
-            "{n_vertices} vertices: ids must fit below 2^32 - 1"
-        )));
-    }
-    // SAFETY: sizes bounded above (far below isize::MAX bytes); the caller contract covers
-    // the pointers. `DVec3` is `repr(C)` with three `f64` (asserted above).
-    let (flat, points) = unsafe {
-        let flat = slice_arg(triangles, 3 * n_triangles, "triangles")?;
-        let points: &[DVec3] = if positions.is_null() {
-            &[]
-        } else {
-            slice_arg(positions.cast::<DVec3>(), n_vertices, "positions")?
-        };
-        (flat, points)
+    let kind = Cells {
+        per: 3,
+        max_cells: MAX_TRIANGLES,
+        cells: "triangles",
+        part: "half-edge",
     };
+    // SAFETY: forwarded contract.
+    let (flat, points) =
+        unsafe { mesh_arrays(kind, triangles, n_triangles, n_vertices, positions)? };
     Ok(CheMesh::new(Che::from_flat(
         flat, n_vertices, points, options,
     )?))

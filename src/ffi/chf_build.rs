@@ -1,21 +1,15 @@
 //! Making, freeing and re-levelling `chf_mesh` handles, and their counts.
 
 use super::boundary::{
-    cstr_arg, free_handle, guard, guard_or, handle, handle_mut, handle_out, new_handle, slice_arg,
+    cstr_arg, free_handle, guard, guard_or, handle, handle_mut, handle_out, new_handle,
 };
 use super::che::level_arg;
 use super::chf::{ChfBuildOptions, ChfMesh};
+use super::mesh_arrays::{Cells, mesh_arrays};
 use super::status::Status;
 use crate::chf::{Chf, ChfBuildOptions as CoreOptions, MAX_TETRAHEDRA};
 use crate::error::{Error, Result};
-use glam::DVec3;
 use std::ffi::c_char;
-
-// Positions arrive as `3 * n` doubles and are viewed as `n` `DVec3` without a copy.
-const _: () = {
-    assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
-    assert!(std::mem::align_of::<DVec3>() == std::mem::align_of::<f64>());
-};
 
 /// Builds from C arrays (sizes checked before any slice is made).
 ///
@@ -29,28 +23,14 @@ unsafe fn build(
     positions: *const f64,
     options: CoreOptions,
 ) -> Result<ChfMesh> {
-    if n_tets > MAX_TETRAHEDRA {
-        return Err(Error::too_large(format!(
-            "{n_tets} tetrahedra: half-face ids must fit below 2^32 - 1 \
-             (at most {MAX_TETRAHEDRA} tetrahedra)"
-        )));
-    }
-    if n_vertices >= u32::MAX as usize {
-        return Err(Error::too_large(format!(
-            "{n_vertices} vertices: ids must fit below 2^32 - 1"
-        )));
-    }
-    // SAFETY: sizes bounded above (far below isize::MAX bytes); the caller contract covers
-    // the pointers. `DVec3` is `repr(C)` with three `f64` (asserted above).
-    let (flat, points) = unsafe {
-        let flat = slice_arg(tets, 4 * n_tets, "tetrahedra")?;
-        let points: &[DVec3] = if positions.is_null() {
-            &[]
-        } else {
-            slice_arg(positions.cast::<DVec3>(), n_vertices, "positions")?
-        };
-        (flat, points)
+    let kind = Cells {
+        per: 4,
+        max_cells: MAX_TETRAHEDRA,
+        cells: "tetrahedra",
+        part: "half-face",
     };
+    // SAFETY: forwarded contract.
+    let (flat, points) = unsafe { mesh_arrays(kind, tets, n_tets, n_vertices, positions)? };
     Ok(ChfMesh::new(Chf::from_flat(
         flat, n_vertices, points, options,
     )?))

@@ -4,6 +4,7 @@
 //! Layout (the pattern the CHF exports follow):
 //! - `boundary`: the one helper every export runs behind (null checks, `catch_unwind`,
 //!   error -> status + thread-local detail), caller-buffer and CSR sinks, handle boxing;
+//! - `mesh_arrays`: the checked ids and positions of both build calls;
 //! - `status`: `topomesh_status`, `topomesh_status_str`, `topomesh_last_error`,
 //!   `topomesh_version`;
 //! - `che`: the `che_mesh` handle and build options; `che_build` (create, load, free,
@@ -52,6 +53,7 @@ pub mod chf_surface;
 #[cfg(test)]
 mod chf_tests;
 pub mod chf_views;
+mod mesh_arrays;
 #[cfg(test)]
 mod tests;
 

@@ -1,0 +1,62 @@
+//! The arrays of a build call (`che_mesh_from_triangles`, `chf_mesh_from_tetrahedra`),
+//! checked before any slice is made: counts that fit the ids, then the pointers.
+
+use super::boundary::slice_arg;
+use crate::error::{Error, Result};
+use glam::DVec3;
+
+// Positions arrive as `3 * n` doubles and are viewed as `n` `DVec3` without a copy.
+const _: () = {
+    assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
+    assert!(std::mem::align_of::<DVec3>() == std::mem::align_of::<f64>());
+};
+
+/// What one build call takes: `per` vertex ids per cell, at most `max_cells` cells
+/// (`cells` names them, `part` names the ids that must fit: "half-edge", "half-face").
+pub(crate) struct Cells {
+    pub per: usize,
+    pub max_cells: usize,
+    pub cells: &'static str,
+    pub part: &'static str,
+}
+
+/// The ids (`per * n_cells`) and positions (empty, or `n_vertices`) of a build call.
+///
+/// # Safety
+/// `ids` is NULL or holds `per * n_cells` ids; `positions` is NULL or holds
+/// `3 * n_vertices` doubles; both stay alive and unchanged during `'a`.
+pub(crate) unsafe fn mesh_arrays<'a>(
+    kind: Cells,
+    ids: *const u32,
+    n_cells: usize,
+    n_vertices: usize,
+    positions: *const f64,
+) -> Result<(&'a [u32], &'a [DVec3])> {
+    let Cells {
+        per,
+        max_cells,
+        cells,
+        part,
+    } = kind;
+    if n_cells > max_cells {
+        return Err(Error::too_large(format!(
+            "{n_cells} {cells}: {part} ids must fit below 2^32 - 1 (at most {max_cells} {cells})"
+        )));
+    }
+    if n_vertices >= u32::MAX as usize {
+        return Err(Error::too_large(format!(
+            "{n_vertices} vertices: ids must fit below 2^32 - 1"
+        )));
+    }
+    // SAFETY: sizes bounded above (far below isize::MAX bytes); the caller contract covers
+    // the pointers. `DVec3` is `repr(C)` with three `f64` (asserted above).
+    unsafe {
+        let flat = slice_arg(ids, per * n_cells, cells)?;
+        let points: &[DVec3] = if positions.is_null() {
+            &[]
+        } else {
+            slice_arg(positions.cast::<DVec3>(), n_vertices, "positions")?
+        };
+        Ok((flat, points))
+    }
+}

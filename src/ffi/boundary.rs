@@ -346,6 +346,28 @@ pub(crate) unsafe fn value_answer<H, T>(
     })
 }
 
+/// Shared body of the zero-copy views of both meshes: the container's first element and
+/// its length, or NULL and 0 for a NULL handle or a container missing at this level.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `len` NULL or valid for one write.
+pub(crate) unsafe fn view_answer<M, T>(
+    m: *const M,
+    len: *mut usize,
+    f: impl FnOnce(&M) -> Option<&[T]>,
+) -> *const T {
+    let (p, n) = guard_or((std::ptr::null(), 0), || {
+        // SAFETY: forwarded contract.
+        let m = unsafe { handle(m, "m")? };
+        Ok(f(m).map_or((std::ptr::null(), 0), |s| (s.as_ptr(), s.len())))
+    });
+    if !len.is_null() {
+        // SAFETY: non-NULL, valid for one write (contract).
+        unsafe { len.write(n) };
+    }
+    p
+}
+
 /// Shared body of the CSR calls of both meshes: the handle and the buffers checked, the
 /// rows filled, the lengths written (see `che_csr.rs` for the contract).
 ///

@@ -4,39 +4,9 @@
 //! valid until the mesh is freed or its level changes (`che_mesh_build_level`). An empty
 //! container may be returned as a non-NULL pointer with `*len == 0`.
 
-use super::boundary::{guard_or, handle};
+use super::boundary::view_answer;
 use super::che::CheMesh;
-use glam::DVec3;
-use std::ptr;
-
-/// Points as their coordinates.
-fn flat(points: &[DVec3]) -> &[f64] {
-    const _: () = assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
-    // SAFETY: `DVec3` is `repr(C)` with three `f64` fields and no padding (asserted), so `n`
-    // points are `3 n` contiguous, aligned doubles borrowed for the same lifetime.
-    unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f64>(), 3 * points.len()) }
-}
-
-/// Shared body of the views.
-///
-/// # Safety
-/// `m` is NULL or a live handle; `len` NULL or valid for one write.
-unsafe fn view<T>(
-    m: *const CheMesh,
-    len: *mut usize,
-    f: impl FnOnce(&CheMesh) -> Option<&[T]>,
-) -> *const T {
-    let (p, n) = guard_or((ptr::null(), 0), || {
-        // SAFETY: forwarded contract.
-        let m = unsafe { handle(m, "m")? };
-        Ok(f(m).map_or((ptr::null(), 0), |s| (s.as_ptr(), s.len())))
-    });
-    if !len.is_null() {
-        // SAFETY: non-NULL, valid for one write (contract).
-        unsafe { len.write(n) };
-    }
-    p
-}
+use super::mesh_arrays::coordinates;
 
 /// `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
 /// `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.
@@ -46,7 +16,7 @@ pub unsafe extern "C" fn che_mesh_half_edge_vertices(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| Some(m.che.half_edge_vertices())) }
+    unsafe { view_answer(m, len, |m| Some(m.che.half_edge_vertices())) }
 }
 
 /// `O`: the opposite of every half-edge (`TOPOMESH_NONE` on the boundary). NULL below
@@ -54,7 +24,7 @@ pub unsafe extern "C" fn che_mesh_half_edge_vertices(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_opposites(m: *const CheMesh, len: *mut usize) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.che.opposites()) }
+    unsafe { view_answer(m, len, |m| m.che.opposites()) }
 }
 
 /// `VH`: one outgoing half-edge per vertex, the boundary one on a boundary vertex,
@@ -65,7 +35,7 @@ pub unsafe extern "C" fn che_mesh_vertex_half_edges(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.che.vertex_half_edges()) }
+    unsafe { view_answer(m, len, |m| m.che.vertex_half_edges()) }
 }
 
 /// `EH`: the canonical half-edge of every edge (the boundary one on a boundary edge).
@@ -76,7 +46,7 @@ pub unsafe extern "C" fn che_mesh_edge_half_edges(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.che.edge_half_edges()) }
+    unsafe { view_answer(m, len, |m| m.che.edge_half_edges()) }
 }
 
 /// `CH`: one boundary half-edge per boundary curve (its smallest). NULL below level 3.
@@ -86,7 +56,7 @@ pub unsafe extern "C" fn che_mesh_curve_half_edges(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.che.curve_half_edges()) }
+    unsafe { view_answer(m, len, |m| m.che.curve_half_edges()) }
 }
 
 /// Positions: x, y, z per structure vertex (copies repeat their origin's position);
@@ -95,9 +65,9 @@ pub unsafe extern "C" fn che_mesh_curve_half_edges(
 pub unsafe extern "C" fn che_mesh_positions(m: *const CheMesh, len: *mut usize) -> *const f64 {
     // SAFETY: caller contract.
     unsafe {
-        view(m, len, |m| {
+        view_answer(m, len, |m| {
             let p = m.che.positions();
-            (!p.is_empty()).then(|| flat(p))
+            (!p.is_empty()).then(|| coordinates(p))
         })
     }
 }
@@ -108,7 +78,7 @@ pub unsafe extern "C" fn che_mesh_positions(m: *const CheMesh, len: *mut usize) 
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_origins(m: *const CheMesh, len: *mut usize) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| Some(m.vertex_origins())) }
+    unsafe { view_answer(m, len, |m| Some(m.vertex_origins())) }
 }
 
 /// Structure triangle -> input triangle (`num_triangles` entries; increasing, with gaps
@@ -119,7 +89,7 @@ pub unsafe extern "C" fn che_mesh_triangle_origins(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| Some(m.triangle_origins())) }
+    unsafe { view_answer(m, len, |m| Some(m.triangle_origins())) }
 }
 
 /// The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
@@ -131,5 +101,5 @@ pub unsafe extern "C" fn che_mesh_triangle_origins(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_edge_ranks(m: *const CheMesh, len: *mut usize) -> *const u64 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.edge_ranks().map(|r| &r.entries[..])) }
+    unsafe { view_answer(m, len, |m| m.edge_ranks().map(|r| &r.entries[..])) }
 }

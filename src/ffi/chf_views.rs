@@ -4,40 +4,10 @@
 //! valid until the mesh is freed or its level changes (`chf_mesh_build_level`). An empty
 //! container may be returned as a non-NULL pointer with `*len == 0`.
 
-use super::boundary::{guard_or, handle};
+use super::boundary::view_answer;
 use super::chf::ChfMesh;
-use glam::DVec3;
+use super::mesh_arrays::coordinates;
 use std::borrow::Cow;
-use std::ptr;
-
-/// Points as their coordinates.
-fn flat(points: &[DVec3]) -> &[f64] {
-    const _: () = assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
-    // SAFETY: `DVec3` is `repr(C)` with three `f64` fields and no padding (asserted), so `n`
-    // points are `3 n` contiguous, aligned doubles borrowed for the same lifetime.
-    unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f64>(), 3 * points.len()) }
-}
-
-/// Shared body of the views.
-///
-/// # Safety
-/// `m` is NULL or a live handle; `len` NULL or valid for one write.
-unsafe fn view<T>(
-    m: *const ChfMesh,
-    len: *mut usize,
-    f: impl FnOnce(&ChfMesh) -> Option<&[T]>,
-) -> *const T {
-    let (p, n) = guard_or((ptr::null(), 0), || {
-        // SAFETY: forwarded contract.
-        let m = unsafe { handle(m, "m")? };
-        Ok(f(m).map_or((ptr::null(), 0), |s| (s.as_ptr(), s.len())))
-    });
-    if !len.is_null() {
-        // SAFETY: non-NULL, valid for one write (contract).
-        unsafe { len.write(n) };
-    }
-    p
-}
 
 /// `V`: vertex `i` of tetrahedron `t` at `V[4t + i]` (`4 * num_tetrahedra` entries); also
 /// the vertex each half-face `4t + i` is opposite. The vertices of half-face `hf` in its
@@ -48,14 +18,14 @@ pub unsafe extern "C" fn chf_mesh_half_face_vertices(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| Some(m.chf.half_face_vertices())) }
+    unsafe { view_answer(m, len, |m| Some(m.chf.half_face_vertices())) }
 }
 
 /// `O`: the twin of every half-face (`TOPOMESH_NONE` on the boundary). NULL below level 1.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_opposites(m: *const ChfMesh, len: *mut usize) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.chf.opposites()) }
+    unsafe { view_answer(m, len, |m| m.chf.opposites()) }
 }
 
 /// `VH`: one half-face holding each vertex, a boundary one on a boundary vertex,
@@ -66,7 +36,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_half_faces(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.chf.vertex_half_faces()) }
+    unsafe { view_answer(m, len, |m| m.chf.vertex_half_faces()) }
 }
 
 /// `FH`: the canonical half-face of every face (`num_faces` entries, increasing; the
@@ -77,7 +47,7 @@ pub unsafe extern "C" fn chf_mesh_face_half_faces(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.chf.face_half_faces()) }
+    unsafe { view_answer(m, len, |m| m.chf.face_half_faces()) }
 }
 
 /// The boundary half-faces in increasing order: triangle `k` of `chf_mesh_boundary`'s
@@ -89,7 +59,7 @@ pub unsafe extern "C" fn chf_mesh_boundary_half_faces(
 ) -> *const u32 {
     // SAFETY: caller contract.
     unsafe {
-        view(m, len, |m| match m.chf.boundary_half_faces() {
+        view_answer(m, len, |m| match m.chf.boundary_half_faces() {
             Cow::Borrowed(s) => Some(s),
             Cow::Owned(_) => None,
         })
@@ -106,7 +76,7 @@ pub unsafe extern "C" fn chf_mesh_boundary_vertices(
 ) -> *const u32 {
     // SAFETY: caller contract.
     unsafe {
-        view(m, len, |m| match m.chf.boundary_vertices() {
+        view_answer(m, len, |m| match m.chf.boundary_vertices() {
             Cow::Borrowed(s) => Some(s),
             Cow::Owned(_) => None,
         })
@@ -123,7 +93,7 @@ pub unsafe extern "C" fn chf_mesh_boundary_vertex_components(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| m.chf.boundary_vertex_components()) }
+    unsafe { view_answer(m, len, |m| m.chf.boundary_vertex_components()) }
 }
 
 /// Positions: x, y, z per structure vertex (copies repeat their origin's position);
@@ -132,9 +102,9 @@ pub unsafe extern "C" fn chf_mesh_boundary_vertex_components(
 pub unsafe extern "C" fn chf_mesh_positions(m: *const ChfMesh, len: *mut usize) -> *const f64 {
     // SAFETY: caller contract.
     unsafe {
-        view(m, len, |m| {
+        view_answer(m, len, |m| {
             let p = m.chf.positions();
-            (!p.is_empty()).then(|| flat(p))
+            (!p.is_empty()).then(|| coordinates(p))
         })
     }
 }
@@ -145,7 +115,7 @@ pub unsafe extern "C" fn chf_mesh_positions(m: *const ChfMesh, len: *mut usize) 
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_origins(m: *const ChfMesh, len: *mut usize) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| Some(m.vertex_origins())) }
+    unsafe { view_answer(m, len, |m| Some(m.vertex_origins())) }
 }
 
 /// Structure tetrahedron -> input tetrahedron (`num_tetrahedra` entries; increasing, with
@@ -157,5 +127,5 @@ pub unsafe extern "C" fn chf_mesh_tetrahedron_origins(
     len: *mut usize,
 ) -> *const u32 {
     // SAFETY: caller contract.
-    unsafe { view(m, len, |m| Some(m.tetrahedron_origins())) }
+    unsafe { view_answer(m, len, |m| Some(m.tetrahedron_origins())) }
 }

@@ -1,5 +1,6 @@
-//! The arrays of a build call (`che_mesh_from_triangles`, `chf_mesh_from_tetrahedra`),
-//! checked before any slice is made: counts that fit the ids, then the pointers.
+//! Arrays crossing the boundary: the ids and positions of a build call
+//! (`che_mesh_from_triangles`, `chf_mesh_from_tetrahedra`), checked before any slice is
+//! made, and positions handed back as plain doubles.
 
 use super::boundary::slice_arg;
 use crate::error::{Error, Result};
@@ -10,6 +11,13 @@ const _: () = {
     assert!(std::mem::size_of::<DVec3>() == 3 * std::mem::size_of::<f64>());
     assert!(std::mem::align_of::<DVec3>() == std::mem::align_of::<f64>());
 };
+
+/// Points as their coordinates (`3 n` doubles).
+pub(crate) fn coordinates(points: &[DVec3]) -> &[f64] {
+    // SAFETY: `DVec3` is `repr(C)` with three `f64` fields and no padding (asserted above),
+    // so `n` points are `3 n` contiguous, aligned doubles borrowed for the same lifetime.
+    unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f64>(), 3 * points.len()) }
+}
 
 /// What one build call takes: `per` vertex ids per cell, at most `max_cells` cells
 /// (`cells` names them, `part` names the ids that must fit: "half-edge", "half-face").

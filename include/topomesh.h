@@ -941,8 +941,10 @@ const uint32_t *che_mesh_triangle_origins(const struct che_mesh *m, size_t *len)
  * the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`
  * (`O[h] == TOPOMESH_NONE || h < O[h]`, bit `h % 32`), the high 32 bits count the canonical
  * half-edges before `32k`. With `O` it gives the edge of any half-edge in O(1) without a
- * call: `che_edge_of` in `topomesh_inline.h`. Computed from `O` on the first request
- * (2 bits per half-edge, kept with the mesh until its level changes). NULL below level 1.
+ * call: `che_edge_of` in `topomesh_inline.h`. From level 2 this is the structure's own
+ * directory (counted in `che_mesh_memory`'s `edges`); at level 1 it is computed from `O`
+ * on the first request (2 bits per half-edge, kept with the mesh until its level
+ * changes). NULL below level 1.
  */
 const uint64_t *che_mesh_edge_ranks(const struct che_mesh *m, size_t *len);
 

@@ -12,6 +12,7 @@ pub mod generate;
 pub mod io;
 mod pages;
 mod rank;
+mod rank_directory;
 mod small_ids;
 
 pub use che::{BuildOptions, BuildReport, Che, Summary};

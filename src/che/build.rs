@@ -7,6 +7,7 @@ use super::{Che, level2, level3, orient, split};
 use crate::NONE;
 use crate::error::{Error, Result};
 use crate::rank::RankBits;
+use crate::rank_directory::RankDirectory;
 use glam::DVec3;
 
 /// How to build: the level (0..=3) and whether non-manifold input is an error.
@@ -216,7 +217,7 @@ pub(crate) fn build(
         v,
         o,
         vh: Vec::new(),
-        edge_bits: RankBits::default(),
+        edge_bits: RankDirectory::default(),
         eh: Vec::new(),
         ch: Vec::new(),
         boundary_bits: RankBits::default(),

@@ -1,10 +1,11 @@
 //! Level 2: `VH` (boundary vertices store their outgoing boundary half-edge, so one
 //! counter-clockwise rotation sweeps the whole fan) and edge ids (rank over the canonical
-//! half-edges, `O[h] == NONE || h < O[h]`, at 1.5 bits per half-edge, plus `EH`).
+//! half-edges, `O[h] == NONE || h < O[h]`, in a directory of 2 bits per half-edge that the C API
+//! lends as it is, plus `EH`).
 
 use super::Che;
 use crate::NONE;
-use crate::rank::RankBits;
+use crate::rank_directory::RankDirectory;
 
 pub(crate) fn build(che: &mut Che) {
     let (v, o) = (&che.v, &che.o);
@@ -22,10 +23,11 @@ pub(crate) fn build(che: &mut Che) {
 /// Edge ids, with `VH` already in place (the build finds it while splitting vertices).
 pub(crate) fn build_edges(che: &mut Che) {
     let (v, o) = (&che.v, &che.o);
-    let edge_bits = RankBits::from_fn(v.len(), |h| {
+    let edge_bits = RankDirectory::from_fn(v.len(), |h| {
         let g = o[h];
         g == NONE || (h as u32) < g
-    });
+    })
+    .expect("half-edge ids fit 32 bits, so edge counts do");
     let mut eh = crate::pages::with_capacity(edge_bits.ones());
     eh.extend((0..v.len() as u32).filter(|&h| edge_bits.get(h as usize)));
     debug_assert_eq!(eh.len(), che.num_edges);

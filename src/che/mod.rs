@@ -36,6 +36,7 @@ pub use summary::Summary;
 use crate::NONE;
 use crate::error::{Error, Result};
 use crate::rank::RankBits;
+use crate::rank_directory::RankDirectory;
 use glam::DVec3;
 
 /// A triangle surface in the Compact Half-Edge structure.
@@ -52,7 +53,7 @@ pub struct Che {
     vh: Vec<u32>,
     /// Level 2: bit `h` set when `h` is the canonical half-edge of its edge
     /// (`O[h] == NONE || h < O[h]`); the edge id is the rank.
-    edge_bits: RankBits,
+    edge_bits: RankDirectory,
     /// Level 2: the canonical half-edge of each edge.
     eh: Vec<u32>,
     /// Level 3: one boundary half-edge per boundary curve.
@@ -123,7 +124,7 @@ impl Che {
             }
             if level < 2 {
                 self.vh = Vec::new();
-                self.edge_bits = RankBits::default();
+                self.edge_bits = RankDirectory::default();
                 self.eh = Vec::new();
             }
             if level < 1 {
@@ -175,6 +176,12 @@ impl Che {
     /// `VH`, from level 2.
     pub fn vertex_half_edges(&self) -> Option<&[u32]> {
         (self.level >= 2).then_some(&self.vh[..])
+    }
+    /// The edge-id directory, from level 2: one entry per 32 half-edges, the canonical
+    /// flags in its low half and the canonical half-edges before them in its high half
+    /// (the edge of a canonical half-edge `c` is its rank; see `rank_directory.rs`).
+    pub fn edge_rank_directory(&self) -> Option<&[u64]> {
+        (self.level >= 2).then_some(self.edge_bits.entries())
     }
     /// `EH`: the canonical half-edge of every edge, from level 2.
     pub fn edge_half_edges(&self) -> Option<&[u32]> {

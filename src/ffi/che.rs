@@ -1,9 +1,10 @@
 //! The `che_mesh` handle: a boxed [`Che`] plus the identity origin maps, materialised on
 //! the first request for a zero-copy view (the core stores none when they are the identity).
 
-use super::che_edge_ranks::EdgeRanks;
+use crate::NONE;
 use crate::che::{BuildOptions, Che};
 use crate::error::{Error, Result};
+use crate::rank_directory::RankDirectory;
 use std::sync::OnceLock;
 
 /// Opaque handle to a CHE surface. Create with `che_mesh_from_triangles` or
@@ -12,9 +13,9 @@ pub struct CheMesh {
     pub(crate) che: Che,
     vertex_origins: OnceLock<Box<[u32]>>,
     triangle_origins: OnceLock<Box<[u32]>>,
-    /// The edge-id directory of the current level (see `che_edge_ranks`); reset when the
-    /// level changes.
-    edge_ranks: OnceLock<Option<EdgeRanks>>,
+    /// The edge-id directory at level 1, computed from `O` on first use (the core stores
+    /// one from level 2); reset when the level changes.
+    edge_ranks: OnceLock<Option<RankDirectory>>,
 }
 
 impl CheMesh {
@@ -27,11 +28,19 @@ impl CheMesh {
         }
     }
 
-    /// The edge-id rank directory, computed from `O` on first use; `None` below level 1.
-    pub(crate) fn edge_ranks(&self) -> Option<&EdgeRanks> {
+    /// The edge-id directory (see `che_mesh_edge_ranks`): the core's from level 2, computed
+    /// from `O` on first use at level 1; `None` at level 0.
+    pub(crate) fn edge_ranks(&self) -> Option<&[u64]> {
+        if let Some(entries) = self.che.edge_rank_directory() {
+            return Some(entries);
+        }
         self.edge_ranks
-            .get_or_init(|| self.che.opposites().and_then(EdgeRanks::from_opposites))
+            .get_or_init(|| {
+                let o = self.che.opposites()?;
+                RankDirectory::from_fn(o.len(), |h| o[h] == NONE || (h as u32) < o[h])
+            })
             .as_ref()
+            .map(RankDirectory::entries)
     }
 
     /// Changes the level; views (the edge-id directory too) are invalid afterwards.
@@ -105,4 +114,41 @@ impl CheBuildOptions {
 #[unsafe(no_mangle)]
 pub extern "C" fn che_build_options_default() -> CheBuildOptions {
     CheBuildOptions::default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The arithmetic of `che_edge_of` (topomesh_inline.h) on the lent directory gives the
+    /// core's edge ids, at level 1 (computed here) and from level 2 (the core's own).
+    #[test]
+    fn edge_directory_gives_the_core_edge_ids() {
+        // A strip of 40 triangles (120 half-edges: boundary and interior edges).
+        let mut tris = Vec::new();
+        for i in 0..40u32 {
+            if i % 2 == 0 {
+                tris.extend([i, i + 1, i + 2]);
+            } else {
+                tris.extend([i, i + 2, i + 1]);
+            }
+        }
+        for level in 1..=3 {
+            let mesh =
+                CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(level)).unwrap());
+            let o = mesh.che.opposites().unwrap();
+            let d = mesh.edge_ranks().unwrap();
+            assert_eq!(d.len(), o.len().div_ceil(32));
+            for h in 0..o.len() as u32 {
+                let g = o[h as usize];
+                let c = if g != NONE && g < h { g } else { h } as usize;
+                let entry = d[c / 32];
+                let edge =
+                    (entry >> 32) as u32 + (entry as u32 & ((1u32 << (c % 32)) - 1)).count_ones();
+                assert_eq!(edge, mesh.che.edge_of(h), "level {level} h {h}");
+            }
+        }
+        let level0 = CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(0)).unwrap());
+        assert!(level0.edge_ranks().is_none());
+    }
 }

@@ -78,7 +78,7 @@ pub unsafe extern "C" fn che_star_begin(m: *const CheMesh, v: u32, it: *mut CheS
             _ => None,
         };
         let (o, edge_ranks) = inline.map_or((ptr::null(), ptr::null()), |(o, r)| {
-            (o.as_ptr(), r.entries.as_ptr())
+            (o.as_ptr(), r.as_ptr())
         });
         it.set(CheStarIter {
             mesh: m,

@@ -96,10 +96,12 @@ pub unsafe extern "C" fn che_mesh_triangle_origins(
 /// the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`
 /// (`O[h] == TOPOMESH_NONE || h < O[h]`, bit `h % 32`), the high 32 bits count the canonical
 /// half-edges before `32k`. With `O` it gives the edge of any half-edge in O(1) without a
-/// call: `che_edge_of` in `topomesh_inline.h`. Computed from `O` on the first request
-/// (2 bits per half-edge, kept with the mesh until its level changes). NULL below level 1.
+/// call: `che_edge_of` in `topomesh_inline.h`. From level 2 this is the structure's own
+/// directory (counted in `che_mesh_memory`'s `edges`); at level 1 it is computed from `O`
+/// on the first request (2 bits per half-edge, kept with the mesh until its level
+/// changes). NULL below level 1.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_edge_ranks(m: *const CheMesh, len: *mut usize) -> *const u64 {
     // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| m.edge_ranks().map(|r| &r.entries[..])) }
+    unsafe { view_answer(m, len, |m| m.edge_ranks()) }
 }

@@ -11,8 +11,7 @@
 //!   level, counts), `che_relations` (one element at a time), `che_star` (stack
 //!   iterator; its step is inline in `topomesh_inline.h` from level 2), `che_csr` (bulk),
 //!   `che_views` (zero-copy), `che_info` (summary, report, memory); `che_walk` (the
-//!   array walks the per-element and bulk calls share) and `che_edge_ranks` (the edge-id
-//!   directory behind `che_mesh_edge_ranks`).
+//!   array walks the per-element and bulk calls share).
 //! - `chf`: the `chf_mesh` handle and build options, the same shape: `chf_build`,
 //!   `chf_relations` (the 16 relations), `chf_half_faces` (boundary tests, half-face
 //!   helpers), `chf_csr`, `chf_views`, `chf_info`, `chf_surface` (the boundary surface as
@@ -37,7 +36,6 @@ pub(crate) mod boundary;
 pub mod che;
 pub mod che_build;
 pub mod che_csr;
-mod che_edge_ranks;
 pub mod che_info;
 pub mod che_relations;
 pub mod che_star;

@@ -1,0 +1,81 @@
+//! A bit vector with O(1) rank in one load: one 64-bit entry per 32 bits, the bits in its
+//! low half and the count of set bits before them in its high half (2 bits per element).
+//! Edge ids of a surface are this rank over the canonical half-edges; the C API lends the
+//! entries as they are (`che_mesh_edge_ranks`), so that a C host computes an edge id
+//! inline with the same arithmetic (`che_edge_of` in `topomesh_inline.h`).
+
+/// Elements per entry.
+pub const SPAN: usize = 32;
+
+#[derive(Clone, Debug, Default)]
+pub struct RankDirectory {
+    entries: Vec<u64>,
+    ones: usize,
+}
+
+impl RankDirectory {
+    /// Bit `i` is `bit(i)`, for `i < len`; `None` when more than `u32::MAX` bits are set.
+    pub fn from_fn(len: usize, mut bit: impl FnMut(usize) -> bool) -> Option<Self> {
+        let mut entries = crate::pages::with_capacity(len.div_ceil(SPAN));
+        let mut ones = 0u32;
+        for base in (0..len).step_by(SPAN) {
+            let mut flags = 0u32;
+            for i in base..(base + SPAN).min(len) {
+                flags |= u32::from(bit(i)) << (i - base);
+            }
+            entries.push(u64::from(ones) << 32 | u64::from(flags));
+            ones = ones.checked_add(flags.count_ones())?;
+        }
+        Some(RankDirectory {
+            entries,
+            ones: ones as usize,
+        })
+    }
+
+    /// The entries, as lent to C.
+    pub fn entries(&self) -> &[u64] {
+        &self.entries
+    }
+
+    pub fn ones(&self) -> usize {
+        self.ones
+    }
+
+    #[inline]
+    pub fn get(&self, i: usize) -> bool {
+        (self.entries[i / SPAN] >> (i % SPAN)) & 1 == 1
+    }
+
+    /// Number of set bits strictly before `i`.
+    #[inline]
+    pub fn rank(&self, i: usize) -> usize {
+        let d = self.entries[i / SPAN];
+        let mask = (1u32 << (i % SPAN)) - 1;
+        (d >> 32) as usize + (d as u32 & mask).count_ones() as usize
+    }
+
+    pub fn memory_bytes(&self) -> usize {
+        self.entries.len() * 8
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rank_matches_prefix_count() {
+        let pattern = |i: usize| (i * 7 + i / 3) % 5 < 2;
+        for len in [0usize, 1, 31, 32, 33, 64, 200, 1000] {
+            let bits = RankDirectory::from_fn(len, pattern).unwrap();
+            let mut count = 0;
+            for i in 0..len {
+                assert_eq!(bits.rank(i), count, "len {len} i {i}");
+                assert_eq!(bits.get(i), pattern(i));
+                count += pattern(i) as usize;
+            }
+            assert_eq!(bits.ones(), count);
+            assert_eq!(bits.entries().len(), len.div_ceil(SPAN));
+        }
+    }
+}

@@ -71,8 +71,10 @@ impl Opposites {
         let mut o = buffer;
         o.clear();
         o.resize(self.n_hf, NONE);
-        // A buffer larger than `O` gives the rest back (in place: no copy).
-        o.shrink_to_fit();
+        // A buffer much larger than `O` gives the rest back (in place: no copy).
+        if o.capacity() - o.len() > o.len() / 16 {
+            o.shrink_to_fit();
+        }
         for (w, &end) in self.fill.iter().enumerate() {
             for &r in &self.records[w << self.shift..end as usize] {
                 o[(r >> 32) as usize] = r as u32;

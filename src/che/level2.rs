@@ -20,14 +20,20 @@ pub(crate) fn build(che: &mut Che) {
     build_edges(che);
 }
 
-/// Edge ids, with `VH` already in place (the build finds it while splitting vertices).
-pub(crate) fn build_edges(che: &mut Che) {
-    let (v, o) = (&che.v, &che.o);
-    let edge_bits = RankDirectory::from_fn(v.len(), |h| {
+/// The edge-id directory of the opposites `o`: the rank over the canonical half-edges,
+/// `O[h] == NONE || h < O[h]` (the C API computes it with this at level 1 too).
+pub(crate) fn edge_directory(o: &[u32]) -> RankDirectory {
+    RankDirectory::from_fn(o.len(), |h| {
         let g = o[h];
         g == NONE || (h as u32) < g
     })
-    .expect("half-edge ids fit 32 bits, so edge counts do");
+    .expect("half-edge ids fit 32 bits, so edge counts do")
+}
+
+/// Edge ids, with `VH` already in place (the build finds it while splitting vertices).
+pub(crate) fn build_edges(che: &mut Che) {
+    let (v, o) = (&che.v, &che.o);
+    let edge_bits = edge_directory(o);
     let mut eh = crate::pages::with_capacity(edge_bits.ones());
     eh.extend((0..v.len() as u32).filter(|&h| edge_bits.get(h as usize)));
     debug_assert_eq!(eh.len(), che.num_edges);

@@ -28,6 +28,7 @@ pub use build::{BuildOptions, MAX_TRIANGLES};
 pub use bulk::Csr;
 pub use curves::BoundaryWalk;
 pub use ids::{first, next, prev, tri};
+pub(crate) use level2::edge_directory;
 pub use memory::Memory;
 pub use report::BuildReport;
 pub use star::{Rotation, StarStep};

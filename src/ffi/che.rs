@@ -1,8 +1,7 @@
 //! The `che_mesh` handle: a boxed [`Che`] plus the identity origin maps, materialised on
 //! the first request for a zero-copy view (the core stores none when they are the identity).
 
-use crate::NONE;
-use crate::che::{BuildOptions, Che};
+use crate::che::{BuildOptions, Che, edge_directory};
 use crate::error::{Error, Result};
 use crate::rank_directory::RankDirectory;
 use std::sync::OnceLock;
@@ -35,10 +34,7 @@ impl CheMesh {
             return Some(entries);
         }
         self.edge_ranks
-            .get_or_init(|| {
-                let o = self.che.opposites()?;
-                RankDirectory::from_fn(o.len(), |h| o[h] == NONE || (h as u32) < o[h])
-            })
+            .get_or_init(|| self.che.opposites().map(edge_directory))
             .as_ref()
             .map(RankDirectory::entries)
     }
@@ -119,6 +115,7 @@ pub extern "C" fn che_build_options_default() -> CheBuildOptions {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::NONE;
 
     /// The arithmetic of `che_edge_of` (topomesh_inline.h) on the lent directory gives the
     /// core's edge ids, at level 1 (computed here) and from level 2 (the core's own).

@@ -215,65 +215,29 @@ impl Link {
 
     /// Local ids of the star's other vertices, in order of first appearance.
     fn local_ids(&mut self, star: &[Record]) {
-        let x = star[0][1];
         self.ids.clear();
         self.verts.clear();
         self.verts.resize(3 * star.len() + 1, 0);
         self.first_corner.clear();
         self.first_corner.resize(3 * star.len() + 1, 0);
-        let mut m = 0u32;
         // The compact table holds 24 bits of `x + 1` and an 8-bit id: exact while vertex
         // ids stay below 2^24 and a star has at most 255 other vertices.
         let compact = !self.stamp_compact.is_empty() && 3 * star.len() <= 255;
-        let (tag32, tag64) = (((x + 1) & 0xFF_FFFF) << 8, ((x + 1) as u64) << 32);
         if !compact && self.stamp.is_empty() {
             self.stamp = vec![0; self.n_vertices];
         }
-        if compact {
-            // Separate borrows, so that the stores below do not make the compiler reload
-            // the vectors after each one.
-            let stamps = &mut self.stamp_compact[..];
-            let verts = &mut self.verts[..];
-            let first_corner = &mut self.first_corner[..];
-            // The stamps are read at random (one per corner): read them all first, so that
-            // their cache misses overlap, then name the vertices from the L1 cache.
-            let mut touched = 0;
-            for r in star {
-                touched ^= stamps[r[2] as usize] ^ stamps[r[3] as usize] ^ stamps[r[4] as usize];
-            }
-            std::hint::black_box(touched);
-            for (p, r) in star.iter().enumerate() {
-                let mut ids = [0u32; 3];
-                for s in 0..3 {
-                    let y = r[2 + s] as usize;
-                    first_corner[m as usize] = (3 * p + s) as u32;
-                    let e = stamps[y];
-                    let fresh = e & !0xFF != tag32;
-                    let id = if fresh { m } else { e & 0xFF };
-                    stamps[y] = tag32 | id;
-                    m += fresh as u32;
-                    verts[id as usize] = y as u32;
-                    ids[s] = id;
-                }
-                self.ids.push(ids);
-            }
+        // Separate borrows, so that the stores do not make the compiler reload the vectors
+        // after each one.
+        let (verts, first_corner, ids) = (
+            &mut self.verts[..],
+            &mut self.first_corner[..],
+            &mut self.ids,
+        );
+        let m = if compact {
+            name_vertices(star, &mut self.stamp_compact, verts, first_corner, ids)
         } else {
-            for (p, r) in star.iter().enumerate() {
-                let mut ids = [0u32; 3];
-                for s in 0..3 {
-                    let y = r[2 + s] as usize;
-                    self.first_corner[m as usize] = (3 * p + s) as u32;
-                    let e = self.stamp[y];
-                    let fresh = e & !0xFFFF_FFFF != tag64;
-                    let id = if fresh { m } else { e as u32 };
-                    self.stamp[y] = tag64 | id as u64;
-                    m += fresh as u32;
-                    self.verts[id as usize] = y as u32;
-                    ids[s] = id;
-                }
-                self.ids.push(ids);
-            }
-        }
+            name_vertices(star, &mut self.stamp, verts, first_corner, ids)
+        };
         self.verts.truncate(m as usize);
         self.first_corner.truncate(m as usize);
     }
@@ -305,4 +269,77 @@ fn flush_events(events: &mut Vec<([u32; 2], [u32; 2])>, x: u32, census: &mut Fac
         }
     }
     events.clear();
+}
+
+/// A vertex's entry in [`Link`]'s stamp tables: a tag naming the star that saw it last and
+/// the local id it had there.
+trait Stamp: Copy + Into<u64> {
+    /// The tag of the star of `x`.
+    fn tag(x: u32) -> Self;
+    /// Whether the entry carries `tag`, and its id.
+    fn split(self, tag: Self) -> (bool, u32);
+    fn join(tag: Self, id: u32) -> Self;
+}
+
+impl Stamp for u32 {
+    fn tag(x: u32) -> Self {
+        ((x + 1) & 0xFF_FFFF) << 8
+    }
+    fn split(self, tag: Self) -> (bool, u32) {
+        (self & !0xFF == tag, self & 0xFF)
+    }
+    fn join(tag: Self, id: u32) -> Self {
+        tag | id
+    }
+}
+
+impl Stamp for u64 {
+    fn tag(x: u32) -> Self {
+        ((x + 1) as u64) << 32
+    }
+    fn split(self, tag: Self) -> (bool, u32) {
+        (self & !0xFFFF_FFFF == tag, self as u32)
+    }
+    fn join(tag: Self, id: u32) -> Self {
+        tag | id as u64
+    }
+}
+
+/// Names the other vertices of a star 0, 1, ... in order of first appearance: `ids` gets
+/// the three names of each record, `verts` the vertex of each name and `first_corner` the
+/// first corner (`3p + s`) holding it. Returns how many names. Branch-free per corner:
+/// one stamp lookup each.
+fn name_vertices<S: Stamp>(
+    star: &[Record],
+    stamps: &mut [S],
+    verts: &mut [u32],
+    first_corner: &mut [u32],
+    ids: &mut Vec<[u32; 3]>,
+) -> u32 {
+    let tag = S::tag(star[0][1]);
+    // The stamps are read at random (one per corner): read them all first, so that their
+    // cache misses overlap, then name the vertices from the L1 cache.
+    let mut touched = 0u64;
+    for r in star {
+        for &y in &r[2..5] {
+            touched ^= stamps[y as usize].into();
+        }
+    }
+    std::hint::black_box(touched);
+    let mut m = 0u32;
+    for (p, r) in star.iter().enumerate() {
+        let mut names = [0u32; 3];
+        for s in 0..3 {
+            let y = r[2 + s] as usize;
+            first_corner[m as usize] = (3 * p + s) as u32;
+            let (seen, old) = stamps[y].split(tag);
+            let id = if seen { old } else { m };
+            stamps[y] = S::join(tag, id);
+            m += !seen as u32;
+            verts[id as usize] = y as u32;
+            names[s] = id;
+        }
+        ids.push(names);
+    }
+    m
 }

@@ -357,6 +357,11 @@ typedef struct chf_build_options {
      * the offending ids) instead of keeping them (default false).
      */
     bool strict;
+    /**
+     * Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
+     * the calling thread alone. The mesh is the same whatever the number.
+     */
+    uint32_t threads;
 } chf_build_options;
 
 /**
@@ -949,7 +954,7 @@ const uint32_t *che_mesh_triangle_origins(const struct che_mesh *m, size_t *len)
 const uint64_t *che_mesh_edge_ranks(const struct che_mesh *m, size_t *len);
 
 /**
- * The default CHF build options: level 2, not strict.
+ * The default CHF build options: level 2, not strict, every thread of the machine.
  */
 struct chf_build_options chf_build_options_default(void);
 

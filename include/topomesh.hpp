@@ -391,6 +391,9 @@ struct Csr {
 struct Options {
     std::uint32_t level = 2;
     bool strict = false;
+    /// Threads for a tetrahedral build (0: as many as the machine runs at once; the mesh is
+    /// the same whatever the number). Surfaces build on the calling thread.
+    std::uint32_t threads = 0;
 };
 
 /// A triangle surface in the Compact Half-Edge structure (owns a che_mesh).
@@ -697,7 +700,7 @@ public:
     static Volume from_tetrahedra(const std::uint32_t *tetrahedra, std::size_t n_tets,
                                   std::size_t n_vertices, const double *positions = nullptr,
                                   Options options = {}) {
-        chf_build_options o{options.level, options.strict};
+        chf_build_options o{options.level, options.strict, options.threads};
         chf_mesh *m = nullptr;
         detail::check(chf_mesh_from_tetrahedra_ex(tetrahedra, n_tets, n_vertices, positions,
                                                   &o, &m));
@@ -723,7 +726,7 @@ public:
 
     /// Reads a volume file (.mesh .msh .vtk .node/.ele).
     static Volume load(const std::string &path, Options options = {}) {
-        chf_build_options o{options.level, options.strict};
+        chf_build_options o{options.level, options.strict, options.threads};
         chf_mesh *m = nullptr;
         detail::check(chf_mesh_load_ex(path.c_str(), &o, &m));
         return Volume(m);

@@ -85,8 +85,10 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
   echo "  cells are left out of every answer. Its build time includes turning the arrays into its"
   echo "  \`Point_3\` vector and positively oriented cells (the conversion time is given)."
   echo "- topomesh: $rustc_v, cargo release profile, through the installed libtopomesh.so;"
-  echo "  \`chf_mesh_from_tetrahedra\` with positions (it orients, matches faces, splits non-manifold"
-  echo "  vertices, and from level 2 names edges and faces). Single-threaded."
+  echo "  \`chf_mesh_from_tetrahedra_ex\` with positions (it orients, matches faces, splits non-manifold"
+  echo "  vertices, and from level 2 names edges and faces), built on one thread (as CGAL's build) and with"
+  echo "  the default, every thread of the machine (\`threads\` 0 in \`chf_build_options\`; the memory rows"
+  echo "  use the default); every sweep runs on one thread."
   echo "- Meshes: made by \`scripts/fetch-tets.sh\` with Debian's tetgen $tetgen_v from closed surfaces"
   echo "  of CGAL's demo data:"
   for b in "${bases[@]}"; do

@@ -11,6 +11,7 @@ pub mod ffi;
 pub mod generate;
 pub mod io;
 mod pages;
+mod par;
 mod rank;
 mod rank_directory;
 mod small_ids;

@@ -6,32 +6,33 @@
 //!   measures the same with the resident set; this catches a change that raises the peak
 //!   on any machine.
 //!
-//! The counters are per thread (libtest runs the tests, and allocates for itself, on other
-//! threads at the same time).
+//! The counters are global, because the build allocates on threads of its own too; the
+//! tests take a lock so that they do not run (and count) at the same time on libtest's
+//! threads.
 
 mod chf_common;
 
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicIsize, AtomicUsize, Ordering::SeqCst};
 
 struct Counting;
 
-thread_local! {
-    // `const` and without a destructor: reading them never allocates.
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-    static CURRENT: Cell<isize> = const { Cell::new(0) };
-    static PEAK: Cell<isize> = const { Cell::new(0) };
-}
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+static CURRENT: AtomicIsize = AtomicIsize::new(0);
+static PEAK: AtomicIsize = AtomicIsize::new(0);
+
+/// Held by each test for its whole run.
+static SERIAL: Mutex<()> = Mutex::new(());
 
 fn grow(n: usize) {
-    ALLOCATIONS.set(ALLOCATIONS.get() + 1);
-    let now = CURRENT.get() + n as isize;
-    CURRENT.set(now);
-    PEAK.set(PEAK.get().max(now));
+    ALLOCATIONS.fetch_add(1, SeqCst);
+    let now = CURRENT.fetch_add(n as isize, SeqCst) + n as isize;
+    PEAK.fetch_max(now, SeqCst);
 }
 
 fn shrink(n: usize) {
-    CURRENT.set(CURRENT.get() - n as isize);
+    CURRENT.fetch_sub(n as isize, SeqCst);
 }
 
 // Sound: every call forwards to `System` with the caller's arguments; the counters only
@@ -52,7 +53,7 @@ unsafe impl GlobalAlloc for Counting {
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
         if new_size <= layout.size() {
             // A shrink happens in place (still a call into the allocator).
-            ALLOCATIONS.set(ALLOCATIONS.get() + 1);
+            ALLOCATIONS.fetch_add(1, SeqCst);
             shrink(layout.size() - new_size);
         } else {
             // Counted as the new block alongside the old one: a moving realloc holds both.
@@ -68,10 +69,11 @@ static GLOBAL: Counting = Counting;
 
 #[test]
 fn chf_level_2_queries_do_not_allocate() {
+    let _one_at_a_time = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     let mesh = chf_common::scramble(&chf_common::cube(4, 3, 3, false), 3, 85);
     for level in [2, 3] {
         let chf = mesh.build(level, true);
-        let before = ALLOCATIONS.get();
+        let before = ALLOCATIONS.load(SeqCst);
         let mut sum = 0u64;
         for v in 0..chf.num_vertices() as u32 {
             sum += chf.vertex_vertices(v).map(u64::from).sum::<u64>();
@@ -120,7 +122,7 @@ fn chf_level_2_queries_do_not_allocate() {
                 .map(|&x| x as u64)
                 .sum::<u64>();
         }
-        let after = ALLOCATIONS.get();
+        let after = ALLOCATIONS.load(SeqCst);
         assert!(sum > 0);
         assert_eq!(after - before, 0, "level {level} queries allocated");
     }
@@ -128,16 +130,17 @@ fn chf_level_2_queries_do_not_allocate() {
 
 #[test]
 fn chf_build_peak_is_at_most_twice_the_structure() {
+    let _one_at_a_time = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     let mesh = chf_common::scramble(&chf_common::cube(36, 36, 36, false), 7, 100);
     let flat: Vec<u32> = mesh.tets.iter().flatten().copied().collect();
     let n = mesh.n();
     for level in 0..=3u8 {
-        let before = CURRENT.get();
-        PEAK.set(before);
+        let before = CURRENT.load(SeqCst);
+        PEAK.store(before, SeqCst);
         let options = topomesh::ChfBuildOptions::level(level);
         let chf = topomesh::Chf::from_flat(&flat, n, &mesh.positions, options).unwrap();
-        let held = CURRENT.get() - before;
-        let peak = PEAK.get() - before;
+        let held = CURRENT.load(SeqCst) - before;
+        let peak = PEAK.load(SeqCst) - before;
         let ratio = peak as f64 / held as f64;
         println!(
             "level {level}: {} tetrahedra, peak {peak} B, held {held} B, ratio {ratio:.2}",

@@ -161,3 +161,79 @@ fn chf_memory_per_level() {
     assert_eq!(per_tet[0], 16.0);
     assert_eq!(per_tet[1], 32.0);
 }
+
+/// Everything a build produces that a thread count could change.
+fn fingerprint(chf: &Chf) -> String {
+    let boundary = chf.boundary().map(|b| {
+        (
+            b.half_edge_vertices().to_vec(),
+            b.opposites().map(<[u32]>::to_vec),
+        )
+    });
+    format!(
+        "{:?}",
+        (
+            (
+                chf.half_face_vertices(),
+                chf.opposites(),
+                chf.vertex_half_faces()
+            ),
+            (chf.face_half_faces(), chf.edge_slot_tetrahedra()),
+            (chf.num_edges(), chf.num_faces(), chf.num_vertices()),
+            (chf.vertex_origins(), chf.tetrahedron_origins()),
+            (chf.non_manifold_half_faces(), chf.seam_half_faces()),
+            chf.report(),
+            boundary,
+        )
+    )
+}
+
+#[test]
+fn chf_build_is_the_same_on_any_number_of_threads() {
+    // Large enough for the star pass to share its rounds among threads, numbered at random,
+    // and damaged all over: tetrahedra glued to a face, an edge or a vertex of others make
+    // non-manifold faces, edges and vertices; random ones, duplicates, inverted and
+    // degenerate tetrahedra. The report's examples must come in the same order too.
+    let mesh = scramble(&cube(24, 24, 24, false), 11, 100);
+    let n = mesh.n();
+    let mut tets = mesh.tets.clone();
+    let mut rng = Rng(5);
+    for k in 0..1200 {
+        let t = mesh.tets[rng.below(mesh.tets.len())];
+        let mut extra = [0; 4].map(|_| rng.below(n) as u32);
+        extra[..3 - k % 3].copy_from_slice(&t[..3 - k % 3]);
+        tets.push(extra);
+    }
+    let t = tets[17];
+    tets.push(t);
+    tets.push([t[1], t[0], t[2], t[3]]);
+    assert!(tets.len() > 1 << 16);
+    for level in 0..=3u8 {
+        let build = |threads| {
+            let options = ChfBuildOptions {
+                level,
+                threads,
+                ..ChfBuildOptions::default()
+            };
+            Chf::from_tetrahedra(&tets, n, &mesh.positions, options).unwrap()
+        };
+        let one = build(1);
+        let r = one.report();
+        assert!(
+            r.non_manifold_faces > 0
+                && r.duplicate_tetrahedra > 0
+                && r.split_vertices > 0
+                && r.flipped_tetrahedra > 0
+                && r.non_manifold_edges > 0,
+            "the damage reaches every path: {r:?}"
+        );
+        let expected = fingerprint(&one);
+        for threads in [2, 3, 8] {
+            assert!(
+                fingerprint(&build(threads)) == expected,
+                "level {level}, {threads} threads: not the single-threaded build"
+            );
+        }
+        check_invariants(&one);
+    }
+}

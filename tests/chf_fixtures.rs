@@ -145,6 +145,7 @@ fn chf_two_tetrahedra_sharing_an_edge() {
         ChfBuildOptions {
             level: 2,
             strict: true,
+            ..ChfBuildOptions::default()
         },
     )
     .unwrap_err();
@@ -183,6 +184,7 @@ fn chf_two_tetrahedra_sharing_a_vertex() {
         ChfBuildOptions {
             level: 1,
             strict: true,
+            ..ChfBuildOptions::default()
         },
     )
     .unwrap_err();
@@ -250,6 +252,7 @@ fn chf_three_tetrahedra_on_one_face() {
         ChfBuildOptions {
             level: 0,
             strict: true,
+            ..ChfBuildOptions::default()
         },
     )
     .unwrap_err();
@@ -454,6 +457,7 @@ fn chf_duplicate_tetrahedra_glue_into_a_sphere() {
         ChfBuildOptions {
             level: 2,
             strict: true,
+            ..ChfBuildOptions::default()
         },
     )
     .unwrap_err();
@@ -513,6 +517,7 @@ fn chf_edge_with_two_fans_that_the_split_keeps() {
         ChfBuildOptions {
             level: 2,
             strict: true,
+            ..ChfBuildOptions::default()
         },
     )
     .unwrap_err();

@@ -37,11 +37,18 @@ static void test_argument_errors(void) {
 
     /* Options. */
     chf_build_options o = chf_build_options_default();
-    CHECK(o.level == 2 && !o.strict);
+    CHECK(o.level == 2 && !o.strict && o.threads == 0);
     m = NULL;
     CHECK_OK(chf_mesh_from_tetrahedra_ex(PAIR, 2, 5, NULL, NULL, &m));
     CHECK(chf_mesh_level(m) == 2);
     chf_mesh_free(m);
+    for (uint32_t threads = 1; threads <= 3; ++threads) {
+        o.threads = threads;
+        CHECK_OK(chf_mesh_from_tetrahedra_ex(PAIR, 2, 5, NULL, &o, &m));
+        CHECK(chf_mesh_num_tetrahedra(m) == 2 && chf_mesh_num_faces(m) == 7);
+        chf_mesh_free(m);
+    }
+    o.threads = 0;
     o.level = 7;
     CHECK_STATUS(chf_mesh_from_tetrahedra_ex(PAIR, 2, 5, NULL, &o, &m),
                  TOPOMESH_STATUS_OUT_OF_RANGE);

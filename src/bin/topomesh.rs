@@ -37,6 +37,9 @@ enum Command {
         /// Print JSON (the field names of `che_summary`).
         #[arg(long)]
         json: bool,
+        /// Threads for a tetrahedral build (0: as many as the machine runs at once).
+        #[arg(long, default_value_t = 0)]
+        threads: usize,
     },
     /// Exit 0 when the mesh is a clean manifold, 1 and a list of problems otherwise.
     Check { file: PathBuf },
@@ -48,6 +51,9 @@ enum Command {
         /// Repetitions (the median is printed).
         #[arg(long, default_value_t = 5)]
         repeat: usize,
+        /// Threads for a tetrahedral build (0: as many as the machine runs at once).
+        #[arg(long, default_value_t = 0)]
+        threads: usize,
     },
 }
 
@@ -58,6 +64,7 @@ fn main() -> ExitCode {
         level: 3,
         strict: false,
         json: false,
+        threads: 0,
     });
     let result = match command {
         Command::Info {
@@ -65,10 +72,15 @@ fn main() -> ExitCode {
             level,
             strict,
             json,
-        } => info(file.as_deref(), level, strict, json),
+            threads,
+        } => info(file.as_deref(), level, strict, json, threads),
         Command::Check { file } => check(&file),
         Command::Convert { input, output } => convert(&input, &output),
-        Command::Bench { file, repeat } => bench(file.as_deref(), repeat.max(1)),
+        Command::Bench {
+            file,
+            repeat,
+            threads,
+        } => bench(file.as_deref(), repeat.max(1), threads),
     };
     match result {
         Ok(code) => code,
@@ -151,14 +163,20 @@ struct Structure {
     boundary_curves: usize,
 }
 
-fn info(file: Option<&Path>, level: u8, strict: bool, json: bool) -> Result<ExitCode, Error> {
+fn info(
+    file: Option<&Path>,
+    level: u8,
+    strict: bool,
+    json: bool,
+    threads: usize,
+) -> Result<ExitCode, Error> {
     let progress = Progress::new();
     let start = Instant::now();
     let (name, data) = load(file, &progress)?;
     let read_seconds = start.elapsed().as_secs_f64();
     if data.is_volume() {
         drop(progress);
-        return volume_info(&name, &data, level, strict, json);
+        return volume_info(&name, &data, level, strict, json, threads);
     }
     progress.step(format!(
         "building level {level} from {} triangles",
@@ -308,6 +326,7 @@ fn volume_info(
     level: u8,
     strict: bool,
     json: bool,
+    threads: usize,
 ) -> Result<ExitCode, Error> {
     let progress = Progress::new();
     progress.step(format!(
@@ -315,7 +334,14 @@ fn volume_info(
         data.tetrahedra.len()
     ));
     let start = Instant::now();
-    let chf = build_volume(data, ChfBuildOptions { level, strict })?;
+    let chf = build_volume(
+        data,
+        ChfBuildOptions {
+            level,
+            strict,
+            threads,
+        },
+    )?;
     let build_seconds = start.elapsed().as_secs_f64();
     progress.step("summarising".to_string());
     let out = VolumeJson {
@@ -420,7 +446,7 @@ fn check_volume(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
         data,
         ChfBuildOptions {
             level: 1,
-            strict: false,
+            ..ChfBuildOptions::default()
         },
     )?;
     let r = chf.report();
@@ -575,12 +601,12 @@ fn median(mut times: Vec<f64>) -> f64 {
     times[times.len() / 2]
 }
 
-fn bench(file: Option<&Path>, repeat: usize) -> Result<ExitCode, Error> {
+fn bench(file: Option<&Path>, repeat: usize, threads: usize) -> Result<ExitCode, Error> {
     let progress = Progress::new();
     let (name, data) = load(file, &progress)?;
     drop(progress);
     if data.is_volume() {
-        return bench_volume(&name, &data, repeat);
+        return bench_volume(&name, &data, repeat, threads);
     }
     let t = data.triangles.len().max(1) as f64;
     println!(
@@ -610,7 +636,12 @@ fn bench(file: Option<&Path>, repeat: usize) -> Result<ExitCode, Error> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn bench_volume(name: &str, data: &MeshData, repeat: usize) -> Result<ExitCode, Error> {
+fn bench_volume(
+    name: &str,
+    data: &MeshData,
+    repeat: usize,
+    threads: usize,
+) -> Result<ExitCode, Error> {
     let t = data.tetrahedra.len().max(1) as f64;
     println!(
         "{name}: {} tetrahedra, median of {repeat}",
@@ -626,6 +657,7 @@ fn bench_volume(name: &str, data: &MeshData, repeat: usize) -> Result<ExitCode, 
                 ChfBuildOptions {
                     level,
                     strict: false,
+                    threads,
                 },
             )?);
             times.push(start.elapsed().as_secs_f64());

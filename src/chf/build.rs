@@ -21,6 +21,9 @@ pub struct ChfBuildOptions {
     /// Reject non-manifold faces, edges and vertices and duplicate tetrahedra instead of
     /// keeping them.
     pub strict: bool,
+    /// Threads for the build: 0 (the default) for as many as the machine runs at once, 1
+    /// for the calling thread alone. The structure is the same whatever the number.
+    pub threads: usize,
 }
 
 impl Default for ChfBuildOptions {
@@ -28,6 +31,7 @@ impl Default for ChfBuildOptions {
         ChfBuildOptions {
             level: 2,
             strict: false,
+            threads: 0,
         }
     }
 }
@@ -38,6 +42,15 @@ impl ChfBuildOptions {
             level,
             ..Self::default()
         }
+    }
+}
+
+/// `threads` of [`ChfBuildOptions`], 0 made concrete.
+pub(crate) fn threads(threads: usize) -> usize {
+    if threads == 0 {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    } else {
+        threads
     }
 }
 
@@ -69,15 +82,16 @@ pub(crate) fn build(
     // One pass over the vertex stars: faces and their pairs, pieces, edges, and `VH` and the
     // edge bits for level 2. Level 0 keeps no pairs unless it must orient or split.
     let tables = options.level >= 2;
+    let n_threads = threads(options.threads);
     let first_pairs = if options.level == 0 {
         Pairs::Census
     } else {
         Pairs::Partners
     };
-    let mut stars = stars::stars(&soup.v, n_vertices, &[], first_pairs, tables);
+    let mut stars = stars::stars(&soup.v, n_vertices, &[], first_pairs, tables, n_threads);
     let (faces, mut partner) = stars.faces.take().expect("faces were asked for");
     if partner.is_empty() && (faces.same_direction || stars.split_needed) {
-        partner = stars::stars(&soup.v, n_vertices, &[], Pairs::Partners, false)
+        partner = stars::stars(&soup.v, n_vertices, &[], Pairs::Partners, false, n_threads)
             .faces
             .expect("faces were asked for")
             .1;
@@ -145,7 +159,14 @@ pub(crate) fn build(
                 *hf = flipped_id(*hf);
             }
         }
-        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, Pairs::No, tables);
+        stars = stars::stars(
+            &soup.v,
+            n_vertices,
+            &oriented.seams,
+            Pairs::No,
+            tables,
+            n_threads,
+        );
         (oriented.o, oriented.seams, oriented.links)
     };
     non_manifold.sort_unstable();
@@ -180,7 +201,7 @@ pub(crate) fn build(
     } else {
         // Every star is one piece now; the census groups by input pair.
         let flagged = merged(&non_manifold, &seams);
-        stars = stars::stars(&v, n_total, &flagged, Pairs::No, true);
+        stars = stars::stars(&v, n_total, &flagged, Pairs::No, true, n_threads);
         debug_assert!(!stars.split_needed);
         edges::census(&v, &stars.edge_bits, n_vertices, |x| {
             vertex_origin[x as usize]

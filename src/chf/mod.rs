@@ -174,7 +174,14 @@ impl Chf {
         }
         if self.level < 2 && level >= 2 {
             let flagged = build::merged(&self.non_manifold, &self.seams);
-            let stars = stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::No, true);
+            let stars = stars::stars(
+                &self.v,
+                self.n_vertices,
+                &flagged,
+                stars::Pairs::No,
+                true,
+                build::threads(0),
+            );
             debug_assert!(!stars.split_needed, "the build split every vertex");
             level2::build(self, stars.edge_bits, stars.vh);
             self.level = 2;

@@ -1,11 +1,16 @@
-//! Writing `O` from pairs found in any order. A random write per half-face would miss the
-//! cache on a large mesh (twins are far apart in memory), so each pair is first appended,
-//! in both directions, to the window of half-faces its first half-face falls in (at most
-//! 4096 windows: a few sequential write streams); `finish` then fills `O` one window at a
-//! time, in cache. A window has room for one record per half-face, which is all it can
-//! receive: 8 bytes per half-face until `finish`.
+//! Writing `O` from pairs found in any order, by any number of threads. A random write per
+//! half-face would miss the cache on a large mesh (twins are far apart in memory), so each
+//! pair is first appended, in both directions, to the window of half-faces its first
+//! half-face falls in (at most 512 windows: a few sequential write streams); `finish` then
+//! fills `O` one window at a time, in cache. A window has room for one record per
+//! half-face, which is all it can receive: 8 bytes per half-face until `finish`.
+//!
+//! Threads share the windows: each stages a cache line of records per window
+//! ([`Writer`]) and claims room for it with one atomic add, so that the windows fill in no
+//! particular order, which `finish` does not need (each half-face has one record).
 
 use crate::NONE;
+use std::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
 
 const WINDOWS_BITS: u32 = 9;
 
@@ -14,10 +19,15 @@ pub(crate) struct Opposites {
     shift: u32,
     /// Window `w` is `records[w << shift ..]`, filled up to `fill[w]`; a record is
     /// `(h << 32) | g` for `O[h] = g`.
-    records: Vec<u64>,
-    fill: Vec<u32>,
-    /// Per window, the last records not yet written (a cache line's worth): written
-    /// together they cost one miss, against one per record written alone.
+    records: Vec<AtomicU64>,
+    fill: Vec<AtomicU32>,
+}
+
+/// One thread's way into [`Opposites`]: per window, the last records not yet written (a
+/// cache line's worth): written together they cost one miss and one atomic add, against
+/// one each per record written alone.
+pub(crate) struct Writer<'a> {
+    to: &'a Opposites,
     staged: Vec<[u64; STAGE]>,
     staged_len: Vec<u8>,
 }
@@ -29,16 +39,65 @@ impl Opposites {
         let bits = usize::BITS - n_hf.saturating_sub(1).leading_zeros();
         let shift = bits.saturating_sub(WINDOWS_BITS);
         let n_windows = (n_hf.saturating_sub(1) >> shift) + 1;
+        let records: Vec<u64> = crate::pages::zeroed(n_hf);
         Opposites {
             n_hf,
             shift,
-            records: crate::pages::zeroed(n_hf),
-            fill: (0..n_windows as u32).map(|w| w << shift).collect(),
+            // In place (same size and alignment): no copy, the pages stay untouched.
+            records: records.into_iter().map(AtomicU64::new).collect(),
+            fill: (0..n_windows as u32)
+                .map(|w| AtomicU32::new(w << shift))
+                .collect(),
+        }
+    }
+
+    pub(crate) fn writer(&self) -> Writer<'_> {
+        let n_windows = self.fill.len();
+        Writer {
+            to: self,
             staged: vec![[0; STAGE]; n_windows],
             staged_len: vec![0; n_windows],
         }
     }
 
+    /// Appends `records` to window `w`.
+    #[inline]
+    fn append(&self, w: usize, records: &[u64]) {
+        let at = self.fill[w].fetch_add(records.len() as u32, Relaxed) as usize;
+        for (slot, &r) in self.records[at..at + records.len()].iter().zip(records) {
+            slot.store(r, Relaxed);
+        }
+    }
+
+    /// `O`, in `buffer`'s memory (its contents are dropped), and the records' memory for
+    /// the caller to reuse. Every writer must have been flushed.
+    pub(crate) fn finish(self, buffer: Vec<u32>) -> (Vec<u32>, Vec<u64>) {
+        let mut o = buffer;
+        o.clear();
+        if o.capacity() < self.n_hf {
+            // Too small: let it go before the new one comes (the build's peak).
+            drop(o);
+            o = crate::pages::with_capacity(self.n_hf);
+        }
+        o.resize(self.n_hf, NONE);
+        // A buffer much larger than `O` gives the rest back (in place: no copy).
+        if o.capacity() - o.len() > o.len() / 16 {
+            o.shrink_to_fit();
+        }
+        for (w, end) in self.fill.iter().enumerate() {
+            for r in &self.records[w << self.shift..end.load(Relaxed) as usize] {
+                let r = r.load(Relaxed);
+                o[(r >> 32) as usize] = r as u32;
+            }
+        }
+        let mut records = self.records;
+        records.clear();
+        // Empty, so in place and without a pass: the memory only.
+        (o, records.into_iter().map(AtomicU64::into_inner).collect())
+    }
+}
+
+impl Writer<'_> {
     /// `O[h] = g` and `O[g] = h`. Each half-face is paired at most once.
     #[inline]
     pub(crate) fn pair(&mut self, h: u32, g: u32) {
@@ -48,39 +107,21 @@ impl Opposites {
 
     #[inline]
     fn push(&mut self, h: u32, g: u32) {
-        let w = (h >> self.shift) as usize;
+        let w = (h >> self.to.shift) as usize;
         let len = &mut self.staged_len[w];
         self.staged[w][*len as usize] = ((h as u64) << 32) | g as u64;
         *len += 1;
         if *len as usize == STAGE {
             *len = 0;
-            let at = self.fill[w] as usize;
-            self.records[at..at + STAGE].copy_from_slice(&self.staged[w]);
-            self.fill[w] += STAGE as u32;
+            self.to.append(w, &self.staged[w]);
         }
     }
 
-    /// `O`, in `buffer`'s memory (its contents are dropped), and the records' memory for
-    /// the caller to reuse.
-    pub(crate) fn finish(mut self, buffer: Vec<u32>) -> (Vec<u32>, Vec<u64>) {
-        for w in 0..self.fill.len() {
-            let (at, len) = (self.fill[w] as usize, self.staged_len[w] as usize);
-            self.records[at..at + len].copy_from_slice(&self.staged[w][..len]);
-            self.fill[w] += len as u32;
+    /// Writes what is still staged.
+    pub(crate) fn flush(self) {
+        for (w, (staged, &len)) in self.staged.iter().zip(&self.staged_len).enumerate() {
+            self.to.append(w, &staged[..len as usize]);
         }
-        let mut o = buffer;
-        o.clear();
-        o.resize(self.n_hf, NONE);
-        // A buffer much larger than `O` gives the rest back (in place: no copy).
-        if o.capacity() - o.len() > o.len() / 16 {
-            o.shrink_to_fit();
-        }
-        for (w, &end) in self.fill.iter().enumerate() {
-            for &r in &self.records[w << self.shift..end as usize] {
-                o[(r >> 32) as usize] = r as u32;
-            }
-        }
-        (o, self.records)
     }
 }
 
@@ -91,7 +132,7 @@ mod tests {
     #[test]
     fn pairs_land_in_place() {
         for n in [0usize, 1, 2, 5, 4096, 4097, 100_000] {
-            let mut o = Opposites::new(n);
+            let o = Opposites::new(n);
             let mut expected = vec![NONE; n];
             // Pair i with n - 1 - i for every third i, in a scrambled order.
             let mut pairs: Vec<(u32, u32)> = (0..n as u32 / 2)
@@ -99,11 +140,13 @@ mod tests {
                 .map(|i| (n as u32 - 1 - i, i))
                 .collect();
             pairs.reverse();
+            let mut w = o.writer();
             for &(h, g) in &pairs {
-                o.pair(h, g);
+                w.pair(h, g);
                 expected[h as usize] = g;
                 expected[g as usize] = h;
             }
+            w.flush();
             assert_eq!(o.finish(vec![7; 3]).0, expected, "n = {n}");
         }
     }

@@ -16,8 +16,10 @@
 //! windows (`pairs.rs`, [`bits_from_slots`]).
 
 use super::edges::EdgeCensus;
+use super::edges::MultiFan;
 use super::link::{FaceCensus, Link, Record, Sums};
-use super::pairs::Opposites;
+use super::pairs::{Opposites, Writer};
+use super::report::push_example;
 use crate::NONE;
 use crate::rank::RankBits;
 
@@ -55,15 +57,23 @@ pub(crate) enum Pairs {
     Opposites,
 }
 
+/// Below this many tetrahedra the pass runs on the calling thread alone (starting threads
+/// would cost more than they save).
+const PARALLEL_MIN_TETRAHEDRA: usize = 1 << 16;
+
 /// The pass over `V`. `flagged` (sorted) are half-faces never to pair: the build's
 /// non-manifold faces and seams once `V` is split or oriented. With `tables`, also `VH` and
-/// the edge bits (level 2); without, the build keeps less memory at levels 0 and 1.
+/// the edge bits (level 2); without, the build keeps less memory at levels 0 and 1. The
+/// stars of each round are shared among up to `threads` threads (contiguous ranges of
+/// vertices), and what they find is added up in vertex order: the answer does not depend
+/// on the number of threads.
 pub(crate) fn stars(
     v: &[u32],
     n_vertices: usize,
     flagged: &[u32],
     pairs: Pairs,
     tables: bool,
+    threads: usize,
 ) -> Stars {
     let faces = pairs != Pairs::No;
     let collect = matches!(pairs, Pairs::Partners | Pairs::Opposites);
@@ -72,38 +82,58 @@ pub(crate) fn stars(
     // (past 2^24 vertices there are more than 256 coarse buckets).
     let shift = bits.saturating_sub(COARSE_BITS).min(16);
     let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
-    let mut count = vec![0u32; n_coarse + 1];
-    for &x in v {
-        count[(x >> shift) as usize] += 1;
-    }
-    let mut census = FaceCensus::default();
-    let mut opposites = Opposites::new(if collect { v.len() } else { 0 });
-    let mut sums = Sums {
+    let threads = if v.len() / 4 < PARALLEL_MIN_TETRAHEDRA {
+        1
+    } else {
+        threads.clamp(1, n_coarse)
+    };
+    // Each thread scatters the occurrences of a part of the tetrahedra (contiguous, so that
+    // the parts one after the other keep the tetrahedron order) to records of its own.
+    let part_len = (v.len() / 4).div_ceil(threads) * 4;
+    let parts: Vec<&[u32]> = v.chunks(part_len.max(4)).collect();
+    let part_counts = crate::par::run_all(parts.clone(), |part| {
+        let mut count = vec![0u32; n_coarse];
+        for &x in part {
+            count[(x >> shift) as usize] += 1;
+        }
+        count
+    });
+    let count: Vec<u32> = (0..n_coarse)
+        .map(|c| part_counts.iter().map(|p| p[c]).sum())
+        .collect();
+    let opposites = Opposites::new(if collect { v.len() } else { 0 });
+    let mut vh = if tables {
+        crate::pages::filled(n_vertices, NONE)
+    } else {
+        Vec::new()
+    };
+    // About one edge per vertex and per tetrahedron, plus one per boundary face pair
+    // (Euler): reserved at once, so that growing by doubling copies nothing at the peak
+    // (with a margin per thread, whose share of the edges is not known in advance).
+    let edge_estimate = n_vertices + v.len() / 4 + v.len() / 16;
+    let share = if threads == 1 {
+        edge_estimate
+    } else {
+        edge_estimate / threads + edge_estimate / 8
+    };
+    let mut workers: Vec<Worker> = (0..threads)
+        .map(|_| {
+            Worker::new(
+                n_vertices,
+                opposites.writer(),
+                if tables { share } else { 0 },
+            )
+        })
+        .collect();
+    let mode = &Mode {
         flagged,
-        faces: faces.then_some((&mut census, &mut opposites)),
+        faces,
         collect,
         partners: pairs == Pairs::Partners,
         tables,
-        split_needed: false,
-        vh: if tables {
-            crate::pages::filled(n_vertices, NONE)
-        } else {
-            Vec::new()
-        },
-        // About one edge per vertex and per tetrahedron, plus one per boundary face pair
-        // (Euler): reserved at once, so that growing by doubling copies nothing at the peak.
-        edge_slots: if tables {
-            crate::pages::with_capacity(n_vertices + v.len() / 4 + v.len() / 16)
-        } else {
-            Vec::new()
-        },
-        num_edges: 0,
-        input_edges: 0,
-        non_manifold_edges: 0,
-        non_manifold_edge_examples: Vec::new(),
-        multi_fan: Vec::new(),
+        shift,
     };
-    let mut link = Link::new(n_vertices);
+    let mut total = Tally::default();
     // Rounds of coarse buckets, so that the records stay under 16 bytes per tetrahedron
     // (all of them would take 80): as many `u32` as `O` has entries, so that `O` can then
     // take over the buffer (fresh memory costs a page fault per 4 KB).
@@ -112,100 +142,112 @@ pub(crate) fn stars(
     // pass over `V` (about 4% of the build; three rounds would take 27 bytes and lift the
     // level-2 peak to about twice the final size).
     let budget = (v.len() / if tables { 4 } else { 5 }).max(1 << 16);
-    let n_fine = 1usize << shift;
-    let mask = (n_fine - 1) as u32;
-    let mut fine_start = vec![0u32; n_fine + 1];
-    let mut cursor = vec![0u32; n_fine];
-    // Flat records, five `u32` each; one spare record at the end takes the writes of the
-    // occurrences outside the round (so that the scatter has no branch).
-    // (A small mesh reserves what its one round needs, not the budget.)
-    let mut records: Vec<u32> =
-        crate::pages::with_capacity(v.len().max(5 * (budget.min(v.len()) + 1)));
-    let mut local: Vec<Record> = Vec::new();
+    let mut rounds = Vec::new();
     let mut first = 0;
     while first < n_coarse {
         let mut last = first + 1;
-        let mut total = count[first] as usize;
-        while last < n_coarse && total + count[last] as usize <= budget {
-            total += count[last] as usize;
+        let mut in_round = count[first] as usize;
+        while last < n_coarse && in_round + count[last] as usize <= budget {
+            in_round += count[last] as usize;
             last += 1;
         }
-        let span = (last - first) as u32;
-        let mut start = vec![0u32; last - first + 2];
-        for c in first..last {
-            start[c - first + 1] = start[c - first] + count[c];
-        }
-        let mut fill = start.clone();
-        // The spare record, never advanced.
-        fill[span as usize] = total as u32;
-        // Grown once to the largest round; never cleared (every record is overwritten).
-        if records.len() < 5 * (total + 1) {
-            records.resize(5 * (total + 1), 0);
-        }
-        for (t, q) in v.chunks_exact(4).enumerate() {
-            for i in 0..4u32 {
-                let x = q[i as usize];
-                let c = (x >> shift).wrapping_sub(first as u32);
-                let inside = c < span;
-                let bucket = if inside { c } else { span } as usize;
-                let [a, b, c] = super::link::OTHERS[i as usize].map(|j| q[j as usize]);
-                let at = 5 * fill[bucket] as usize;
-                records[at..at + 5].copy_from_slice(&[4 * t as u32 + i, x, a, b, c]);
-                fill[bucket] += inside as u32;
-            }
-        }
-        drop(fill);
-        for c in first..last {
-            let bucket = &records[5 * start[c - first] as usize..5 * start[c - first + 1] as usize];
-            if bucket.is_empty() {
-                continue;
-            }
-            let bucket = || {
-                bucket
-                    .chunks_exact(5)
-                    .map(|r| [r[0], r[1], r[2], r[3], r[4]])
-            };
-            fine_start.fill(0);
-            for r in bucket() {
-                fine_start[(r[1] & mask) as usize + 1] += 1;
-            }
-            for i in 0..n_fine {
-                fine_start[i + 1] += fine_start[i];
-            }
-            let size = fine_start[n_fine] as usize;
-            if local.len() < size {
-                local.resize(size, [0; 5]);
-            }
-            cursor.copy_from_slice(&fine_start[..n_fine]);
-            for r in bucket() {
-                let slot = &mut cursor[(r[1] & mask) as usize];
-                local[*slot as usize] = r;
-                *slot += 1;
-            }
-            for i in 0..n_fine {
-                let star = &local[fine_start[i] as usize..fine_start[i + 1] as usize];
-                if !star.is_empty() {
-                    link.star(star, &mut sums);
-                }
-            }
-        }
+        rounds.push((first, last));
         first = last;
     }
-    let Sums {
+    // Flat records, five `u32` each, per part; one spare record at the end takes the writes
+    // of the occurrences outside the round (so that the scatter has no branch). Each is
+    // made once, as large as its largest round needs.
+    let mut records: Vec<Vec<u32>> = part_counts
+        .iter()
+        .map(|pc| {
+            let most = rounds
+                .iter()
+                .map(|&(a, b)| pc[a..b].iter().map(|&c| c as usize).sum::<usize>())
+                .max()
+                .unwrap_or(0);
+            crate::pages::with_capacity(5 * (most + 1))
+        })
+        .collect();
+    for &(first, last) in &rounds {
+        let jobs: Vec<_> = parts
+            .iter()
+            .zip(&part_counts)
+            .zip(records.iter_mut())
+            .enumerate()
+            .map(|(j, ((&part, pc), rec))| (j * part_len / 4, part, &pc[first..last], rec))
+            .collect();
+        let starts = crate::par::run_all(jobs, |(t0, part, pc, rec)| {
+            scatter(part, t0 as u32, pc, first as u32, shift, rec)
+        });
+        // Each thread takes a run of coarse buckets with about its share of the records.
+        let in_round: usize = count[first..last].iter().map(|&c| c as usize).sum();
+        let mut cuts = vec![first];
+        let mut acc = 0;
+        for (c, &n) in count.iter().enumerate().take(last).skip(first) {
+            acc += n as usize;
+            if cuts.len() < workers.len() && acc * workers.len() >= in_round * cuts.len() {
+                cuts.push(c + 1);
+            }
+        }
+        while cuts.len() <= workers.len() {
+            cuts.push(last);
+        }
+        let mut jobs = Vec::with_capacity(workers.len());
+        let mut vh_rest = if tables {
+            let from = (first << shift).min(n_vertices);
+            &mut vh[from..]
+        } else {
+            &mut []
+        };
+        for (k, worker) in workers.iter_mut().enumerate() {
+            let (a, b) = (cuts[k] - first, cuts[k + 1] - first);
+            let vh_base = ((first + a) << shift).min(n_vertices);
+            let vh_len = if tables {
+                ((first + b) << shift).min(n_vertices) - vh_base
+            } else {
+                0
+            };
+            let (mine, rest) = std::mem::take(&mut vh_rest).split_at_mut(vh_len);
+            vh_rest = rest;
+            // Bucket `c` of this run, from every part in turn.
+            let buckets: Vec<Vec<&[u32]>> = (a..b)
+                .map(|c| {
+                    records
+                        .iter()
+                        .zip(&starts)
+                        .map(|(r, st)| &r[5 * st[c] as usize..5 * st[c + 1] as usize])
+                        .collect()
+                })
+                .collect();
+            jobs.push((worker, buckets, mine, vh_base));
+        }
+        let tallies = crate::par::run_all(jobs, |(w, buckets, vh, base)| {
+            w.round(&buckets, vh, base, mode)
+        });
+        for t in tallies {
+            total.add(t);
+        }
+    }
+    let mut edge_slots = Vec::with_capacity(workers.len());
+    for w in workers {
+        w.pairs.flush();
+        edge_slots.push(w.edge_slots);
+    }
+    let Tally {
         split_needed,
-        vh,
-        edge_slots,
         num_edges,
         input_edges,
         non_manifold_edges,
         non_manifold_edge_examples,
         mut multi_fan,
-        ..
-    } = sums;
+        census,
+    } = total;
     // The pairs' memory then serves the edge bits.
     let (o, scratch) = if collect {
-        let (o, scratch) = opposites.finish(records);
-        (o, scratch)
+        let mut records = records.into_iter();
+        let buffer = records.next().unwrap_or_default();
+        drop(records);
+        opposites.finish(buffer)
     } else {
         (Vec::new(), Vec::new())
     };
@@ -224,27 +266,232 @@ pub(crate) fn stars(
         kept_examples: non_manifold_edge_examples,
         multi_fan,
     };
-    let faces_out = faces.then_some((census, o));
     Stars {
         split_needed,
         num_edges,
         vh,
         edge_bits,
         census: edge_census,
-        faces: faces_out,
+        faces: faces.then_some((census, o)),
+    }
+}
+
+/// Scatters the occurrences in `part` (tetrahedra from `t0` on) of the vertices of the
+/// coarse buckets from `first` on (`count`: how many each has in `part`) to their bucket, in
+/// tetrahedron order (records of five `u32`: see [`Record`]). Returns where each bucket
+/// starts in `records`, in records.
+fn scatter(
+    part: &[u32],
+    t0: u32,
+    count: &[u32],
+    first: u32,
+    shift: u32,
+    records: &mut Vec<u32>,
+) -> Vec<u32> {
+    let span = count.len() as u32;
+    let mut start = vec![0u32; count.len() + 2];
+    for (c, &n) in count.iter().enumerate() {
+        start[c + 1] = start[c] + n;
+    }
+    let in_round = start[count.len()];
+    let mut fill = start.clone();
+    // The spare record, never advanced.
+    fill[span as usize] = in_round;
+    // Grown once to the largest round; never cleared (every record is overwritten).
+    if records.len() < 5 * (in_round as usize + 1) {
+        records.resize(5 * (in_round as usize + 1), 0);
+    }
+    for (t, q) in part.chunks_exact(4).enumerate() {
+        let t = t0 + t as u32;
+        for i in 0..4u32 {
+            let x = q[i as usize];
+            let c = (x >> shift).wrapping_sub(first);
+            let inside = c < span;
+            let bucket = if inside { c } else { span } as usize;
+            let [a, b, c] = super::link::OTHERS[i as usize].map(|j| q[j as usize]);
+            let at = 5 * fill[bucket] as usize;
+            records[at..at + 5].copy_from_slice(&[4 * t + i, x, a, b, c]);
+            fill[bucket] += inside as u32;
+        }
+    }
+    start.truncate(count.len() + 1);
+    start
+}
+
+/// What every thread of the pass needs to know.
+struct Mode<'a> {
+    flagged: &'a [u32],
+    faces: bool,
+    collect: bool,
+    partners: bool,
+    tables: bool,
+    shift: u32,
+}
+
+/// What a thread's share of a round found, added up in vertex order.
+#[derive(Default)]
+struct Tally {
+    split_needed: bool,
+    num_edges: usize,
+    input_edges: usize,
+    non_manifold_edges: usize,
+    non_manifold_edge_examples: Vec<[u32; 2]>,
+    multi_fan: Vec<MultiFan>,
+    census: FaceCensus,
+}
+
+impl Tally {
+    /// Adds `t`, which covers vertices after all those of `self`.
+    fn add(&mut self, t: Tally) {
+        self.split_needed |= t.split_needed;
+        self.num_edges += t.num_edges;
+        self.input_edges += t.input_edges;
+        self.non_manifold_edges += t.non_manifold_edges;
+        for e in t.non_manifold_edge_examples {
+            push_example(&mut self.non_manifold_edge_examples, e);
+        }
+        self.multi_fan.extend(t.multi_fan);
+        let (a, b) = (&mut self.census, t.census);
+        a.input_faces += b.input_faces;
+        a.boundary_faces += b.boundary_faces;
+        a.non_manifold_faces += b.non_manifold_faces;
+        for e in b.non_manifold_face_examples {
+            push_example(&mut a.non_manifold_face_examples, e);
+        }
+        a.non_manifold.extend(b.non_manifold);
+        a.duplicates += b.duplicates;
+        for e in b.duplicate_examples {
+            push_example(&mut a.duplicate_examples, e);
+        }
+        a.same_direction |= b.same_direction;
+    }
+}
+
+/// One thread's scratch, kept from round to round.
+struct Worker<'o> {
+    link: Link,
+    pairs: Writer<'o>,
+    edge_slots: Vec<u64>,
+    local: Vec<Record>,
+    fine_start: Vec<u32>,
+    cursor: Vec<u32>,
+}
+
+impl<'o> Worker<'o> {
+    fn new(n_vertices: usize, pairs: Writer<'o>, edge_slots: usize) -> Self {
+        Worker {
+            link: Link::new(n_vertices),
+            pairs,
+            edge_slots: if edge_slots == 0 {
+                Vec::new()
+            } else {
+                crate::pages::with_capacity(edge_slots)
+            },
+            local: Vec::new(),
+            fine_start: Vec::new(),
+            cursor: Vec::new(),
+        }
+    }
+
+    /// The stars of a run of coarse buckets, each in records from every part in turn.
+    /// Sorts one coarse bucket at a time, in cache, by the low bits of the vertex, then
+    /// hands each star to the link.
+    fn round(
+        &mut self,
+        buckets: &[Vec<&[u32]>],
+        vh: &mut [u32],
+        vh_base: usize,
+        mode: &Mode,
+    ) -> Tally {
+        let mut census = FaceCensus::default();
+        let mut sums = Sums {
+            flagged: mode.flagged,
+            faces: mode.faces.then_some((&mut census, &mut self.pairs)),
+            collect: mode.collect,
+            partners: mode.partners,
+            tables: mode.tables,
+            split_needed: false,
+            vh,
+            vh_base,
+            edge_slots: &mut self.edge_slots,
+            num_edges: 0,
+            input_edges: 0,
+            non_manifold_edges: 0,
+            non_manifold_edge_examples: Vec::new(),
+            multi_fan: Vec::new(),
+        };
+        let n_fine = 1usize << mode.shift;
+        let mask = (n_fine - 1) as u32;
+        self.fine_start.resize(n_fine + 1, 0);
+        self.cursor.resize(n_fine, 0);
+        for parts in buckets {
+            let bucket = || {
+                parts
+                    .iter()
+                    .flat_map(|p| p.chunks_exact(5))
+                    .map(|r| [r[0], r[1], r[2], r[3], r[4]])
+            };
+            let fine_start = &mut self.fine_start;
+            fine_start.fill(0);
+            for r in bucket() {
+                fine_start[(r[1] & mask) as usize + 1] += 1;
+            }
+            for i in 0..n_fine {
+                fine_start[i + 1] += fine_start[i];
+            }
+            let size = fine_start[n_fine] as usize;
+            if size == 0 {
+                continue;
+            }
+            if self.local.len() < size {
+                self.local.resize(size, [0; 5]);
+            }
+            self.cursor.copy_from_slice(&fine_start[..n_fine]);
+            for r in bucket() {
+                let slot = &mut self.cursor[(r[1] & mask) as usize];
+                self.local[*slot as usize] = r;
+                *slot += 1;
+            }
+            for i in 0..n_fine {
+                let star = &self.local[fine_start[i] as usize..fine_start[i + 1] as usize];
+                if !star.is_empty() {
+                    self.link.star(star, &mut sums);
+                }
+            }
+        }
+        let Sums {
+            split_needed,
+            num_edges,
+            input_edges,
+            non_manifold_edges,
+            non_manifold_edge_examples,
+            multi_fan,
+            ..
+        } = sums;
+        Tally {
+            split_needed,
+            num_edges,
+            input_edges,
+            non_manifold_edges,
+            non_manifold_edge_examples,
+            multi_fan,
+            census,
+        }
     }
 }
 
 /// The rank bits of `n` slots with `slots` set: the slots are bucketed by window of bits
 /// first (at most 512 windows), then each window's bits are set in cache. `scratch` is
 /// memory to reuse.
-pub(crate) fn bits_from_slots(slots: &[u64], n: usize, scratch: Vec<u64>) -> RankBits {
+pub(crate) fn bits_from_slots(slots: &[Vec<u64>], n: usize, scratch: Vec<u64>) -> RankBits {
+    let n_slots: usize = slots.iter().map(Vec::len).sum();
+    let slots = || slots.iter().flatten();
     let bits = u64::BITS - (n as u64).saturating_sub(1).leading_zeros();
     // Windows of at least one word, so that each word is written by one window.
     let shift = bits.saturating_sub(COARSE_BITS).max(6);
     let n_windows = (n.saturating_sub(1) >> shift) + 1;
     let mut start = vec![0u32; n_windows + 1];
-    for &s in slots {
+    for &s in slots() {
         start[(s >> shift) as usize + 1] += 1;
     }
     for w in 0..n_windows {
@@ -253,8 +500,8 @@ pub(crate) fn bits_from_slots(slots: &[u64], n: usize, scratch: Vec<u64>) -> Ran
     let mut fill = start.clone();
     let mut low = scratch;
     low.clear();
-    low.resize(slots.len(), 0);
-    for &s in slots {
+    low.resize(n_slots, 0);
+    for &s in slots() {
         let f = &mut fill[(s >> shift) as usize];
         low[*f as usize] = s & ((1 << shift) - 1);
         *f += 1;
@@ -280,7 +527,7 @@ mod tests {
                 .filter(|s| s % 7 == 3 || s % 11 == 0)
                 .rev()
                 .collect();
-            let bits = bits_from_slots(&slots, n, Vec::new());
+            let bits = bits_from_slots(std::slice::from_ref(&slots), n, Vec::new());
             for s in 0..n {
                 assert_eq!(bits.get(s), s % 7 == 3 || s % 11 == 0, "n = {n}, slot {s}");
             }
@@ -327,7 +574,7 @@ mod against_walks {
                 .collect();
             let chf = Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(1)).unwrap();
             let flagged = crate::chf::build::merged(&chf.non_manifold, &chf.seams);
-            let stars = stars(&chf.v, chf.n_vertices, &flagged, Pairs::Opposites, true);
+            let stars = stars(&chf.v, chf.n_vertices, &flagged, Pairs::Opposites, true, 1);
             assert!(!stars.split_needed);
             let walked = edges::canonical_slots(&chf.v, &chf.o);
             let n_slots = 6 * chf.num_tetrahedra();

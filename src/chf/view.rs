@@ -65,8 +65,15 @@ impl Chf {
             (false, true) => {
                 let flagged = super::build::merged(&self.non_manifold, &self.seams);
                 Cow::Owned(
-                    stars::stars(&self.v, self.n_vertices, &flagged, stars::Pairs::No, true)
-                        .edge_bits,
+                    stars::stars(
+                        &self.v,
+                        self.n_vertices,
+                        &flagged,
+                        stars::Pairs::No,
+                        true,
+                        1,
+                    )
+                    .edge_bits,
                 )
             }
             (false, false) => Cow::Owned(RankBits::default()),
@@ -94,6 +101,7 @@ impl Chf {
             &flagged,
             stars::Pairs::Opposites,
             false,
+            1,
         )
         .faces;
         faces.expect("faces were asked for").1

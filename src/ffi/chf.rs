@@ -54,6 +54,9 @@ pub struct ChfBuildOptions {
     /// and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
     /// the offending ids) instead of keeping them (default false).
     pub strict: bool,
+    /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
+    /// the calling thread alone. The mesh is the same whatever the number.
+    pub threads: u32,
 }
 
 impl Default for ChfBuildOptions {
@@ -62,6 +65,7 @@ impl Default for ChfBuildOptions {
         ChfBuildOptions {
             level: d.level as u32,
             strict: d.strict,
+            threads: d.threads as u32,
         }
     }
 }
@@ -71,11 +75,12 @@ impl ChfBuildOptions {
         Ok(CoreOptions {
             level: level_arg(self.level)?,
             strict: self.strict,
+            threads: self.threads as usize,
         })
     }
 }
 
-/// The default CHF build options: level 2, not strict.
+/// The default CHF build options: level 2, not strict, every thread of the machine.
 #[unsafe(no_mangle)]
 pub extern "C" fn chf_build_options_default() -> ChfBuildOptions {
     ChfBuildOptions::default()

@@ -77,7 +77,7 @@ impl Link {
         // `VH`: the first unpaired half-face, else the first half-face.
         let c = if first_open == NONE { 0 } else { first_open };
         if sums.tables {
-            sums.vh[x as usize] = hf_of(&star[(c / 3) as usize], (c % 3) as usize);
+            sums.vh[x as usize - sums.vh_base] = hf_of(&star[(c / 3) as usize], (c % 3) as usize);
         }
 
         let edges = (3 * k - unpaired) / 2 + unpaired;

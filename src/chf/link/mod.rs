@@ -76,14 +76,14 @@ pub(crate) struct FaceCensus {
     pub same_direction: bool,
 }
 
-/// What the star of every vertex adds up to.
-pub(crate) struct Sums<'a> {
+/// What the stars of a range of vertices add up to (one thread's share of a round).
+pub(crate) struct Sums<'a, 'o> {
     /// Half-faces never paired (sorted): non-manifold faces and seams of the build, when
     /// `V` has been split or oriented since.
     pub flagged: &'a [u32],
     /// Record the faces and their pairs (only right on the build's first pass, before any
     /// split).
-    pub faces: Option<(&'a mut FaceCensus, &'a mut super::pairs::Opposites)>,
+    pub faces: Option<(&'a mut FaceCensus, &'a mut super::pairs::Writer<'o>)>,
     /// Collect the pairs (else count the faces only), and all pairs of two half-faces
     /// (else only the mates).
     pub collect: bool,
@@ -91,9 +91,11 @@ pub(crate) struct Sums<'a> {
     /// Fill `vh` and `edge_slots` (else count the edges only).
     pub tables: bool,
     pub split_needed: bool,
-    pub vh: Vec<u32>,
+    /// `VH` of the vertices from `vh_base` on (this thread's range).
+    pub vh: &'a mut [u32],
+    pub vh_base: usize,
     /// Canonical edge slots, in no order, and how many.
-    pub edge_slots: Vec<u64>,
+    pub edge_slots: &'a mut Vec<u64>,
     pub num_edges: usize,
     pub input_edges: usize,
     pub non_manifold_edges: usize,

@@ -156,7 +156,7 @@ impl Link {
             first_open as usize
         };
         if sums.tables {
-            sums.vh[x as usize] = hf_of(&star[c >> 2], c & 3);
+            sums.vh[x as usize - sums.vh_base] = hf_of(&star[c >> 2], c & 3);
         }
 
         let edges = (3 * k - unpaired) / 2 + unpaired;

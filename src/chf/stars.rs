@@ -90,7 +90,10 @@ pub(crate) fn stars(
     // Each thread scatters the occurrences of a part of the tetrahedra (contiguous, so that
     // the parts one after the other keep the tetrahedron order) to records of its own.
     let part_len = (v.len() / 4).div_ceil(threads) * 4;
-    let parts: Vec<&[u32]> = v.chunks(part_len.max(4)).collect();
+    let mut parts: Vec<&[u32]> = v.chunks(part_len.max(4)).collect();
+    if parts.is_empty() {
+        parts.push(v);
+    }
     let part_counts = crate::par::run_all(parts.clone(), |part| {
         let mut count = vec![0u32; n_coarse];
         for &x in part {
@@ -142,22 +145,33 @@ pub(crate) fn stars(
     // pass over `V` (about 4% of the build; three rounds would take 27 bytes and lift the
     // level-2 peak to about twice the final size).
     let budget = (v.len() / if tables { 4 } else { 5 }).max(1 << 16);
+    // Each part's records of a round fit in its share of the budget, so that the regions
+    // of all parts (each as large as its part's largest round) add up to the budget.
+    let share = budget.div_ceil(parts.len());
     let mut rounds = Vec::new();
     let mut first = 0;
     while first < n_coarse {
+        let mut in_round: Vec<usize> = part_counts.iter().map(|p| p[first] as usize).collect();
         let mut last = first + 1;
-        let mut in_round = count[first] as usize;
-        while last < n_coarse && in_round + count[last] as usize <= budget {
-            in_round += count[last] as usize;
+        while last < n_coarse
+            && part_counts
+                .iter()
+                .zip(&in_round)
+                .all(|(p, &n)| n + p[last] as usize <= share)
+        {
+            for (n, p) in in_round.iter_mut().zip(&part_counts) {
+                *n += p[last] as usize;
+            }
             last += 1;
         }
         rounds.push((first, last));
         first = last;
     }
-    // Flat records, five `u32` each, per part; one spare record at the end takes the writes
-    // of the occurrences outside the round (so that the scatter has no branch). Each is
-    // made once, as large as its largest round needs.
-    let mut records: Vec<Vec<u32>> = part_counts
+    // Flat records, five `u32` each, in one buffer cut in a region per part (each as large
+    // as the part's largest round needs, plus a spare record at its end that takes the
+    // writes of the occurrences outside the round, so that the scatter has no branch).
+    // One buffer, at least as large as `O`, so that `O` can then take it over.
+    let sizes: Vec<usize> = part_counts
         .iter()
         .map(|pc| {
             let most = rounds
@@ -165,20 +179,32 @@ pub(crate) fn stars(
                 .map(|&(a, b)| pc[a..b].iter().map(|&c| c as usize).sum::<usize>())
                 .max()
                 .unwrap_or(0);
-            crate::pages::with_capacity(5 * (most + 1))
+            5 * (most + 1)
+        })
+        .collect();
+    let mut records: Vec<u32> =
+        crate::pages::with_capacity(v.len().max(sizes.iter().sum::<usize>()));
+    records.resize(sizes.iter().sum(), 0);
+    // Never cleared: every record a round reads, it wrote. Where each region starts:
+    let regions: Vec<usize> = sizes
+        .iter()
+        .scan(0, |at, &n| {
+            *at += n;
+            Some(*at - n)
         })
         .collect();
     for &(first, last) in &rounds {
-        let jobs: Vec<_> = parts
-            .iter()
-            .zip(&part_counts)
-            .zip(records.iter_mut())
-            .enumerate()
-            .map(|(j, ((&part, pc), rec))| (j * part_len / 4, part, &pc[first..last], rec))
-            .collect();
+        let mut rest = &mut records[..];
+        let mut jobs = Vec::with_capacity(parts.len());
+        for (j, (&part, pc)) in parts.iter().zip(&part_counts).enumerate() {
+            let (mine, r) = std::mem::take(&mut rest).split_at_mut(sizes[j]);
+            rest = r;
+            jobs.push((j * part_len / 4, part, &pc[first..last], mine));
+        }
         let starts = crate::par::run_all(jobs, |(t0, part, pc, rec)| {
             scatter(part, t0 as u32, pc, first as u32, shift, rec)
         });
+        let records = &records[..];
         // Each thread takes a run of coarse buckets with about its share of the records.
         let in_round: usize = count[first..last].iter().map(|&c| c as usize).sum();
         let mut cuts = vec![first];
@@ -212,10 +238,12 @@ pub(crate) fn stars(
             // Bucket `c` of this run, from every part in turn.
             let buckets: Vec<Vec<&[u32]>> = (a..b)
                 .map(|c| {
-                    records
+                    regions
                         .iter()
                         .zip(&starts)
-                        .map(|(r, st)| &r[5 * st[c] as usize..5 * st[c + 1] as usize])
+                        .map(|(&lo, st)| {
+                            &records[lo + 5 * st[c] as usize..lo + 5 * st[c + 1] as usize]
+                        })
                         .collect()
                 })
                 .collect();
@@ -244,10 +272,7 @@ pub(crate) fn stars(
     } = total;
     // The pairs' memory then serves the edge bits.
     let (o, scratch) = if collect {
-        let mut records = records.into_iter();
-        let buffer = records.next().unwrap_or_default();
-        drop(records);
-        opposites.finish(buffer)
+        opposites.finish(records)
     } else {
         (Vec::new(), Vec::new())
     };
@@ -286,7 +311,7 @@ fn scatter(
     count: &[u32],
     first: u32,
     shift: u32,
-    records: &mut Vec<u32>,
+    records: &mut [u32],
 ) -> Vec<u32> {
     let span = count.len() as u32;
     let mut start = vec![0u32; count.len() + 2];
@@ -297,10 +322,7 @@ fn scatter(
     let mut fill = start.clone();
     // The spare record, never advanced.
     fill[span as usize] = in_round;
-    // Grown once to the largest round; never cleared (every record is overwritten).
-    if records.len() < 5 * (in_round as usize + 1) {
-        records.resize(5 * (in_round as usize + 1), 0);
-    }
+    debug_assert!(records.len() >= 5 * (in_round as usize + 1));
     for (t, q) in part.chunks_exact(4).enumerate() {
         let t = t0 + t as u32;
         for i in 0..4u32 {

@@ -207,6 +207,11 @@ typedef struct che_build_options {
      * (default false).
      */
     bool strict;
+    /**
+     * Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
+     * the calling thread alone. The mesh is the same whatever the number.
+     */
+    uint32_t threads;
 } che_build_options;
 
 /**
@@ -568,7 +573,7 @@ topomesh_status topomesh_last_error(char *buf, size_t cap, size_t *out_len);
 const char *topomesh_version(void);
 
 /**
- * The default build options: level 2, not strict.
+ * The default build options: level 2, not strict, every thread of the machine.
  */
 struct che_build_options che_build_options_default(void);
 

@@ -391,8 +391,8 @@ struct Csr {
 struct Options {
     std::uint32_t level = 2;
     bool strict = false;
-    /// Threads for a tetrahedral build (0: as many as the machine runs at once; the mesh is
-    /// the same whatever the number). Surfaces build on the calling thread.
+    /// Threads for the build (0: as many as the machine runs at once; the mesh is the same
+    /// whatever the number).
     std::uint32_t threads = 0;
 };
 
@@ -406,7 +406,7 @@ public:
     static Surface from_triangles(const std::uint32_t *triangles, std::size_t n_triangles,
                                   std::size_t n_vertices, const double *positions = nullptr,
                                   Options options = {}) {
-        che_build_options o{options.level, options.strict};
+        che_build_options o{options.level, options.strict, options.threads};
         che_mesh *m = nullptr;
         detail::check(che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions,
                                                  &o, &m));
@@ -432,7 +432,7 @@ public:
 
     /// Reads a surface file (.off .obj .ply .stl ...).
     static Surface load(const std::string &path, Options options = {}) {
-        che_build_options o{options.level, options.strict};
+        che_build_options o{options.level, options.strict, options.threads};
         che_mesh *m = nullptr;
         detail::check(che_mesh_load_ex(path.c_str(), &o, &m));
         return Surface(m);

@@ -1,5 +1,14 @@
 //! Running a few jobs at once on scoped threads (the standard library's; no pool).
 
+/// A build's `threads` option made concrete: 0 is as many as the machine runs at once.
+pub(crate) fn threads(threads: usize) -> usize {
+    if threads == 0 {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    } else {
+        threads
+    }
+}
+
 /// Runs `f` on every job, the first on the calling thread and each other one on a thread
 /// of its own, and returns the answers in the jobs' order. A panic in a job is resumed
 /// here, once every thread has stopped.

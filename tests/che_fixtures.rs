@@ -129,6 +129,7 @@ fn three_triangles_on_one_edge() {
         BuildOptions {
             level: 2,
             strict: true,
+            ..BuildOptions::default()
         },
     )
     .unwrap_err();
@@ -174,6 +175,7 @@ fn closed_surfaces_touching_at_a_vertex() {
         BuildOptions {
             level: 1,
             strict: true,
+            ..BuildOptions::default()
         },
     )
     .unwrap_err();
@@ -222,6 +224,7 @@ fn degenerate_and_duplicate_triangles() {
         BuildOptions {
             level: 1,
             strict: true,
+            ..BuildOptions::default()
         },
     );
     assert_eq!(strict.unwrap_err().kind, ErrorKind::NonManifold);
@@ -343,4 +346,87 @@ fn build_level_goes_up_and_down() {
     che.build_level(1).unwrap();
     assert_eq!(che.memory_bytes().topology, 4 * 6 * s.triangles.len());
     assert!(che.vertex_half_edges().is_none());
+}
+
+/// Everything a build produces that a thread count could change.
+fn fingerprint(che: &Che) -> String {
+    format!(
+        "{:?}",
+        (
+            (
+                che.half_edge_vertices(),
+                che.opposites(),
+                che.vertex_half_edges()
+            ),
+            (
+                che.edge_rank_directory(),
+                che.edge_half_edges(),
+                che.curve_half_edges()
+            ),
+            (che.num_vertices(), che.num_edges()),
+            (che.vertex_origins(), che.triangle_origins()),
+            (che.non_manifold_half_edges(), che.seam_half_edges()),
+            che.report(),
+        )
+    )
+}
+
+#[test]
+fn build_is_the_same_on_any_number_of_threads() {
+    // Large enough for the matching to share its pairs among threads, and damaged all over:
+    // triangles glued to an edge of others (non-manifold edges, duplicates among them) or
+    // a vertex (non-manifold vertices), random and degenerate ones, and every third
+    // triangle flipped (orientation). The report's examples must come in the same order.
+    let s = topomesh::generate::torus(320, 160);
+    let n = s.positions.len();
+    let mut x = 99u64;
+    let mut rnd = |m: usize| {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        (x % m as u64) as u32
+    };
+    let mut tris: Vec<[u32; 3]> = s
+        .triangles
+        .iter()
+        .enumerate()
+        .map(|(t, &[a, b, c])| if t % 3 == 0 { [a, c, b] } else { [a, b, c] })
+        .collect();
+    for k in 0..1500 {
+        let t = s.triangles[rnd(s.triangles.len()) as usize];
+        let mut extra = [0; 3].map(|_| rnd(n));
+        extra[..2 - k % 3].copy_from_slice(&t[..2 - k % 3]);
+        tris.push(extra);
+    }
+    let t = tris[17];
+    tris.push(t);
+    tris.push([5, 5, 9]);
+    assert!(3 * tris.len() > 1 << 18);
+    for level in 0..=3u8 {
+        let build = |threads| {
+            let options = BuildOptions {
+                level,
+                threads,
+                ..BuildOptions::default()
+            };
+            Che::from_triangles(&tris, n, &s.positions, options).unwrap()
+        };
+        let one = build(1);
+        let r = one.report();
+        assert!(
+            r.non_manifold_edges > 16
+                && r.duplicate_triangles > 0
+                && r.split_vertices > 0
+                && r.flipped_triangles > 0
+                && r.dropped_degenerate > 0,
+            "the damage reaches every path: {r:?}"
+        );
+        let expected = fingerprint(&one);
+        for threads in [2, 3, 8] {
+            assert!(
+                fingerprint(&build(threads)) == expected,
+                "level {level}, {threads} threads: not the single-threaded build"
+            );
+        }
+    }
 }

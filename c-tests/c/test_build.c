@@ -36,10 +36,17 @@ static void test_argument_errors(void) {
 
     /* Options. */
     che_build_options o = che_build_options_default();
-    CHECK(o.level == 2 && !o.strict);
+    CHECK(o.level == 2 && !o.strict && o.threads == 0);
     CHECK_OK(che_mesh_from_triangles_ex(STRIP, 2, 4, NULL, NULL, &m));
     CHECK(che_mesh_level(m) == 2);
     che_mesh_free(m);
+    for (uint32_t threads = 1; threads <= 3; ++threads) {
+        o.threads = threads;
+        CHECK_OK(che_mesh_from_triangles_ex(STRIP, 2, 4, NULL, &o, &m));
+        CHECK(che_mesh_num_triangles(m) == 2 && che_mesh_num_edges(m) == 5);
+        che_mesh_free(m);
+    }
+    o.threads = 0;
     o.level = 7;
     CHECK_STATUS(che_mesh_from_triangles_ex(STRIP, 2, 4, NULL, &o, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
     CHECK_STATUS(che_mesh_from_triangles_ex(STRIP, 2, 4, NULL, &o, NULL),
@@ -197,7 +204,7 @@ static void test_non_manifold_edge(void) {
     CHECK_IDS(ff, len, N_, N_, N_);
     che_mesh_free(m);
 
-    che_build_options o = {2, true};
+    che_build_options o = {2, true, 0};
     m = NULL;
     CHECK_STATUS(che_mesh_from_triangles_ex(FIN, 3, 5, NULL, &o, &m), TOPOMESH_STATUS_NON_MANIFOLD);
     CHECK(m == NULL);

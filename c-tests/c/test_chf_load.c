@@ -20,7 +20,7 @@ static void test_args(void) {
     CHECK_STATUS(chf_mesh_load("x.mesh", 4, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
     CHECK_STATUS(chf_mesh_load_ex(NULL, NULL, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(chf_mesh_load_ex("x.mesh", NULL, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    chf_build_options o = {9, false};
+    chf_build_options o = {9, false, 0};
     CHECK_STATUS(chf_mesh_load_ex("x.mesh", &o, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
     /* An unknown extension is not a mesh format. */
     write_file("chf-not-a-volume.xyz", "hello\n");
@@ -63,7 +63,7 @@ static void test_readers(void) {
         CHECK(s.flipped_tetrahedra == 0 && s.inverted_tetrahedra == 0);
         chf_mesh_free(m);
     }
-    chf_build_options o = {1, true};
+    chf_build_options o = {1, true, 0};
     chf_mesh *m = NULL;
     CHECK_OK(chf_mesh_load_ex("chf-pair.mesh", &o, &m));
     CHECK(m != NULL && chf_mesh_level(m) == 1);

@@ -19,7 +19,11 @@ fuzz_target!(|data: &[u8]| {
     let ids = &ids[..ids.len() / 3 * 3];
     let mut answers = Vec::new();
     for level in 0..=3 {
-        let options = BuildOptions { level, strict };
+        let options = BuildOptions {
+            level,
+            strict,
+            ..BuildOptions::default()
+        };
         let che = match Che::from_flat(ids, n_vertices, &[], options) {
             Ok(che) => che,
             Err(_) => return,

@@ -37,7 +37,7 @@ enum Command {
         /// Print JSON (the field names of `che_summary`).
         #[arg(long)]
         json: bool,
-        /// Threads for a tetrahedral build (0: as many as the machine runs at once).
+        /// Threads for the build (0: as many as the machine runs at once).
         #[arg(long, default_value_t = 0)]
         threads: usize,
     },
@@ -51,7 +51,7 @@ enum Command {
         /// Repetitions (the median is printed).
         #[arg(long, default_value_t = 5)]
         repeat: usize,
-        /// Threads for a tetrahedral build (0: as many as the machine runs at once).
+        /// Threads for the build (0: as many as the machine runs at once).
         #[arg(long, default_value_t = 0)]
         threads: usize,
     },
@@ -183,7 +183,14 @@ fn info(
         data.triangles.len()
     ));
     let start = Instant::now();
-    let che = build_surface(&data, BuildOptions { level, strict })?;
+    let che = build_surface(
+        &data,
+        BuildOptions {
+            level,
+            strict,
+            threads,
+        },
+    )?;
     let build_seconds = start.elapsed().as_secs_f64();
     progress.step("summarising".to_string());
     let out = InfoJson {
@@ -618,7 +625,14 @@ fn bench(file: Option<&Path>, repeat: usize, threads: usize) -> Result<ExitCode,
         let mut che = None;
         for _ in 0..repeat {
             let start = Instant::now();
-            che = Some(build_surface(&data, BuildOptions::level(level))?);
+            che = Some(build_surface(
+                &data,
+                BuildOptions {
+                    level,
+                    strict: false,
+                    threads,
+                },
+            )?);
             times.push(start.elapsed().as_secs_f64());
         }
         let che = che.expect("repeat >= 1");

@@ -1,7 +1,7 @@
 //! From a triangle list to a CHE: validate, drop degenerate triangles, match half-edges,
 //! orient, split non-manifold vertices, then build the requested level.
 
-use super::matching::{for_each_group, half_edge};
+use super::matching::{for_each_group_par, half_edge};
 use super::report::{BuildReport, push_example};
 use super::{Che, level2, level3, orient, split};
 use crate::NONE;
@@ -9,6 +9,7 @@ use crate::error::{Error, Result};
 use crate::rank::RankBits;
 use crate::rank_directory::RankDirectory;
 use glam::DVec3;
+use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
 /// How to build: the level (0..=3) and whether non-manifold input is an error.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -17,6 +18,9 @@ pub struct BuildOptions {
     /// Reject non-manifold edges, non-manifold vertices and duplicate triangles instead of
     /// repairing them.
     pub strict: bool,
+    /// Threads for the build: 0 (the default) for as many as the machine runs at once, 1
+    /// for the calling thread alone. The structure is the same whatever the number.
+    pub threads: usize,
 }
 
 impl Default for BuildOptions {
@@ -24,6 +28,7 @@ impl Default for BuildOptions {
         BuildOptions {
             level: 2,
             strict: false,
+            threads: 0,
         }
     }
 }
@@ -110,34 +115,57 @@ pub(crate) fn build(
         }
     };
 
-    // Match on unordered vertex pairs; pairs of exactly two are partners.
-    let mut partner = crate::pages::filled(v.len(), NONE);
-    let mut non_manifold: Vec<u32> = Vec::new();
-    let mut same_direction = false;
-    let mut duplicates: Vec<[u32; 2]> = Vec::new();
+    // Match on unordered vertex pairs; pairs of exactly two are partners. Threads take
+    // ranges of pairs and write the partners at random (relaxed atomic stores, plain ones
+    // on x86-64; the conversions in and out are in place and free); the rest is added up
+    // in pair order.
+    let partner: Vec<u32> = crate::pages::filled(v.len(), NONE);
+    let partner: Vec<AtomicU32> = partner.into_iter().map(AtomicU32::new).collect();
     // Direction bits (`V[h] < V[next(h)]`): 1 bit per half-edge stays in cache, where
     // reading `V` at both half-edges of every pair would miss it.
     let forward = direction_bits(&v);
     let is_forward = |h: u32| (forward[(h >> 6) as usize] >> (h & 63)) & 1 == 1;
-    for_each_group(&v, n_vertices, |a, b, group| {
-        report.input_edges += 1;
-        match group.len() {
-            1 => report.boundary_edges += 1,
-            2 => {
-                let (h, g) = (half_edge(group[0]), half_edge(group[1]));
-                partner[h as usize] = g;
-                partner[g as usize] = h;
-                same_direction |= is_forward(h) == is_forward(g);
+    let threads = crate::par::threads(options.threads);
+    let found = for_each_group_par(
+        &v,
+        n_vertices,
+        threads,
+        Matched::default,
+        |m, a, b, group| {
+            m.input_edges += 1;
+            match group.len() {
+                1 => m.boundary_edges += 1,
+                2 => {
+                    let (h, g) = (half_edge(group[0]), half_edge(group[1]));
+                    partner[h as usize].store(g, Relaxed);
+                    partner[g as usize].store(h, Relaxed);
+                    m.same_direction |= is_forward(h) == is_forward(g);
+                }
+                _ => {
+                    m.non_manifold_edges += 1;
+                    push_example(&mut m.examples, [a, b]);
+                    m.non_manifold.extend(group.iter().map(|&k| half_edge(k)));
+                    // Duplicates on a non-manifold edge; paired ones are found on `O` below.
+                    duplicates_on_edge(&v, group, &mut m.duplicates);
+                }
             }
-            _ => {
-                report.non_manifold_edges += 1;
-                push_example(&mut report.non_manifold_edge_examples, [a, b]);
-                non_manifold.extend(group.iter().map(|&k| half_edge(k)));
-                // Duplicates on a non-manifold edge; paired ones are found on `O` below.
-                duplicates_on_edge(&v, group, &mut duplicates);
-            }
+        },
+    );
+    let partner: Vec<u32> = partner.into_iter().map(AtomicU32::into_inner).collect();
+    let mut non_manifold: Vec<u32> = Vec::new();
+    let mut same_direction = false;
+    let mut duplicates: Vec<[u32; 2]> = Vec::new();
+    for m in found {
+        report.input_edges += m.input_edges;
+        report.boundary_edges += m.boundary_edges;
+        report.non_manifold_edges += m.non_manifold_edges;
+        for e in m.examples {
+            push_example(&mut report.non_manifold_edge_examples, e);
         }
-    });
+        non_manifold.extend(m.non_manifold);
+        duplicates.extend(m.duplicates);
+        same_direction |= m.same_direction;
+    }
     if options.strict {
         strict_checks(&report, &v, &non_manifold, &origin_of)?;
     }
@@ -179,7 +207,7 @@ pub(crate) fn build(
         )));
     }
 
-    let mut split = split::split(&mut v, &o, n_vertices, &seams);
+    let mut split = split::split(&mut v, &o, n_vertices, &seams, threads);
     report.split_vertices = split.split_vertices;
     report.split_vertex_examples = split.split_examples;
     report.seam_split_vertices = split.seam_split_vertices;
@@ -244,6 +272,18 @@ pub(crate) fn build(
         che.level = 3;
     }
     Ok(che)
+}
+
+/// What one thread's range of vertex pairs found.
+#[derive(Default)]
+struct Matched {
+    input_edges: usize,
+    boundary_edges: usize,
+    non_manifold_edges: usize,
+    examples: Vec<[u32; 2]>,
+    non_manifold: Vec<u32>,
+    duplicates: Vec<[u32; 2]>,
+    same_direction: bool,
 }
 
 fn direction_bits(v: &[u32]) -> Vec<u64> {

@@ -5,6 +5,9 @@
 use super::ids::next;
 use crate::NONE;
 
+/// Below this many half-edges the matching runs on the calling thread alone.
+const PARALLEL_MIN_HALF_EDGES: usize = 1 << 18;
+
 /// Calls `f(min, max, group)` for every unordered vertex pair of `v`, in increasing
 /// (min, max) order; `group` holds packed keys `(max << 32) | h` whose low 32 bits are the
 /// half-edges on that pair, in increasing order.
@@ -16,12 +19,46 @@ use crate::NONE;
 /// bits of the smaller vertex (the coarse bucket holds the rest): 8 bytes of fresh memory
 /// per half-edge instead of 12. Meshes too large for that (over about 30M triangles) keep
 /// the fine bits in a second array.
-pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, f: impl FnMut(u32, u32, &[u64])) {
-    groups(v, n_vertices, true, f)
+pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, f: impl FnMut(u32, u32, &[u64]) + Send) {
+    let mut f = Some(f);
+    groups(
+        v,
+        n_vertices,
+        true,
+        1,
+        || f.take().expect("one thread, one state"),
+        |f, a, b, g| f(a, b, g),
+    );
 }
 
-/// [`for_each_group`], with the packed keys allowed or not (tests take both paths).
-fn groups(v: &[u32], n_vertices: usize, allow_packed: bool, mut f: impl FnMut(u32, u32, &[u64])) {
+/// [`for_each_group`] on up to `threads` threads: each takes the pairs of a range of
+/// smaller vertices, in order, with a state of its own from `state()`; the states come
+/// back in the order of their ranges.
+pub(crate) fn for_each_group_par<S: Send>(
+    v: &[u32],
+    n_vertices: usize,
+    threads: usize,
+    state: impl FnMut() -> S,
+    f: impl Fn(&mut S, u32, u32, &[u64]) + Sync,
+) -> Vec<S> {
+    let threads = if v.len() < PARALLEL_MIN_HALF_EDGES {
+        1
+    } else {
+        threads
+    };
+    groups(v, n_vertices, true, threads, state, f)
+}
+
+/// [`for_each_group_par`] on `threads` threads whatever the size, with the packed keys
+/// allowed or not (tests take every path).
+fn groups<S: Send>(
+    v: &[u32],
+    n_vertices: usize,
+    allow_packed: bool,
+    threads: usize,
+    mut state: impl FnMut() -> S,
+    f: impl Fn(&mut S, u32, u32, &[u64]) + Sync,
+) -> Vec<S> {
     const COARSE_BITS: u32 = 11;
     let bits_of = |n: usize| usize::BITS - n.saturating_sub(1).leading_zeros();
     let vertex_bits = bits_of(n_vertices);
@@ -39,15 +76,25 @@ fn groups(v: &[u32], n_vertices: usize, allow_packed: bool, mut f: impl FnMut(u3
         let (a, b) = (v[h as usize], v[next(h) as usize]);
         (a.min(b), a.max(b))
     };
-
-    let mut start = vec![0u32; n_coarse + 1];
-    for h in 0..v.len() as u32 {
-        start[(ends(h).0 >> shift) as usize + 1] += 1;
-    }
-    for c in 0..n_coarse {
-        start[c + 1] += start[c];
-    }
-    let mut fill = start.clone();
+    let threads = threads.clamp(1, n_coarse);
+    // Each thread scatters a contiguous part of the half-edges to a region of its own of
+    // the keys, bucket after bucket; a coarse bucket is then its piece of every region in
+    // turn (in half-edge order).
+    let part_len = v.len().div_ceil(threads).max(1);
+    let parts: Vec<(u32, u32)> = (0..v.len())
+        .step_by(part_len)
+        .map(|a| (a as u32, (a + part_len).min(v.len()) as u32))
+        .collect();
+    let starts: Vec<Vec<u32>> = crate::par::run_all(parts.clone(), |(a, b)| {
+        let mut start = vec![0u32; n_coarse + 1];
+        for h in a..b {
+            start[(ends(h).0 >> shift) as usize + 1] += 1;
+        }
+        for c in 0..n_coarse {
+            start[c + 1] += start[c];
+        }
+        start
+    });
     let fine_mask = (1u32 << shift) - 1;
     let mut keys: Vec<u64> = crate::pages::zeroed(v.len());
     let mut mins: Vec<u32> = if packed {
@@ -55,73 +102,142 @@ fn groups(v: &[u32], n_vertices: usize, allow_packed: bool, mut f: impl FnMut(u3
     } else {
         crate::pages::zeroed(v.len())
     };
-    for h in 0..v.len() as u32 {
-        let (min, max) = ends(h);
-        let slot = &mut fill[(min >> shift) as usize];
-        let fine = if packed {
-            ((min & fine_mask) as u64) << fine_at
+    {
+        let mut min_parts: Vec<&mut [u32]> = if packed {
+            parts.iter().map(|_| &mut [][..]).collect()
         } else {
-            mins[*slot as usize] = min;
-            0
+            mins.chunks_mut(part_len).collect()
         };
-        keys[*slot as usize] = fine | ((max as u64) << max_at) | h as u64;
-        *slot += 1;
+        let jobs: Vec<_> = keys
+            .chunks_mut(part_len)
+            .zip(min_parts.drain(..))
+            .zip(parts.iter().zip(&starts))
+            .collect();
+        crate::par::run_all(jobs, |((keys, mins), (&(a, b), start))| {
+            let mut fill = start.clone();
+            for h in a..b {
+                let (min, max) = ends(h);
+                let slot = &mut fill[(min >> shift) as usize];
+                let fine = if packed {
+                    ((min & fine_mask) as u64) << fine_at
+                } else {
+                    mins[*slot as usize] = min;
+                    0
+                };
+                keys[*slot as usize] = fine | ((max as u64) << max_at) | h as u64;
+                *slot += 1;
+            }
+        });
     }
-    drop(fill);
 
-    // Second pass, one coarse bucket at a time: by the low bits of the smaller vertex.
-    let n_fine = 1usize << shift;
-    let mut fine_start = vec![0u32; n_fine + 1];
-    let mut local: Vec<u64> = Vec::new();
-    let h_mask = (1u64 << max_at) - 1;
-    let max_mask = (1u64 << (fine_at - max_at)) - 1;
-    let fine_of = |i: usize, k: u64| {
-        if packed {
-            (k >> fine_at) as u32 & fine_mask
-        } else {
-            mins[i] & fine_mask
-        }
-    };
+    // Each thread takes a run of coarse buckets with about its share of the half-edges.
+    let count = |c: usize| -> usize { starts.iter().map(|s| (s[c + 1] - s[c]) as usize).sum() };
+    let mut cuts = vec![0];
+    let mut acc = 0;
     for c in 0..n_coarse {
-        let range = start[c] as usize..start[c + 1] as usize;
-        if range.is_empty() {
-            continue;
+        acc += count(c);
+        if cuts.len() < threads && acc * threads >= v.len() * cuts.len() {
+            cuts.push(c + 1);
         }
-        let ck = &keys[range.clone()];
-        fine_start.fill(0);
-        for (i, &k) in range.clone().zip(ck) {
-            fine_start[fine_of(i, k) as usize + 1] += 1;
-        }
-        for i in 0..n_fine {
-            fine_start[i + 1] += fine_start[i];
-        }
-        local.clear();
-        local.resize(ck.len(), 0);
-        let mut cursor = fine_start.clone();
-        for (i, &k) in range.zip(ck) {
-            let slot = &mut cursor[fine_of(i, k) as usize];
-            // The group format: (max << 32) | h.
-            local[*slot as usize] = ((k >> max_at) & max_mask) << 32 | (k & h_mask);
-            *slot += 1;
-        }
-        for i in 0..n_fine {
-            let bucket = &mut local[fine_start[i] as usize..fine_start[i + 1] as usize];
-            if bucket.is_empty() {
+    }
+    while cuts.len() <= threads {
+        cuts.push(n_coarse);
+    }
+    let jobs: Vec<_> = cuts.windows(2).map(|w| (w[0], w[1], state())).collect();
+    let (keys, mins) = (&keys, &mins);
+    let (parts, starts) = (&parts, &starts);
+    let f = &f;
+    crate::par::run_all(jobs, |(first, last, mut s)| {
+        // Second pass, one coarse bucket at a time: by the low bits of the smaller vertex.
+        let n_fine = 1usize << shift;
+        let mut fine_start = vec![0u32; n_fine + 1];
+        let mut local: Vec<u64> = Vec::new();
+        let h_mask = (1u64 << max_at) - 1;
+        let max_mask = (1u64 << (fine_at - max_at)) - 1;
+        for c in first..last {
+            let len = count(c);
+            if len == 0 {
                 continue;
             }
-            if bucket.len() > 1 {
-                bucket.sort_unstable();
+            // The bucket's keys (and smaller vertices), part after part, with their fine bits.
+            let pieces = Pieces {
+                parts,
+                starts,
+                keys,
+                mins,
+                c,
+                fine: if packed { Some(fine_at) } else { None },
+                fine_mask,
+            };
+            fine_start.fill(0);
+            pieces.each(|fine, _| fine_start[fine as usize + 1] += 1);
+            for i in 0..n_fine {
+                fine_start[i + 1] += fine_start[i];
             }
-            let min = ((c << shift) | i) as u32;
-            let mut j = 0;
-            while j < bucket.len() {
-                let max = bucket[j] >> 32;
-                let mut k = j + 1;
-                while k < bucket.len() && bucket[k] >> 32 == max {
-                    k += 1;
+            local.clear();
+            local.resize(len, 0);
+            let mut cursor = fine_start.clone();
+            pieces.each(|fine, k| {
+                let slot = &mut cursor[fine as usize];
+                // The group format: (max << 32) | h.
+                local[*slot as usize] = ((k >> max_at) & max_mask) << 32 | (k & h_mask);
+                *slot += 1;
+            });
+            for i in 0..n_fine {
+                let bucket = &mut local[fine_start[i] as usize..fine_start[i + 1] as usize];
+                if bucket.is_empty() {
+                    continue;
                 }
-                f(min, max as u32, &bucket[j..k]);
-                j = k;
+                if bucket.len() > 1 {
+                    bucket.sort_unstable();
+                }
+                let min = ((c << shift) | i) as u32;
+                let mut j = 0;
+                while j < bucket.len() {
+                    let max = bucket[j] >> 32;
+                    let mut k = j + 1;
+                    while k < bucket.len() && bucket[k] >> 32 == max {
+                        k += 1;
+                    }
+                    f(&mut s, min, max as u32, &bucket[j..k]);
+                    j = k;
+                }
+            }
+        }
+        s
+    })
+}
+
+/// One coarse bucket of the keys: its piece of every part's region in turn.
+struct Pieces<'a> {
+    parts: &'a [(u32, u32)],
+    starts: &'a [Vec<u32>],
+    keys: &'a [u64],
+    mins: &'a [u32],
+    c: usize,
+    /// Where the fine bits sit in a packed key; `None`: in `mins`.
+    fine: Option<u32>,
+    fine_mask: u32,
+}
+
+impl Pieces<'_> {
+    /// `g(fine bits, key)` for every key of the bucket, in half-edge order.
+    #[inline(always)]
+    fn each(&self, mut g: impl FnMut(u32, u64)) {
+        let c = self.c;
+        for (&(a, _), st) in self.parts.iter().zip(self.starts) {
+            let range = a as usize + st[c] as usize..a as usize + st[c + 1] as usize;
+            match self.fine {
+                Some(at) => {
+                    for &k in &self.keys[range] {
+                        g((k >> at) as u32 & self.fine_mask, k);
+                    }
+                }
+                None => {
+                    for (&k, &m) in self.keys[range.clone()].iter().zip(&self.mins[range]) {
+                        g(m & self.fine_mask, k);
+                    }
+                }
             }
         }
     }
@@ -195,11 +311,13 @@ mod tests {
             }
             let expected: Vec<_> = expected.into_iter().collect();
             for packed in [true, false] {
-                let mut got = Vec::new();
-                groups(&v, n, packed, |a, b, g| {
-                    got.push(((a, b), g.iter().map(|&k| half_edge(k)).collect::<Vec<_>>()))
-                });
-                assert_eq!(got, expected, "n = {n}, packed {packed}");
+                for threads in [1, 3] {
+                    let got: Vec<_> = groups(&v, n, packed, threads, Vec::new, |got, a, b, g| {
+                        got.push(((a, b), g.iter().map(|&k| half_edge(k)).collect::<Vec<_>>()))
+                    })
+                    .concat();
+                    assert_eq!(got, expected, "n = {n}, packed {packed}, {threads} threads");
+                }
             }
         }
     }

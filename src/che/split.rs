@@ -52,8 +52,8 @@ fn walk_fan(o: &[u32], h: u32, visit: &mut impl FnMut(u32)) -> (u32, u32) {
 /// its number of them; then a walk from that half-edge must meet them all. The walks are
 /// dependent chains of random `O` loads, so `LANES` of them advance in step: their cache
 /// misses overlap instead of queueing.
-fn single_fans(v: &[u32], o: &[u32], n_vertices: usize) -> (Vec<u32>, Vec<u32>) {
-    const LANES: usize = 8;
+/// The walks share out among up to `threads` threads, each over a range of vertices.
+fn single_fans(v: &[u32], o: &[u32], n_vertices: usize, threads: usize) -> (Vec<u32>, Vec<u32>) {
     let mut vh = crate::pages::filled(n_vertices, NONE);
     let mut degree: Vec<u32> = crate::pages::zeroed(n_vertices);
     for h in (0..v.len() as u32).rev() {
@@ -61,6 +61,34 @@ fn single_fans(v: &[u32], o: &[u32], n_vertices: usize) -> (Vec<u32>, Vec<u32>) 
         vh[x] = h;
         degree[x] += 1;
     }
+    let threads = if v.len() < PARALLEL_MIN_HALF_EDGES {
+        1
+    } else {
+        threads.max(1)
+    };
+    let chunk = n_vertices.div_ceil(threads).max(1);
+    let jobs: Vec<_> = vh
+        .chunks_mut(chunk)
+        .zip(degree.chunks(chunk))
+        .enumerate()
+        .map(|(j, (vh, degree))| (j * chunk, vh, degree))
+        .collect();
+    let found = crate::par::run_all(jobs, |(first, vh, degree)| {
+        single_fans_of(o, first, vh, degree)
+    });
+    let mut several: Vec<u32> = found.concat();
+    several.sort_unstable();
+    (vh, several)
+}
+
+/// Below this many half-edges the walks run on the calling thread alone.
+const PARALLEL_MIN_HALF_EDGES: usize = 1 << 18;
+
+/// [`single_fans`] for the vertices from `first` on (`vh` and `degree` are theirs): sets
+/// their `VH` and returns those with several fans.
+fn single_fans_of(o: &[u32], first: usize, vh: &mut [u32], degree: &[u32]) -> Vec<u32> {
+    const LANES: usize = 8;
+    let n_vertices = vh.len();
     let mut several = Vec::new();
     let mut lane = [(0u32, 0u32, 0u32, false); LANES]; // (start, current, count, walking)
     let mut open: Vec<u32> = Vec::new();
@@ -96,7 +124,7 @@ fn single_fans(v: &[u32], o: &[u32], n_vertices: usize) -> (Vec<u32>, Vec<u32>) 
             if l.2 == NONE {
                 open.push(vertex);
             } else if l.2 != degree[vertex as usize] {
-                several.push(vertex);
+                several.push(first as u32 + vertex);
             }
         }
     }
@@ -106,11 +134,10 @@ fn single_fans(v: &[u32], o: &[u32], n_vertices: usize) -> (Vec<u32>, Vec<u32>) 
         if count == degree[x as usize] {
             vh[x as usize] = start;
         } else {
-            several.push(x);
+            several.push(first as u32 + x);
         }
     }
-    several.sort_unstable();
-    (vh, several)
+    several
 }
 
 pub(crate) struct Split {
@@ -132,8 +159,14 @@ pub(crate) struct Split {
 /// Most vertices are manifold: one walk from their first outgoing half-edge meets all of
 /// them ([`single_fans`], several walks at a time). Only the others take the general walk
 /// over every one of their half-edges, in half-edge order, which numbers the copies.
-pub(crate) fn split(v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32]) -> Split {
-    let (mut vh, several) = single_fans(v, o, n_vertices);
+pub(crate) fn split(
+    v: &mut [u32],
+    o: &[u32],
+    n_vertices: usize,
+    seams: &[u32],
+    threads: usize,
+) -> Split {
+    let (mut vh, several) = single_fans(v, o, n_vertices, threads);
     let mut copies: Vec<u32> = Vec::new();
     if !several.is_empty() {
         let mut pending = vec![0u64; n_vertices.div_ceil(64)];

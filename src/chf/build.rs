@@ -45,15 +45,6 @@ impl ChfBuildOptions {
     }
 }
 
-/// `threads` of [`ChfBuildOptions`], 0 made concrete.
-pub(crate) fn threads(threads: usize) -> usize {
-    if threads == 0 {
-        std::thread::available_parallelism().map_or(1, |n| n.get())
-    } else {
-        threads
-    }
-}
-
 /// Largest tetrahedron count whose half-face ids (`4T`) fit below `NONE`.
 pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
 
@@ -82,7 +73,7 @@ pub(crate) fn build(
     // One pass over the vertex stars: faces and their pairs, pieces, edges, and `VH` and the
     // edge bits for level 2. Level 0 keeps no pairs unless it must orient or split.
     let tables = options.level >= 2;
-    let n_threads = threads(options.threads);
+    let n_threads = crate::par::threads(options.threads);
     let first_pairs = if options.level == 0 {
         Pairs::Census
     } else {

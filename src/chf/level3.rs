@@ -131,7 +131,7 @@ fn surface(chf: &Chf, p: &Parts, level: u8) -> Result<Che> {
         &positions,
         BuildOptions {
             level,
-            strict: false,
+            ..BuildOptions::default()
         },
     )
 }

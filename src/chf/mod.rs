@@ -180,7 +180,7 @@ impl Chf {
                 &flagged,
                 stars::Pairs::No,
                 true,
-                build::threads(0),
+                crate::par::threads(0),
             );
             debug_assert!(!stars.split_needed, "the build split every vertex");
             level2::build(self, stars.edge_bits, stars.vh);

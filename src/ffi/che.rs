@@ -76,6 +76,9 @@ pub struct CheBuildOptions {
     /// `TOPOMESH_STATUS_NON_MANIFOLD` (detail: the offending ids) instead of repairing them
     /// (default false).
     pub strict: bool,
+    /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
+    /// the calling thread alone. The mesh is the same whatever the number.
+    pub threads: u32,
 }
 
 impl Default for CheBuildOptions {
@@ -84,6 +87,7 @@ impl Default for CheBuildOptions {
         CheBuildOptions {
             level: d.level as u32,
             strict: d.strict,
+            threads: d.threads as u32,
         }
     }
 }
@@ -102,11 +106,12 @@ impl CheBuildOptions {
         Ok(BuildOptions {
             level: level_arg(self.level)?,
             strict: self.strict,
+            threads: self.threads as usize,
         })
     }
 }
 
-/// The default build options: level 2, not strict.
+/// The default build options: level 2, not strict, every thread of the machine.
 #[unsafe(no_mangle)]
 pub extern "C" fn che_build_options_default() -> CheBuildOptions {
     CheBuildOptions::default()

@@ -56,17 +56,25 @@ fn build(c: &mut Criterion) {
                 che.num_vertices(),
                 che.num_edges()
             );
-            group.bench_with_input(BenchmarkId::new("level", level), &level, |b, &level| {
-                b.iter(|| {
-                    Che::from_triangles(
-                        black_box(&input.triangles),
-                        input.n_vertices,
-                        &[],
-                        BuildOptions::level(level),
-                    )
-                    .unwrap()
-                })
-            });
+            // One thread (the peers' condition) and the default, every thread.
+            for (threads, on) in [(1, "one thread"), (0, "all threads")] {
+                let id = BenchmarkId::new(format!("level, {on}"), level);
+                group.bench_with_input(id, &level, |b, &level| {
+                    b.iter(|| {
+                        Che::from_triangles(
+                            black_box(&input.triangles),
+                            input.n_vertices,
+                            &[],
+                            BuildOptions {
+                                level,
+                                strict: false,
+                                threads,
+                            },
+                        )
+                        .unwrap()
+                    })
+                });
+            }
         }
         group.finish();
     }

@@ -76,12 +76,17 @@ fn inputs() -> Vec<Input> {
     out
 }
 
-fn build_chf(input: &Input, level: u8) -> Chf {
+fn build_chf(input: &Input, level: u8, threads: usize) -> Chf {
+    let options = ChfBuildOptions {
+        level,
+        strict: false,
+        threads,
+    };
     Chf::from_tetrahedra(
         &input.tets,
         input.positions.len(),
         &input.positions,
-        ChfBuildOptions::level(level),
+        options,
     )
     .unwrap()
 }
@@ -92,7 +97,7 @@ fn build(c: &mut Criterion) {
         group.sample_size(10);
         group.throughput(Throughput::Elements(input.tets.len() as u64));
         for level in 1..=3u8 {
-            let chf = build_chf(&input, level);
+            let chf = build_chf(&input, level, 0);
             eprintln!(
                 "{} level {level}: {:.2} topology bytes per tetrahedron ({} V, {} E, {} F)",
                 input.name,
@@ -101,9 +106,13 @@ fn build(c: &mut Criterion) {
                 chf.num_edges(),
                 chf.num_faces()
             );
-            group.bench_with_input(BenchmarkId::new("level", level), &level, |b, &level| {
-                b.iter(|| build_chf(black_box(&input), level))
-            });
+            // One thread (CGAL's condition) and the default, every thread.
+            for (threads, on) in [(1, "one thread"), (0, "all threads")] {
+                let id = BenchmarkId::new(format!("level, {on}"), level);
+                group.bench_with_input(id, &level, |b, &level| {
+                    b.iter(|| build_chf(black_box(&input), level, threads))
+                });
+            }
         }
         group.finish();
     }
@@ -111,7 +120,7 @@ fn build(c: &mut Criterion) {
 
 fn sweeps(c: &mut Criterion) {
     for input in inputs() {
-        let chf = build_chf(&input, 2);
+        let chf = build_chf(&input, 2, 0);
         let nv = chf.num_vertices() as u32;
         let nt = chf.num_tetrahedra() as u32;
         let ne = chf.num_edges() as u32;

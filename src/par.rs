@@ -1,5 +1,7 @@
 //! Running a few jobs at once on scoped threads (the standard library's; no pool).
 
+use std::sync::Mutex;
+
 /// A build's `threads` option made concrete: 0 is as many as the machine runs at once.
 pub(crate) fn threads(threads: usize) -> usize {
     if threads == 0 {
@@ -10,23 +12,41 @@ pub(crate) fn threads(threads: usize) -> usize {
 }
 
 /// Runs `f` on every job, the first on the calling thread and each other one on a thread
-/// of its own, and returns the answers in the jobs' order. A panic in a job is resumed
-/// here, once every thread has stopped.
+/// of its own, and returns the answers in the jobs' order. A job whose thread cannot be
+/// started (the system refuses) runs on the calling thread instead. A panic in a job is
+/// resumed here, once every thread has stopped.
 pub(crate) fn run_all<J: Send, T: Send>(jobs: Vec<J>, f: impl Fn(J) -> T + Sync) -> Vec<T> {
     if jobs.len() <= 1 {
         return jobs.into_iter().map(f).collect();
     }
     let f = &f;
-    std::thread::scope(|s| {
-        let mut jobs = jobs.into_iter();
-        let first = jobs.next().expect("more than one job");
-        let others: Vec<_> = jobs.map(|j| s.spawn(move || f(j))).collect();
-        let mut out = vec![f(first)];
-        for h in others {
-            out.push(h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
+    let mut jobs = jobs.into_iter();
+    let first = jobs.next().expect("more than one job");
+    // Each other job waits in a slot until its thread takes it; a slot still full after
+    // the threads have stopped is a job whose thread could not start.
+    let slots: Vec<Mutex<Option<J>>> = jobs.map(|j| Mutex::new(Some(j))).collect();
+    let take = |slot: &Mutex<Option<J>>| slot.lock().unwrap_or_else(|e| e.into_inner()).take();
+    let mut out: Vec<Option<T>> = std::thread::scope(|s| {
+        let handles: Vec<_> = slots
+            .iter()
+            .map(|slot| {
+                std::thread::Builder::new()
+                    .spawn_scoped(s, move || take(slot).map(f))
+                    .ok()
+            })
+            .collect();
+        let mut out = vec![Some(f(first))];
+        for h in handles {
+            out.push(h.and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))));
         }
         out
-    })
+    });
+    for (answer, slot) in out[1..].iter_mut().zip(&slots) {
+        if answer.is_none() {
+            *answer = take(slot).map(f);
+        }
+    }
+    out.into_iter().map(|t| t.expect("every job ran")).collect()
 }
 
 #[cfg(test)]
@@ -40,5 +60,14 @@ mod tests {
                 (0..n).map(|j| j * 10).collect::<Vec<_>>()
             );
         }
+    }
+
+    #[test]
+    #[should_panic(expected = "job 2")]
+    fn a_panic_in_a_job_comes_back() {
+        super::run_all((0..4).collect(), |j: u32| {
+            assert!(j != 2, "job 2");
+            j
+        });
     }
 }

@@ -6,19 +6,24 @@
 //!   measures the same with the resident set; this catches a change that raises the peak
 //!   on any machine.
 //!
-//! The counters are global, because the build allocates on threads of its own too; the
-//! tests take a lock so that they do not run (and count) at the same time on libtest's
-//! threads.
+//! The heap counters are global, because the build allocates on threads of its own too;
+//! the tests take a lock so that they do not run (and count) at the same time on libtest's
+//! threads. The allocation count is per thread: queries run on the calling thread, and
+//! libtest's main thread allocates when it prints another test's result.
 
 mod chf_common;
 
 use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
 use std::sync::Mutex;
-use std::sync::atomic::{AtomicIsize, AtomicUsize, Ordering::SeqCst};
+use std::sync::atomic::{AtomicIsize, Ordering::SeqCst};
 
 struct Counting;
 
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    // `const` and without a destructor: reading it never allocates.
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
 static CURRENT: AtomicIsize = AtomicIsize::new(0);
 static PEAK: AtomicIsize = AtomicIsize::new(0);
 
@@ -26,7 +31,7 @@ static PEAK: AtomicIsize = AtomicIsize::new(0);
 static SERIAL: Mutex<()> = Mutex::new(());
 
 fn grow(n: usize) {
-    ALLOCATIONS.fetch_add(1, SeqCst);
+    ALLOCATIONS.set(ALLOCATIONS.get() + 1);
     let now = CURRENT.fetch_add(n as isize, SeqCst) + n as isize;
     PEAK.fetch_max(now, SeqCst);
 }
@@ -53,7 +58,7 @@ unsafe impl GlobalAlloc for Counting {
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
         if new_size <= layout.size() {
             // A shrink happens in place (still a call into the allocator).
-            ALLOCATIONS.fetch_add(1, SeqCst);
+            ALLOCATIONS.set(ALLOCATIONS.get() + 1);
             shrink(layout.size() - new_size);
         } else {
             // Counted as the new block alongside the old one: a moving realloc holds both.
@@ -73,7 +78,7 @@ fn chf_level_2_queries_do_not_allocate() {
     let mesh = chf_common::scramble(&chf_common::cube(4, 3, 3, false), 3, 85);
     for level in [2, 3] {
         let chf = mesh.build(level, true);
-        let before = ALLOCATIONS.load(SeqCst);
+        let before = ALLOCATIONS.get();
         let mut sum = 0u64;
         for v in 0..chf.num_vertices() as u32 {
             sum += chf.vertex_vertices(v).map(u64::from).sum::<u64>();
@@ -122,7 +127,7 @@ fn chf_level_2_queries_do_not_allocate() {
                 .map(|&x| x as u64)
                 .sum::<u64>();
         }
-        let after = ALLOCATIONS.load(SeqCst);
+        let after = ALLOCATIONS.get();
         assert!(sum > 0);
         assert_eq!(after - before, 0, "level {level} queries allocated");
     }

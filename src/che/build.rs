@@ -4,10 +4,10 @@
 use super::matching::{for_each_group_par, half_edge};
 use super::report::{BuildReport, push_example};
 use super::{Che, level2, level3, orient, split};
-use crate::NONE;
 use crate::error::{Error, Result};
 use crate::rank::RankBits;
 use crate::rank_directory::RankDirectory;
+use crate::{NONE, extend_examples};
 use glam::DVec3;
 use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
@@ -159,9 +159,7 @@ pub(crate) fn build(
         report.input_edges += m.input_edges;
         report.boundary_edges += m.boundary_edges;
         report.non_manifold_edges += m.non_manifold_edges;
-        for e in m.examples {
-            push_example(&mut report.non_manifold_edge_examples, e);
-        }
+        extend_examples(&mut report.non_manifold_edge_examples, m.examples);
         non_manifold.extend(m.non_manifold);
         duplicates.extend(m.duplicates);
         same_direction |= m.same_direction;

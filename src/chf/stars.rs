@@ -19,8 +19,8 @@ use super::edges::EdgeCensus;
 use super::edges::MultiFan;
 use super::link::{FaceCensus, Link, Record, Sums};
 use super::pairs::{Opposites, Writer};
-use super::report::push_example;
 use crate::NONE;
+use crate::extend_examples;
 use crate::rank::RankBits;
 
 /// 256 coarse buckets: the scatter's 256 write heads (a cache line each) stay in the L1
@@ -369,22 +369,22 @@ impl Tally {
         self.num_edges += t.num_edges;
         self.input_edges += t.input_edges;
         self.non_manifold_edges += t.non_manifold_edges;
-        for e in t.non_manifold_edge_examples {
-            push_example(&mut self.non_manifold_edge_examples, e);
-        }
+        extend_examples(
+            &mut self.non_manifold_edge_examples,
+            t.non_manifold_edge_examples,
+        );
         self.multi_fan.extend(t.multi_fan);
         let (a, b) = (&mut self.census, t.census);
         a.input_faces += b.input_faces;
         a.boundary_faces += b.boundary_faces;
         a.non_manifold_faces += b.non_manifold_faces;
-        for e in b.non_manifold_face_examples {
-            push_example(&mut a.non_manifold_face_examples, e);
-        }
+        extend_examples(
+            &mut a.non_manifold_face_examples,
+            b.non_manifold_face_examples,
+        );
         a.non_manifold.extend(b.non_manifold);
         a.duplicates += b.duplicates;
-        for e in b.duplicate_examples {
-            push_example(&mut a.duplicate_examples, e);
-        }
+        extend_examples(&mut a.duplicate_examples, b.duplicate_examples);
         a.same_direction |= b.same_direction;
     }
 }

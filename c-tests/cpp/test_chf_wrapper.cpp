@@ -71,6 +71,11 @@ static void test_build_and_counts() {
 
     Volume w = Volume::from_tetrahedra(CUBE.data(), 5, 8, nullptr, {0, true});
     CHECK(w.level() == 0 && w.num_edges() == 18 && w.num_faces() == 16);
+    // Any number of threads: the same mesh.
+    for (std::uint32_t threads : {1u, 2u, 5u}) {
+        Volume t = Volume::from_tetrahedra(CUBE.data(), 5, 8, nullptr, {2, false, threads});
+        CHECK(t.num_edges() == 18 && t.num_faces() == 16 && t.num_boundary_faces() == 12);
+    }
 
     CHECK_THROWS(Volume::from_tetrahedra(U{0, 1, 2}, 3), TOPOMESH_STATUS_INVALID_INPUT,
                  "multiple of 4");

@@ -428,5 +428,24 @@ fn build_is_the_same_on_any_number_of_threads() {
                 "level {level}, {threads} threads: not the single-threaded build"
             );
         }
+        // Strict mode names the same first offenders.
+        let strict = |threads| {
+            let options = BuildOptions {
+                level,
+                threads,
+                strict: true,
+            };
+            Che::from_triangles(&tris, n, &s.positions, options)
+                .unwrap_err()
+                .message
+        };
+        let expected = strict(1);
+        for threads in [2, 5] {
+            assert_eq!(
+                strict(threads),
+                expected,
+                "level {level}, {threads} threads"
+            );
+        }
     }
 }

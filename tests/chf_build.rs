@@ -234,6 +234,25 @@ fn chf_build_is_the_same_on_any_number_of_threads() {
                 "level {level}, {threads} threads: not the single-threaded build"
             );
         }
+        // Strict mode names the same first offenders.
+        let strict = |threads| {
+            let options = ChfBuildOptions {
+                level,
+                threads,
+                strict: true,
+            };
+            Chf::from_tetrahedra(&tets, n, &mesh.positions, options)
+                .unwrap_err()
+                .message
+        };
+        let expected = strict(1);
+        for threads in [2, 5] {
+            assert_eq!(
+                strict(threads),
+                expected,
+                "level {level}, {threads} threads"
+            );
+        }
         check_invariants(&one);
     }
 }

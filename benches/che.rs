@@ -1,6 +1,8 @@
 //! CHE build and sweeps: levels 1, 2 and 3 from arrays, and full VV, VF, FF and EF sweeps,
 //! on a generated torus of 1.2M triangles and on real meshes found in
-//! $TOPOMESH_MESH_DIR (see scripts/fetch-meshes.sh). Prints bytes per triangle per level.
+//! $TOPOMESH_MESH_DIR or the default mesh cache (see scripts/fetch-meshes.sh). Prints bytes per triangle per level.
+
+mod common;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -20,9 +22,9 @@ fn inputs() -> Vec<Input> {
         n_vertices: torus.positions.len(),
         triangles: torus.triangles,
     });
-    let dir = std::env::var("TOPOMESH_MESH_DIR").unwrap_or_default();
+    let dir = common::mesh_dir();
     for name in ["bunny00.off", "armadillo.off", "refined_elephant.off"] {
-        let path = std::path::Path::new(&dir).join(name);
+        let path = dir.join(name);
         if let Ok(data) = topomesh::io::read(&path) {
             out.push(Input {
                 name: name.trim_end_matches(".off").into(),

@@ -3,6 +3,8 @@
 //! `scripts/fetch-tets.sh` makes in ${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}/tets
 //! (knot1-16k, armadillo-101k, bunny00-1m). Prints bytes per tetrahedron per level.
 
+mod common;
+
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec3;
 use std::hint::black_box;
@@ -57,14 +59,9 @@ fn grid(n: u32) -> Input {
 
 fn inputs() -> Vec<Input> {
     let mut out = vec![grid(50)];
-    let dir = std::env::var("TOPOMESH_MESH_DIR").unwrap_or_else(|_| {
-        format!(
-            "{}/.cache/topomesh/meshes",
-            std::env::var("HOME").unwrap_or_default()
-        )
-    });
+    let dir = common::mesh_dir();
     for name in ["knot1-16k.ele", "armadillo-101k.ele", "bunny00-1m.ele"] {
-        let path = std::path::Path::new(&dir).join("tets").join(name);
+        let path = dir.join("tets").join(name);
         if let Ok(data) = topomesh::io::read(&path) {
             out.push(Input {
                 name: name.trim_end_matches(".ele").into(),

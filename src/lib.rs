@@ -36,7 +36,7 @@ pub(crate) fn push_example<T>(list: &mut Vec<T>, item: T) {
 
 /// [`push_example`] for each of `items`, in order: the examples a build thread found after
 /// those already in `list`.
-pub(crate) fn extend_examples<T>(list: &mut Vec<T>, items: Vec<T>) {
+pub(crate) fn extend_examples<T>(list: &mut Vec<T>, items: impl IntoIterator<Item = T>) {
     let room = REPORT_EXAMPLES.saturating_sub(list.len());
     list.extend(items.into_iter().take(room));
 }

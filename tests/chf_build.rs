@@ -207,6 +207,14 @@ fn chf_build_is_the_same_on_any_number_of_threads() {
     let t = tets[17];
     tets.push(t);
     tets.push([t[1], t[0], t[2], t[3]]);
+    // Degenerate ones (dropped, in two runs of the soup) and a flat one (zero volume).
+    tets.insert(100, [5, 5, 9, 12]);
+    tets.push([7, 8, 7, 1]);
+    let flat: Vec<u32> = (0..n as u32)
+        .filter(|&x| mesh.positions[x as usize].z == 0.0)
+        .take(4)
+        .collect();
+    tets.push([flat[0], flat[1], flat[2], flat[3]]);
     assert!(tets.len() > 1 << 16);
     for level in 0..=3u8 {
         let build = |threads| {
@@ -224,7 +232,9 @@ fn chf_build_is_the_same_on_any_number_of_threads() {
                 && r.duplicate_tetrahedra > 0
                 && r.split_vertices > 0
                 && r.flipped_tetrahedra > 0
-                && r.non_manifold_edges > 0,
+                && r.non_manifold_edges > 0
+                && r.dropped_degenerate >= 2
+                && r.zero_volume > 0,
             "the damage reaches every path: {r:?}"
         );
         let expected = fingerprint(&one);

@@ -60,7 +60,8 @@ pub(crate) fn build(
         input_vertices: n_vertices,
         ..ChfBuildReport::default()
     };
-    let mut soup = soup::soup(tets, n_vertices, positions, &mut report)?;
+    let n_threads = crate::par::threads(options.threads);
+    let mut soup = soup::soup(tets, n_vertices, positions, &mut report, n_threads)?;
     let tet_origin = std::mem::take(&mut soup.tet_origin);
     let origin_of = |t: u32| {
         if tet_origin.is_empty() {
@@ -73,7 +74,6 @@ pub(crate) fn build(
     // One pass over the vertex stars: faces and their pairs, pieces, edges, and `VH` and the
     // edge bits for level 2. Level 0 keeps no pairs unless it must orient or split.
     let tables = options.level >= 2;
-    let n_threads = crate::par::threads(options.threads);
     let first_pairs = if options.level == 0 {
         Pairs::Census
     } else {

@@ -24,44 +24,127 @@ pub(crate) struct Soup {
     pub flipped: usize,
 }
 
+/// Below this many tetrahedra the soup is made on the calling thread alone.
+const PARALLEL_MIN_TETRAHEDRA: usize = 1 << 16;
+
+/// What one run of tetrahedra found.
+#[derive(Default)]
+struct Run {
+    /// The first out-of-range id: the run stops there.
+    error: Option<Error>,
+    /// Degenerate tetrahedra (input ids, increasing): their slots in `V` hold nothing.
+    dropped: Vec<u32>,
+    zero_volume: usize,
+    zero_volume_examples: Vec<u32>,
+    flipped: usize,
+}
+
+/// Runs of tetrahedra on up to `threads` threads, each writing its own part of `V` (and
+/// of the signs); degenerate ones leave a hole, closed afterwards by one pass when there
+/// is any.
 pub(crate) fn soup(
     tets: &[[u32; 4]],
     n_vertices: usize,
     positions: &[DVec3],
     report: &mut ChfBuildReport,
+    threads: usize,
 ) -> Result<Soup> {
-    let mut v: Vec<u32> = crate::pages::with_capacity(4 * tets.len());
-    // Stays empty (the identity) until the first dropped tetrahedron.
-    let mut tet_origin: Vec<u32> = Vec::new();
-    let mut remapped = false;
-    let mut sign: Vec<i8> = Vec::with_capacity(if positions.is_empty() { 0 } else { tets.len() });
+    let n = tets.len();
+    let threads = if n < PARALLEL_MIN_TETRAHEDRA {
+        1
+    } else {
+        threads.max(1)
+    };
+    let chunk = n.div_ceil(threads).max(1);
+    let mut v: Vec<u32> = crate::pages::zeroed(4 * n);
+    let mut sign: Vec<i8> = vec![0; if positions.is_empty() { 0 } else { n }];
+    let mut sign_parts: Vec<&mut [i8]> = if positions.is_empty() {
+        tets.chunks(chunk).map(|_| &mut [][..]).collect()
+    } else {
+        sign.chunks_mut(chunk).collect()
+    };
+    let jobs: Vec<_> = tets
+        .chunks(chunk)
+        .zip(v.chunks_mut(4 * chunk))
+        .zip(sign_parts.drain(..))
+        .enumerate()
+        .map(|(j, ((tets, v), sign))| (j * chunk, tets, v, sign))
+        .collect();
+    let runs = crate::par::run_all(jobs, |(t0, tets, v, sign)| {
+        run(t0, tets, v, sign, n_vertices, positions)
+    });
+    let mut dropped: Vec<u32> = Vec::new();
     let mut flipped = 0;
-    for (t, tet) in tets.iter().enumerate() {
-        if tet.iter().any(|&x| x as usize >= n_vertices) {
-            let i = tet
-                .iter()
-                .position(|&x| x as usize >= n_vertices)
-                .unwrap_or(0);
-            return Err(Error::out_of_range(format!(
+    for r in runs {
+        if let Some(e) = r.error {
+            return Err(e);
+        }
+        report.dropped_degenerate += r.dropped.len();
+        crate::extend_examples(&mut report.degenerate_examples, r.dropped.iter().copied());
+        dropped.extend(r.dropped);
+        report.zero_volume += r.zero_volume;
+        crate::extend_examples(&mut report.zero_volume_examples, r.zero_volume_examples);
+        flipped += r.flipped;
+    }
+    // Stays empty (the identity) unless a tetrahedron was dropped.
+    let mut tet_origin: Vec<u32> = Vec::new();
+    if !dropped.is_empty() {
+        let mut next_dropped = dropped.iter().copied().peekable();
+        let mut kept = 0;
+        for t in 0..n {
+            if next_dropped.peek() == Some(&(t as u32)) {
+                next_dropped.next();
+                continue;
+            }
+            v.copy_within(4 * t..4 * t + 4, 4 * kept);
+            if !sign.is_empty() {
+                sign[kept] = sign[t];
+            }
+            tet_origin.push(t as u32);
+            kept += 1;
+        }
+        v.truncate(4 * kept);
+        sign.truncate(if sign.is_empty() { 0 } else { kept });
+        if kept < n - n / 16 {
+            // Many dropped: the structure keeps `V` for good, so it gives the rest back.
+            v.shrink_to_fit();
+        }
+    }
+    Ok(Soup {
+        v,
+        tet_origin,
+        sign,
+        flipped,
+    })
+}
+
+/// One run: `tets` from input id `t0` on, into `v` (four per tetrahedron) and `sign`
+/// (empty without positions).
+fn run(
+    t0: usize,
+    tets: &[[u32; 4]],
+    v: &mut [u32],
+    sign: &mut [i8],
+    n_vertices: usize,
+    positions: &[DVec3],
+) -> Run {
+    let mut out = Run::default();
+    for (k, (tet, q)) in tets.iter().zip(v.chunks_exact_mut(4)).enumerate() {
+        let t = t0 + k;
+        if let Some(i) = tet.iter().position(|&x| x as usize >= n_vertices) {
+            out.error = Some(Error::out_of_range(format!(
                 "tetrahedron {t}, corner {i}: vertex {} out of range (there are {n_vertices} vertices)",
                 tet[i]
             )));
+            return out;
         }
         let [a, b, c, d] = *tet;
         if a == b || a == c || a == d || b == c || b == d || c == d {
-            if !remapped {
-                remapped = true;
-                tet_origin.extend(0..t as u32);
-            }
-            report.dropped_degenerate += 1;
-            push_example(&mut report.degenerate_examples, t as u32);
+            out.dropped.push(t as u32);
             continue;
         }
-        if remapped {
-            tet_origin.push(t as u32);
-        }
         if positions.is_empty() {
-            v.extend_from_slice(tet);
+            q.copy_from_slice(tet);
             continue;
         }
         let [p0, p1, p2, p3] = tet.map(|x| positions[x as usize]);
@@ -71,24 +154,19 @@ pub(crate) fn soup(
         } else if det < 0.0 {
             -1
         } else {
-            report.zero_volume += 1;
-            push_example(&mut report.zero_volume_examples, t as u32);
+            out.zero_volume += 1;
+            push_example(&mut out.zero_volume_examples, t as u32);
             0
         };
-        sign.push(s);
+        sign[k] = s;
         if s < 0 {
-            flipped += 1;
-            v.extend_from_slice(&[a, c, b, d]);
+            out.flipped += 1;
+            q.copy_from_slice(&[a, c, b, d]);
         } else {
-            v.extend_from_slice(tet);
+            q.copy_from_slice(tet);
         }
     }
-    Ok(Soup {
-        v,
-        tet_origin,
-        sign,
-        flipped,
-    })
+    out
 }
 
 impl Soup {

@@ -9,6 +9,7 @@ mod dsu;
 pub mod error;
 pub mod ffi;
 pub mod generate;
+mod holes;
 pub mod io;
 mod pages;
 mod par;

@@ -81,32 +81,9 @@ pub(crate) fn build(
     };
 
     // Soup: range check, degenerate triangles dropped.
-    let mut v: Vec<u32> = crate::pages::with_capacity(3 * triangles.len());
-    let mut triangle_origin: Vec<u32> = Vec::new();
-    let mut dropped_any = false;
-    for (t, tri) in triangles.iter().enumerate() {
-        for (i, &x) in tri.iter().enumerate() {
-            if x as usize >= n_vertices {
-                return Err(Error::out_of_range(format!(
-                    "triangle {t}, corner {i}: vertex {x} out of range (there are {n_vertices} vertices)"
-                )));
-            }
-        }
-        let [a, b, c] = *tri;
-        if a == b || b == c || a == c {
-            if !dropped_any {
-                dropped_any = true;
-                triangle_origin.extend(0..t as u32);
-            }
-            report.dropped_degenerate += 1;
-            push_example(&mut report.degenerate_examples, t as u32);
-            continue;
-        }
-        if dropped_any {
-            triangle_origin.push(t as u32);
-        }
-        v.extend_from_slice(tri);
-    }
+    let threads = crate::par::threads(options.threads);
+    let (mut v, triangle_origin) = super::soup::soup(triangles, n_vertices, &mut report, threads)?;
+    let dropped_any = !triangle_origin.is_empty();
     let origin_of = |t: u32| {
         if dropped_any {
             triangle_origin[t as usize]
@@ -125,7 +102,6 @@ pub(crate) fn build(
     // reading `V` at both half-edges of every pair would miss it.
     let forward = direction_bits(&v);
     let is_forward = |h: u32| (forward[(h >> 6) as usize] >> (h & 63)) & 1 == 1;
-    let threads = crate::par::threads(options.threads);
     let found = for_each_group_par(
         &v,
         n_vertices,

@@ -19,6 +19,7 @@ mod memory;
 mod orient;
 mod queries;
 mod report;
+mod soup;
 mod split;
 mod star;
 mod summary;

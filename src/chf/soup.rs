@@ -87,29 +87,11 @@ pub(crate) fn soup(
         flipped += r.flipped;
     }
     // Stays empty (the identity) unless a tetrahedron was dropped.
-    let mut tet_origin: Vec<u32> = Vec::new();
-    if !dropped.is_empty() {
-        let mut next_dropped = dropped.iter().copied().peekable();
-        let mut kept = 0;
-        for t in 0..n {
-            if next_dropped.peek() == Some(&(t as u32)) {
-                next_dropped.next();
-                continue;
-            }
-            v.copy_within(4 * t..4 * t + 4, 4 * kept);
-            if !sign.is_empty() {
-                sign[kept] = sign[t];
-            }
-            tet_origin.push(t as u32);
-            kept += 1;
-        }
-        v.truncate(4 * kept);
-        sign.truncate(if sign.is_empty() { 0 } else { kept });
-        if kept < n - n / 16 {
-            // Many dropped: the structure keeps `V` for good, so it gives the rest back.
-            v.shrink_to_fit();
-        }
-    }
+    let tet_origin = if dropped.is_empty() {
+        Vec::new()
+    } else {
+        crate::holes::close_holes(&mut v, 4, &mut sign, &dropped)
+    };
     Ok(Soup {
         v,
         tet_origin,

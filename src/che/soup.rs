@@ -1,0 +1,68 @@
+//! The soup: range check and degenerate triangles (a repeated vertex) dropped, on up to
+//! `threads` threads: runs of triangles write their own part of `V`, and a dropped
+//! triangle leaves a hole closed afterwards by one pass when there is any.
+
+use super::report::BuildReport;
+use crate::error::{Error, Result};
+
+/// Below this many triangles the soup is made on the calling thread alone.
+const PARALLEL_MIN_TRIANGLES: usize = 1 << 16;
+
+/// `V` and the map from structure triangle to input triangle (empty: the identity).
+pub(crate) fn soup(
+    triangles: &[[u32; 3]],
+    n_vertices: usize,
+    report: &mut BuildReport,
+    threads: usize,
+) -> Result<(Vec<u32>, Vec<u32>)> {
+    let n = triangles.len();
+    let threads = if n < PARALLEL_MIN_TRIANGLES {
+        1
+    } else {
+        threads.max(1)
+    };
+    let chunk = n.div_ceil(threads).max(1);
+    let mut v: Vec<u32> = crate::pages::zeroed(3 * n);
+    let jobs: Vec<_> = triangles
+        .chunks(chunk)
+        .zip(v.chunks_mut(3 * chunk))
+        .enumerate()
+        .map(|(j, (tris, v))| (j * chunk, tris, v))
+        .collect();
+    let runs = crate::par::run_all(jobs, |(t0, tris, v)| run(t0, tris, v, n_vertices));
+    let mut dropped = Vec::new();
+    for r in runs {
+        let run = r?;
+        report.dropped_degenerate += run.len();
+        crate::extend_examples(&mut report.degenerate_examples, run.iter().copied());
+        dropped.extend(run);
+    }
+    let origin = if dropped.is_empty() {
+        Vec::new()
+    } else {
+        crate::holes::close_holes(&mut v, 3, &mut Vec::<u8>::new(), &dropped)
+    };
+    Ok((v, origin))
+}
+
+/// One run: `tris` from input id `t0` on, into `v`. Returns the degenerate ones (input ids,
+/// increasing), or the first out-of-range id.
+fn run(t0: usize, tris: &[[u32; 3]], v: &mut [u32], n_vertices: usize) -> Result<Vec<u32>> {
+    let mut dropped = Vec::new();
+    for (k, (tri, q)) in tris.iter().zip(v.chunks_exact_mut(3)).enumerate() {
+        let t = t0 + k;
+        if let Some(i) = tri.iter().position(|&x| x as usize >= n_vertices) {
+            return Err(Error::out_of_range(format!(
+                "triangle {t}, corner {i}: vertex {} out of range (there are {n_vertices} vertices)",
+                tri[i]
+            )));
+        }
+        let [a, b, c] = *tri;
+        if a == b || b == c || a == c {
+            dropped.push(t as u32);
+            continue;
+        }
+        q.copy_from_slice(tri);
+    }
+    Ok(dropped)
+}

@@ -251,7 +251,7 @@ pub(crate) fn build(
         chf.level = 2;
     }
     if options.level >= 3 {
-        chf.boundary = Some(level3::build(&chf)?);
+        chf.boundary = Some(level3::build(&chf, n_threads)?);
         chf.level = 3;
     }
     Ok(chf)

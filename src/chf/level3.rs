@@ -83,9 +83,10 @@ fn parts(chf: &Chf) -> Parts {
     }
 }
 
-pub(crate) fn build(chf: &Chf) -> Result<Boundary> {
+/// The boundary, its CHE built on up to `threads` threads.
+pub(crate) fn build(chf: &Chf, threads: usize) -> Result<Boundary> {
     let p = parts(chf);
-    let che = surface(chf, &p, 3)?;
+    let che = surface(chf, &p, 3, threads)?;
     let n_hf = chf.v.len();
     let mut words = vec![0u64; n_hf.div_ceil(64)];
     for &hf in &p.half_faces {
@@ -111,7 +112,7 @@ fn flagged_count(chf: &Chf) -> usize {
     super::build::merged(&chf.non_manifold, &chf.seams).len()
 }
 
-fn surface(chf: &Chf, p: &Parts, level: u8) -> Result<Che> {
+fn surface(chf: &Chf, p: &Parts, level: u8, threads: usize) -> Result<Che> {
     let tris: Vec<[u32; 3]> = p
         .half_faces
         .iter()
@@ -131,7 +132,8 @@ fn surface(chf: &Chf, p: &Parts, level: u8) -> Result<Che> {
         &positions,
         BuildOptions {
             level,
-            ..BuildOptions::default()
+            strict: false,
+            threads,
         },
     )
 }
@@ -175,7 +177,7 @@ impl Chf {
         if let Some(b) = &self.boundary {
             return Ok(b.che.clone());
         }
-        surface(self, &parts(self), 3)
+        surface(self, &parts(self), 3, 1)
     }
 
     /// Unpaired half-faces in increasing order: triangle `k` of the boundary surface is the

@@ -144,7 +144,8 @@ impl Chf {
         self.level
     }
 
-    /// Raises (or lowers) the level in place. Ids do not change.
+    /// Raises (or lowers) the level in place, on every thread of the machine. Ids do not
+    /// change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
         if level > 3 {
             return Err(Error::out_of_range(format!(
@@ -187,7 +188,7 @@ impl Chf {
             self.level = 2;
         }
         if self.level < 3 && level >= 3 {
-            self.boundary = Some(level3::build(self)?);
+            self.boundary = Some(level3::build(self, crate::par::threads(0))?);
             self.level = 3;
         }
         Ok(())

@@ -1023,7 +1023,8 @@ void chf_mesh_free(struct chf_mesh *m);
 
 /**
  * Raises or lowers the level (0..3) in place. Ids never change with the level; views
- * obtained before are invalid afterwards. Needs exclusive access.
+ * obtained before are invalid afterwards. Needs exclusive access. Runs on every thread of
+ * the machine (large meshes).
  */
 topomesh_status chf_mesh_build_level(struct chf_mesh *m, uint32_t level);
 

@@ -164,7 +164,8 @@ pub unsafe extern "C" fn chf_mesh_free(m: *mut ChfMesh) {
 }
 
 /// Raises or lowers the level (0..3) in place. Ids never change with the level; views
-/// obtained before are invalid afterwards. Needs exclusive access.
+/// obtained before are invalid afterwards. Needs exclusive access. Runs on every thread of
+/// the machine (large meshes).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_build_level(m: *mut ChfMesh, level: u32) -> Status {
     guard(|| {

@@ -79,13 +79,21 @@ pub(crate) fn build(
     } else {
         Pairs::Partners
     };
-    let mut stars = stars::stars(&soup.v, n_vertices, &[], first_pairs, tables, n_threads);
+    let star_threads = stars::threads_for(soup.v.len() / 4, n_vertices, n_threads);
+    let mut stars = stars::stars(&soup.v, n_vertices, &[], first_pairs, tables, star_threads);
     let (faces, mut partner) = stars.faces.take().expect("faces were asked for");
     if partner.is_empty() && (faces.same_direction || stars.split_needed) {
-        partner = stars::stars(&soup.v, n_vertices, &[], Pairs::Partners, false, n_threads)
-            .faces
-            .expect("faces were asked for")
-            .1;
+        partner = stars::stars(
+            &soup.v,
+            n_vertices,
+            &[],
+            Pairs::Partners,
+            false,
+            star_threads,
+        )
+        .faces
+        .expect("faces were asked for")
+        .1;
     }
     // Triples of two half-faces: all of them are pairs unless there are seams.
     let pairs = faces.input_faces - faces.boundary_faces - faces.non_manifold_faces;
@@ -156,7 +164,7 @@ pub(crate) fn build(
             &oriented.seams,
             Pairs::No,
             tables,
-            n_threads,
+            star_threads,
         );
         (oriented.o, oriented.seams, oriented.links)
     };
@@ -192,7 +200,7 @@ pub(crate) fn build(
     } else {
         // Every star is one piece now; the census groups by input pair.
         let flagged = merged(&non_manifold, &seams);
-        stars = stars::stars(&v, n_total, &flagged, Pairs::No, true, n_threads);
+        stars = stars::stars(&v, n_total, &flagged, Pairs::No, true, star_threads);
         debug_assert!(!stars.split_needed);
         edges::census(&v, &stars.edge_bits, n_vertices, |x| {
             vertex_origin[x as usize]

@@ -137,7 +137,7 @@ pub(crate) struct MultiFan {
 }
 
 /// What the fans say about the input edges.
-#[derive(Default)]
+#[derive(Debug, Default)]
 pub(crate) struct EdgeCensus {
     pub input_edges: usize,
     pub non_manifold: usize,

@@ -181,7 +181,7 @@ impl Chf {
                 &flagged,
                 stars::Pairs::No,
                 true,
-                crate::par::threads(0),
+                stars::threads_for(self.v.len() / 4, self.n_vertices, crate::par::threads(0)),
             );
             debug_assert!(!stars.split_needed, "the build split every vertex");
             level2::build(self, stars.edge_bits, stars.vh);

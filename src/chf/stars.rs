@@ -28,6 +28,7 @@ use crate::rank::RankBits;
 const COARSE_BITS: u32 = 8;
 
 /// What the pass found.
+#[derive(Debug)]
 pub(crate) struct Stars {
     /// Some star is in several pieces: the vertex split must run (then the pass again),
     /// and `VH`, the edges and the census are incomplete.
@@ -61,7 +62,19 @@ pub(crate) enum Pairs {
 /// would cost more than they save).
 const PARALLEL_MIN_TETRAHEDRA: usize = 1 << 16;
 
-/// The pass over `V`. `flagged` (sorted) are half-faces never to pair: the build's
+/// How many threads the pass over `n_tets` tetrahedra on `n_vertices` vertices takes when
+/// `threads` are asked for. Each thread past the first brings a `Link` with a stamp per
+/// vertex (4 bytes, 8 on the largest meshes): at most T / 2V threads keep those stamps to
+/// about 2 bytes per tetrahedron in all, so that many cores do not lift the build's peak
+/// (two threads are always allowed).
+pub(crate) fn threads_for(n_tets: usize, n_vertices: usize, threads: usize) -> usize {
+    if n_tets < PARALLEL_MIN_TETRAHEDRA {
+        return 1;
+    }
+    threads.clamp(1, (n_tets / (2 * n_vertices.max(1))).max(2))
+}
+
+/// The pass over `V` on up to `threads` threads (see [`threads_for`]). `flagged` (sorted) are half-faces never to pair: the build's
 /// non-manifold faces and seams once `V` is split or oriented. With `tables`, also `VH` and
 /// the edge bits (level 2); without, the build keeps less memory at levels 0 and 1. The
 /// stars of each round are shared among up to `threads` threads (contiguous ranges of
@@ -82,11 +95,7 @@ pub(crate) fn stars(
     // (past 2^24 vertices there are more than 256 coarse buckets).
     let shift = bits.saturating_sub(COARSE_BITS).min(16);
     let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
-    let threads = if v.len() / 4 < PARALLEL_MIN_TETRAHEDRA {
-        1
-    } else {
-        threads.clamp(1, n_coarse)
-    };
+    let threads = threads.clamp(1, n_coarse);
     // Each thread scatters the occurrences of a part of the tetrahedra (contiguous, so that
     // the parts one after the other keep the tetrahedron order) to records of its own.
     let part_len = (v.len() / 4).div_ceil(threads) * 4;
@@ -613,6 +622,42 @@ mod against_walks {
                 "round {round}"
             );
             assert_eq!(stars.faces.unwrap().1, chf.o, "round {round}");
+        }
+    }
+
+    #[test]
+    fn any_number_of_threads_finds_the_same() {
+        // Soups dense enough that every pair mode meets duplicates, non-manifold faces and
+        // edges and pinched stars; the pass itself on 2, 3 and 7 threads (the build caps
+        // them by memory and size, see `threads_for`).
+        let mut x = 0x0DDB_A11u64;
+        let mut rnd = |m: usize| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % m as u64) as u32
+        };
+        for (n, t) in [(40usize, 600usize), (300, 3000), (2000, 5000)] {
+            let v: Vec<u32> = (0..4 * t)
+                .map(|_| rnd(n))
+                .collect::<Vec<_>>()
+                .chunks(4)
+                .filter(|q| (0..4).all(|i| (0..i).all(|j| q[i] != q[j])))
+                .flatten()
+                .copied()
+                .collect();
+            for pairs in [Pairs::No, Pairs::Census, Pairs::Partners, Pairs::Opposites] {
+                for tables in [false, true] {
+                    let one = format!("{:?}", stars(&v, n, &[], pairs, tables, 1));
+                    for threads in [2, 3, 7] {
+                        let many = format!("{:?}", stars(&v, n, &[], pairs, tables, threads));
+                        assert!(
+                            one == many,
+                            "n {n}, {pairs:?}, tables {tables}, {threads} threads"
+                        );
+                    }
+                }
+            }
         }
     }
 }

@@ -60,7 +60,7 @@ const CYCLE: [[[u8; 2]; 3]; 4] = {
 };
 
 /// Faces found from their smallest vertex, for `O` and the build report.
-#[derive(Default)]
+#[derive(Debug, Default)]
 pub(crate) struct FaceCensus {
     pub input_faces: usize,
     pub boundary_faces: usize,

@@ -630,7 +630,7 @@ mod against_walks {
         // Soups dense enough that every pair mode meets duplicates, non-manifold faces and
         // edges and pinched stars; the pass itself on 2, 3 and 7 threads (the build caps
         // them by memory and size, see `threads_for`).
-        let mut x = 0x0DDB_A11u64;
+        let mut x = 0x00DD_BA11_u64;
         let mut rnd = |m: usize| {
             x ^= x << 13;
             x ^= x >> 7;

@@ -6,7 +6,7 @@ use super::ids::next;
 use crate::NONE;
 
 /// Below this many half-edges the matching runs on the calling thread alone.
-const PARALLEL_MIN_HALF_EDGES: usize = 1 << 18;
+const PARALLEL_MIN_HALF_EDGES: usize = 1 << 17;
 
 /// Calls `f(min, max, group)` for every unordered vertex pair of `v`, in increasing
 /// (min, max) order; `group` holds packed keys `(max << 32) | h` whose low 32 bits are the

@@ -82,7 +82,7 @@ fn single_fans(v: &[u32], o: &[u32], n_vertices: usize, threads: usize) -> (Vec<
 }
 
 /// Below this many half-edges the walks run on the calling thread alone.
-const PARALLEL_MIN_HALF_EDGES: usize = 1 << 18;
+const PARALLEL_MIN_HALF_EDGES: usize = 1 << 17;
 
 /// [`single_fans`] for the vertices from `first` on (`vh` and `degree` are theirs): sets
 /// their `VH` and returns those with several fans.

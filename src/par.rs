@@ -2,12 +2,21 @@
 
 use std::sync::Mutex;
 
-/// A build's `threads` option made concrete: 0 is as many as the machine runs at once.
-pub(crate) fn threads(threads: usize) -> usize {
-    if threads == 0 {
+/// Below this many triangles or tetrahedra a build stays on the calling thread: starting
+/// threads (tens of microseconds each, several times per build) would cost more than they
+/// save.
+const PARALLEL_MIN_ELEMENTS: usize = 1 << 15;
+
+/// The threads a build of `n` triangles or tetrahedra takes for its `threads` option (0: as
+/// many as the machine runs at once). Every step of the build shares its work among that
+/// many, or runs alone when it is 1.
+pub(crate) fn build_threads(option: usize, n: usize) -> usize {
+    if n < PARALLEL_MIN_ELEMENTS {
+        1
+    } else if option == 0 {
         std::thread::available_parallelism().map_or(1, |n| n.get())
     } else {
-        threads
+        option
     }
 }
 

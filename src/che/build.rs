@@ -81,7 +81,7 @@ pub(crate) fn build(
     };
 
     // Soup: range check, degenerate triangles dropped.
-    let threads = crate::par::threads(options.threads);
+    let threads = crate::par::build_threads(options.threads, triangles.len());
     let (mut v, triangle_origin) = super::soup::soup(triangles, n_vertices, &mut report, threads)?;
     let dropped_any = !triangle_origin.is_empty();
     let origin_of = |t: u32| {

@@ -5,9 +5,6 @@
 use super::ids::next;
 use crate::NONE;
 
-/// Below this many half-edges the matching runs on the calling thread alone.
-const PARALLEL_MIN_HALF_EDGES: usize = 1 << 17;
-
 /// Calls `f(min, max, group)` for every unordered vertex pair of `v`, in increasing
 /// (min, max) order; `group` holds packed keys `(max << 32) | h` whose low 32 bits are the
 /// half-edges on that pair, in increasing order.
@@ -41,11 +38,6 @@ pub(crate) fn for_each_group_par<S: Send>(
     state: impl FnMut() -> S,
     f: impl Fn(&mut S, u32, u32, &[u64]) + Sync,
 ) -> Vec<S> {
-    let threads = if v.len() < PARALLEL_MIN_HALF_EDGES {
-        1
-    } else {
-        threads
-    };
     groups(v, n_vertices, true, threads, state, f)
 }
 

@@ -5,9 +5,6 @@
 use super::report::BuildReport;
 use crate::error::{Error, Result};
 
-/// Below this many triangles the soup is made on the calling thread alone.
-const PARALLEL_MIN_TRIANGLES: usize = 1 << 16;
-
 /// `V` and the map from structure triangle to input triangle (empty: the identity).
 pub(crate) fn soup(
     triangles: &[[u32; 3]],
@@ -16,12 +13,7 @@ pub(crate) fn soup(
     threads: usize,
 ) -> Result<(Vec<u32>, Vec<u32>)> {
     let n = triangles.len();
-    let threads = if n < PARALLEL_MIN_TRIANGLES {
-        1
-    } else {
-        threads.max(1)
-    };
-    let chunk = n.div_ceil(threads).max(1);
+    let chunk = n.div_ceil(threads.max(1)).max(1);
     let mut v: Vec<u32> = crate::pages::zeroed(3 * n);
     let jobs: Vec<_> = triangles
         .chunks(chunk)

@@ -61,12 +61,7 @@ fn single_fans(v: &[u32], o: &[u32], n_vertices: usize, threads: usize) -> (Vec<
         vh[x] = h;
         degree[x] += 1;
     }
-    let threads = if v.len() < PARALLEL_MIN_HALF_EDGES {
-        1
-    } else {
-        threads.max(1)
-    };
-    let chunk = n_vertices.div_ceil(threads).max(1);
+    let chunk = n_vertices.div_ceil(threads.max(1)).max(1);
     let jobs: Vec<_> = vh
         .chunks_mut(chunk)
         .zip(degree.chunks(chunk))
@@ -80,9 +75,6 @@ fn single_fans(v: &[u32], o: &[u32], n_vertices: usize, threads: usize) -> (Vec<
     several.sort_unstable();
     (vh, several)
 }
-
-/// Below this many half-edges the walks run on the calling thread alone.
-const PARALLEL_MIN_HALF_EDGES: usize = 1 << 17;
 
 /// [`single_fans`] for the vertices from `first` on (`vh` and `degree` are theirs): sets
 /// their `VH` and returns those with several fans.

@@ -60,7 +60,7 @@ pub(crate) fn build(
         input_vertices: n_vertices,
         ..ChfBuildReport::default()
     };
-    let n_threads = crate::par::threads(options.threads);
+    let n_threads = crate::par::build_threads(options.threads, tets.len());
     let mut soup = soup::soup(tets, n_vertices, positions, &mut report, n_threads)?;
     let tet_origin = std::mem::take(&mut soup.tet_origin);
     let origin_of = |t: u32| {

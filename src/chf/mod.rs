@@ -144,6 +144,11 @@ impl Chf {
         self.level
     }
 
+    /// The threads `build_level` takes: the build's default for this mesh.
+    fn build_threads(&self) -> usize {
+        crate::par::build_threads(0, self.num_tetrahedra())
+    }
+
     /// Raises (or lowers) the level in place, on every thread of the machine. Ids do not
     /// change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
@@ -181,14 +186,14 @@ impl Chf {
                 &flagged,
                 stars::Pairs::No,
                 true,
-                stars::threads_for(self.v.len() / 4, self.n_vertices, crate::par::threads(0)),
+                stars::threads_for(self.v.len() / 4, self.n_vertices, self.build_threads()),
             );
             debug_assert!(!stars.split_needed, "the build split every vertex");
             level2::build(self, stars.edge_bits, stars.vh);
             self.level = 2;
         }
         if self.level < 3 && level >= 3 {
-            self.boundary = Some(level3::build(self, crate::par::threads(0))?);
+            self.boundary = Some(level3::build(self, self.build_threads())?);
             self.level = 3;
         }
         Ok(())

@@ -24,9 +24,6 @@ pub(crate) struct Soup {
     pub flipped: usize,
 }
 
-/// Below this many tetrahedra the soup is made on the calling thread alone.
-const PARALLEL_MIN_TETRAHEDRA: usize = 1 << 16;
-
 /// What one run of tetrahedra found.
 #[derive(Default)]
 struct Run {
@@ -50,12 +47,7 @@ pub(crate) fn soup(
     threads: usize,
 ) -> Result<Soup> {
     let n = tets.len();
-    let threads = if n < PARALLEL_MIN_TETRAHEDRA {
-        1
-    } else {
-        threads.max(1)
-    };
-    let chunk = n.div_ceil(threads).max(1);
+    let chunk = n.div_ceil(threads.max(1)).max(1);
     let mut v: Vec<u32> = crate::pages::zeroed(4 * n);
     let mut sign: Vec<i8> = vec![0; if positions.is_empty() { 0 } else { n }];
     let mut sign_parts: Vec<&mut [i8]> = if positions.is_empty() {

@@ -58,19 +58,12 @@ pub(crate) enum Pairs {
     Opposites,
 }
 
-/// Below this many tetrahedra the pass runs on the calling thread alone (starting threads
-/// would cost more than they save).
-const PARALLEL_MIN_TETRAHEDRA: usize = 1 << 16;
-
 /// How many threads the pass over `n_tets` tetrahedra on `n_vertices` vertices takes when
 /// `threads` are asked for. Each thread past the first brings a `Link` with a stamp per
 /// vertex (4 bytes, 8 on the largest meshes): at most T / 2V threads keep those stamps to
 /// about 2 bytes per tetrahedron in all, so that many cores do not lift the build's peak
 /// (two threads are always allowed).
 pub(crate) fn threads_for(n_tets: usize, n_vertices: usize, threads: usize) -> usize {
-    if n_tets < PARALLEL_MIN_TETRAHEDRA {
-        return 1;
-    }
     threads.clamp(1, (n_tets / (2 * n_vertices.max(1))).max(2))
 }
 

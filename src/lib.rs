@@ -35,6 +35,18 @@ pub(crate) fn push_example<T>(list: &mut Vec<T>, item: T) {
     }
 }
 
+/// Unit tests' random numbers: xorshift64 from `seed`, reduced below the bound asked for.
+#[cfg(test)]
+pub(crate) fn test_rng(seed: u64) -> impl FnMut(usize) -> u32 {
+    let mut x = seed;
+    move |m: usize| {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        (x % m as u64) as u32
+    }
+}
+
 /// [`push_example`] for each of `items`, in order: the examples a build thread found after
 /// those already in `list`.
 pub(crate) fn extend_examples<T>(list: &mut Vec<T>, items: impl IntoIterator<Item = T>) {

@@ -288,13 +288,7 @@ mod tests {
     fn groups_match_a_map_on_many_vertices() {
         // Enough vertices for both radix passes to have more than one bucket.
         for n in [2047usize, 2048, 2049, 5000, 70_000] {
-            let mut x = 12345u64;
-            let mut rnd = |m: usize| {
-                x ^= x << 13;
-                x ^= x >> 7;
-                x ^= x << 17;
-                (x % m as u64) as u32
-            };
+            let mut rnd = crate::test_rng(12345u64);
             let v: Vec<u32> = (0..3 * 4000).map(|_| rnd(n)).collect();
             let mut expected = std::collections::BTreeMap::<(u32, u32), Vec<u32>>::new();
             for h in 0..v.len() as u32 {

@@ -583,13 +583,7 @@ mod against_walks {
 
     #[test]
     fn stars_match_walking_the_fans() {
-        let mut x = 0x1234_5678_9ABC_DEF0u64;
-        let mut rnd = |m: usize| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x % m as u64) as u32
-        };
+        let mut rnd = crate::test_rng(0x1234_5678_9ABC_DEF0u64);
         for round in 0..200 {
             // Random soups: duplicates, non-manifold faces and edges, pinched links, seams.
             let n = 6 + round % 20;
@@ -623,13 +617,7 @@ mod against_walks {
         // Soups dense enough that every pair mode meets duplicates, non-manifold faces and
         // edges and pinched stars; the pass itself on 2, 3 and 7 threads (the build caps
         // them by memory and size, see `threads_for`).
-        let mut x = 0x00DD_BA11_u64;
-        let mut rnd = |m: usize| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x % m as u64) as u32
-        };
+        let mut rnd = crate::test_rng(0x00DD_BA11_u64);
         for (n, t) in [(40usize, 600usize), (300, 3000), (2000, 5000)] {
             let v: Vec<u32> = (0..4 * t)
                 .map(|_| rnd(n))

@@ -379,13 +379,7 @@ fn build_is_the_same_on_any_number_of_threads() {
     // triangle flipped (orientation). The report's examples must come in the same order.
     let s = topomesh::generate::torus(320, 160);
     let n = s.positions.len();
-    let mut x = 99u64;
-    let mut rnd = |m: usize| {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x % m as u64) as u32
-    };
+    let mut rng = common::Rng(99);
     let mut tris: Vec<[u32; 3]> = s
         .triangles
         .iter()
@@ -393,8 +387,8 @@ fn build_is_the_same_on_any_number_of_threads() {
         .map(|(t, &[a, b, c])| if t % 3 == 0 { [a, c, b] } else { [a, b, c] })
         .collect();
     for k in 0..1500 {
-        let t = s.triangles[rnd(s.triangles.len()) as usize];
-        let mut extra = [0; 3].map(|_| rnd(n));
+        let t = s.triangles[rng.below(s.triangles.len())];
+        let mut extra = [0; 3].map(|_| rng.below(n) as u32);
         extra[..2 - k % 3].copy_from_slice(&t[..2 - k % 3]);
         tris.push(extra);
     }

@@ -4,10 +4,11 @@
 use super::matching::{for_each_group_par, half_edge};
 use super::report::{BuildReport, push_example};
 use super::{Che, level2, level3, orient, split};
+use crate::NONE;
 use crate::error::{Error, Result};
-use crate::rank::RankBits;
-use crate::rank_directory::RankDirectory;
-use crate::{NONE, extend_examples};
+use crate::util::extend_examples;
+use crate::util::rank::RankBits;
+use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
 use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
@@ -81,7 +82,7 @@ pub(crate) fn build(
     };
 
     // Soup: range check, degenerate triangles dropped.
-    let threads = crate::par::build_threads(options.threads, triangles.len());
+    let threads = crate::util::par::build_threads(options.threads, triangles.len());
     let (mut v, triangle_origin) = super::soup::soup(triangles, n_vertices, &mut report, threads)?;
     let dropped_any = !triangle_origin.is_empty();
     let origin_of = |t: u32| {
@@ -96,7 +97,7 @@ pub(crate) fn build(
     // ranges of pairs and write the partners at random (relaxed atomic stores, plain ones
     // on x86-64; the conversions in and out are in place and free); the rest is added up
     // in pair order.
-    let partner: Vec<u32> = crate::pages::filled(v.len(), NONE);
+    let partner: Vec<u32> = crate::util::pages::filled(v.len(), NONE);
     let partner: Vec<AtomicU32> = partner.into_iter().map(AtomicU32::new).collect();
     // Direction bits (`V[h] < V[next(h)]`): 1 bit per half-edge stays in cache, where
     // reading `V` at both half-edges of every pair would miss it.

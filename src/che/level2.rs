@@ -5,11 +5,11 @@
 
 use super::Che;
 use crate::NONE;
-use crate::rank_directory::RankDirectory;
+use crate::util::rank_directory::RankDirectory;
 
 pub(crate) fn build(che: &mut Che) {
     let (v, o) = (&che.v, &che.o);
-    let mut vh = crate::pages::filled(che.n_vertices, NONE);
+    let mut vh = crate::util::pages::filled(che.n_vertices, NONE);
     for (h, (&x, &opp)) in v.iter().zip(o).enumerate() {
         let slot = &mut vh[x as usize];
         if *slot == NONE || opp == NONE {
@@ -34,7 +34,7 @@ pub(crate) fn edge_directory(o: &[u32]) -> RankDirectory {
 pub(crate) fn build_edges(che: &mut Che) {
     let (v, o) = (&che.v, &che.o);
     let edge_bits = edge_directory(o);
-    let mut eh = crate::pages::with_capacity(edge_bits.ones());
+    let mut eh = crate::util::pages::with_capacity(edge_bits.ones());
     eh.extend((0..v.len() as u32).filter(|&h| edge_bits.get(h as usize)));
     debug_assert_eq!(eh.len(), che.num_edges);
     che.edge_bits = edge_bits;

@@ -5,7 +5,7 @@
 use super::Che;
 use super::ids::next;
 use crate::NONE;
-use crate::rank::RankBits;
+use crate::util::rank::RankBits;
 
 pub(crate) fn build(che: &mut Che) {
     let (v, o, vh) = (&che.v, &che.o, &che.vh);

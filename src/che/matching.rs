@@ -77,7 +77,7 @@ fn groups<S: Send>(
         .step_by(part_len)
         .map(|a| (a as u32, (a + part_len).min(v.len()) as u32))
         .collect();
-    let starts: Vec<Vec<u32>> = crate::par::run_all(parts.clone(), |(a, b)| {
+    let starts: Vec<Vec<u32>> = crate::util::par::run_all(parts.clone(), |(a, b)| {
         let mut start = vec![0u32; n_coarse + 1];
         for h in a..b {
             start[(ends(h).0 >> shift) as usize + 1] += 1;
@@ -88,11 +88,11 @@ fn groups<S: Send>(
         start
     });
     let fine_mask = (1u32 << shift) - 1;
-    let mut keys: Vec<u64> = crate::pages::zeroed(v.len());
+    let mut keys: Vec<u64> = crate::util::pages::zeroed(v.len());
     let mut mins: Vec<u32> = if packed {
         Vec::new()
     } else {
-        crate::pages::zeroed(v.len())
+        crate::util::pages::zeroed(v.len())
     };
     {
         let mut min_parts: Vec<&mut [u32]> = if packed {
@@ -105,7 +105,7 @@ fn groups<S: Send>(
             .zip(min_parts.drain(..))
             .zip(parts.iter().zip(&starts))
             .collect();
-        crate::par::run_all(jobs, |((keys, mins), (&(a, b), start))| {
+        crate::util::par::run_all(jobs, |((keys, mins), (&(a, b), start))| {
             let mut fill = start.clone();
             for h in a..b {
                 let (min, max) = ends(h);
@@ -139,7 +139,7 @@ fn groups<S: Send>(
     let (keys, mins) = (&keys, &mins);
     let (parts, starts) = (&parts, &starts);
     let f = &f;
-    crate::par::run_all(jobs, |(first, last, mut s)| {
+    crate::util::par::run_all(jobs, |(first, last, mut s)| {
         // Second pass, one coarse bucket at a time: by the low bits of the smaller vertex.
         let n_fine = 1usize << shift;
         let mut fine_start = vec![0u32; n_fine + 1];
@@ -288,7 +288,7 @@ mod tests {
     fn groups_match_a_map_on_many_vertices() {
         // Enough vertices for both radix passes to have more than one bucket.
         for n in [2047usize, 2048, 2049, 5000, 70_000] {
-            let mut rnd = crate::test_rng(12345u64);
+            let mut rnd = crate::util::test_rng(12345u64);
             let v: Vec<u32> = (0..3 * 4000).map(|_| rnd(n)).collect();
             let mut expected = std::collections::BTreeMap::<(u32, u32), Vec<u32>>::new();
             for h in 0..v.len() as u32 {

@@ -37,8 +37,8 @@ pub use summary::Summary;
 
 use crate::NONE;
 use crate::error::{Error, Result};
-use crate::rank::RankBits;
-use crate::rank_directory::RankDirectory;
+use crate::util::rank::RankBits;
+use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
 
 /// A triangle surface in the Compact Half-Edge structure.

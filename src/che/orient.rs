@@ -105,7 +105,7 @@ pub(crate) fn orient(v: &mut [u32], partner: &[u32]) -> Oriented {
             is_seam[h as usize] = true;
         }
     }
-    let mut o = crate::pages::filled(v.len(), NONE);
+    let mut o = crate::util::pages::filled(v.len(), NONE);
     for h in 0..v.len() as u32 {
         let g = partner[h as usize];
         if g != NONE && (is_seam.is_empty() || !is_seam[h as usize]) {

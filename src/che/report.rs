@@ -47,4 +47,4 @@ impl BuildReport {
     }
 }
 
-pub(crate) use crate::push_example;
+pub(crate) use crate::util::push_example;

@@ -14,25 +14,25 @@ pub(crate) fn soup(
 ) -> Result<(Vec<u32>, Vec<u32>)> {
     let n = triangles.len();
     let chunk = n.div_ceil(threads.max(1)).max(1);
-    let mut v: Vec<u32> = crate::pages::zeroed(3 * n);
+    let mut v: Vec<u32> = crate::util::pages::zeroed(3 * n);
     let jobs: Vec<_> = triangles
         .chunks(chunk)
         .zip(v.chunks_mut(3 * chunk))
         .enumerate()
         .map(|(j, (tris, v))| (j * chunk, tris, v))
         .collect();
-    let runs = crate::par::run_all(jobs, |(t0, tris, v)| run(t0, tris, v, n_vertices));
+    let runs = crate::util::par::run_all(jobs, |(t0, tris, v)| run(t0, tris, v, n_vertices));
     let mut dropped = Vec::new();
     for r in runs {
         let run = r?;
         report.dropped_degenerate += run.len();
-        crate::extend_examples(&mut report.degenerate_examples, run.iter().copied());
+        crate::util::extend_examples(&mut report.degenerate_examples, run.iter().copied());
         dropped.extend(run);
     }
     let origin = if dropped.is_empty() {
         Vec::new()
     } else {
-        crate::holes::close_holes(&mut v, 3, &mut Vec::<u8>::new(), &dropped)
+        crate::util::holes::close_holes(&mut v, 3, &mut Vec::<u8>::new(), &dropped)
     };
     Ok((v, origin))
 }

@@ -5,7 +5,7 @@
 use super::ids::{next, prev};
 use super::report::push_example;
 use crate::NONE;
-use crate::dsu::Dsu;
+use crate::util::dsu::Dsu;
 
 fn test(bits: &[u64], i: u32) -> bool {
     (bits[(i >> 6) as usize] >> (i & 63)) & 1 == 1
@@ -54,8 +54,8 @@ fn walk_fan(o: &[u32], h: u32, visit: &mut impl FnMut(u32)) -> (u32, u32) {
 /// misses overlap instead of queueing.
 /// The walks share out among up to `threads` threads, each over a range of vertices.
 fn single_fans(v: &[u32], o: &[u32], n_vertices: usize, threads: usize) -> (Vec<u32>, Vec<u32>) {
-    let mut vh = crate::pages::filled(n_vertices, NONE);
-    let mut degree: Vec<u32> = crate::pages::zeroed(n_vertices);
+    let mut vh = crate::util::pages::filled(n_vertices, NONE);
+    let mut degree: Vec<u32> = crate::util::pages::zeroed(n_vertices);
     for h in (0..v.len() as u32).rev() {
         let x = v[h as usize] as usize;
         vh[x] = h;
@@ -68,7 +68,7 @@ fn single_fans(v: &[u32], o: &[u32], n_vertices: usize, threads: usize) -> (Vec<
         .enumerate()
         .map(|(j, (vh, degree))| (j * chunk, vh, degree))
         .collect();
-    let found = crate::par::run_all(jobs, |(first, vh, degree)| {
+    let found = crate::util::par::run_all(jobs, |(first, vh, degree)| {
         single_fans_of(o, first, vh, degree)
     });
     let mut several: Vec<u32> = found.concat();

@@ -4,7 +4,7 @@
 use super::Che;
 use super::ids::next;
 use crate::NONE;
-use crate::dsu::Dsu;
+use crate::util::dsu::Dsu;
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]

@@ -11,7 +11,7 @@ use super::strict::{strict_after_split, strict_faces};
 use super::{Chf, level2, level3, soup, split};
 use crate::NONE;
 use crate::error::{Error, Result};
-use crate::rank::RankBits;
+use crate::util::rank::RankBits;
 use glam::DVec3;
 
 /// How to build: the level (0..=3) and whether non-manifold input is an error.
@@ -60,7 +60,7 @@ pub(crate) fn build(
         input_vertices: n_vertices,
         ..ChfBuildReport::default()
     };
-    let n_threads = crate::par::build_threads(options.threads, tets.len());
+    let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     let mut soup = soup::soup(tets, n_vertices, positions, &mut report, n_threads)?;
     let tet_origin = std::mem::take(&mut soup.tet_origin);
     let origin_of = |t: u32| {

@@ -180,7 +180,7 @@ mod tests {
 
     #[test]
     fn bulk_rows_are_the_one_element_answers_at_every_level() {
-        let mut rnd = crate::test_rng(0x2545_F491_4F6C_DD1Du64);
+        let mut rnd = crate::util::test_rng(0x2545_F491_4F6C_DD1Du64);
         for round in 0..60 {
             let n = 6 + round % 15;
             let tets: Vec<[u32; 4]> = (0..8 + round % 40)

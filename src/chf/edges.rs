@@ -19,7 +19,7 @@
 
 use super::ids::{HalfEdge, NO_HALF_EDGE, mate, radial, slot_half_edges, slot_of};
 use super::report::push_example;
-use crate::rank::RankBits;
+use crate::util::rank::RankBits;
 
 /// How a walk around an edge ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -177,7 +177,7 @@ pub(crate) fn census(
         start[i + 1] += start[i];
     }
     let mut fill = start.clone();
-    let mut slots: Vec<u64> = crate::pages::zeroed(bits.ones());
+    let mut slots: Vec<u64> = crate::util::pages::zeroed(bits.ones());
     for s in canonical() {
         let f = &mut fill[input_ends(s).0 as usize];
         slots[*f as usize] = s;

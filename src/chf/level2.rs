@@ -6,7 +6,7 @@
 
 use super::Chf;
 use super::view::face_bits;
-use crate::rank::RankBits;
+use crate::util::rank::RankBits;
 
 /// `edge_bits` (the canonical slots) and `vh` come from the star pass (`stars.rs`), run
 /// once by the build or the level change.

@@ -20,9 +20,9 @@ use super::ids::face_cycle;
 use super::view::Need;
 use crate::NONE;
 use crate::che::{BuildOptions, Che};
-use crate::dsu::Dsu;
 use crate::error::Result;
-use crate::rank::RankBits;
+use crate::util::dsu::Dsu;
+use crate::util::rank::RankBits;
 use std::borrow::Cow;
 
 #[derive(Clone, Debug)]

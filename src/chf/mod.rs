@@ -65,7 +65,7 @@ pub use star::{INLINE as STAR_INLINE, VertexIds};
 pub use summary::ChfSummary;
 
 use crate::error::{Error, Result};
-use crate::rank::RankBits;
+use crate::util::rank::RankBits;
 use edges::MultiFan;
 use glam::DVec3;
 
@@ -146,7 +146,7 @@ impl Chf {
 
     /// The threads `build_level` takes: the build's default for this mesh.
     fn build_threads(&self) -> usize {
-        crate::par::build_threads(0, self.num_tetrahedra())
+        crate::util::par::build_threads(0, self.num_tetrahedra())
     }
 
     /// Raises (or lowers) the level in place, on every thread of the machine. Ids do not

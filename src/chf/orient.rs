@@ -157,7 +157,7 @@ pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Oriented {
         }
         out.links = vec![NONE; v.len()];
     }
-    let mut o = crate::pages::filled(v.len(), NONE);
+    let mut o = crate::util::pages::filled(v.len(), NONE);
     for h in 0..v.len() as u32 {
         let g = partner[h as usize];
         if g == NONE {

@@ -39,7 +39,7 @@ impl Opposites {
         let bits = usize::BITS - n_hf.saturating_sub(1).leading_zeros();
         let shift = bits.saturating_sub(WINDOWS_BITS);
         let n_windows = (n_hf.saturating_sub(1) >> shift) + 1;
-        let records: Vec<u64> = crate::pages::zeroed(n_hf);
+        let records: Vec<u64> = crate::util::pages::zeroed(n_hf);
         Opposites {
             n_hf,
             shift,
@@ -77,7 +77,7 @@ impl Opposites {
         if o.capacity() < self.n_hf {
             // Too small: let it go before the new one comes (the build's peak).
             drop(o);
-            o = crate::pages::with_capacity(self.n_hf);
+            o = crate::util::pages::with_capacity(self.n_hf);
         }
         o.resize(self.n_hf, NONE);
         // A buffer much larger than `O` gives the rest back (in place: no copy).

@@ -69,4 +69,4 @@ impl ChfBuildReport {
     }
 }
 
-pub(crate) use crate::push_example;
+pub(crate) use crate::util::push_example;

@@ -48,7 +48,7 @@ pub(crate) fn soup(
 ) -> Result<Soup> {
     let n = tets.len();
     let chunk = n.div_ceil(threads.max(1)).max(1);
-    let mut v: Vec<u32> = crate::pages::zeroed(4 * n);
+    let mut v: Vec<u32> = crate::util::pages::zeroed(4 * n);
     let mut sign: Vec<i8> = vec![0; if positions.is_empty() { 0 } else { n }];
     let mut sign_parts: Vec<&mut [i8]> = if positions.is_empty() {
         tets.chunks(chunk).map(|_| &mut [][..]).collect()
@@ -62,7 +62,7 @@ pub(crate) fn soup(
         .enumerate()
         .map(|(j, ((tets, v), sign))| (j * chunk, tets, v, sign))
         .collect();
-    let runs = crate::par::run_all(jobs, |(t0, tets, v, sign)| {
+    let runs = crate::util::par::run_all(jobs, |(t0, tets, v, sign)| {
         run(t0, tets, v, sign, n_vertices, positions)
     });
     let mut dropped: Vec<u32> = Vec::new();
@@ -72,17 +72,17 @@ pub(crate) fn soup(
             return Err(e);
         }
         report.dropped_degenerate += r.dropped.len();
-        crate::extend_examples(&mut report.degenerate_examples, r.dropped.iter().copied());
+        crate::util::extend_examples(&mut report.degenerate_examples, r.dropped.iter().copied());
         dropped.extend(r.dropped);
         report.zero_volume += r.zero_volume;
-        crate::extend_examples(&mut report.zero_volume_examples, r.zero_volume_examples);
+        crate::util::extend_examples(&mut report.zero_volume_examples, r.zero_volume_examples);
         flipped += r.flipped;
     }
     // Stays empty (the identity) unless a tetrahedron was dropped.
     let tet_origin = if dropped.is_empty() {
         Vec::new()
     } else {
-        crate::holes::close_holes(&mut v, 4, &mut sign, &dropped)
+        crate::util::holes::close_holes(&mut v, 4, &mut sign, &dropped)
     };
     Ok(Soup {
         v,

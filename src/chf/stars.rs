@@ -20,8 +20,8 @@ use super::edges::MultiFan;
 use super::link::{FaceCensus, Link, Record, Sums};
 use super::pairs::{Opposites, Writer};
 use crate::NONE;
-use crate::extend_examples;
-use crate::rank::RankBits;
+use crate::util::extend_examples;
+use crate::util::rank::RankBits;
 
 /// 256 coarse buckets: the scatter's 256 write heads (a cache line each) stay in the L1
 /// cache (512 took about 4% longer on the 1M-tetrahedron build; 128 no better).
@@ -96,7 +96,7 @@ pub(crate) fn stars(
     if parts.is_empty() {
         parts.push(v);
     }
-    let part_counts = crate::par::run_all(parts.clone(), |part| {
+    let part_counts = crate::util::par::run_all(parts.clone(), |part| {
         let mut count = vec![0u32; n_coarse];
         for &x in part {
             count[(x >> shift) as usize] += 1;
@@ -108,7 +108,7 @@ pub(crate) fn stars(
         .collect();
     let opposites = Opposites::new(if collect { v.len() } else { 0 });
     let mut vh = if tables {
-        crate::pages::filled(n_vertices, NONE)
+        crate::util::pages::filled(n_vertices, NONE)
     } else {
         Vec::new()
     };
@@ -185,7 +185,7 @@ pub(crate) fn stars(
         })
         .collect();
     let mut records: Vec<u32> =
-        crate::pages::with_capacity(v.len().max(sizes.iter().sum::<usize>()));
+        crate::util::pages::with_capacity(v.len().max(sizes.iter().sum::<usize>()));
     records.resize(sizes.iter().sum(), 0);
     // Never cleared: every record a round reads, it wrote. Where each region starts:
     let regions: Vec<usize> = sizes
@@ -203,7 +203,7 @@ pub(crate) fn stars(
             rest = r;
             jobs.push((j * part_len / 4, part, &pc[first..last], mine));
         }
-        let starts = crate::par::run_all(jobs, |(t0, part, pc, rec)| {
+        let starts = crate::util::par::run_all(jobs, |(t0, part, pc, rec)| {
             scatter(part, t0 as u32, pc, first as u32, shift, rec)
         });
         let records = &records[..];
@@ -251,7 +251,7 @@ pub(crate) fn stars(
                 .collect();
             jobs.push((worker, buckets, mine, vh_base));
         }
-        let tallies = crate::par::run_all(jobs, |(w, buckets, vh, base)| {
+        let tallies = crate::util::par::run_all(jobs, |(w, buckets, vh, base)| {
             w.round(&buckets, vh, base, mode)
         });
         for t in tallies {
@@ -409,7 +409,7 @@ impl<'o> Worker<'o> {
             edge_slots: if edge_slots == 0 {
                 Vec::new()
             } else {
-                crate::pages::with_capacity(edge_slots)
+                crate::util::pages::with_capacity(edge_slots)
             },
             local: Vec::new(),
             fine_start: Vec::new(),
@@ -583,7 +583,7 @@ mod against_walks {
 
     #[test]
     fn stars_match_walking_the_fans() {
-        let mut rnd = crate::test_rng(0x1234_5678_9ABC_DEF0u64);
+        let mut rnd = crate::util::test_rng(0x1234_5678_9ABC_DEF0u64);
         for round in 0..200 {
             // Random soups: duplicates, non-manifold faces and edges, pinched links, seams.
             let n = 6 + round % 20;
@@ -617,7 +617,7 @@ mod against_walks {
         // Soups dense enough that every pair mode meets duplicates, non-manifold faces and
         // edges and pinched stars; the pass itself on 2, 3 and 7 threads (the build caps
         // them by memory and size, see `threads_for`).
-        let mut rnd = crate::test_rng(0x00DD_BA11_u64);
+        let mut rnd = crate::util::test_rng(0x00DD_BA11_u64);
         for (n, t) in [(40usize, 600usize), (300, 3000), (2000, 5000)] {
             let v: Vec<u32> = (0..4 * t)
                 .map(|_| rnd(n))

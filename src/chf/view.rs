@@ -7,7 +7,7 @@ use super::edges::{self, MultiFan};
 use super::ids::{HalfEdge, first, he_face, local, sorted_triple, tet};
 use super::{Chf, stars};
 use crate::NONE;
-use crate::rank::RankBits;
+use crate::util::rank::RankBits;
 use std::borrow::Cow;
 
 /// Which ranks a query needs besides `V` and `O`.

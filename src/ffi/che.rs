@@ -3,7 +3,7 @@
 
 use crate::che::{BuildOptions, Che, edge_directory};
 use crate::error::{Error, Result};
-use crate::rank_directory::RankDirectory;
+use crate::util::rank_directory::RankDirectory;
 use std::sync::OnceLock;
 
 /// Opaque handle to a CHE surface. Create with `che_mesh_from_triangles` or

@@ -16,7 +16,7 @@ pub struct RankDirectory {
 impl RankDirectory {
     /// Bit `i` is `bit(i)`, for `i < len`; `None` when more than `u32::MAX` bits are set.
     pub fn from_fn(len: usize, mut bit: impl FnMut(usize) -> bool) -> Option<Self> {
-        let mut entries = crate::pages::with_capacity(len.div_ceil(SPAN));
+        let mut entries = crate::util::pages::with_capacity(len.div_ceil(SPAN));
         let mut ones = 0u32;
         for base in (0..len).step_by(SPAN) {
             let mut flags = 0u32;

@@ -549,28 +549,7 @@ typedef struct chf_memory {
 extern "C" {
 #endif // __cplusplus
 
-/**
- * A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
- * the `topomesh_status` values.
- */
-const char *topomesh_status_str(topomesh_status s);
-
-/**
- * The detail of the last failed call on this thread (for example
- * "vertex 12 out of range (the mesh has 8 vertices)"), NUL-terminated, into `buf`.
- *
- * `*out_len` receives the needed capacity in bytes, terminating NUL included (1 when no
- * call has failed yet on this thread). `buf == NULL` with `cap == 0` is a size query
- * (returns OK). A `buf` shorter than needed receives a truncated, NUL-terminated message
- * and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. Successful calls do not clear
- * the detail; this function never changes it.
- */
-topomesh_status topomesh_last_error(char *buf, size_t cap, size_t *out_len);
-
-/**
- * The library version, "MAJOR.MINOR.PATCH" (static, NUL-terminated).
- */
-const char *topomesh_version(void);
+/* ---- CHE: create, load, build levels and free ---- */
 
 /**
  * The default build options: level 2, not strict, every thread of the machine.
@@ -642,6 +621,8 @@ topomesh_status che_mesh_build_level(struct che_mesh *m, uint32_t level);
  */
 uint32_t che_mesh_level(const struct che_mesh *m);
 
+/* ---- CHE: counts ---- */
+
 /**
  * Vertices of the structure: the input vertices, then the copies made by splitting
  * non-manifold vertices. 0 for NULL (and likewise for the other counts).
@@ -673,75 +654,7 @@ size_t che_mesh_num_half_edges(const struct che_mesh *m);
  */
 size_t che_mesh_num_boundary_curves(const struct che_mesh *m);
 
-/**
- * VV for every vertex (rows as `che_vertex_vertices`).
- */
-topomesh_status che_mesh_vertex_vertices_csr(const struct che_mesh *m,
-                                             uint32_t *offsets,
-                                             size_t offsets_cap,
-                                             uint32_t *indices,
-                                             size_t indices_cap,
-                                             size_t *n_offsets,
-                                             size_t *n_indices);
-
-/**
- * VE for every vertex (rows as `che_vertex_edges`).
- */
-topomesh_status che_mesh_vertex_edges_csr(const struct che_mesh *m,
-                                          uint32_t *offsets,
-                                          size_t offsets_cap,
-                                          uint32_t *indices,
-                                          size_t indices_cap,
-                                          size_t *n_offsets,
-                                          size_t *n_indices);
-
-/**
- * VF for every vertex (rows as `che_vertex_triangles`).
- */
-topomesh_status che_mesh_vertex_triangles_csr(const struct che_mesh *m,
-                                              uint32_t *offsets,
-                                              size_t offsets_cap,
-                                              uint32_t *indices,
-                                              size_t indices_cap,
-                                              size_t *n_offsets,
-                                              size_t *n_indices);
-
-/**
- * FF for every triangle: 3 entries per row (so `offsets[t] == 3 t`), `TOPOMESH_NONE`
- * across boundary edges, as `che_triangle_triangles`. O(T) at every level.
- */
-topomesh_status che_mesh_triangle_triangles_csr(const struct che_mesh *m,
-                                                uint32_t *offsets,
-                                                size_t offsets_cap,
-                                                uint32_t *indices,
-                                                size_t indices_cap,
-                                                size_t *n_offsets,
-                                                size_t *n_indices);
-
-/**
- * The topology summary into `*out`. O(T) at every level.
- */
-topomesh_status che_mesh_summary(const struct che_mesh *m, struct che_summary *out);
-
-/**
- * The build report into `*out`. O(1).
- */
-topomesh_status che_mesh_report(const struct che_mesh *m, struct che_build_report *out);
-
-/**
- * The first offending ids of one kind (a `che_report_kind` value), flattened, into `buf`
- * (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
- */
-topomesh_status che_mesh_report_examples(const struct che_mesh *m,
-                                         uint32_t kind,
-                                         uint32_t *buf,
-                                         size_t cap,
-                                         size_t *out_len);
-
-/**
- * Memory per container into `*out`. O(1).
- */
-topomesh_status che_mesh_memory(const struct che_mesh *m, struct che_memory *out);
+/* ---- CHE: relations, one element at a time ---- */
 
 /**
  * VV: the vertices around `v`, counter-clockwise seen from outside. On a boundary vertex
@@ -846,6 +759,8 @@ topomesh_status che_boundary_curve_vertices(const struct che_mesh *m,
                                             size_t cap,
                                             size_t *out_len);
 
+/* ---- CHE: half-edges and boundary tests ---- */
+
 /**
  * The opposite of half-edge `h` into `*out` (`TOPOMESH_NONE` on the boundary).
  * O(1) from level 1.
@@ -885,6 +800,8 @@ topomesh_status che_vertex_is_boundary(const struct che_mesh *m, uint32_t v, boo
  */
 topomesh_status che_edge_is_boundary(const struct che_mesh *m, uint32_t e, bool *out);
 
+/* ---- CHE: star iteration (no allocation) ---- */
+
 /**
  * Starts a rotation around vertex `v` in `*it` (an isolated vertex has no steps). From
  * level 2 the iterator holds the zero-copy arrays, so that `che_star_next` steps inline.
@@ -897,6 +814,82 @@ topomesh_status che_star_begin(const struct che_mesh *m, uint32_t v, struct che_
  * when `it` or `step` is NULL). O(1) per step from level 2 (edge ids are O(T) below).
  */
 bool che_star_advance(struct che_star_iter *it, struct che_star_step *step);
+
+/* ---- CHE: bulk relations as CSR arrays ---- */
+
+/**
+ * VV for every vertex (rows as `che_vertex_vertices`).
+ */
+topomesh_status che_mesh_vertex_vertices_csr(const struct che_mesh *m,
+                                             uint32_t *offsets,
+                                             size_t offsets_cap,
+                                             uint32_t *indices,
+                                             size_t indices_cap,
+                                             size_t *n_offsets,
+                                             size_t *n_indices);
+
+/**
+ * VE for every vertex (rows as `che_vertex_edges`).
+ */
+topomesh_status che_mesh_vertex_edges_csr(const struct che_mesh *m,
+                                          uint32_t *offsets,
+                                          size_t offsets_cap,
+                                          uint32_t *indices,
+                                          size_t indices_cap,
+                                          size_t *n_offsets,
+                                          size_t *n_indices);
+
+/**
+ * VF for every vertex (rows as `che_vertex_triangles`).
+ */
+topomesh_status che_mesh_vertex_triangles_csr(const struct che_mesh *m,
+                                              uint32_t *offsets,
+                                              size_t offsets_cap,
+                                              uint32_t *indices,
+                                              size_t indices_cap,
+                                              size_t *n_offsets,
+                                              size_t *n_indices);
+
+/**
+ * FF for every triangle: 3 entries per row (so `offsets[t] == 3 t`), `TOPOMESH_NONE`
+ * across boundary edges, as `che_triangle_triangles`. O(T) at every level.
+ */
+topomesh_status che_mesh_triangle_triangles_csr(const struct che_mesh *m,
+                                                uint32_t *offsets,
+                                                size_t offsets_cap,
+                                                uint32_t *indices,
+                                                size_t indices_cap,
+                                                size_t *n_offsets,
+                                                size_t *n_indices);
+
+/* ---- CHE: summary, build report, memory and validation ---- */
+
+/**
+ * The topology summary into `*out`. O(T) at every level.
+ */
+topomesh_status che_mesh_summary(const struct che_mesh *m, struct che_summary *out);
+
+/**
+ * The build report into `*out`. O(1).
+ */
+topomesh_status che_mesh_report(const struct che_mesh *m, struct che_build_report *out);
+
+/**
+ * The first offending ids of one kind (a `che_report_kind` value), flattened, into `buf`
+ * (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
+ */
+topomesh_status che_mesh_report_examples(const struct che_mesh *m,
+                                         uint32_t kind,
+                                         uint32_t *buf,
+                                         size_t cap,
+                                         size_t *out_len);
+
+/**
+ * Memory per container into `*out`. O(1).
+ */
+topomesh_status che_mesh_memory(const struct che_mesh *m, struct che_memory *out);
+
+/* ---- CHE: zero-copy views of the structure's arrays ---- */
 
 /**
  * `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
@@ -957,6 +950,8 @@ const uint32_t *che_mesh_triangle_origins(const struct che_mesh *m, size_t *len)
  * changes). NULL below level 1.
  */
 const uint64_t *che_mesh_edge_ranks(const struct che_mesh *m, size_t *len);
+
+/* ---- CHF: create, load, build levels and free ---- */
 
 /**
  * The default CHF build options: level 2, not strict, every thread of the machine.
@@ -1033,6 +1028,8 @@ topomesh_status chf_mesh_build_level(struct chf_mesh *m, uint32_t level);
  */
 uint32_t chf_mesh_level(const struct chf_mesh *m);
 
+/* ---- CHF: counts ---- */
+
 /**
  * Vertices of the structure: the input vertices, then the copies made by splitting
  * non-manifold vertices. 0 for NULL (and likewise for the other counts).
@@ -1067,147 +1064,48 @@ size_t chf_mesh_num_edges(const struct chf_mesh *m);
 size_t chf_mesh_num_half_faces(const struct chf_mesh *m);
 
 /**
- * VV for every vertex (rows as `chf_vertex_vertices`).
+ * Boundary faces: faces with exactly one tetrahedron (as `boundary_faces` in
+ * `chf_summary`). The half-faces of faces shared by 3+ tetrahedra
+ * (`chf_mesh_num_non_manifold_half_faces`) and of orientation seams
+ * (`chf_mesh_num_seam_half_faces`) are unpaired too but are not boundary faces; all three
+ * together are the triangles of `chf_mesh_boundary`'s surface
+ * (`chf_mesh_num_boundary_triangles`). O(1) at level 3, O(T) below; 0 for NULL.
  */
-topomesh_status chf_mesh_vertex_vertices_csr(const struct chf_mesh *m,
-                                             uint32_t *offsets,
-                                             size_t offsets_cap,
-                                             uint32_t *indices,
-                                             size_t indices_cap,
-                                             size_t *n_offsets,
-                                             size_t *n_indices);
+size_t chf_mesh_num_boundary_faces(const struct chf_mesh *m);
 
 /**
- * VE for every vertex (rows as `chf_vertex_edges`).
+ * Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface, that is
+ * `chf_mesh_num_boundary_faces + chf_mesh_num_non_manifold_half_faces +
+ * chf_mesh_num_seam_half_faces`. O(1) at level 3, O(T) below; 0 for NULL.
  */
-topomesh_status chf_mesh_vertex_edges_csr(const struct chf_mesh *m,
-                                          uint32_t *offsets,
-                                          size_t offsets_cap,
-                                          uint32_t *indices,
-                                          size_t indices_cap,
-                                          size_t *n_offsets,
-                                          size_t *n_indices);
+size_t chf_mesh_num_boundary_triangles(const struct chf_mesh *m);
 
 /**
- * VF for every vertex (rows as `chf_vertex_faces`).
+ * Half-faces of non-manifold faces (faces shared by 3+ tetrahedra: one per tetrahedron,
+ * each unpaired). O(1); 0 for NULL.
  */
-topomesh_status chf_mesh_vertex_faces_csr(const struct chf_mesh *m,
-                                          uint32_t *offsets,
-                                          size_t offsets_cap,
-                                          uint32_t *indices,
-                                          size_t indices_cap,
-                                          size_t *n_offsets,
-                                          size_t *n_indices);
+size_t chf_mesh_num_non_manifold_half_faces(const struct chf_mesh *m);
 
 /**
- * VT for every vertex (rows as `chf_vertex_tetrahedra`).
+ * Half-faces on orientation seams (a face of two tetrahedra whose orientations disagree,
+ * in a non-orientable component: both unpaired). O(1); 0 for NULL.
  */
-topomesh_status chf_mesh_vertex_tetrahedra_csr(const struct chf_mesh *m,
-                                               uint32_t *offsets,
-                                               size_t offsets_cap,
-                                               uint32_t *indices,
-                                               size_t indices_cap,
-                                               size_t *n_offsets,
-                                               size_t *n_indices);
+size_t chf_mesh_num_seam_half_faces(const struct chf_mesh *m);
 
 /**
- * EF for every edge (rows as `chf_edge_faces`, in rotation order).
+ * Boundary vertices: the vertices of the unpaired half-faces, the vertices of
+ * `chf_mesh_boundary`'s surface before its own split. O(1) at level 3, O(T) below; 0 for
+ * NULL.
  */
-topomesh_status chf_mesh_edge_faces_csr(const struct chf_mesh *m,
-                                        uint32_t *offsets,
-                                        size_t offsets_cap,
-                                        uint32_t *indices,
-                                        size_t indices_cap,
-                                        size_t *n_offsets,
-                                        size_t *n_indices);
+size_t chf_mesh_num_boundary_vertices(const struct chf_mesh *m);
 
 /**
- * ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order).
+ * Boundary components of the structure (after the vertex split): components of the
+ * boundary faces joined through shared vertices. O(1) at level 3, O(T) below; 0 for NULL.
  */
-topomesh_status chf_mesh_edge_tetrahedra_csr(const struct chf_mesh *m,
-                                             uint32_t *offsets,
-                                             size_t offsets_cap,
-                                             uint32_t *indices,
-                                             size_t indices_cap,
-                                             size_t *n_offsets,
-                                             size_t *n_indices);
+size_t chf_mesh_num_boundary_components(const struct chf_mesh *m);
 
-/**
- * TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
- * tetrahedron across face `i`, `TOPOMESH_NONE` on the boundary, as
- * `chf_tetrahedron_tetrahedra`.
- */
-topomesh_status chf_mesh_tetrahedron_tetrahedra_csr(const struct chf_mesh *m,
-                                                    uint32_t *offsets,
-                                                    size_t offsets_cap,
-                                                    uint32_t *indices,
-                                                    size_t indices_cap,
-                                                    size_t *n_offsets,
-                                                    size_t *n_indices);
-
-/**
- * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2, a
- * scan below.
- */
-topomesh_status chf_vertex_is_boundary(const struct chf_mesh *m, uint32_t v, bool *out);
-
-/**
- * Is edge `e` on the boundary (on a boundary face)? O(1) from level 2.
- */
-topomesh_status chf_edge_is_boundary(const struct chf_mesh *m, uint32_t e, bool *out);
-
-/**
- * Is face `f` on the boundary (one tetrahedron)? O(1) from level 2.
- */
-topomesh_status chf_face_is_boundary(const struct chf_mesh *m, uint32_t f, bool *out);
-
-/**
- * The twin of half-face `hf` (the same face seen from the neighbouring tetrahedron) into
- * `*out`, `TOPOMESH_NONE` on the boundary. O(1) from level 1, a scan at level 0.
- */
-topomesh_status chf_half_face_opposite(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
-
-/**
- * The face of half-face `hf` into `*out`. O(1) from level 2.
- */
-topomesh_status chf_half_face_face(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
-
-/**
- * The canonical half-face of face `f` into `*out`: the boundary one on a boundary face,
- * else the smaller of the two. O(1) from level 2.
- */
-topomesh_status chf_face_half_face(const struct chf_mesh *m, uint32_t f, uint32_t *out);
-
-/**
- * A half-face holding vertex `v` into `*out`, where its star starts: a boundary one on a
- * boundary vertex, `TOPOMESH_NONE` for an isolated vertex (`VH[v]`). O(1) from level 2.
- */
-topomesh_status chf_vertex_half_face(const struct chf_mesh *m, uint32_t v, uint32_t *out);
-
-/**
- * The topology summary into `*out`. O(T log T) at every level.
- */
-topomesh_status chf_mesh_summary(const struct chf_mesh *m, struct chf_summary *out);
-
-/**
- * The build report into `*out`. O(1).
- */
-topomesh_status chf_mesh_report(const struct chf_mesh *m, struct chf_build_report *out);
-
-/**
- * The first offending ids of one kind (a `chf_report_kind` value), flattened, into `buf`
- * (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
- */
-topomesh_status chf_mesh_report_examples(const struct chf_mesh *m,
-                                         uint32_t kind,
-                                         uint32_t *buf,
-                                         size_t cap,
-                                         size_t *out_len);
-
-/**
- * Memory per container into `*out`. O(1).
- */
-topomesh_status chf_mesh_memory(const struct chf_mesh *m, struct chf_memory *out);
+/* ---- CHF: relations, one element at a time ---- */
 
 /**
  * VV: the vertices sharing an edge with `v`, each once, in increasing order (found by a
@@ -1373,6 +1271,57 @@ topomesh_status chf_tetrahedron_tetrahedra(const struct chf_mesh *m,
                                            size_t cap,
                                            size_t *out_len);
 
+/* ---- CHF: half-faces and boundary tests ---- */
+
+/**
+ * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2, a
+ * scan below.
+ */
+topomesh_status chf_vertex_is_boundary(const struct chf_mesh *m, uint32_t v, bool *out);
+
+/**
+ * Is edge `e` on the boundary (on a boundary face)? O(1) from level 2.
+ */
+topomesh_status chf_edge_is_boundary(const struct chf_mesh *m, uint32_t e, bool *out);
+
+/**
+ * Is face `f` on the boundary (one tetrahedron)? O(1) from level 2.
+ */
+topomesh_status chf_face_is_boundary(const struct chf_mesh *m, uint32_t f, bool *out);
+
+/**
+ * The twin of half-face `hf` (the same face seen from the neighbouring tetrahedron) into
+ * `*out`, `TOPOMESH_NONE` on the boundary. O(1) from level 1, a scan at level 0.
+ */
+topomesh_status chf_half_face_opposite(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
+
+/**
+ * The face of half-face `hf` into `*out`. O(1) from level 2.
+ */
+topomesh_status chf_half_face_face(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
+
+/**
+ * The canonical half-face of face `f` into `*out`: the boundary one on a boundary face,
+ * else the smaller of the two. O(1) from level 2.
+ */
+topomesh_status chf_face_half_face(const struct chf_mesh *m, uint32_t f, uint32_t *out);
+
+/**
+ * A half-face holding vertex `v` into `*out`, where its star starts: a boundary one on a
+ * boundary vertex, `TOPOMESH_NONE` for an isolated vertex (`VH[v]`). O(1) from level 2.
+ */
+topomesh_status chf_vertex_half_face(const struct chf_mesh *m, uint32_t v, uint32_t *out);
+
+/**
+ * The half-face of boundary triangle `k` into `*out`; `k` out of range (see
+ * `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE.
+ */
+topomesh_status chf_boundary_triangle_half_face(const struct chf_mesh *m,
+                                                uint32_t k,
+                                                uint32_t *out);
+
+/* ---- CHF: the boundary surface (level 3) and its maps ---- */
+
 /**
  * The boundary surface as a new CHE at level 3 into `*out`, which the caller frees with
  * `che_mesh_free` (it does not borrow the volume mesh). A copy of the stored surface at
@@ -1380,42 +1329,6 @@ topomesh_status chf_tetrahedron_tetrahedra(const struct chf_mesh *m,
  * curves); a mesh without tetrahedra an empty one. `*out` is NULL on failure.
  */
 topomesh_status chf_mesh_boundary(const struct chf_mesh *m, struct che_mesh **out);
-
-/**
- * Boundary faces: faces with exactly one tetrahedron (as `boundary_faces` in
- * `chf_summary`). The half-faces of faces shared by 3+ tetrahedra
- * (`chf_mesh_num_non_manifold_half_faces`) and of orientation seams
- * (`chf_mesh_num_seam_half_faces`) are unpaired too but are not boundary faces; all three
- * together are the triangles of `chf_mesh_boundary`'s surface
- * (`chf_mesh_num_boundary_triangles`). O(1) at level 3, O(T) below; 0 for NULL.
- */
-size_t chf_mesh_num_boundary_faces(const struct chf_mesh *m);
-
-/**
- * Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface, that is
- * `chf_mesh_num_boundary_faces + chf_mesh_num_non_manifold_half_faces +
- * chf_mesh_num_seam_half_faces`. O(1) at level 3, O(T) below; 0 for NULL.
- */
-size_t chf_mesh_num_boundary_triangles(const struct chf_mesh *m);
-
-/**
- * Half-faces of non-manifold faces (faces shared by 3+ tetrahedra: one per tetrahedron,
- * each unpaired). O(1); 0 for NULL.
- */
-size_t chf_mesh_num_non_manifold_half_faces(const struct chf_mesh *m);
-
-/**
- * Half-faces on orientation seams (a face of two tetrahedra whose orientations disagree,
- * in a non-orientable component: both unpaired). O(1); 0 for NULL.
- */
-size_t chf_mesh_num_seam_half_faces(const struct chf_mesh *m);
-
-/**
- * Boundary vertices: the vertices of the unpaired half-faces, the vertices of
- * `chf_mesh_boundary`'s surface before its own split. O(1) at level 3, O(T) below; 0 for
- * NULL.
- */
-size_t chf_mesh_num_boundary_vertices(const struct chf_mesh *m);
 
 /**
  * The boundary-surface vertex of volume vertex `v` into `*out`, `TOPOMESH_NONE` off the
@@ -1431,25 +1344,11 @@ topomesh_status chf_vertex_boundary_vertex(const struct chf_mesh *m, uint32_t v,
 topomesh_status chf_boundary_vertex_vertex(const struct chf_mesh *m, uint32_t b, uint32_t *out);
 
 /**
- * Boundary components of the structure (after the vertex split): components of the
- * boundary faces joined through shared vertices. O(1) at level 3, O(T) below; 0 for NULL.
- */
-size_t chf_mesh_num_boundary_components(const struct chf_mesh *m);
-
-/**
  * The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is
  * paired (interior).
  */
 topomesh_status chf_half_face_boundary_triangle(const struct chf_mesh *m,
                                                 uint32_t hf,
-                                                uint32_t *out);
-
-/**
- * The half-face of boundary triangle `k` into `*out`; `k` out of range (see
- * `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE.
- */
-topomesh_status chf_boundary_triangle_half_face(const struct chf_mesh *m,
-                                                uint32_t k,
                                                 uint32_t *out);
 
 /**
@@ -1467,6 +1366,137 @@ topomesh_status chf_boundary_triangle_face(const struct chf_mesh *m, uint32_t k,
  * see `chf_mesh_boundary_vertex_components` for the array at level 3).
  */
 topomesh_status chf_vertex_boundary_component(const struct chf_mesh *m, uint32_t v, uint32_t *out);
+
+/**
+ * The boundary half-faces in increasing order: triangle `k` of `chf_mesh_boundary`'s
+ * surface is the `k`-th. NULL below level 3 (then use `chf_boundary_triangle_half_face`).
+ */
+const uint32_t *chf_mesh_boundary_half_faces(const struct chf_mesh *m, size_t *len);
+
+/**
+ * The boundary vertices in increasing order (`chf_mesh_num_boundary_vertices` entries):
+ * vertex `b` of `chf_mesh_boundary`'s surface is volume vertex `[b]` (copies the surface
+ * splits come after, see `chf_boundary_vertex_vertex`). NULL below level 3.
+ */
+const uint32_t *chf_mesh_boundary_vertices(const struct chf_mesh *m, size_t *len);
+
+/**
+ * The boundary component of every boundary vertex (indexed like
+ * `chf_mesh_boundary_vertices`): components of the boundary triangles joined through
+ * shared vertices, numbered in order of their first boundary half-face. NULL below level
+ * 3 (then use `chf_vertex_boundary_component`).
+ */
+const uint32_t *chf_mesh_boundary_vertex_components(const struct chf_mesh *m, size_t *len);
+
+/* ---- CHF: bulk relations as CSR arrays ---- */
+
+/**
+ * VV for every vertex (rows as `chf_vertex_vertices`).
+ */
+topomesh_status chf_mesh_vertex_vertices_csr(const struct chf_mesh *m,
+                                             uint32_t *offsets,
+                                             size_t offsets_cap,
+                                             uint32_t *indices,
+                                             size_t indices_cap,
+                                             size_t *n_offsets,
+                                             size_t *n_indices);
+
+/**
+ * VE for every vertex (rows as `chf_vertex_edges`).
+ */
+topomesh_status chf_mesh_vertex_edges_csr(const struct chf_mesh *m,
+                                          uint32_t *offsets,
+                                          size_t offsets_cap,
+                                          uint32_t *indices,
+                                          size_t indices_cap,
+                                          size_t *n_offsets,
+                                          size_t *n_indices);
+
+/**
+ * VF for every vertex (rows as `chf_vertex_faces`).
+ */
+topomesh_status chf_mesh_vertex_faces_csr(const struct chf_mesh *m,
+                                          uint32_t *offsets,
+                                          size_t offsets_cap,
+                                          uint32_t *indices,
+                                          size_t indices_cap,
+                                          size_t *n_offsets,
+                                          size_t *n_indices);
+
+/**
+ * VT for every vertex (rows as `chf_vertex_tetrahedra`).
+ */
+topomesh_status chf_mesh_vertex_tetrahedra_csr(const struct chf_mesh *m,
+                                               uint32_t *offsets,
+                                               size_t offsets_cap,
+                                               uint32_t *indices,
+                                               size_t indices_cap,
+                                               size_t *n_offsets,
+                                               size_t *n_indices);
+
+/**
+ * EF for every edge (rows as `chf_edge_faces`, in rotation order).
+ */
+topomesh_status chf_mesh_edge_faces_csr(const struct chf_mesh *m,
+                                        uint32_t *offsets,
+                                        size_t offsets_cap,
+                                        uint32_t *indices,
+                                        size_t indices_cap,
+                                        size_t *n_offsets,
+                                        size_t *n_indices);
+
+/**
+ * ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order).
+ */
+topomesh_status chf_mesh_edge_tetrahedra_csr(const struct chf_mesh *m,
+                                             uint32_t *offsets,
+                                             size_t offsets_cap,
+                                             uint32_t *indices,
+                                             size_t indices_cap,
+                                             size_t *n_offsets,
+                                             size_t *n_indices);
+
+/**
+ * TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
+ * tetrahedron across face `i`, `TOPOMESH_NONE` on the boundary, as
+ * `chf_tetrahedron_tetrahedra`.
+ */
+topomesh_status chf_mesh_tetrahedron_tetrahedra_csr(const struct chf_mesh *m,
+                                                    uint32_t *offsets,
+                                                    size_t offsets_cap,
+                                                    uint32_t *indices,
+                                                    size_t indices_cap,
+                                                    size_t *n_offsets,
+                                                    size_t *n_indices);
+
+/* ---- CHF: summary, build report, memory and validation ---- */
+
+/**
+ * The topology summary into `*out`. O(T log T) at every level.
+ */
+topomesh_status chf_mesh_summary(const struct chf_mesh *m, struct chf_summary *out);
+
+/**
+ * The build report into `*out`. O(1).
+ */
+topomesh_status chf_mesh_report(const struct chf_mesh *m, struct chf_build_report *out);
+
+/**
+ * The first offending ids of one kind (a `chf_report_kind` value), flattened, into `buf`
+ * (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
+ */
+topomesh_status chf_mesh_report_examples(const struct chf_mesh *m,
+                                         uint32_t kind,
+                                         uint32_t *buf,
+                                         size_t cap,
+                                         size_t *out_len);
+
+/**
+ * Memory per container into `*out`. O(1).
+ */
+topomesh_status chf_mesh_memory(const struct chf_mesh *m, struct chf_memory *out);
+
+/* ---- CHF: zero-copy views of the structure's arrays ---- */
 
 /**
  * `V`: vertex `i` of tetrahedron `t` at `V[4t + i]` (`4 * num_tetrahedra` entries); also
@@ -1493,27 +1523,6 @@ const uint32_t *chf_mesh_vertex_half_faces(const struct chf_mesh *m, size_t *len
 const uint32_t *chf_mesh_face_half_faces(const struct chf_mesh *m, size_t *len);
 
 /**
- * The boundary half-faces in increasing order: triangle `k` of `chf_mesh_boundary`'s
- * surface is the `k`-th. NULL below level 3 (then use `chf_boundary_triangle_half_face`).
- */
-const uint32_t *chf_mesh_boundary_half_faces(const struct chf_mesh *m, size_t *len);
-
-/**
- * The boundary vertices in increasing order (`chf_mesh_num_boundary_vertices` entries):
- * vertex `b` of `chf_mesh_boundary`'s surface is volume vertex `[b]` (copies the surface
- * splits come after, see `chf_boundary_vertex_vertex`). NULL below level 3.
- */
-const uint32_t *chf_mesh_boundary_vertices(const struct chf_mesh *m, size_t *len);
-
-/**
- * The boundary component of every boundary vertex (indexed like
- * `chf_mesh_boundary_vertices`): components of the boundary triangles joined through
- * shared vertices, numbered in order of their first boundary half-face. NULL below level
- * 3 (then use `chf_vertex_boundary_component`).
- */
-const uint32_t *chf_mesh_boundary_vertex_components(const struct chf_mesh *m, size_t *len);
-
-/**
  * Positions: x, y, z per structure vertex (copies repeat their origin's position);
  * `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
  */
@@ -1532,6 +1541,31 @@ const uint32_t *chf_mesh_vertex_origins(const struct chf_mesh *m, size_t *len);
  * the identity.
  */
 const uint32_t *chf_mesh_tetrahedron_origins(const struct chf_mesh *m, size_t *len);
+
+/* ---- Status, errors and version ---- */
+
+/**
+ * A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
+ * the `topomesh_status` values.
+ */
+const char *topomesh_status_str(topomesh_status s);
+
+/**
+ * The detail of the last failed call on this thread (for example
+ * "vertex 12 out of range (the mesh has 8 vertices)"), NUL-terminated, into `buf`.
+ *
+ * `*out_len` receives the needed capacity in bytes, terminating NUL included (1 when no
+ * call has failed yet on this thread). `buf == NULL` with `cap == 0` is a size query
+ * (returns OK). A `buf` shorter than needed receives a truncated, NUL-terminated message
+ * and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. Successful calls do not clear
+ * the detail; this function never changes it.
+ */
+topomesh_status topomesh_last_error(char *buf, size_t cap, size_t *out_len);
+
+/**
+ * The library version, "MAJOR.MINOR.PATCH" (static, NUL-terminated).
+ */
+const char *topomesh_version(void);
 
 #ifdef __cplusplus
 }  // extern "C"

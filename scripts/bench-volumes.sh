@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The volume head-to-head benchmark: topomesh's CHF (levels 1-3, per-element C calls, CSR
 # bulk calls, the zero-copy O view) against CGAL's Triangulation_3 built by
-# CGAL::build_triangulation, in one process, from the same arrays. Writes
-# BENCHMARKS-volumes.md (the "Volumes" section of BENCHMARKS.md) with the machine, the
-# flags and this command; the text from a line `<!-- kept -->` on is kept as it was.
+# CGAL::build_triangulation, in one process, from the same arrays. Writes the whole of
+# BENCHMARKS-volumes.md: a short method section and the result tables of this run, with
+# the machine, the flags, the commit and this command. The page holds the latest run only;
+# what changed between runs, and why, goes to CHANGELOG.md.
 #
 #   scripts/bench-volumes.sh [--reps N] [--prefix DIR] [--out FILE] [MESH...]
 #
@@ -26,7 +27,7 @@ while (($#)); do
     --reps) reps="$2"; shift 2 ;;
     --prefix) prefix="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,16p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
@@ -72,40 +73,54 @@ commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
 dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
 
 {
-  echo "## Volumes"
+  echo "# Benchmarks: volumes"
+  echo
+  echo "<!-- Written by scripts/bench-volumes.sh: run it again instead of editing this page. -->"
+  echo
+  echo "topomesh's CHF against CGAL's \`Triangulation_3\`, in one process, built from the same"
+  echo "tetrahedra. The latest run only: what changed between runs, and why, is in"
+  echo "[CHANGELOG.md](CHANGELOG.md); the surface head-to-head is [BENCHMARKS.md](BENCHMARKS.md)."
+  echo
+  echo "## Method"
+  echo
+  echo "- \`scripts/bench-volumes.sh [--reps N] [--prefix DIR] [--out FILE] [MESH...]\` makes the"
+  echo "  meshes (\`scripts/fetch-tets.sh\`, Debian's tetgen on closed surfaces of CGAL's demo data),"
+  echo "  installs the package into a temporary prefix (or uses an installed one), builds the harness"
+  echo "  \`topomesh_bench_vol\` (\`c-tests/diffvol/\`, \`-O2 -DNDEBUG\`, no \`-march=native\`) and"
+  echo "  rewrites this page."
+  echo "- CGAL: \`Triangulation_3<Epick, Triangulation_data_structure_3>\` with the plain vertex and"
+  echo "  cell bases (plus the no-op setters \`build_triangulation\` calls: the leanest triangulation it"
+  echo "  accepts), built by \`CGAL::build_triangulation<Tr, true>\` (CGAL/Mesh_3/tet_soup_to_c3t3.h);"
+  echo "  its infinite vertex and cells are left out of every answer. Its build time includes turning"
+  echo "  the arrays into its \`Point_3\` vector and positively oriented cells (the conversion time is"
+  echo "  given)."
+  echo "- topomesh: \`chf_mesh_from_tetrahedra_ex\` with positions (it orients, matches faces, splits"
+  echo "  non-manifold vertices, and from level 2 names edges and faces), through the installed"
+  echo "  libtopomesh.so, built on one thread (as CGAL's build) and with the default, every thread of"
+  echo "  the machine (\`threads\` 0 in \`chf_build_options\`; the memory rows use the default); every"
+  echo "  sweep runs on one thread."
+  echo "- Each build and sweep runs N times; the tables give the median. Checksums count the"
+  echo "  entries a sweep visits (boundary NONE excluded): equal counts mean every library did the"
+  echo "  same work. The differential tests (\`c-tests/diffvol/\`) compare the answers element by"
+  echo "  element."
+  echo "- The Rust core alone: \`cargo bench --bench chf\` (criterion); it is not recorded here."
+  echo
+  echo "## Results"
   echo
   echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty)."
   echo
   echo "- Machine: $model, $cpus logical CPUs, $mem, $os. Load average (1, 5, 15 min) before the"
-  echo "  run: $load_before; after: $load_after (other jobs share the machine: short timings are noisy)."
-  echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`). CGAL $cgal_v: \`Triangulation_3<Epick,"
-  echo "  Triangulation_data_structure_3>\` with the plain vertex and cell bases (plus the no-op setters"
-  echo "  \`build_triangulation\` calls: the leanest triangulation it accepts), built by"
-  echo "  \`CGAL::build_triangulation<Tr, true>\` (CGAL/Mesh_3/tet_soup_to_c3t3.h); its infinite vertex and"
-  echo "  cells are left out of every answer. Its build time includes turning the arrays into its"
-  echo "  \`Point_3\` vector and positively oriented cells (the conversion time is given)."
-  echo "- topomesh: $rustc_v, cargo release profile, through the installed libtopomesh.so;"
-  echo "  \`chf_mesh_from_tetrahedra_ex\` with positions (it orients, matches faces, splits non-manifold"
-  echo "  vertices, and from level 2 names edges and faces), built on one thread (as CGAL's build) and with"
-  echo "  the default, every thread of the machine (\`threads\` 0 in \`chf_build_options\`; the memory rows"
-  echo "  use the default); every sweep runs on one thread."
-  echo "- Meshes: made by \`scripts/fetch-tets.sh\` with Debian's tetgen $tetgen_v from closed surfaces"
-  echo "  of CGAL's demo data:"
+  echo "  run: $load_before; after: $load_after."
+  echo "- C++: $cxx. CGAL $cgal_v. topomesh: $rustc_v, cargo release profile."
+  echo "- $reps repetitions of each build and sweep."
+  echo "- Meshes, made with tetgen $tetgen_v:"
   for b in "${bases[@]}"; do
     if [[ -f "$b.tetgen.txt" ]]; then
       echo "  $(basename "$b"): \`tetgen $(sed -n 's/^flags //p' "$b.tetgen.txt") $(sed -n 's/^source //p' "$b.tetgen.txt")\`,"\
            "$(sed -n 's/^seconds //p' "$b.tetgen.txt") s."
     fi
   done
-  echo "- Each build and sweep runs $reps times; the tables give the median. Checksums count the"
-  echo "  entries a sweep visits (boundary NONE excluded): equal counts mean every library did the"
-  echo "  same work."
   cat "$work/tables.md" | sed '1d'
-  # Hand-written text from the marker on (the targets, the analysis) is kept.
-  if [[ -f "$out" ]] && grep -q '^<!-- kept -->' "$out"; then
-    echo
-    sed -n '/^<!-- kept -->/,$p' "$out"
-  fi
 } > "$out.new"
 mv "$out.new" "$out"
 echo "== wrote $out"

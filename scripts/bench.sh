@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The head-to-head benchmark: topomesh (levels 1-3, every access path) against OpenMesh and
-# CGAL Surface_mesh, in one process, from the same arrays. Writes the tables into
-# BENCHMARKS.md between the "bench:begin" and "bench:end" markers (the text around them is
-# kept), with the machine, the compilers, the flags and this command.
+# CGAL Surface_mesh, in one process, from the same arrays. Writes the whole of
+# BENCHMARKS.md: a short method section and the result tables of this run, with the
+# machine, the compilers, the flags, the commit and this command. The page holds the latest
+# run only; what changed between runs, and why, goes to CHANGELOG.md.
 #
 #   scripts/bench.sh [--reps N] [MESH...]
 #
@@ -20,7 +21,7 @@ meshes=()
 while (($#)); do
   case "$1" in
     --reps) reps="$2"; shift 2 ;;
-    -h|--help) sed -n 2,13p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
@@ -63,46 +64,55 @@ cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
 commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
 dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
 
+out="$root/BENCHMARKS.md"
 {
-  echo "<!-- bench:begin (written by scripts/bench.sh; edit outside the markers) -->"
+  echo "# Benchmarks: surfaces"
+  echo
+  echo "<!-- Written by scripts/bench.sh: run it again instead of editing this page. -->"
+  echo
+  echo "topomesh's CHE against OpenMesh (TriMesh, ArrayKernel) and CGAL (Surface_mesh), in one"
+  echo "process, built from the same arrays, with the same sweeps. The latest run only: what changed"
+  echo "between runs, and why, is in [CHANGELOG.md](CHANGELOG.md); the tetrahedral head-to-head is"
+  echo "[BENCHMARKS-volumes.md](BENCHMARKS-volumes.md)."
+  echo
+  echo "## Method"
+  echo
+  echo "- \`scripts/bench.sh [--reps N] [MESH...]\` fetches the meshes (\`scripts/fetch-meshes.sh\`),"
+  echo "  installs the package into a temporary prefix, builds the harness \`topomesh_bench\`"
+  echo "  (\`c-tests/diff/bench.cpp\`) against it and rewrites this page."
+  echo "- Each build and sweep runs N times, interleaved across the libraries (round r builds each"
+  echo "  of them in turn, from a different first one, then runs each sweep in turn); the tables give"
+  echo "  the median of the benchmark thread's CPU time (CLOCK_THREAD_CPUTIME_ID, user + system: the"
+  echo "  machine may be shared, and wall-clock time counts the waits for a core; it is shown for"
+  echo "  builds). Build times include the positions (every library stores them) and the page faults"
+  echo "  of fresh memory. topomesh builds on one thread (\`threads\` 1), as the peers do."
+  echo "- Connectivity memory is counted from container sizes: OpenMesh V·sizeof(Vertex) +"
+  echo "  E·sizeof(Edge) + F·sizeof(Face); CGAL 4 B per vertex, 16 B per half-edge, 4 B per face, plus"
+  echo "  its removed-flag bits; topomesh \`che_mesh_memory().topology\`. RSS growth is the resident-set"
+  echo "  growth over one build (/proc/self/statm, after malloc_trim), positions included."
+  echo "- Paths: *C API* is one call per element into a caller buffer; *star iterator* is"
+  echo "  che_star_begin/next on the stack; *CSR bulk* one call for all rows (time includes the call);"
+  echo "  *C++ wrapper* the ranges of topomesh.hpp; *zero-copy* walks the V/O/VH/CH arrays with"
+  echo "  che_next/che_prev inline. A sweep visits every element and folds the answers into a"
+  echo "  checksum: equal checksums mean every library and path gave the same answers. The"
+  echo "  differential tests (ctest -L diff) compare the answers element by element."
+  echo "- The Rust core alone: \`cargo bench --bench che\` (criterion; meshes from"
+  echo "  \`\$TOPOMESH_MESH_DIR\`, else the cache of \`scripts/fetch-meshes.sh\`) times the build at"
+  echo "  levels 1-3 on one thread and on all, and the VV, VF, FF and EF sweeps; it is not recorded here."
+  echo
   echo "## Results"
   echo
   echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty)."
   echo
   echo "- Machine: $model, $cpus logical CPUs ($threads thread(s) per core), $mem, $os. Load average"
-  echo "  (1, 5, 15 min) before the run: $load_before; after: $load_after (other jobs share the machine:"
-  echo "  sweeps of a few milliseconds are noisy)."
+  echo "  (1, 5, 15 min) before the run: $load_before; after: $load_after."
   echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`); OpenMesh $om_v (Debian, TriMesh_ArrayKernelT with"
   echo "  double points), CGAL $cgal_v (Surface_mesh of Epick points). Both peers get \`reserve()\` (vertex and face"
   echo "  counts, edges estimated as 3T/2) before the build."
   echo "- topomesh: $rustc_v, cargo release profile (opt-level 3, debug = 1), through the installed"
   echo "  libtopomesh.so; single-threaded."
-  echo "- Each build and sweep runs $reps times, interleaved across the libraries (round r builds each"
-  echo "  of them in turn, from a different first one, then runs each sweep in turn); the tables give"
-  echo "  the median of the benchmark thread's CPU time (CLOCK_THREAD_CPUTIME_ID, user + system: the"
-  echo "  machine is shared, and wall-clock time counts the waits for a core; it is shown for builds)."
-  echo "  Build times include the positions (every library stores them) and the page faults of fresh"
-  echo "  memory. Connectivity memory is counted from container sizes:"
-  echo "  OpenMesh: V·sizeof(Vertex) + E·sizeof(Edge) + F·sizeof(Face); CGAL: 4 B per vertex,"
-  echo "  16 B per half-edge, 4 B per face, plus its removed-flag bits; topomesh: \`che_mesh_memory().topology\`."
-  echo "  RSS growth is the resident-set growth over one build (/proc/self/statm, after malloc_trim),"
-  echo "  positions included."
-  echo "- Paths: *C API* is one call per element into a caller buffer; *star iterator* is"
-  echo "  che_star_begin/next on the stack; *CSR bulk* one call for all rows (time includes the call);"
-  echo "  *C++ wrapper* the ranges of topomesh.hpp; *zero-copy* walks the V/O/VH/CH arrays with"
-  echo "  che_next/che_prev inline. A sweep visits every element and folds the answers into a checksum."
+  echo "- $reps repetitions of each build and sweep."
   cat "$work/tables.md"
-  echo "<!-- bench:end -->"
-} > "$work/section.md"
-
-out="$root/BENCHMARKS.md"
-if [[ -f "$out" ]] && grep -q '<!-- bench:begin' "$out" && grep -q '<!-- bench:end -->' "$out"; then
-  awk -v sec="$work/section.md" '
-    /<!-- bench:begin/ { while ((getline l < sec) > 0) print l; skip = 1; next }
-    /<!-- bench:end -->/ { skip = 0; next }
-    !skip { print }' "$out" > "$work/new.md"
-  mv "$work/new.md" "$out"
-else
-  { echo "# Benchmarks"; echo; cat "$work/section.md"; } > "$out"
-fi
+} > "$work/page.md"
+mv "$work/page.md" "$out"
 echo "== wrote $out"

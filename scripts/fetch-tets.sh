@@ -12,8 +12,8 @@
 # The surfaces come from scripts/fetch-meshes.sh (called when one is missing); without that
 # script, the few needed OFF files are taken directly from Debian's libcgal-demo package the
 # same way. Each mesh gets <name>.tetgen.txt: flags, seconds, vertices and tetrahedra.
-# Timings on a shared 2-core machine (Debian tetgen 1.6): double-torus-2k 0.1 s, blobby-12k
-# 0.5 s, knot1-16k 0.3 s, armadillo-101k 2.2 s, bunny00-1m (1,012,067 tetrahedra) 26-45 s.
+# Each mesh's tetgen time is recorded in its <name>.tetgen.txt (BENCHMARKS-volumes.md
+# prints it).
 set -euo pipefail
 
 DIR="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"

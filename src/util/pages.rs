@@ -1,10 +1,9 @@
 //! Fresh arrays for the builds, backed by transparent huge pages where the kernel has them.
 //!
-//! A build writes hundreds of MiB of fresh memory, much of it at random (pairs, stars). With
-//! 4 KiB pages every 4 KiB costs a page fault and most random accesses a TLB miss: on the
-//! 4.8M-triangle benchmark mesh, page faults alone took about a third of the CHE build.
-//! Asking for 2 MiB pages (`madvise(MADV_HUGEPAGE)`, a hint the kernel may ignore) before the
-//! first touch cuts both; see BENCHMARKS.md for the measured effect.
+//! A large build writes much fresh memory, much of it at random (pairs, stars). With 4 KiB
+//! pages every 4 KiB costs a page fault and most random accesses a TLB miss. Asking for
+//! 2 MiB pages (`madvise(MADV_HUGEPAGE)`, a hint the kernel may ignore) before the first
+//! touch cuts both; BENCHMARKS.md and the changelog give the effect measured.
 
 /// Arrays smaller than this keep the allocator's default pages.
 const MIN_BYTES: usize = 8 << 20;

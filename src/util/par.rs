@@ -3,8 +3,7 @@
 use std::sync::Mutex;
 
 /// Below this many triangles or tetrahedra a build stays on the calling thread: starting
-/// threads (tens of microseconds each, several times per build) would cost more than they
-/// save.
+/// threads, several times per build, would cost more than they save on a mesh this small.
 const PARALLEL_MIN_ELEMENTS: usize = 1 << 15;
 
 /// The threads a build of `n` triangles or tetrahedra takes for its `threads` option (0: as

@@ -166,7 +166,7 @@ fn volume_sweeps(chf: &topomesh::Chf, repeat: usize) {
     sweep_line("  sweeps", [("TT", tt), ("VT", vt), ("VV", vv)]);
 }
 
-/// `label: A 1.23 ms, B 4.56 ms, C 7.89 ms`.
+/// `label: VV <t> ms, VF <t> ms, FF <t> ms` (the three sweeps, in milliseconds).
 fn sweep_line(label: &str, times: [(&str, f64); 3]) {
     let parts: Vec<String> = times
         .iter()

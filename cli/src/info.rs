@@ -50,29 +50,72 @@ pub fn run(options: &InfoOptions) -> Result<ExitCode, Error> {
     let (name, data) = load(options.file.as_deref(), &progress)?;
     let read_seconds = start.elapsed().as_secs_f64();
     if data.is_volume() {
-        drop(progress);
-        return volume_info(&name, &data, options);
+        volume_info(&name, &data, options, progress)
+    } else {
+        surface_info(&name, &data, options, progress, read_seconds)
     }
-    progress.step(format!(
+}
+
+impl InfoOptions {
+    fn surface(&self) -> BuildOptions {
+        BuildOptions {
+            level: self.level,
+            strict: self.strict,
+            threads: self.threads,
+        }
+    }
+
+    fn volume(&self) -> ChfBuildOptions {
+        ChfBuildOptions {
+            level: self.level,
+            strict: self.strict,
+            threads: self.threads,
+        }
+    }
+}
+
+/// Runs `build` under the spinner's `message`; the structure and the seconds it took.
+fn timed_build<T>(
+    progress: &Progress,
+    message: String,
+    build: impl FnOnce() -> Result<T, Error>,
+) -> Result<(T, f64), Error> {
+    progress.step(message);
+    let start = Instant::now();
+    let built = build()?;
+    let seconds = start.elapsed().as_secs_f64();
+    progress.step("summarising".to_string());
+    Ok((built, seconds))
+}
+
+/// Prints `out` as JSON or as text, once the spinner is gone.
+fn emit<T: Serialize>(options: &InfoOptions, progress: Progress, out: &T, text: fn(&T)) {
+    drop(progress);
+    if options.json {
+        crate::json::print(out);
+    } else {
+        text(out);
+    }
+}
+
+fn surface_info(
+    name: &str,
+    data: &MeshData,
+    options: &InfoOptions,
+    progress: Progress,
+    read_seconds: f64,
+) -> Result<ExitCode, Error> {
+    let message = format!(
         "building level {} from {} triangles",
         options.level,
         data.triangles.len()
-    ));
-    let start = Instant::now();
-    let che = build_surface(
-        &data,
-        BuildOptions {
-            level: options.level,
-            strict: options.strict,
-            threads: options.threads,
-        },
-    )?;
-    let build_seconds = start.elapsed().as_secs_f64();
-    progress.step("summarising".to_string());
-    let summary = che.summary();
-    let memory = che.memory_bytes();
+    );
+    let (che, build_seconds) = timed_build(&progress, message, || {
+        build_surface(data, options.surface())
+    })?;
+    let (summary, memory) = (che.summary(), che.memory_bytes());
     let out = SurfaceInfo {
-        file: &name,
+        file: name,
         kind: "surface",
         level: options.level,
         summary: SurfaceSummary(&summary),
@@ -82,12 +125,7 @@ pub fn run(options: &InfoOptions) -> Result<ExitCode, Error> {
         read_seconds,
         build_seconds,
     };
-    drop(progress);
-    if options.json {
-        crate::json::print(&out);
-    } else {
-        print_surface(&out);
-    }
+    emit(options, progress, &out, print_surface);
     Ok(ExitCode::SUCCESS)
 }
 
@@ -153,19 +191,23 @@ fn print_surface(i: &SurfaceInfo) {
             st.vertices, st.edges, st.half_edges, st.boundary_curves
         ),
     );
-    let topology = i.memory.0.topology;
-    line(
-        "topology memory",
-        format!(
-            "{topology} bytes ({:.2} bytes per triangle)",
-            topology as f64 / (s.triangles.max(1) as f64)
-        ),
-    );
+    memory_line(i.memory.0.topology, s.triangles, "triangle");
     line(
         "time",
         format!(
             "read {:.3} s, build {:.3} s",
             i.read_seconds, i.build_seconds
+        ),
+    );
+}
+
+/// The topology's bytes, in all and per element.
+fn memory_line(topology: usize, elements: u64, unit: &str) {
+    line(
+        "topology memory",
+        format!(
+            "{topology} bytes ({:.2} bytes per {unit})",
+            topology as f64 / (elements.max(1) as f64)
         ),
     );
 }
@@ -230,26 +272,20 @@ impl VolumeStructure {
     }
 }
 
-fn volume_info(name: &str, data: &MeshData, options: &InfoOptions) -> Result<ExitCode, Error> {
-    let progress = Progress::new();
-    progress.step(format!(
+fn volume_info(
+    name: &str,
+    data: &MeshData,
+    options: &InfoOptions,
+    progress: Progress,
+) -> Result<ExitCode, Error> {
+    let message = format!(
         "building level {} from {} tetrahedra",
         options.level,
         data.tetrahedra.len()
-    ));
-    let start = Instant::now();
-    let chf = build_volume(
-        data,
-        ChfBuildOptions {
-            level: options.level,
-            strict: options.strict,
-            threads: options.threads,
-        },
-    )?;
-    let build_seconds = start.elapsed().as_secs_f64();
-    progress.step("summarising".to_string());
-    let summary = chf.summary();
-    let memory = chf.memory_bytes();
+    );
+    let (chf, build_seconds) =
+        timed_build(&progress, message, || build_volume(data, options.volume()))?;
+    let (summary, memory) = (chf.summary(), chf.memory_bytes());
     let out = VolumeInfo {
         file: name,
         kind: "volume",
@@ -260,12 +296,7 @@ fn volume_info(name: &str, data: &MeshData, options: &InfoOptions) -> Result<Exi
         memory: VolumeMemory(&memory),
         build_seconds,
     };
-    drop(progress);
-    if options.json {
-        crate::json::print(&out);
-    } else {
-        print_volume(&out);
-    }
+    emit(options, progress, &out, print_volume);
     Ok(ExitCode::SUCCESS)
 }
 
@@ -295,14 +326,7 @@ fn print_volume(i: &VolumeInfo) {
             st.vertices, st.edges, st.faces, st.half_faces
         ),
     );
-    let topology = i.memory.0.topology;
-    line(
-        "topology memory",
-        format!(
-            "{topology} bytes ({:.2} bytes per tetrahedron)",
-            topology as f64 / (s.tetrahedra.max(1) as f64)
-        ),
-    );
+    memory_line(i.memory.0.topology, s.tetrahedra, "tetrahedron");
     line("time", format!("build {:.3} s", i.build_seconds));
 }
 

@@ -14,10 +14,10 @@ bash scripts/install-deps.sh
 
 step "cargo fmt and clippy"
 cargo fmt --check
-cargo clippy --all-targets --locked -- -D warnings
+cargo clippy --workspace --all-targets --locked -- -D warnings
 
 step "cargo test"
-cargo test --locked
+cargo test --workspace --locked
 
 step "fuzzing: every reader and both builders, fixed seed (scripts/fuzz.sh)"
 bash scripts/fuzz.sh --runs 20000

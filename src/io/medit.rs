@@ -82,7 +82,7 @@ const TETRAHEDRA: [Elements; 2] = [
 ];
 
 /// The section of `list` that `keyword` names.
-fn find<'a>(list: &'a [Elements], keyword: &str) -> Option<&'a Elements> {
+fn section_named<'a>(list: &'a [Elements], keyword: &str) -> Option<&'a Elements> {
     list.iter()
         .find(|e| e.keyword.eq_ignore_ascii_case(keyword))
 }
@@ -163,9 +163,9 @@ impl Sections {
             self.dim = d;
         } else if is("Vertices") {
             self.vertices(lx)?;
-        } else if let Some(e) = find(&TRIANGLES, kw) {
+        } else if let Some(e) = section_named(&TRIANGLES, kw) {
             e.read(lx, nv, &mut self.data.triangles)?;
-        } else if let Some(e) = find(&TETRAHEDRA, kw) {
+        } else if let Some(e) = section_named(&TETRAHEDRA, kw) {
             e.read(lx, nv, &mut self.data.tetrahedra)?;
         } else {
             self.skip(lx, kw)?;

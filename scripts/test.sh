@@ -12,12 +12,15 @@ step() { echo; echo "== $* ($(( $(date +%s) - start )) s)"; }
 step "Debian packages"
 bash scripts/install-deps.sh
 
+step "links in the pages resolve inside a clone (docs/check-links.py)"
+python3 docs/check-links.py
+
 step "cargo fmt and clippy"
 cargo fmt --check
-cargo clippy --all-targets --locked -- -D warnings
+cargo clippy --workspace --all-targets --locked -- -D warnings
 
 step "cargo test"
-cargo test --locked
+cargo test --workspace --locked
 
 step "fuzzing: every reader and both builders, fixed seed (scripts/fuzz.sh)"
 bash scripts/fuzz.sh --runs 20000

@@ -3,7 +3,7 @@
 use super::Che;
 
 /// Bytes held by each container (lengths, not capacities).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Memory {
     /// `V`, level 0.
     pub half_edge_vertices: usize,

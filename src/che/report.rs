@@ -2,7 +2,7 @@
 //! Lists keep the first [`crate::REPORT_EXAMPLES`] offending ids.
 
 /// Counts, plus the first [`REPORT_EXAMPLES`] offending ids of each kind (input ids).
-#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct BuildReport {
     /// Triangles given.
     pub input_triangles: usize,

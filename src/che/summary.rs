@@ -7,7 +7,7 @@ use crate::NONE;
 use crate::util::dsu::Dsu;
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.
-#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Summary {
     pub vertices: u64,
     pub edges: u64,

@@ -3,7 +3,7 @@
 use super::Chf;
 
 /// Bytes held by each container (lengths, not capacities).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ChfMemory {
     /// `V`, level 0.
     pub half_face_vertices: usize,

@@ -2,7 +2,7 @@
 
 /// Counts, plus the first [`REPORT_EXAMPLES`] offending ids of each kind (input ids:
 /// input tetrahedra, input vertices).
-#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct ChfBuildReport {
     /// Tetrahedra given.
     pub input_tetrahedra: usize,

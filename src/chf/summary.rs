@@ -8,7 +8,7 @@ use super::view::Need;
 use crate::NONE;
 
 /// Field names match `chf_summary` in the C API and the CLI's JSON.
-#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct ChfSummary {
     pub vertices: u64,
     pub edges: u64,

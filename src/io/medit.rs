@@ -1,8 +1,5 @@
 //! Medit / INRIA `.mesh` (ASCII): vertices, triangles and tetrahedra (1-based ids); every
 //! other section the library knows the entry size of is skipped.
-//!
-//! This file also holds [`text`], the token reader shared by the volume formats
-//! (tetgen, medit, gmsh, vtk).
 
 use super::MeshData;
 use super::text::{self, Lexer};
@@ -54,44 +51,105 @@ fn entry_tokens(keyword: &str, dim: usize) -> Option<usize> {
         .map(|&(_, n)| n)
 }
 
-/// Reads `n` elements of `tokens` tokens each, keeping the first `K` (1-based vertex ids).
-fn read_elements<const K: usize>(
-    lx: &mut Lexer,
-    keyword: &str,
+/// A section of elements that start with their vertex ids.
+struct Elements {
+    /// The keyword, as error messages name it.
+    keyword: &'static str,
+    /// Tokens per element (the ids, then the reference and any higher-order nodes).
     tokens: usize,
-    num_vertices: usize,
-    out: &mut Vec<[u32; K]>,
-) -> Result<()> {
-    let n = lx.usize(&format!("the number of {keyword}"))?;
-    if n > 0 && num_vertices == 0 {
-        return Err(lx.error(format!("{keyword} before (or without) Vertices")));
-    }
-    out.reserve(lx.capacity(n, tokens));
-    for _ in 0..n {
-        let mut e = [0u32; K];
-        for v in &mut e {
-            let id = lx.u64("a vertex id")?;
-            if id == 0 || id > num_vertices as u64 {
-                return Err(lx.error(format!(
-                    "vertex id {id} out of range 1..={num_vertices} in {keyword}"
-                )));
-            }
-            *v = (id - 1) as u32;
+}
+
+const TRIANGLES: [Elements; 2] = [
+    Elements {
+        keyword: "Triangles",
+        tokens: 4,
+    },
+    Elements {
+        keyword: "TrianglesP2",
+        tokens: 7,
+    },
+];
+
+const TETRAHEDRA: [Elements; 2] = [
+    Elements {
+        keyword: "Tetrahedra",
+        tokens: 5,
+    },
+    Elements {
+        keyword: "TetrahedraP2",
+        tokens: 11,
+    },
+];
+
+/// The section of `list` that `keyword` names.
+fn section_named<'a>(list: &'a [Elements], keyword: &str) -> Option<&'a Elements> {
+    list.iter()
+        .find(|e| e.keyword.eq_ignore_ascii_case(keyword))
+}
+
+impl Elements {
+    /// Reads the count and the elements, keeping the first `K` tokens (1-based vertex ids)
+    /// of each.
+    fn read<const K: usize>(
+        &self,
+        lx: &mut Lexer,
+        num_vertices: usize,
+        out: &mut Vec<[u32; K]>,
+    ) -> Result<()> {
+        let keyword = self.keyword;
+        let n = lx.usize(&format!("the number of {keyword}"))?;
+        if n > 0 && num_vertices == 0 {
+            return Err(lx.error(format!("{keyword} before (or without) Vertices")));
         }
-        lx.skip(tokens - K, "the rest of an element")?;
-        out.push(e);
+        out.reserve(lx.capacity(n, self.tokens));
+        for _ in 0..n {
+            let mut e = [0u32; K];
+            for v in &mut e {
+                let id = lx.u64("a vertex id")?;
+                if id == 0 || id > num_vertices as u64 {
+                    return Err(lx.error(format!(
+                        "vertex id {id} out of range 1..={num_vertices} in {keyword}"
+                    )));
+                }
+                *v = (id - 1) as u32;
+            }
+            lx.skip(self.tokens - K, "the rest of an element")?;
+            out.push(e);
+        }
+        Ok(())
     }
-    Ok(())
 }
 
 /// Parses the text of a `.mesh` file; `name` is used in error messages.
 pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     let mut lx = Lexer::new(text, name, true);
-    let mut data = MeshData::default();
-    let mut dim = 3usize;
-    let mut have_vertices = false;
+    let mut sections = Sections {
+        data: MeshData::default(),
+        dim: 3,
+        have_vertices: false,
+    };
     while let Some(kw) = lx.next() {
+        if kw.eq_ignore_ascii_case("End") {
+            break;
+        }
+        sections.read(&mut lx, kw)?;
+    }
+    Ok(sections.data)
+}
+
+/// The sections read so far.
+struct Sections {
+    data: MeshData,
+    /// From `Dimension`: 2 or 3.
+    dim: usize,
+    have_vertices: bool,
+}
+
+impl Sections {
+    /// Reads the section that keyword `kw` starts.
+    fn read(&mut self, lx: &mut Lexer, kw: &str) -> Result<()> {
         let is = |k: &str| kw.eq_ignore_ascii_case(k);
+        let nv = self.data.positions.len();
         if is("MeshVersionFormatted") {
             let v = lx.u64("the format version")?;
             if !(1..=4).contains(&v) {
@@ -102,60 +160,50 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
             if d != 2 && d != 3 {
                 return Err(lx.error(format!("dimension {d} (only 2 and 3 are read)")));
             }
-            dim = d;
+            self.dim = d;
         } else if is("Vertices") {
-            if have_vertices {
-                return Err(lx.error("a second Vertices section"));
-            }
-            have_vertices = true;
-            let n = lx.usize("the number of vertices")?;
-            lx.check_point_count(n)?;
-            data.positions.reserve(lx.capacity(n, dim + 1));
-            for _ in 0..n {
-                let x = lx.f64("a coordinate")?;
-                let y = lx.f64("a coordinate")?;
-                let z = if dim == 3 {
-                    lx.f64("a coordinate")?
-                } else {
-                    0.0
-                };
-                lx.expect("a vertex reference")?;
-                data.positions.push(DVec3::new(x, y, z));
-            }
-        } else if is("Triangles") {
-            read_elements(
-                &mut lx,
-                "Triangles",
-                4,
-                data.positions.len(),
-                &mut data.triangles,
-            )?;
-        } else if is("TrianglesP2") {
-            read_elements(
-                &mut lx,
-                "TrianglesP2",
-                7,
-                data.positions.len(),
-                &mut data.triangles,
-            )?;
-        } else if is("Tetrahedra") {
-            read_elements(
-                &mut lx,
-                "Tetrahedra",
-                5,
-                data.positions.len(),
-                &mut data.tetrahedra,
-            )?;
-        } else if is("TetrahedraP2") {
-            let n = data.positions.len();
-            read_elements(&mut lx, "TetrahedraP2", 11, n, &mut data.tetrahedra)?;
-        } else if is("End") {
-            break;
-        } else if is("AngleOfCornerBound") || is("Iterations") || is("Time") {
+            self.vertices(lx)?;
+        } else if let Some(e) = section_named(&TRIANGLES, kw) {
+            e.read(lx, nv, &mut self.data.triangles)?;
+        } else if let Some(e) = section_named(&TETRAHEDRA, kw) {
+            e.read(lx, nv, &mut self.data.tetrahedra)?;
+        } else {
+            self.skip(lx, kw)?;
+        }
+        Ok(())
+    }
+
+    fn vertices(&mut self, lx: &mut Lexer) -> Result<()> {
+        if self.have_vertices {
+            return Err(lx.error("a second Vertices section"));
+        }
+        self.have_vertices = true;
+        let n = lx.usize("the number of vertices")?;
+        lx.check_point_count(n)?;
+        let positions = &mut self.data.positions;
+        positions.reserve(lx.capacity(n, self.dim + 1));
+        for _ in 0..n {
+            let x = lx.f64("a coordinate")?;
+            let y = lx.f64("a coordinate")?;
+            let z = if self.dim == 3 {
+                lx.f64("a coordinate")?
+            } else {
+                0.0
+            };
+            lx.expect("a vertex reference")?;
+            positions.push(DVec3::new(x, y, z));
+        }
+        Ok(())
+    }
+
+    /// Skips a section the library knows the size of; any other keyword is an error.
+    fn skip(&self, lx: &mut Lexer, kw: &str) -> Result<()> {
+        let is = |k: &str| kw.eq_ignore_ascii_case(k);
+        if is("AngleOfCornerBound") || is("Iterations") || is("Time") {
             lx.expect("a value")?;
         } else if is("BoundingBox") {
-            lx.skip(2 * dim, "a bounding box coordinate")?;
-        } else if let Some(k) = entry_tokens(kw, dim) {
+            lx.skip(2 * self.dim, "a bounding box coordinate")?;
+        } else if let Some(k) = entry_tokens(kw, self.dim) {
             let n = lx.usize(&format!("the number of {kw}"))?;
             for _ in 0..n {
                 lx.skip(k, kw)?;
@@ -166,8 +214,8 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
                 text::quote(kw)
             )));
         }
+        Ok(())
     }
-    Ok(data)
 }
 
 /// Reads a Medit `.mesh` file.

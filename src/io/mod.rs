@@ -103,12 +103,6 @@ pub fn write(path: &Path, data: &MeshData) -> Result<()> {
 }
 
 /// Reads a whole file, naming it in the error.
-#[allow(dead_code)]
-pub(crate) fn read_to_string(path: &Path) -> Result<String> {
-    std::fs::read_to_string(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
-}
-
-#[allow(dead_code)]
 pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
     std::fs::read(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
 }

@@ -26,101 +26,158 @@ pub fn read(path: &Path) -> Result<MeshData> {
 /// Parses OBJ from memory; `name` (usually the file name) prefixes every error.
 pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
     let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    let mut data = MeshData::default();
-    // Faces naming a vertex not read yet: legal if the file defines it later.
-    let mut forward: Vec<(usize, u64)> = Vec::new();
-    let mut corners: Vec<u32> = Vec::new();
+    let mut statements = Statements {
+        name,
+        data: MeshData::default(),
+        forward: Vec::new(),
+        corners: Vec::new(),
+    };
     let mut joined: Vec<u8> = Vec::new();
     let mut lines = bytes.split(|&c| c == b'\n').enumerate();
     while let Some((i, raw)) = lines.next() {
-        let line_no = i + 1;
-        let mut line = trim_cr(raw);
-        if line.ends_with(b"\\") {
-            joined.clear();
-            joined.extend_from_slice(&line[..line.len() - 1]);
-            for (_, more) in lines.by_ref() {
-                let more = trim_cr(more);
-                joined.push(b' ');
-                match more.strip_suffix(b"\\") {
-                    Some(head) => joined.extend_from_slice(head),
-                    None => {
-                        joined.extend_from_slice(more);
-                        break;
-                    }
-                }
+        let line = logical_line(trim_cr(raw), &mut lines, &mut joined);
+        statements.read(i + 1, line)?;
+    }
+    statements.finish()
+}
+
+/// `line`, or, when it ends with `\`, `line` joined with the lines that continue it (taken
+/// from `rest`) into `joined`.
+fn logical_line<'j, 'b: 'j>(
+    line: &'b [u8],
+    rest: &mut impl Iterator<Item = (usize, &'b [u8])>,
+    joined: &'j mut Vec<u8>,
+) -> &'j [u8] {
+    let Some(head) = line.strip_suffix(b"\\") else {
+        return line;
+    };
+    joined.clear();
+    joined.extend_from_slice(head);
+    for (_, more) in rest {
+        let more = trim_cr(more);
+        joined.push(b' ');
+        match more.strip_suffix(b"\\") {
+            Some(head) => joined.extend_from_slice(head),
+            None => {
+                joined.extend_from_slice(more);
+                break;
             }
-            line = &joined;
         }
+    }
+    joined
+}
+
+/// The statements read so far.
+struct Statements<'a> {
+    name: &'a str,
+    data: MeshData,
+    /// Faces naming a vertex not read yet: legal if the file defines it later.
+    forward: Vec<(usize, u64)>,
+    /// The corners of the face being read.
+    corners: Vec<u32>,
+}
+
+impl Statements<'_> {
+    /// Reads the statement on line `line_no` (comments included); keeps `v` and `f`.
+    fn read(&mut self, line_no: usize, line: &[u8]) -> Result<()> {
         let line = line.split(|&c| c == b'#').next().unwrap_or(&[]);
         let mut words = line
             .split(|c| c.is_ascii_whitespace())
             .filter(|w| !w.is_empty());
-        let err = |msg: String| Error::parse(format!("{name}:{line_no}: {msg}"));
         match words.next() {
-            Some(b"v") => {
-                let mut p = [0.0f64; 3];
-                for (k, slot) in p.iter_mut().enumerate() {
-                    let w = words
-                        .next()
-                        .ok_or_else(|| err(format!("a vertex needs 3 coordinates, found {k}")))?;
-                    *slot = number(w).ok_or_else(|| {
-                        err(format!("expected a coordinate, found '{}'", quote(w)))
-                    })?;
-                }
-                if let Some(w) = words.find(|w| number(w).is_none()) {
-                    return Err(err(format!(
-                        "expected a number after the position, found '{}'",
-                        quote(w)
-                    )));
-                }
-                if data.positions.len() == u32::MAX as usize {
-                    return Err(Error::too_large(format!(
-                        "{name}:{line_no}: more than {} vertices",
-                        u32::MAX - 1
-                    )));
-                }
-                data.positions.push(DVec3::from_array(p));
-            }
-            Some(b"f") => {
-                corners.clear();
-                let n = data.positions.len() as u64;
-                for w in words {
-                    let index = corner(w, n).map_err(err)?;
-                    if index >= n {
-                        forward.push((line_no, index));
-                    }
-                    corners.push(index.min(u32::MAX as u64) as u32);
-                }
-                if corners.len() < 3 {
-                    return Err(err(format!(
-                        "face has {} vertices; a face needs at least 3",
-                        corners.len()
-                    )));
-                }
-                for k in 1..corners.len() - 1 {
-                    data.triangles
-                        .push([corners[0], corners[k], corners[k + 1]]);
-                }
-            }
-            _ => {}
+            Some(b"v") => self.vertex(line_no, words),
+            Some(b"f") => self.face(line_no, words),
+            _ => Ok(()),
         }
     }
-    let n = data.positions.len() as u64;
-    if let Some(&(line_no, index)) = forward.iter().find(|&&(_, index)| index >= n) {
-        return Err(Error::new(
-            ErrorKind::OutOfRange,
-            format!(
-                "{name}:{line_no}: face vertex {} is out of range (the file has {n} vertices)",
-                index + 1
-            ),
-        ));
+
+    fn err(&self, line_no: usize, msg: String) -> Error {
+        Error::parse(format!("{}:{line_no}: {msg}", self.name))
     }
-    if data.triangles.is_empty() {
-        return Err(Error::parse(format!(
-            "{name}: no faces ('f' lines): empty, not an OBJ file, or only points and lines"
-        )));
+
+    fn vertex<'w>(
+        &mut self,
+        line_no: usize,
+        mut words: impl Iterator<Item = &'w [u8]>,
+    ) -> Result<()> {
+        let mut p = [0.0f64; 3];
+        for (k, slot) in p.iter_mut().enumerate() {
+            let w = words.next().ok_or_else(|| {
+                self.err(line_no, format!("a vertex needs 3 coordinates, found {k}"))
+            })?;
+            *slot = number(w).ok_or_else(|| {
+                self.err(
+                    line_no,
+                    format!("expected a coordinate, found '{}'", quote(w)),
+                )
+            })?;
+        }
+        if let Some(w) = words.find(|w| number(w).is_none()) {
+            return Err(self.err(
+                line_no,
+                format!("expected a number after the position, found '{}'", quote(w)),
+            ));
+        }
+        if self.data.positions.len() == u32::MAX as usize {
+            return Err(Error::too_large(format!(
+                "{}:{line_no}: more than {} vertices",
+                self.name,
+                u32::MAX - 1
+            )));
+        }
+        self.data.positions.push(DVec3::from_array(p));
+        Ok(())
     }
-    Ok(data)
+
+    /// A polygon, fan-triangulated (i1,i2,i3), (i1,i3,i4), ...
+    fn face<'w>(&mut self, line_no: usize, words: impl Iterator<Item = &'w [u8]>) -> Result<()> {
+        self.corners.clear();
+        let n = self.data.positions.len() as u64;
+        for w in words {
+            let index = corner(w, n).map_err(|msg| self.err(line_no, msg))?;
+            if index >= n {
+                self.forward.push((line_no, index));
+            }
+            self.corners.push(index.min(u32::MAX as u64) as u32);
+        }
+        let corners = &self.corners;
+        if corners.len() < 3 {
+            return Err(self.err(
+                line_no,
+                format!(
+                    "face has {} vertices; a face needs at least 3",
+                    corners.len()
+                ),
+            ));
+        }
+        for k in 1..corners.len() - 1 {
+            self.data
+                .triangles
+                .push([corners[0], corners[k], corners[k + 1]]);
+        }
+        Ok(())
+    }
+
+    /// Checks the forward references and that there is a face.
+    fn finish(self) -> Result<MeshData> {
+        let name = self.name;
+        let n = self.data.positions.len() as u64;
+        if let Some(&(line_no, index)) = self.forward.iter().find(|&&(_, index)| index >= n) {
+            return Err(Error::new(
+                ErrorKind::OutOfRange,
+                format!(
+                    "{name}:{line_no}: face vertex {} is out of range (the file has {n} vertices)",
+                    index + 1
+                ),
+            ));
+        }
+        if self.data.triangles.is_empty() {
+            return Err(Error::parse(format!(
+                "{name}: no faces ('f' lines): empty, not an OBJ file, or only points and lines"
+            )));
+        }
+        Ok(self.data)
+    }
 }
 
 fn trim_cr(line: &[u8]) -> &[u8] {

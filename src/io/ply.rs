@@ -12,7 +12,7 @@
 //! tokens are parse errors (binary NaN/inf are read as is).
 
 use super::MeshData;
-use crate::error::{Error, Result};
+use crate::error::{Error, ErrorKind, Result};
 use glam::DVec3;
 use ply_rs_bw::parser::{ParseError, Parser, Reader};
 use ply_rs_bw::ply::{
@@ -214,7 +214,7 @@ struct Located<'a> {
 }
 
 impl Located<'_> {
-    fn error(&self, kind: crate::error::ErrorKind, msg: &str) -> Error {
+    fn error(&self, kind: ErrorKind, msg: &str) -> Error {
         let msg = msg.replace("\n\t", "; ");
         Error::new(
             kind,
@@ -248,77 +248,97 @@ impl<'a> Payload<'a> {
             return Ok(()); // nothing stored per element; an empty ASCII line is blank anyway
         }
         let parser = Parser::<E>::new();
-        let element = &def.name;
-        let count = def.count;
-        for i in 0..count {
+        for i in 0..def.count {
             let (value, at) = if self.encoding == Encoding::Ascii {
-                // Skip blank lines, then take one line per element.
-                let (text, line) = loop {
-                    let rest = &self.bytes[self.pos..];
-                    if rest.is_empty() {
-                        let at = Located {
-                            name: self.name,
-                            at: At::Line(self.line),
-                        };
-                        return Err(at.error(
-                            crate::error::ErrorKind::Parse,
-                            &format!(
-                                "unexpected end of file (truncated?): {element} {i} of {count} is missing"
-                            ),
-                        ));
-                    }
-                    let len = rest.iter().position(|&c| c == b'\n');
-                    let raw = &rest[..len.unwrap_or(rest.len())];
-                    self.pos += len.map_or(rest.len(), |n| n + 1);
-                    let line = self.line;
-                    self.line += 1;
-                    if !raw.iter().all(u8::is_ascii_whitespace) {
-                        break (raw, line);
-                    }
-                };
-                let at = Located {
-                    name: self.name,
-                    at: At::Line(line),
-                };
-                let text = std::str::from_utf8(text).map_err(|_| {
-                    at.error(
-                        crate::error::ErrorKind::Parse,
-                        &format!("{element} {i}: not UTF-8 text"),
-                    )
-                })?;
-                let text = text.strip_suffix('\r').unwrap_or(text);
-                let value = parser.read_ascii_element(text, def).map_err(|e| {
-                    at.error(
-                        crate::error::ErrorKind::Parse,
-                        &format!("{element} {i}: {e}"),
-                    )
-                })?;
-                (value, at)
+                self.ascii_element(&parser, def, i)?
             } else {
-                let at = Located {
-                    name: self.name,
-                    at: At::Byte(self.pos),
-                };
-                let mut cursor = Cursor::new(self.bytes);
-                cursor.set_position(self.pos as u64);
-                let value = match self.encoding {
-                    Encoding::BinaryBigEndian => parser.read_big_endian_element(&mut cursor, def),
-                    _ => parser.read_little_endian_element(&mut cursor, def),
-                };
-                let value = value.map_err(|e| {
-                    let msg = if e.kind() == std::io::ErrorKind::UnexpectedEof {
-                        format!("unexpected end of file (truncated?) in {element} {i} of {count}")
-                    } else {
-                        format!("{element} {i}: {e}")
-                    };
-                    at.error(crate::error::ErrorKind::Parse, &msg)
-                })?;
-                self.pos = cursor.position() as usize;
-                (value, at)
+                self.binary_element(&parser, def, i)?
             };
             sink(value, i, &at)?;
         }
         Ok(())
+    }
+
+    fn located(&self, at: At) -> Located<'a> {
+        Located {
+            name: self.name,
+            at,
+        }
+    }
+
+    /// Element `i` of `def`: the next line that is not blank.
+    fn ascii_element<E: PropertyAccess>(
+        &mut self,
+        parser: &Parser<E>,
+        def: &ElementDef,
+        i: usize,
+    ) -> Result<(E, Located<'a>)> {
+        let element = &def.name;
+        let (text, line) = self.next_line().ok_or_else(|| {
+            self.located(At::Line(self.line)).error(
+                ErrorKind::Parse,
+                &format!(
+                    "unexpected end of file (truncated?): {element} {i} of {} is missing",
+                    def.count
+                ),
+            )
+        })?;
+        let at = self.located(At::Line(line));
+        let text = std::str::from_utf8(text)
+            .map_err(|_| at.error(ErrorKind::Parse, &format!("{element} {i}: not UTF-8 text")))?;
+        let text = text.strip_suffix('\r').unwrap_or(text);
+        let value = parser
+            .read_ascii_element(text, def)
+            .map_err(|e| at.error(ErrorKind::Parse, &format!("{element} {i}: {e}")))?;
+        Ok((value, at))
+    }
+
+    /// The next line that is not blank and its number, or `None` at the end of the input.
+    fn next_line(&mut self) -> Option<(&'a [u8], usize)> {
+        loop {
+            let rest = &self.bytes[self.pos..];
+            if rest.is_empty() {
+                return None;
+            }
+            let len = rest.iter().position(|&c| c == b'\n');
+            let raw = &rest[..len.unwrap_or(rest.len())];
+            self.pos += len.map_or(rest.len(), |n| n + 1);
+            let line = self.line;
+            self.line += 1;
+            if !raw.iter().all(u8::is_ascii_whitespace) {
+                return Some((raw, line));
+            }
+        }
+    }
+
+    /// Element `i` of `def`, decoded from the bytes at `pos`.
+    fn binary_element<E: PropertyAccess>(
+        &mut self,
+        parser: &Parser<E>,
+        def: &ElementDef,
+        i: usize,
+    ) -> Result<(E, Located<'a>)> {
+        let at = self.located(At::Byte(self.pos));
+        let mut cursor = Cursor::new(self.bytes);
+        cursor.set_position(self.pos as u64);
+        let value = match self.encoding {
+            Encoding::BinaryBigEndian => parser.read_big_endian_element(&mut cursor, def),
+            _ => parser.read_little_endian_element(&mut cursor, def),
+        };
+        let value = value.map_err(|e| {
+            let element = &def.name;
+            let msg = if e.kind() == std::io::ErrorKind::UnexpectedEof {
+                format!(
+                    "unexpected end of file (truncated?) in {element} {i} of {}",
+                    def.count
+                )
+            } else {
+                format!("{element} {i}: {e}")
+            };
+            at.error(ErrorKind::Parse, &msg)
+        })?;
+        self.pos = cursor.position() as usize;
+        Ok((value, at))
     }
 }
 

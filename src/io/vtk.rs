@@ -161,10 +161,41 @@ fn skip_field(lx: &mut Lexer) -> Result<()> {
     Ok(())
 }
 
+/// The two datasets read: their cell arrays differ.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Dataset {
+    /// `CELLS` then `CELL_TYPES`.
+    UnstructuredGrid,
+    /// `POLYGONS`, `TRIANGLE_STRIPS`, `VERTICES`, `LINES`.
+    PolyData,
+}
+
 /// Parses the text of a legacy `.vtk` file; `name` is used in error messages.
 pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
-    const MAGIC: &str = "# vtk DataFile Version";
     let mut lx = Lexer::new(text, name, false);
+    let dataset = read_header(&mut lx)?;
+    let mut sections = Sections {
+        dataset,
+        data: MeshData::default(),
+        have_points: false,
+        have_cells: false,
+        pending: None,
+    };
+    while let Some(kw) = lx.next() {
+        if kw.eq_ignore_ascii_case("POINT_DATA") || kw.eq_ignore_ascii_case("CELL_DATA") {
+            break;
+        }
+        sections.read(&mut lx, kw)?;
+    }
+    if let Some((_, line)) = sections.pending {
+        return Err(lx.error_at(line, "CELLS without CELL_TYPES"));
+    }
+    Ok(sections.data)
+}
+
+/// Reads the magic line, the title, the encoding and the dataset type.
+fn read_header(lx: &mut Lexer) -> Result<Dataset> {
+    const MAGIC: &str = "# vtk DataFile Version";
     let first = lx.next_line().unwrap_or("").trim_start();
     if !first
         .get(..MAGIC.len())
@@ -183,94 +214,121 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     }
     lx.keyword("DATASET")?;
     let kind = lx.expect("a dataset type")?;
-    let poly = if kind.eq_ignore_ascii_case("UNSTRUCTURED_GRID") {
-        false
+    if kind.eq_ignore_ascii_case("UNSTRUCTURED_GRID") {
+        Ok(Dataset::UnstructuredGrid)
     } else if kind.eq_ignore_ascii_case("POLYDATA") {
-        true
+        Ok(Dataset::PolyData)
     } else {
-        return Err(lx.error(format!(
+        Err(lx.error(format!(
             "dataset {} not supported (UNSTRUCTURED_GRID and POLYDATA are read)",
             text::quote(kind)
-        )));
-    };
+        )))
+    }
+}
 
-    let mut data = MeshData::default();
-    let mut have_points = false;
-    let mut have_cells = false;
-    // CELLS read, waiting for their CELL_TYPES.
-    let mut pending: Option<(Cells, usize)> = None;
-    while let Some(kw) = lx.next() {
+/// The sections after the header, read one keyword at a time.
+struct Sections {
+    dataset: Dataset,
+    data: MeshData,
+    have_points: bool,
+    have_cells: bool,
+    /// CELLS read, waiting for their CELL_TYPES (with the line of the keyword).
+    pending: Option<(Cells, usize)>,
+}
+
+impl Sections {
+    /// Reads the section that keyword `kw` starts.
+    fn read(&mut self, lx: &mut Lexer, kw: &str) -> Result<()> {
         let is = |k: &str| kw.eq_ignore_ascii_case(k);
-        let is_cell_array = if poly {
-            is("POLYGONS") || is("TRIANGLE_STRIPS") || is("VERTICES") || is("LINES")
-        } else {
+        let grid = self.dataset == Dataset::UnstructuredGrid;
+        let is_cell_array = if grid {
             is("CELLS")
+        } else {
+            is("POLYGONS") || is("TRIANGLE_STRIPS") || is("VERTICES") || is("LINES")
         };
         if is("POINTS") {
-            if have_points {
-                return Err(lx.error("a second POINTS section"));
-            }
-            have_points = true;
-            let n = lx.usize("the number of points")?;
-            lx.check_point_count(n)?;
-            lx.expect("the points' data type")?;
-            data.positions.reserve(lx.capacity(n, 3));
-            for _ in 0..n {
-                let x = lx.f64("a coordinate")?;
-                let y = lx.f64("a coordinate")?;
-                let z = lx.f64("a coordinate")?;
-                data.positions.push(DVec3::new(x, y, z));
-            }
+            self.points(lx)
         } else if is_cell_array {
-            if !have_points {
-                return Err(lx.error(format!("{kw} before POINTS")));
-            }
-            if !poly && have_cells {
-                return Err(lx.error("a second CELLS section"));
-            }
-            have_cells = true;
-            let line = lx.line();
-            let cells = read_cells(&mut lx, data.positions.len())?;
-            if !poly {
-                pending = Some((cells, line));
-            } else if is("POLYGONS") {
-                for i in 0..cells.len() {
-                    let c = cells.cell(i);
-                    for j in 2..c.len() {
-                        data.triangles.push([c[0], c[j - 1], c[j]]);
-                    }
-                }
-            } else if is("TRIANGLE_STRIPS") {
-                for i in 0..cells.len() {
-                    let c = cells.cell(i);
-                    for j in 2..c.len() {
-                        data.triangles.push(if j % 2 == 0 {
-                            [c[j - 2], c[j - 1], c[j]]
-                        } else {
-                            [c[j - 1], c[j - 2], c[j]]
-                        });
-                    }
-                }
-            }
-        } else if !poly && is("CELL_TYPES") {
-            let Some((cells, _)) = pending.take() else {
+            self.cell_array(lx, kw)
+        } else if grid && is("CELL_TYPES") {
+            let Some((cells, _)) = self.pending.take() else {
                 return Err(lx.error("CELL_TYPES before CELLS"));
             };
-            read_cell_types(&mut lx, &cells, &mut data)?;
+            read_cell_types(lx, &cells, &mut self.data)
         } else if is("METADATA") {
-            skip_metadata(&mut lx);
+            skip_metadata(lx);
+            Ok(())
         } else if is("FIELD") {
-            skip_field(&mut lx)?;
-        } else if is("POINT_DATA") || is("CELL_DATA") {
-            break;
+            skip_field(lx)
         } else {
-            return Err(lx.error(format!("unexpected keyword '{}'", text::quote(kw))));
+            Err(lx.error(format!("unexpected keyword '{}'", text::quote(kw))))
         }
     }
-    if let Some((_, line)) = pending {
-        return Err(lx.error_at(line, "CELLS without CELL_TYPES"));
+
+    fn points(&mut self, lx: &mut Lexer) -> Result<()> {
+        if self.have_points {
+            return Err(lx.error("a second POINTS section"));
+        }
+        self.have_points = true;
+        let n = lx.usize("the number of points")?;
+        lx.check_point_count(n)?;
+        lx.expect("the points' data type")?;
+        let positions = &mut self.data.positions;
+        positions.reserve(lx.capacity(n, 3));
+        for _ in 0..n {
+            let x = lx.f64("a coordinate")?;
+            let y = lx.f64("a coordinate")?;
+            let z = lx.f64("a coordinate")?;
+            positions.push(DVec3::new(x, y, z));
+        }
+        Ok(())
     }
-    Ok(data)
+
+    /// `CELLS` (kept until `CELL_TYPES`) or a POLYDATA cell array (triangulated now).
+    fn cell_array(&mut self, lx: &mut Lexer, kw: &str) -> Result<()> {
+        if !self.have_points {
+            return Err(lx.error(format!("{kw} before POINTS")));
+        }
+        let grid = self.dataset == Dataset::UnstructuredGrid;
+        if grid && self.have_cells {
+            return Err(lx.error("a second CELLS section"));
+        }
+        self.have_cells = true;
+        let line = lx.line();
+        let cells = read_cells(lx, self.data.positions.len())?;
+        if grid {
+            self.pending = Some((cells, line));
+        } else if kw.eq_ignore_ascii_case("POLYGONS") {
+            fan_polygons(&cells, &mut self.data.triangles);
+        } else if kw.eq_ignore_ascii_case("TRIANGLE_STRIPS") {
+            split_strips(&cells, &mut self.data.triangles);
+        }
+        Ok(())
+    }
+}
+
+/// Fan-triangulates every polygon: (c0, c1, c2), (c0, c2, c3), ...
+fn fan_polygons(cells: &Cells, out: &mut Vec<[u32; 3]>) {
+    for i in 0..cells.len() {
+        let c = cells.cell(i);
+        for j in 2..c.len() {
+            out.push([c[0], c[j - 1], c[j]]);
+        }
+    }
+}
+
+/// Splits every triangle strip, every other triangle turned to keep one orientation.
+fn split_strips(cells: &Cells, out: &mut Vec<[u32; 3]>) {
+    for i in 0..cells.len() {
+        let c = cells.cell(i);
+        for j in 2..c.len() {
+            out.push(if j % 2 == 0 {
+                [c[j - 2], c[j - 1], c[j]]
+            } else {
+                [c[j - 1], c[j - 2], c[j]]
+            });
+        }
+    }
 }
 
 /// Reads a legacy ASCII `.vtk` file.

@@ -9,37 +9,24 @@
 //! vertices split) so that the half-edge and edge ids are the same at every level.
 
 mod build;
-mod bulk;
-mod curves;
 pub mod ids;
-mod level2;
-mod level3;
-mod matching;
-mod memory;
-mod orient;
-mod queries;
-mod report;
-mod soup;
-mod split;
-mod star;
-mod summary;
+mod pairs;
+mod query;
+mod tables;
 
 pub use crate::Ids;
-pub use build::{BuildOptions, MAX_TRIANGLES};
-pub use bulk::Csr;
-pub use curves::BoundaryWalk;
+pub use build::{BuildOptions, BuildReport, MAX_TRIANGLES};
 pub use ids::{first, next, prev, tri};
-pub(crate) use level2::edge_directory;
-pub use memory::Memory;
-pub use report::BuildReport;
-pub use star::{Rotation, StarStep};
-pub use summary::Summary;
+pub(crate) use query::Rows;
+pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
+pub(crate) use tables::edge_directory;
 
 use crate::NONE;
 use crate::error::{Error, Result};
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
+use std::sync::OnceLock;
 
 /// A triangle surface in the Compact Half-Edge structure.
 #[derive(Clone, Debug)]
@@ -58,6 +45,9 @@ pub struct Che {
     edge_bits: RankDirectory,
     /// Level 2: the canonical half-edge of each edge.
     eh: Vec<u32>,
+    /// Level 1 only: the edge-id directory computed from `O` on first request (see
+    /// [`Che::edge_ranks`]); emptied when the level changes.
+    lazy_edge_bits: OnceLock<RankDirectory>,
     /// Level 3: one boundary half-edge per boundary curve.
     ch: Vec<u32>,
     /// Level 3: bit `h` set when `O[h] == NONE`; rank indexes `curve_of`.
@@ -113,41 +103,7 @@ impl Che {
 
     /// Raises (or lowers) the level in place. Ids do not change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
-        if level > 3 {
-            return Err(Error::out_of_range(format!(
-                "level {level} is not in 0..=3"
-            )));
-        }
-        if level < self.level {
-            if level < 3 {
-                self.ch = Vec::new();
-                self.boundary_bits = RankBits::default();
-                self.curve_of = Vec::new();
-            }
-            if level < 2 {
-                self.vh = Vec::new();
-                self.edge_bits = RankDirectory::default();
-                self.eh = Vec::new();
-            }
-            if level < 1 {
-                self.o = Vec::new();
-            }
-            self.level = level;
-            return Ok(());
-        }
-        if self.level < 1 && level >= 1 {
-            self.o = matching::opposites_by_rule(&self.v, self.n_vertices, &self.non_manifold);
-            self.level = 1;
-        }
-        if self.level < 2 && level >= 2 {
-            level2::build(self);
-            self.level = 2;
-        }
-        if self.level < 3 && level >= 3 {
-            level3::build(self);
-            self.level = 3;
-        }
-        Ok(())
+        build::change_level(self, level)
     }
 
     /// Vertices of the structure: the input vertices, then copies made by splitting.
@@ -184,6 +140,20 @@ impl Che {
     /// (the edge of a canonical half-edge `c` is its rank; see `rank_directory.rs`).
     pub fn edge_rank_directory(&self) -> Option<&[u64]> {
         (self.level >= 2).then_some(self.edge_bits.entries())
+    }
+    /// The edge-id directory from level 1: the structure's own from level 2 (as
+    /// [`Che::edge_rank_directory`]); at level 1 computed from `O` on the first request and
+    /// kept until the level changes. `None` at level 0.
+    pub fn edge_ranks(&self) -> Option<&[u64]> {
+        match self.level {
+            0 => None,
+            1 => Some(
+                self.lazy_edge_bits
+                    .get_or_init(|| edge_directory(&self.o))
+                    .entries(),
+            ),
+            _ => Some(self.edge_bits.entries()),
+        }
     }
     /// `EH`: the canonical half-edge of every edge, from level 2.
     pub fn edge_half_edges(&self) -> Option<&[u32]> {

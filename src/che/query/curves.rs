@@ -1,9 +1,9 @@
 //! Boundary curves at every level: stored at level 3, walked from `VH` at level 2, found
 //! by scanning below. A curve is the cycle of boundary half-edges `h -> VH[target(h)]`.
 
-use super::Che;
-use super::ids::next;
 use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::next;
 use std::borrow::Cow;
 
 /// The half-edges of one boundary curve, in order (the interior on the left).

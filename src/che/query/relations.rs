@@ -1,9 +1,9 @@
 //! Queries at every level. Level 0 answers by scanning `V`; level 1 reads `O`; level 2
 //! reads `VH` and the edge ranks; level 3 the curves. Ids are the same at every level.
 
-use super::ids::{first, next, prev, tri};
 use super::star::{Rotation, StarStep};
-use super::{Che, matching};
+use crate::che::ids::{first, next, prev, tri};
+use crate::che::{Che, pairs};
 use crate::{Ids, NONE};
 use std::borrow::Cow;
 
@@ -63,7 +63,7 @@ impl Che {
         if self.level >= 1 {
             Cow::Borrowed(&self.o)
         } else {
-            Cow::Owned(matching::opposites_by_rule(
+            Cow::Owned(pairs::opposites_by_rule(
                 &self.v,
                 self.n_vertices,
                 &self.non_manifold,

@@ -17,8 +17,8 @@ mod tables;
 pub use crate::Ids;
 pub use build::{BuildOptions, BuildReport, MAX_TRIANGLES};
 pub use ids::{first, next, prev, tri};
-pub(crate) use query::Rows;
 pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
+pub(crate) use query::{Push, Rows};
 pub(crate) use tables::edge_directory;
 
 use crate::NONE;

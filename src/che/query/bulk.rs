@@ -3,10 +3,10 @@
 //! of once per element. The rows go to a [`Rows`] receiver: a [`Csr`] here, the caller's
 //! buffers in the C API.
 
-use super::star::{StarStep, for_each_step};
+use super::star::{StarStep, for_each_step, vf_item, vv_item};
 use crate::NONE;
 use crate::che::Che;
-use crate::che::ids::{next, tri};
+use crate::che::ids::tri;
 use crate::che::tables::{edge_ids, vertex_half_edges};
 use std::borrow::Cow;
 
@@ -42,20 +42,27 @@ impl Csr {
     }
 }
 
-/// Where a bulk sweep writes: `row()` before each element's entries, `push` for each entry.
-pub(crate) trait Rows {
-    fn row(&mut self);
+/// Where a one-element walk writes its entries (the C API's caller buffers).
+pub(crate) trait Push {
     fn push(&mut self, x: u32);
+}
+
+/// Where a bulk sweep writes: `row()` before each element's entries, `push` for each entry.
+pub(crate) trait Rows: Push {
+    fn row(&mut self);
+}
+
+impl Push for Csr {
+    #[inline]
+    fn push(&mut self, x: u32) {
+        self.indices.push(x);
+    }
 }
 
 impl Rows for Csr {
     #[inline]
     fn row(&mut self) {
         self.offsets.push(self.indices.len());
-    }
-    #[inline]
-    fn push(&mut self, x: u32) {
-        self.indices.push(x);
     }
 }
 
@@ -98,24 +105,48 @@ impl Che {
         csr.finish()
     }
 
+    /// One star from the stored `O` (level 1 on; the iterator's scans at level 0).
+    #[inline(always)]
+    fn star_into(&self, v: u32, out: &mut impl Push, item: impl Fn(StarStep) -> Option<u32>) {
+        let each = |s| {
+            if let Some(x) = item(s) {
+                out.push(x);
+            }
+        };
+        match self.opposites() {
+            Some(o) => for_each_step(o, self.vertex_half_edge(v), each),
+            None => self.vertex_star(v).for_each(each),
+        }
+    }
+
+    /// VV of `v` into `out`, as [`Che::vertex_vertices`] (without the iterator's state).
+    pub(crate) fn vertex_vertices_into(&self, v: u32, out: &mut impl Push) {
+        let vs = &self.v[..];
+        self.star_into(v, out, |s| Some(vv_item(vs, s)));
+    }
+
+    /// VE of `v` into `out`, as [`Che::vertex_edges`].
+    pub(crate) fn vertex_edges_into(&self, v: u32, out: &mut impl Push) {
+        self.star_into(v, out, |s| Some(self.ve_item(s)));
+    }
+
+    /// VF of `v` into `out`, as [`Che::vertex_triangles`].
+    pub(crate) fn vertex_triangles_into(&self, v: u32, out: &mut impl Push) {
+        self.star_into(v, out, vf_item);
+    }
+
     /// VV rows, in the order of [`Che::vertex_vertices`].
     pub(crate) fn vertex_vertices_rows(&self, out: &mut impl Rows) {
         let t = self.sweep_tables();
-        self.star_rows(&t, out, |s| {
-            Some(match s {
-                StarStep::Out(h) => self.v[next(h) as usize],
-                StarStep::LastIn(h) => self.v[h as usize],
-            })
-        });
+        let vs = &self.v[..];
+        self.star_rows(&t, out, |s| Some(vv_item(vs, s)));
     }
 
     /// VE rows, in the order of [`Che::vertex_edges`].
     pub(crate) fn vertex_edges_rows(&self, out: &mut impl Rows) {
         let t = self.sweep_tables();
         if self.level >= 2 {
-            return self.star_rows(&t, out, |s| match s {
-                StarStep::Out(h) | StarStep::LastIn(h) => Some(self.edge_of(h)),
-            });
+            return self.star_rows(&t, out, |s| Some(self.ve_item(s)));
         }
         let ids = edge_ids(&t.o);
         self.star_rows(&t, out, |s| match s {
@@ -126,10 +157,7 @@ impl Che {
     /// VF rows, in the order of [`Che::vertex_triangles`].
     pub(crate) fn vertex_triangles_rows(&self, out: &mut impl Rows) {
         let t = self.sweep_tables();
-        self.star_rows(&t, out, |s| match s {
-            StarStep::Out(h) => Some(tri(h)),
-            StarStep::LastIn(_) => None,
-        });
+        self.star_rows(&t, out, vf_item);
     }
 
     /// FF rows: 3 entries per triangle, `NONE` across boundary edges.

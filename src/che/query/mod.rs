@@ -8,9 +8,10 @@ mod memory;
 mod relations;
 mod star;
 mod summary;
+mod validate;
 
 pub use bulk::Csr;
-pub(crate) use bulk::Rows;
+pub(crate) use bulk::{Push, Rows};
 pub use curves::BoundaryWalk;
 pub use memory::Memory;
 pub use star::{Rotation, StarCursor, StarStep};

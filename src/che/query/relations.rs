@@ -1,7 +1,7 @@
 //! Queries at every level. Level 0 answers by scanning `V`; level 1 reads `O`; level 2
 //! reads `VH` and the edge ranks; level 3 the curves. Ids are the same at every level.
 
-use super::star::{Rotation, StarStep};
+use super::star::{Rotation, vf_item, vv_item};
 use crate::che::ids::{first, next, prev, tri};
 use crate::che::{Che, pairs};
 use crate::{Ids, NONE};
@@ -119,25 +119,17 @@ impl Che {
 
     /// VV: the vertices around `v`, counter-clockwise, from the boundary on a boundary vertex.
     pub fn vertex_vertices(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.vertex_star(v).map(|s| match s {
-            StarStep::Out(h) => self.v[next(h) as usize],
-            StarStep::LastIn(h) => self.v[h as usize],
-        })
+        self.vertex_star(v).map(|s| vv_item(&self.v, s))
     }
 
     /// VE: the edges around `v`, in the order of [`Che::vertex_vertices`].
     pub fn vertex_edges(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.vertex_star(v).map(|s| match s {
-            StarStep::Out(h) | StarStep::LastIn(h) => self.edge_of(h),
-        })
+        self.vertex_star(v).map(|s| self.ve_item(s))
     }
 
     /// VF: the triangles around `v`, counter-clockwise.
     pub fn vertex_triangles(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.vertex_star(v).filter_map(|s| match s {
-            StarStep::Out(h) => Some(tri(h)),
-            StarStep::LastIn(_) => None,
-        })
+        self.vertex_star(v).filter_map(vf_item)
     }
 
     /// The canonical half-edge of `h`'s edge: `h` itself when unpaired or smaller.

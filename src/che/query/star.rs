@@ -8,7 +8,7 @@
 
 use crate::NONE;
 use crate::che::Che;
-use crate::che::ids::prev;
+use crate::che::ids::{next, prev, tri};
 
 /// One step of a rotation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,21 +44,28 @@ impl StarCursor {
         }
     }
 
+    /// The rule of the rotation: after the outgoing half-edge `cur`, whose previous
+    /// half-edge `p` has the opposite `around`, comes `around`, unless it is the boundary
+    /// (then the closing step `p`) or the start again (then the end).
+    #[inline(always)]
+    fn turn(&mut self, p: u32, around: u32) {
+        if around == NONE {
+            self.cur = NONE;
+            self.tail = p;
+        } else if around == self.start {
+            self.cur = NONE;
+        } else {
+            self.cur = around;
+        }
+    }
+
     /// The next step; `opposite(p)` answers `O[p]`.
     #[inline(always)]
     pub fn step(&mut self, opposite: impl FnOnce(u32) -> u32) -> Option<StarStep> {
         if self.cur != NONE {
             let h = self.cur;
             let p = prev(h);
-            let around = opposite(p);
-            if around == NONE {
-                self.cur = NONE;
-                self.tail = p;
-            } else if around == self.start {
-                self.cur = NONE;
-            } else {
-                self.cur = around;
-            }
+            self.turn(p, opposite(p));
             return Some(StarStep::Out(h));
         }
         if self.tail != NONE {
@@ -70,12 +77,48 @@ impl StarCursor {
     }
 }
 
-/// Every step of the rotation from `start` over a table of opposites.
+/// Every step of the rotation from `start` over a table of opposites: the steps of
+/// [`StarCursor::step`], as one loop for the sweeps.
 #[inline(always)]
 pub(crate) fn for_each_step(o: &[u32], start: u32, mut f: impl FnMut(StarStep)) {
     let mut c = StarCursor::new(start);
-    while let Some(s) = c.step(|p| o[p as usize]) {
-        f(s);
+    while c.cur != NONE {
+        let h = c.cur;
+        f(StarStep::Out(h));
+        let p = prev(h);
+        c.turn(p, o[p as usize]);
+    }
+    if c.tail != NONE {
+        f(StarStep::LastIn(c.tail));
+    }
+}
+
+/// The VV entry of a step over `V`: the far end of an outgoing half-edge, the near end of
+/// the closing incoming one.
+#[inline(always)]
+pub(crate) fn vv_item(v: &[u32], s: StarStep) -> u32 {
+    match s {
+        StarStep::Out(h) => v[next(h) as usize],
+        StarStep::LastIn(h) => v[h as usize],
+    }
+}
+
+impl Che {
+    /// The VE entry of a step: the edge of its half-edge.
+    #[inline(always)]
+    pub(crate) fn ve_item(&self, s: StarStep) -> u32 {
+        match s {
+            StarStep::Out(h) | StarStep::LastIn(h) => self.edge_of(h),
+        }
+    }
+}
+
+/// The VF entry of a step: the triangle of an outgoing half-edge (none for the closing one).
+#[inline(always)]
+pub(crate) fn vf_item(s: StarStep) -> Option<u32> {
+    match s {
+        StarStep::Out(h) => Some(tri(h)),
+        StarStep::LastIn(_) => None,
     }
 }
 

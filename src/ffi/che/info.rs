@@ -1,11 +1,11 @@
 //! What a mesh is (topology summary), what its build did (report) and what it costs
 //! (memory per container).
 
-use super::boundary::{ids_answer, value_answer};
-use super::che::CheMesh;
-use super::status::Status;
+use super::CheMesh;
 use crate::che::{BuildReport, Memory, Summary};
-use crate::error::Error;
+use crate::error::{Error, Result};
+use crate::ffi::shapes::{ids, value};
+use crate::ffi::status::Status;
 
 /// The topology of the input complex as given (input vertices, unique input edges, kept
 /// triangles), and what the build did. Field names match the CLI's JSON.
@@ -61,8 +61,7 @@ impl From<Summary> for CheSummary {
 /// The topology summary into `*out`. O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_summary(m: *const CheMesh, out: *mut CheSummary) -> Status {
-    // SAFETY: caller contract.
-    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.summary().into())) }
+    value!(m, out, |c| Ok(c.summary().into()))
 }
 
 /// What the build did to its input (counts; `che_mesh_report_examples` gives ids).
@@ -121,8 +120,7 @@ impl From<&BuildReport> for CheBuildReport {
 /// The build report into `*out`. O(1).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_report(m: *const CheMesh, out: *mut CheBuildReport) -> Status {
-    // SAFETY: caller contract.
-    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.report().into())) }
+    value!(m, out, |c| Ok(c.report().into()))
 }
 
 /// Which offending ids `che_mesh_report_examples` returns (at most 16 items of each kind,
@@ -143,7 +141,7 @@ pub enum CheReportKind {
 }
 
 impl CheReportKind {
-    fn from_raw(k: u32) -> Option<Self> {
+    fn from_raw(k: u32) -> Result<Self> {
         use CheReportKind::*;
         [
             Degenerate,
@@ -154,6 +152,21 @@ impl CheReportKind {
         ]
         .into_iter()
         .find(|&x| x as u32 == k)
+        .ok_or_else(|| {
+            Error::out_of_range(format!("report kind {k} is not a che_report_kind (0..4)"))
+        })
+    }
+
+    /// The report's examples of this kind, flattened.
+    fn examples(self, r: &BuildReport) -> Vec<u32> {
+        let flat = |pairs: &[[u32; 2]]| pairs.iter().flatten().copied().collect();
+        match self {
+            CheReportKind::Degenerate => r.degenerate_examples.clone(),
+            CheReportKind::Duplicate => flat(&r.duplicate_examples),
+            CheReportKind::NonManifoldEdge => flat(&r.non_manifold_edge_examples),
+            CheReportKind::SplitVertex => r.split_vertex_examples.clone(),
+            CheReportKind::NonOrientable => r.non_orientable_examples.clone(),
+        }
     }
 }
 
@@ -167,29 +180,10 @@ pub unsafe extern "C" fn che_mesh_report_examples(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            let r = m.che.report();
-            let kind = CheReportKind::from_raw(kind).ok_or_else(|| {
-                Error::out_of_range(format!(
-                    "report kind {kind} is not a che_report_kind (0..4)"
-                ))
-            })?;
-            match kind {
-                CheReportKind::Degenerate => s.extend(r.degenerate_examples.iter().copied()),
-                CheReportKind::Duplicate => {
-                    s.extend(r.duplicate_examples.iter().flatten().copied())
-                }
-                CheReportKind::NonManifoldEdge => {
-                    s.extend(r.non_manifold_edge_examples.iter().flatten().copied())
-                }
-                CheReportKind::SplitVertex => s.extend(r.split_vertex_examples.iter().copied()),
-                CheReportKind::NonOrientable => s.extend(r.non_orientable_examples.iter().copied()),
-            }
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, |c, s| {
+        s.extend(CheReportKind::from_raw(kind)?.examples(c.report()));
+        Ok(())
+    })
 }
 
 /// Bytes held by each container (lengths, not capacities).
@@ -233,6 +227,5 @@ impl From<Memory> for CheMemory {
 /// Memory per container into `*out`. O(1).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_memory(m: *const CheMesh, out: *mut CheMemory) -> Status {
-    // SAFETY: caller contract.
-    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.memory_bytes().into())) }
+    value!(m, out, |c| Ok(c.memory_bytes().into()))
 }

@@ -15,8 +15,8 @@ use crate::NONE;
 /// half-edge of a large mesh), the second sorts one coarse bucket at a time in cache.
 /// The first pass stores one `u64` per half-edge, `[fine | max | h]`, where `fine` is the low
 /// bits of the smaller vertex (the coarse bucket holds the rest): 8 bytes of fresh memory
-/// per half-edge instead of 12. Meshes too large for that (over about 30M triangles) keep
-/// the fine bits in a second array.
+/// per half-edge instead of 12. When those three fields need more than 64 bits (see
+/// `Layout::new`), the fine bits go to a second array.
 pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, f: impl FnMut(u32, u32, &[u64]) + Send) {
     let mut f = Some(f);
     let grouping = Grouping {

@@ -136,4 +136,17 @@ macro_rules! free {
     }};
 }
 
-pub(crate) use {count, csr, free, ids, make, value, view};
+/// `From<&Core>` for a C struct that mirrors the core's fields by name (each converted
+/// with `as`: the C side widens counts to 64 bits).
+macro_rules! mirror {
+    ($core:ty => $c:ident { $($field:ident),* $(,)? }) => {
+        impl From<&$core> for $c {
+            #[allow(clippy::unnecessary_cast, reason = "some fields are already 64-bit")]
+            fn from(x: &$core) -> Self {
+                $c { $($field: x.$field as _),* }
+            }
+        }
+    };
+}
+
+pub(crate) use {count, csr, free, ids, make, mirror, value, view};

@@ -176,18 +176,10 @@ fn check_bulk(che: &Che, a: &Answers) {
     assert_eq!(as_lists(&che.all_vertex_vertices()), a.vv, "bulk VV");
     assert_eq!(as_lists(&che.all_vertex_edges()), a.ve, "bulk VE");
     assert_eq!(as_lists(&che.all_vertex_triangles()), a.vf, "bulk VF");
-    let ff: Vec<[u32; 3]> = che
-        .all_triangle_triangles()
-        .chunks(3)
-        .map(|c| [c[0], c[1], c[2]])
-        .collect();
-    assert_eq!(ff, a.ff, "bulk FF");
-    let fe: Vec<[u32; 3]> = che
-        .all_triangle_edges()
-        .chunks(3)
-        .map(|c| [c[0], c[1], c[2]])
-        .collect();
-    assert_eq!(fe, a.fe, "bulk FE");
+    let triples =
+        |x: Vec<u32>| -> Vec<[u32; 3]> { x.chunks(3).map(|c| [c[0], c[1], c[2]]).collect() };
+    assert_eq!(triples(che.all_triangle_triangles()), a.ff, "bulk FF");
+    assert_eq!(triples(che.all_triangle_edges()), a.fe, "bulk FE");
 }
 
 /// Structural invariants plus the relations against the input complex.

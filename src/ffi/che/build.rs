@@ -56,14 +56,9 @@ pub unsafe extern "C" fn che_mesh_from_triangles(
     level: u32,
     out: *mut *mut CheMesh,
 ) -> Status {
-    let options = CheBuildOptions {
-        level,
-        ..CheBuildOptions::default()
-    };
-    // SAFETY: the same contract as the `_ex` variant; `options` is a local.
-    unsafe {
-        che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &options, out)
-    }
+    let o = CheBuildOptions::at(level);
+    // SAFETY: the same contract as the `_ex` variant; `o` is a local.
+    unsafe { che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &o, out) }
 }
 
 /// `che_mesh_from_triangles` with options (NULL: `che_build_options_default()`). With
@@ -97,12 +92,8 @@ pub unsafe extern "C" fn che_mesh_load(
     level: u32,
     out: *mut *mut CheMesh,
 ) -> Status {
-    let options = CheBuildOptions {
-        level,
-        ..CheBuildOptions::default()
-    };
-    // SAFETY: the same contract as the `_ex` variant; `options` is a local.
-    unsafe { che_mesh_load_ex(path, &options, out) }
+    // SAFETY: the same contract as the `_ex` variant; the options are a local.
+    unsafe { che_mesh_load_ex(path, &CheBuildOptions::at(level), out) }
 }
 
 /// `che_mesh_load` with options (NULL: `che_build_options_default()`).

@@ -4,7 +4,7 @@
 use super::CheMesh;
 use crate::che::{BuildReport, Memory, Summary};
 use crate::error::{Error, Result};
-use crate::ffi::shapes::{ids, value};
+use crate::ffi::shapes::{ids, mirror, value};
 use crate::ffi::status::Status;
 
 /// The topology of the input complex as given (input vertices, unique input edges, kept
@@ -35,33 +35,16 @@ pub struct CheSummary {
     pub non_orientable_components: u64,
 }
 
-impl From<Summary> for CheSummary {
-    fn from(s: Summary) -> Self {
-        CheSummary {
-            vertices: s.vertices,
-            edges: s.edges,
-            triangles: s.triangles,
-            boundary_edges: s.boundary_edges,
-            boundary_curves: s.boundary_curves,
-            components: s.components,
-            isolated_vertices: s.isolated_vertices,
-            euler_characteristic: s.euler_characteristic,
-            genus: s.genus,
-            orientable: s.orientable,
-            manifold: s.manifold,
-            dropped_degenerate: s.dropped_degenerate,
-            non_manifold_edges: s.non_manifold_edges,
-            split_vertices: s.split_vertices,
-            flipped_triangles: s.flipped_triangles,
-            non_orientable_components: s.non_orientable_components,
-        }
-    }
-}
+mirror!(Summary => CheSummary {
+    vertices, edges, triangles, boundary_edges, boundary_curves, components,
+    isolated_vertices, euler_characteristic, genus, orientable, manifold, dropped_degenerate,
+    non_manifold_edges, split_vertices, flipped_triangles, non_orientable_components,
+});
 
 /// The topology summary into `*out`. O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_summary(m: *const CheMesh, out: *mut CheSummary) -> Status {
-    value!(m, out, |c| Ok(c.summary().into()))
+    value!(m, out, |c| Ok((&c.summary()).into()))
 }
 
 /// What the build did to its input (counts; `che_mesh_report_examples` gives ids).
@@ -96,26 +79,11 @@ pub struct CheBuildReport {
     pub seam_edges: u64,
 }
 
-impl From<&BuildReport> for CheBuildReport {
-    fn from(r: &BuildReport) -> Self {
-        let n = |x: usize| x as u64;
-        CheBuildReport {
-            input_triangles: n(r.input_triangles),
-            input_vertices: n(r.input_vertices),
-            dropped_degenerate: n(r.dropped_degenerate),
-            duplicate_triangles: n(r.duplicate_triangles),
-            input_edges: n(r.input_edges),
-            boundary_edges: n(r.boundary_edges),
-            non_manifold_edges: n(r.non_manifold_edges),
-            split_vertices: n(r.split_vertices),
-            seam_split_vertices: n(r.seam_split_vertices),
-            added_vertices: n(r.added_vertices),
-            flipped_triangles: n(r.flipped_triangles),
-            non_orientable_components: n(r.non_orientable_components),
-            seam_edges: n(r.seam_edges),
-        }
-    }
-}
+mirror!(BuildReport => CheBuildReport {
+    input_triangles, input_vertices, dropped_degenerate, duplicate_triangles, input_edges,
+    boundary_edges, non_manifold_edges, split_vertices, seam_split_vertices, added_vertices,
+    flipped_triangles, non_orientable_components, seam_edges,
+});
 
 /// The build report into `*out`. O(1).
 #[unsafe(no_mangle)]
@@ -208,24 +176,12 @@ pub struct CheMemory {
     pub maps: u64,
 }
 
-impl From<Memory> for CheMemory {
-    fn from(m: Memory) -> Self {
-        let n = |x: usize| x as u64;
-        CheMemory {
-            half_edge_vertices: n(m.half_edge_vertices),
-            opposites: n(m.opposites),
-            vertex_half_edges: n(m.vertex_half_edges),
-            edges: n(m.edges),
-            curves: n(m.curves),
-            topology: n(m.topology),
-            positions: n(m.positions),
-            maps: n(m.maps),
-        }
-    }
-}
+mirror!(Memory => CheMemory {
+    half_edge_vertices, opposites, vertex_half_edges, edges, curves, topology, positions, maps,
+});
 
 /// Memory per container into `*out`. O(1).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_memory(m: *const CheMesh, out: *mut CheMemory) -> Status {
-    value!(m, out, |c| Ok(c.memory_bytes().into()))
+    value!(m, out, |c| Ok((&c.memory_bytes()).into()))
 }

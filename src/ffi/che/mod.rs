@@ -132,6 +132,14 @@ pub(crate) fn level_arg(level: u32) -> Result<u8> {
 }
 
 impl CheBuildOptions {
+    /// The defaults at `level`.
+    pub(crate) fn at(level: u32) -> Self {
+        CheBuildOptions {
+            level,
+            ..Self::default()
+        }
+    }
+
     pub(crate) fn to_core(self) -> Result<BuildOptions> {
         Ok(BuildOptions {
             level: level_arg(self.level)?,

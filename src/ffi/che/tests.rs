@@ -148,3 +148,21 @@ fn edge_directory_gives_the_core_edge_ids() {
     let level0 = CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(0)).unwrap());
     assert!(level0.che.edge_ranks().is_none());
 }
+
+#[test]
+fn validate_passes_at_every_level_and_names_a_null_handle() {
+    let tetra = [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3];
+    for (tris, n) in [(&STRIP[..], 4), (&tetra[..], 4)] {
+        for level in 0..=3 {
+            let m = build(tris, n, level);
+            // SAFETY: a live mesh, freed once.
+            unsafe {
+                assert_eq!(che_mesh_validate(m), Status::Ok, "level {level}");
+                che_mesh_free(m);
+            }
+        }
+    }
+    // SAFETY: NULL is a documented argument.
+    assert_eq!(unsafe { che_mesh_validate(null()) }, Status::NullArgument);
+    assert!(with_last_error(|e| e.contains("'m'")));
+}

@@ -206,46 +206,39 @@ impl Che {
         &self.seams
     }
 
+    #[inline]
     pub fn check_vertex(&self, v: u32) -> Result<()> {
-        if (v as usize) < self.n_vertices {
-            Ok(())
-        } else {
-            Err(Error::out_of_range(format!(
-                "vertex {v} out of range (the mesh has {} vertices)",
-                self.n_vertices
-            )))
-        }
+        check_id(v, self.n_vertices, "vertex", "vertices")
     }
+    #[inline]
     pub fn check_triangle(&self, t: u32) -> Result<()> {
-        if (t as usize) < self.num_triangles() {
-            Ok(())
-        } else {
-            Err(Error::out_of_range(format!(
-                "triangle {t} out of range (the mesh has {} triangles)",
-                self.num_triangles()
-            )))
-        }
+        check_id(t, self.num_triangles(), "triangle", "triangles")
     }
+    #[inline]
     pub fn check_half_edge(&self, h: u32) -> Result<()> {
-        if (h as usize) < self.v.len() {
-            Ok(())
-        } else {
-            Err(Error::out_of_range(format!(
-                "half-edge {h} out of range (the mesh has {} half-edges)",
-                self.v.len()
-            )))
-        }
+        check_id(h, self.v.len(), "half-edge", "half-edges")
     }
+    #[inline]
     pub fn check_edge(&self, e: u32) -> Result<()> {
-        if (e as usize) < self.num_edges {
-            Ok(())
-        } else {
-            Err(Error::out_of_range(format!(
-                "edge {e} out of range (the mesh has {} edges)",
-                self.num_edges
-            )))
-        }
+        check_id(e, self.num_edges, "edge", "edges")
     }
+}
+
+/// `id` below `count`, or an out-of-range error naming the element.
+#[inline]
+fn check_id(id: u32, count: usize, one: &str, many: &str) -> Result<()> {
+    if (id as usize) < count {
+        Ok(())
+    } else {
+        Err(out_of_range(id, count, one, many))
+    }
+}
+
+#[cold]
+fn out_of_range(id: u32, count: usize, one: &str, many: &str) -> Error {
+    Error::out_of_range(format!(
+        "{one} {id} out of range (the mesh has {count} {many})"
+    ))
 }
 
 /// Views a flat id array as triples without copying (the caller checked the length).

@@ -78,10 +78,19 @@ impl Che {
 
     /// The outgoing half-edge a rotation around `v` starts at: the boundary one on a
     /// boundary vertex, `NONE` for an isolated vertex. O(1) at level 2, a scan below.
+    #[inline]
     pub fn vertex_half_edge(&self, v: u32) -> u32 {
         if self.level >= 2 {
-            return self.vh[v as usize];
+            self.vh[v as usize]
+        } else {
+            self.vertex_half_edge_by_scan(v)
         }
+    }
+
+    /// [`Che::vertex_half_edge`] below level 2: the first boundary half-edge from `v`, else
+    /// the first.
+    #[cold]
+    fn vertex_half_edge_by_scan(&self, v: u32) -> u32 {
         let mut any = NONE;
         for (h, &x) in self.v.iter().enumerate() {
             if x == v {

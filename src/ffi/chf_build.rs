@@ -130,9 +130,7 @@ pub unsafe extern "C" fn chf_mesh_load_ex(
                 cstr_arg(path, "path")?,
             )
         };
-        let path = std::path::Path::new(
-            <std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(path.to_bytes()),
-        );
+        let path = std::path::Path::new(super::boundary::os_str(path)?);
         let data = crate::io::read(path)?;
         if !data.is_volume() {
             return Err(Error::invalid(format!(

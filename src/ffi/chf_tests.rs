@@ -2,7 +2,7 @@
 //! `c-tests/`): relations, CSR rows and boundary maps agree with the core at every level.
 
 use super::boundary::with_last_error;
-use super::che_build::{che_mesh_free, che_mesh_num_triangles};
+use super::che::{che_mesh_free, che_mesh_num_triangles};
 use super::chf_build::*;
 use super::chf_csr::*;
 use super::chf_relations::*;

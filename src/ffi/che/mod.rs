@@ -1,9 +1,31 @@
-//! The `che_mesh` handle: a boxed [`Che`] plus the identity origin maps, materialised on
-//! the first request for a zero-copy view (the core stores none when they are the identity).
+//! The CHE exports: the `che_mesh` handle (a boxed [`Che`] plus the identity origin maps,
+//! materialised on the first request for a zero-copy view, as the core stores none when
+//! they are the identity) and its build options; `build` (create, load, free, level,
+//! counts), `relations` (one element at a time), `star` (the stack iterator; its step is
+//! inline in `topomesh_inline.h` from level 2), `csr` (bulk), `views` (zero-copy), `info`
+//! (summary, report, memory), `validate`.
 
-use crate::che::{BuildOptions, Che, edge_directory};
+mod build;
+mod csr;
+mod info;
+mod relations;
+mod star;
+#[cfg(test)]
+mod tests;
+mod validate;
+mod views;
+
+pub use build::*;
+pub use csr::*;
+pub use info::*;
+pub use relations::*;
+pub use star::*;
+pub use validate::*;
+pub use views::*;
+
+use super::boundary::{CsrSink, Handle, Sink};
+use crate::che::{BuildOptions, Che, Push, Rows};
 use crate::error::{Error, Result};
-use crate::util::rank_directory::RankDirectory;
 use std::sync::OnceLock;
 
 /// Opaque handle to a CHE surface. Create with `che_mesh_from_triangles` or
@@ -12,9 +34,14 @@ pub struct CheMesh {
     pub(crate) che: Che,
     vertex_origins: OnceLock<Box<[u32]>>,
     triangle_origins: OnceLock<Box<[u32]>>,
-    /// The edge-id directory at level 1, computed from `O` on first use (the core stores
-    /// one from level 2); reset when the level changes.
-    edge_ranks: OnceLock<Option<RankDirectory>>,
+}
+
+impl Handle for CheMesh {
+    type Core = Che;
+    #[inline(always)]
+    fn core(&self) -> &Che {
+        &self.che
+    }
 }
 
 impl CheMesh {
@@ -23,26 +50,7 @@ impl CheMesh {
             che,
             vertex_origins: OnceLock::new(),
             triangle_origins: OnceLock::new(),
-            edge_ranks: OnceLock::new(),
         }
-    }
-
-    /// The edge-id directory (see `che_mesh_edge_ranks`): the core's from level 2, computed
-    /// from `O` on first use at level 1; `None` at level 0.
-    pub(crate) fn edge_ranks(&self) -> Option<&[u64]> {
-        if let Some(entries) = self.che.edge_rank_directory() {
-            return Some(entries);
-        }
-        self.edge_ranks
-            .get_or_init(|| self.che.opposites().map(edge_directory))
-            .as_ref()
-            .map(RankDirectory::entries)
-    }
-
-    /// Changes the level; views (the edge-id directory too) are invalid afterwards.
-    pub(crate) fn build_level(&mut self, level: u8) -> Result<()> {
-        self.edge_ranks = OnceLock::new();
-        self.che.build_level(level)
     }
 
     /// Structure vertex -> input vertex, identity included (origins do not depend on the level).
@@ -63,6 +71,28 @@ impl CheMesh {
                 .triangle_origins
                 .get_or_init(|| (0..self.che.num_triangles() as u32).collect()),
         }
+    }
+}
+
+// The core's walks write straight into the caller's buffers.
+impl Push for Sink<'_, u32> {
+    #[inline(always)]
+    fn push(&mut self, x: u32) {
+        Sink::push(self, x);
+    }
+}
+
+impl Push for CsrSink<'_> {
+    #[inline(always)]
+    fn push(&mut self, x: u32) {
+        CsrSink::push(self, x);
+    }
+}
+
+impl Rows for CsrSink<'_> {
+    #[inline(always)]
+    fn row(&mut self) {
+        CsrSink::row(self);
     }
 }
 
@@ -102,6 +132,14 @@ pub(crate) fn level_arg(level: u32) -> Result<u8> {
 }
 
 impl CheBuildOptions {
+    /// The defaults at `level`.
+    pub(crate) fn at(level: u32) -> Self {
+        CheBuildOptions {
+            level,
+            ..Self::default()
+        }
+    }
+
     pub(crate) fn to_core(self) -> Result<BuildOptions> {
         Ok(BuildOptions {
             level: level_arg(self.level)?,
@@ -115,42 +153,4 @@ impl CheBuildOptions {
 #[unsafe(no_mangle)]
 pub extern "C" fn che_build_options_default() -> CheBuildOptions {
     CheBuildOptions::default()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::NONE;
-
-    /// The arithmetic of `che_edge_of` (topomesh_inline.h) on the lent directory gives the
-    /// core's edge ids, at level 1 (computed here) and from level 2 (the core's own).
-    #[test]
-    fn edge_directory_gives_the_core_edge_ids() {
-        // A strip of 40 triangles (120 half-edges: boundary and interior edges).
-        let mut tris = Vec::new();
-        for i in 0..40u32 {
-            if i % 2 == 0 {
-                tris.extend([i, i + 1, i + 2]);
-            } else {
-                tris.extend([i, i + 2, i + 1]);
-            }
-        }
-        for level in 1..=3 {
-            let mesh =
-                CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(level)).unwrap());
-            let o = mesh.che.opposites().unwrap();
-            let d = mesh.edge_ranks().unwrap();
-            assert_eq!(d.len(), o.len().div_ceil(32));
-            for h in 0..o.len() as u32 {
-                let g = o[h as usize];
-                let c = if g != NONE && g < h { g } else { h } as usize;
-                let entry = d[c / 32];
-                let edge =
-                    (entry >> 32) as u32 + (entry as u32 & ((1u32 << (c % 32)) - 1)).count_ones();
-                assert_eq!(edge, mesh.che.edge_of(h), "level {level} h {h}");
-            }
-        }
-        let level0 = CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(0)).unwrap());
-        assert!(level0.edge_ranks().is_none());
-    }
 }

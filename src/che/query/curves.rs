@@ -1,9 +1,10 @@
 //! Boundary curves at every level: stored at level 3, walked from `VH` at level 2, found
 //! by scanning below. A curve is the cycle of boundary half-edges `h -> VH[target(h)]`.
 
-use super::Che;
-use super::ids::next;
 use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::next;
+use crate::error::{Error, Result};
 use std::borrow::Cow;
 
 /// The half-edges of one boundary curve, in order (the interior on the left).
@@ -101,10 +102,16 @@ impl Che {
         }
     }
 
-    /// The vertices of curve `c` (an index into [`Che::boundary_curve_starts`]), in order.
-    pub fn boundary_curve_vertices(&self, c: u32) -> Option<Vec<u32>> {
+    /// The vertices of curve `c` (an index into [`Che::boundary_curve_starts`]), in order;
+    /// an out-of-range error when there is no curve `c`.
+    pub fn boundary_curve_vertices(&self, c: u32) -> Result<Vec<u32>> {
         let starts = self.boundary_curve_starts();
-        let &s = starts.get(c as usize)?;
-        Some(self.boundary_curve(s).map(|h| self.v[h as usize]).collect())
+        let &s = starts.get(c as usize).ok_or_else(|| {
+            Error::out_of_range(format!(
+                "boundary curve {c} out of range (the mesh has {} curves)",
+                starts.len()
+            ))
+        })?;
+        Ok(self.boundary_curve(s).map(|h| self.v[h as usize]).collect())
     }
 }

@@ -15,11 +15,12 @@
 //! generated declarations, and the inline step needs their layout): keep them and these in
 //! the same order.
 
-use super::boundary::{guard, guard_or, handle, handle_mut, out_arg};
-use super::che::CheMesh;
-use super::status::Status;
+use super::CheMesh;
 use crate::NONE;
-use crate::che::{prev, tri};
+use crate::che::{Che, StarCursor, StarStep, prev, tri};
+use crate::ffi::boundary::{guard, guard_or, handle, handle_mut, out_arg};
+use crate::ffi::status::Status;
+use core::mem::{offset_of, size_of};
 use std::ptr;
 
 /// The state of a rotation around a vertex. Its fields are private: set them only with
@@ -36,13 +37,30 @@ pub struct CheStarIter {
     v: *const u32,
     o: *const u32,
     edge_ranks: *const u64,
-    start: u32,
-    cur: u32,
-    tail: u32,
+    /// The core's rotation state: `start`, `cur`, `tail` (three `uint32_t` in C).
+    cursor: StarCursor,
     /// `O[cur]` (when `cur` is not NONE): the previous step's `prev(h)`, so that the inline
     /// step finds the edge of `cur` without loading it.
     cur_opposite: u32,
 }
+
+// The layout `topomesh_inline.h` mirrors by hand (its `_Static_assert`s check the same).
+const _: () = {
+    assert!(size_of::<CheStarIter>() == 48);
+    assert!(offset_of!(CheStarIter, mesh) == 0);
+    assert!(offset_of!(CheStarIter, v) == 8);
+    assert!(offset_of!(CheStarIter, o) == 16);
+    assert!(offset_of!(CheStarIter, edge_ranks) == 24);
+    assert!(offset_of!(CheStarIter, cursor) + offset_of!(StarCursor, start) == 32);
+    assert!(offset_of!(CheStarIter, cursor) + offset_of!(StarCursor, cur) == 36);
+    assert!(offset_of!(CheStarIter, cursor) + offset_of!(StarCursor, tail) == 40);
+    assert!(offset_of!(CheStarIter, cur_opposite) == 44);
+    assert!(size_of::<CheStarStep>() == 16);
+    assert!(offset_of!(CheStarStep, half_edge) == 0);
+    assert!(offset_of!(CheStarStep, vertex) == 4);
+    assert!(offset_of!(CheStarStep, edge) == 8);
+    assert!(offset_of!(CheStarStep, triangle) == 12);
+};
 
 /// One step of a rotation around a vertex `v`, counter-clockwise seen from outside.
 ///
@@ -64,6 +82,56 @@ pub struct CheStarStep {
     pub triangle: u32,
 }
 
+impl CheStarIter {
+    /// The iterator of the rotation around `v` (checked) on the mesh `m`; from level 2
+    /// it holds the zero-copy arrays.
+    fn begin(m: *const CheMesh, che: &Che, v: u32) -> crate::error::Result<Self> {
+        che.check_vertex(v)?;
+        let start = che.vertex_half_edge(v);
+        let inline = che.level() >= 2;
+        let array = |a: Option<&[u32]>| a.filter(|_| inline).map_or(ptr::null(), <[u32]>::as_ptr);
+        Ok(CheStarIter {
+            mesh: m,
+            v: array(Some(che.half_edge_vertices())),
+            o: array(che.opposites()),
+            edge_ranks: che
+                .edge_ranks()
+                .filter(|_| inline)
+                .map_or(ptr::null(), <[u64]>::as_ptr),
+            cursor: StarCursor::new(start),
+            cur_opposite: if start == NONE {
+                NONE
+            } else {
+                che.opposite(start)
+            },
+        })
+    }
+
+    /// One step of the core's rotation, as the C step.
+    fn advance(&mut self, che: &Che) -> Option<CheStarStep> {
+        let step = self.cursor.step(|p| che.opposite(p))?;
+        Some(match step {
+            StarStep::Out(h) => {
+                if self.cursor.cur != NONE {
+                    self.cur_opposite = prev(h);
+                }
+                CheStarStep {
+                    half_edge: h,
+                    vertex: che.target(h),
+                    edge: che.edge_of(h),
+                    triangle: tri(h),
+                }
+            }
+            StarStep::LastIn(h) => CheStarStep {
+                half_edge: h,
+                vertex: che.origin(h),
+                edge: che.edge_of(h),
+                triangle: NONE,
+            },
+        })
+    }
+}
+
 /// Starts a rotation around vertex `v` in `*it` (an isolated vertex has no steps). From
 /// level 2 the iterator holds the zero-copy arrays, so that `che_star_next` steps inline.
 #[unsafe(no_mangle)]
@@ -71,33 +139,7 @@ pub unsafe extern "C" fn che_star_begin(m: *const CheMesh, v: u32, it: *mut CheS
     guard(|| {
         // SAFETY: caller contract: `m` NULL or live, `it` NULL or writable.
         let (mesh, it) = unsafe { (handle(m, "m")?, out_arg(it, "it")?) };
-        mesh.che.check_vertex(v)?;
-        let start = mesh.che.vertex_half_edge(v);
-        let inline = match (mesh.che.vertex_half_edges(), mesh.che.opposites()) {
-            (Some(_), Some(o)) => mesh.edge_ranks().map(|r| (o, r)),
-            _ => None,
-        };
-        let (o, edge_ranks) = inline.map_or((ptr::null(), ptr::null()), |(o, r)| {
-            (o.as_ptr(), r.as_ptr())
-        });
-        it.set(CheStarIter {
-            mesh: m,
-            v: if o.is_null() {
-                ptr::null()
-            } else {
-                mesh.che.half_edge_vertices().as_ptr()
-            },
-            o,
-            edge_ranks,
-            start,
-            cur: start,
-            tail: NONE,
-            cur_opposite: if start == NONE {
-                NONE
-            } else {
-                mesh.che.opposite(start)
-            },
-        });
+        it.set(CheStarIter::begin(m, &mesh.che, v)?);
         Ok(())
     })
 }
@@ -109,44 +151,9 @@ pub unsafe extern "C" fn che_star_begin(m: *const CheMesh, v: u32, it: *mut CheS
 pub unsafe extern "C" fn che_star_advance(it: *mut CheStarIter, step: *mut CheStarStep) -> bool {
     guard_or(false, || {
         // SAFETY: caller contract: `it` NULL or set by `che_star_begin` on a live mesh,
-        // `step` NULL or writable.
+        // `step` NULL or writable; the iterator borrows a live mesh.
         let (it, step) = unsafe { (handle_mut(it, "it")?, out_arg(step, "step")?) };
-        // SAFETY: the iterator borrows a live mesh (contract).
         let m = unsafe { handle(it.mesh, "it.mesh")? };
-        let che = &m.che;
-        // The rotation of `crate::che::star`: h, then O[prev(h)], until the boundary or back.
-        if it.cur != NONE {
-            let h = it.cur;
-            let p = prev(h);
-            let around = che.opposite(p);
-            if around == NONE {
-                it.cur = NONE;
-                it.tail = p;
-            } else if around == it.start {
-                it.cur = NONE;
-            } else {
-                it.cur = around;
-                it.cur_opposite = p;
-            }
-            step.set(CheStarStep {
-                half_edge: h,
-                vertex: che.target(h),
-                edge: che.edge_of(h),
-                triangle: tri(h),
-            });
-            return Ok(true);
-        }
-        if it.tail != NONE {
-            let h = it.tail;
-            it.tail = NONE;
-            step.set(CheStarStep {
-                half_edge: h,
-                vertex: che.origin(h),
-                edge: che.edge_of(h),
-                triangle: NONE,
-            });
-            return Ok(true);
-        }
-        Ok(false)
+        Ok(it.advance(&m.che).map(|s| step.set(s)).is_some())
     })
 }

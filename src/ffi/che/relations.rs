@@ -6,13 +6,9 @@
 //! `TOPOMESH_STATUS_BUFFER_TOO_SMALL` with the needed length in `*out_len`. An id out of
 //! range gives `TOPOMESH_STATUS_OUT_OF_RANGE` (the detail names it) and writes nothing.
 
-use super::boundary::{ids_answer, value_answer};
-use super::che::CheMesh;
-use super::che_walk::{Walk, across};
-use super::status::Status;
-use crate::NONE;
-use crate::che::{first, next, tri};
-use crate::error::Error;
+use super::CheMesh;
+use crate::ffi::shapes::{ids, value};
+use crate::ffi::status::Status;
 
 /// VV: the vertices around `v`, counter-clockwise seen from outside. On a boundary vertex
 /// the list starts at the far end of its outgoing boundary edge and ends at the near end of
@@ -26,17 +22,7 @@ pub unsafe extern "C" fn che_vertex_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_vertex(v)?;
-            match Walk::of(&m.che) {
-                Some(w) => w.vertex_vertices(v, &mut |x| s.push(x)),
-                None => s.extend(m.che.vertex_vertices(v)),
-            }
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_vertices_into(v, s))
 }
 
 /// VE: the edges around `v`, the edge to each vertex of `che_vertex_vertices`, in the same
@@ -49,14 +35,7 @@ pub unsafe extern "C" fn che_vertex_edges(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_vertex(v)?;
-            s.extend(m.che.vertex_edges(v));
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_edges_into(v, s))
 }
 
 /// VF: the triangles around `v`, counter-clockwise, from the boundary on a boundary vertex.
@@ -69,17 +48,7 @@ pub unsafe extern "C" fn che_vertex_triangles(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_vertex(v)?;
-            match Walk::of(&m.che) {
-                Some(w) => w.vertex_triangles(v, &mut |x| s.push(x)),
-                None => s.extend(m.che.vertex_triangles(v)),
-            }
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_triangles_into(v, s))
 }
 
 /// EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (the boundary
@@ -92,20 +61,7 @@ pub unsafe extern "C" fn che_edge_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_edge(e)?;
-            match m.che.edge_half_edges() {
-                Some(eh) => {
-                    let (h, v) = (eh[e as usize], m.che.half_edge_vertices());
-                    s.extend([v[h as usize], v[next(h) as usize]]);
-                }
-                None => s.extend(m.che.edge_vertices(e)),
-            }
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_vertices(e))
 }
 
 /// EE: the wings of edge `e` (4 entries, 2 on a boundary edge): the next and previous edges
@@ -118,14 +74,7 @@ pub unsafe extern "C" fn che_edge_edges(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_edge(e)?;
-            s.extend(m.che.edge_edges(e));
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_edges(e))
 }
 
 /// EF: the triangles of edge `e` (2 entries, 1 on a boundary edge), the canonical
@@ -138,24 +87,7 @@ pub unsafe extern "C" fn che_edge_triangles(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_edge(e)?;
-            match (m.che.edge_half_edges(), m.che.opposites()) {
-                (Some(eh), Some(o)) => {
-                    let h = eh[e as usize];
-                    s.push(tri(h));
-                    let g = o[h as usize];
-                    if g != NONE {
-                        s.push(tri(g));
-                    }
-                }
-                _ => s.extend(m.che.edge_triangles(e)),
-            }
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_triangles(e))
 }
 
 /// FV: the 3 corners of triangle `t`, counter-clockwise (corner i is the origin of
@@ -168,15 +100,7 @@ pub unsafe extern "C" fn che_triangle_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_triangle(t)?;
-            let h = first(t) as usize;
-            s.extend(m.che.half_edge_vertices()[h..h + 3].iter().copied());
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_vertices(t))
 }
 
 /// FE: the 3 edges of triangle `t`; edge i runs from corner i to corner i + 1.
@@ -188,14 +112,7 @@ pub unsafe extern "C" fn che_triangle_edges(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_triangle(t)?;
-            s.extend(m.che.triangle_edges(t));
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_edges(t))
 }
 
 /// FF: always 3 entries, the triangle across edge i of `t` (see `che_triangle_edges`), or
@@ -209,20 +126,7 @@ pub unsafe extern "C" fn che_triangle_triangles(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            m.che.check_triangle(t)?;
-            match m.che.opposites() {
-                Some(o) => {
-                    let h = first(t) as usize;
-                    s.extend([across(o, h), across(o, h + 1), across(o, h + 2)]);
-                }
-                None => s.extend(m.che.triangle_triangles(t)),
-            }
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_triangles(t))
 }
 
 /// The vertices of boundary curve `curve` (0..che_mesh_num_boundary_curves), in order, the
@@ -236,20 +140,10 @@ pub unsafe extern "C" fn che_boundary_curve_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            let starts = m.che.boundary_curve_starts();
-            let &start = starts.get(curve as usize).ok_or_else(|| {
-                Error::out_of_range(format!(
-                    "boundary curve {curve} out of range (the mesh has {} curves)",
-                    starts.len()
-                ))
-            })?;
-            s.extend(m.che.boundary_curve(start).map(|h| m.che.origin(h)));
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, |c, s| {
+        s.extend(c.boundary_curve_vertices(curve)?);
+        Ok(())
+    })
 }
 
 /// The opposite of half-edge `h` into `*out` (`TOPOMESH_NONE` on the boundary).
@@ -260,64 +154,34 @@ pub unsafe extern "C" fn che_half_edge_opposite(
     h: u32,
     out: *mut u32,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &CheMesh| {
-            m.che.check_half_edge(h)?;
-            Ok(m.che.opposite(h))
-        })
-    }
+    value!(m, out, check_half_edge(h) => |c| c.opposite(h))
 }
 
 /// The edge of half-edge `h` into `*out`. O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_half_edge_edge(m: *const CheMesh, h: u32, out: *mut u32) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &CheMesh| {
-            m.che.check_half_edge(h)?;
-            Ok(m.che.edge_of(h))
-        })
-    }
+    value!(m, out, check_half_edge(h) => |c| c.edge_of(h))
 }
 
 /// The boundary curve of half-edge `h` into `*out` (`TOPOMESH_NONE` when `h` is not on the
 /// boundary). O(1) at level 3.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_half_edge_curve(m: *const CheMesh, h: u32, out: *mut u32) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &CheMesh| {
-            m.che.check_half_edge(h)?;
-            Ok(m.che.curve_of(h))
-        })
-    }
+    value!(m, out, check_half_edge(h) => |c| c.curve_of(h))
 }
 
 /// The outgoing half-edge of vertex `v` a rotation starts at into `*out`: the boundary one
 /// on a boundary vertex, `TOPOMESH_NONE` for an isolated vertex. O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_vertex_half_edge(m: *const CheMesh, v: u32, out: *mut u32) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &CheMesh| {
-            m.che.check_vertex(v)?;
-            Ok(m.che.vertex_half_edge(v))
-        })
-    }
+    value!(m, out, check_vertex(v) => |c| c.vertex_half_edge(v))
 }
 
 /// The canonical half-edge of edge `e` into `*out` (the boundary one on a boundary edge,
 /// else the smaller of the two). O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_edge_half_edge(m: *const CheMesh, e: u32, out: *mut u32) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &CheMesh| {
-            m.che.check_edge(e)?;
-            Ok(m.che.edge_half_edge(e))
-        })
-    }
+    value!(m, out, check_edge(e) => |c| c.edge_half_edge(e))
 }
 
 /// Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2.
@@ -327,23 +191,11 @@ pub unsafe extern "C" fn che_vertex_is_boundary(
     v: u32,
     out: *mut bool,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &CheMesh| {
-            m.che.check_vertex(v)?;
-            Ok(m.che.is_boundary_vertex(v))
-        })
-    }
+    value!(m, out, check_vertex(v) => |c| c.is_boundary_vertex(v))
 }
 
 /// Is edge `e` on the boundary (one triangle)? O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_edge_is_boundary(m: *const CheMesh, e: u32, out: *mut bool) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &CheMesh| {
-            m.che.check_edge(e)?;
-            Ok(m.che.is_boundary_edge(e))
-        })
-    }
+    value!(m, out, check_edge(e) => |c| c.is_boundary_edge(e))
 }

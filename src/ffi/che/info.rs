@@ -1,11 +1,11 @@
 //! What a mesh is (topology summary), what its build did (report) and what it costs
 //! (memory per container).
 
-use super::boundary::{ids_answer, value_answer};
-use super::che::CheMesh;
-use super::status::Status;
+use super::CheMesh;
 use crate::che::{BuildReport, Memory, Summary};
-use crate::error::Error;
+use crate::error::{Error, Result};
+use crate::ffi::shapes::{ids, mirror, value};
+use crate::ffi::status::Status;
 
 /// The topology of the input complex as given (input vertices, unique input edges, kept
 /// triangles), and what the build did. Field names match the CLI's JSON.
@@ -35,34 +35,16 @@ pub struct CheSummary {
     pub non_orientable_components: u64,
 }
 
-impl From<Summary> for CheSummary {
-    fn from(s: Summary) -> Self {
-        CheSummary {
-            vertices: s.vertices,
-            edges: s.edges,
-            triangles: s.triangles,
-            boundary_edges: s.boundary_edges,
-            boundary_curves: s.boundary_curves,
-            components: s.components,
-            isolated_vertices: s.isolated_vertices,
-            euler_characteristic: s.euler_characteristic,
-            genus: s.genus,
-            orientable: s.orientable,
-            manifold: s.manifold,
-            dropped_degenerate: s.dropped_degenerate,
-            non_manifold_edges: s.non_manifold_edges,
-            split_vertices: s.split_vertices,
-            flipped_triangles: s.flipped_triangles,
-            non_orientable_components: s.non_orientable_components,
-        }
-    }
-}
+mirror!(Summary => CheSummary {
+    vertices, edges, triangles, boundary_edges, boundary_curves, components,
+    isolated_vertices, euler_characteristic, genus, orientable, manifold, dropped_degenerate,
+    non_manifold_edges, split_vertices, flipped_triangles, non_orientable_components,
+});
 
 /// The topology summary into `*out`. O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_summary(m: *const CheMesh, out: *mut CheSummary) -> Status {
-    // SAFETY: caller contract.
-    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.summary().into())) }
+    value!(m, out, |c| Ok((&c.summary()).into()))
 }
 
 /// What the build did to its input (counts; `che_mesh_report_examples` gives ids).
@@ -97,32 +79,16 @@ pub struct CheBuildReport {
     pub seam_edges: u64,
 }
 
-impl From<&BuildReport> for CheBuildReport {
-    fn from(r: &BuildReport) -> Self {
-        let n = |x: usize| x as u64;
-        CheBuildReport {
-            input_triangles: n(r.input_triangles),
-            input_vertices: n(r.input_vertices),
-            dropped_degenerate: n(r.dropped_degenerate),
-            duplicate_triangles: n(r.duplicate_triangles),
-            input_edges: n(r.input_edges),
-            boundary_edges: n(r.boundary_edges),
-            non_manifold_edges: n(r.non_manifold_edges),
-            split_vertices: n(r.split_vertices),
-            seam_split_vertices: n(r.seam_split_vertices),
-            added_vertices: n(r.added_vertices),
-            flipped_triangles: n(r.flipped_triangles),
-            non_orientable_components: n(r.non_orientable_components),
-            seam_edges: n(r.seam_edges),
-        }
-    }
-}
+mirror!(BuildReport => CheBuildReport {
+    input_triangles, input_vertices, dropped_degenerate, duplicate_triangles, input_edges,
+    boundary_edges, non_manifold_edges, split_vertices, seam_split_vertices, added_vertices,
+    flipped_triangles, non_orientable_components, seam_edges,
+});
 
 /// The build report into `*out`. O(1).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_report(m: *const CheMesh, out: *mut CheBuildReport) -> Status {
-    // SAFETY: caller contract.
-    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.report().into())) }
+    value!(m, out, |c| Ok(c.report().into()))
 }
 
 /// Which offending ids `che_mesh_report_examples` returns (at most 16 items of each kind,
@@ -143,7 +109,7 @@ pub enum CheReportKind {
 }
 
 impl CheReportKind {
-    fn from_raw(k: u32) -> Option<Self> {
+    fn from_raw(k: u32) -> Result<Self> {
         use CheReportKind::*;
         [
             Degenerate,
@@ -154,6 +120,21 @@ impl CheReportKind {
         ]
         .into_iter()
         .find(|&x| x as u32 == k)
+        .ok_or_else(|| {
+            Error::out_of_range(format!("report kind {k} is not a che_report_kind (0..4)"))
+        })
+    }
+
+    /// The report's examples of this kind, flattened.
+    fn examples(self, r: &BuildReport) -> Vec<u32> {
+        let flat = |pairs: &[[u32; 2]]| pairs.iter().flatten().copied().collect();
+        match self {
+            CheReportKind::Degenerate => r.degenerate_examples.clone(),
+            CheReportKind::Duplicate => flat(&r.duplicate_examples),
+            CheReportKind::NonManifoldEdge => flat(&r.non_manifold_edge_examples),
+            CheReportKind::SplitVertex => r.split_vertex_examples.clone(),
+            CheReportKind::NonOrientable => r.non_orientable_examples.clone(),
+        }
     }
 }
 
@@ -167,29 +148,10 @@ pub unsafe extern "C" fn che_mesh_report_examples(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m, s| {
-            let r = m.che.report();
-            let kind = CheReportKind::from_raw(kind).ok_or_else(|| {
-                Error::out_of_range(format!(
-                    "report kind {kind} is not a che_report_kind (0..4)"
-                ))
-            })?;
-            match kind {
-                CheReportKind::Degenerate => s.extend(r.degenerate_examples.iter().copied()),
-                CheReportKind::Duplicate => {
-                    s.extend(r.duplicate_examples.iter().flatten().copied())
-                }
-                CheReportKind::NonManifoldEdge => {
-                    s.extend(r.non_manifold_edge_examples.iter().flatten().copied())
-                }
-                CheReportKind::SplitVertex => s.extend(r.split_vertex_examples.iter().copied()),
-                CheReportKind::NonOrientable => s.extend(r.non_orientable_examples.iter().copied()),
-            }
-            Ok(())
-        })
-    }
+    ids!(m, buf, cap, out_len, |c, s| {
+        s.extend(CheReportKind::from_raw(kind)?.examples(c.report()));
+        Ok(())
+    })
 }
 
 /// Bytes held by each container (lengths, not capacities).
@@ -214,25 +176,12 @@ pub struct CheMemory {
     pub maps: u64,
 }
 
-impl From<Memory> for CheMemory {
-    fn from(m: Memory) -> Self {
-        let n = |x: usize| x as u64;
-        CheMemory {
-            half_edge_vertices: n(m.half_edge_vertices),
-            opposites: n(m.opposites),
-            vertex_half_edges: n(m.vertex_half_edges),
-            edges: n(m.edges),
-            curves: n(m.curves),
-            topology: n(m.topology),
-            positions: n(m.positions),
-            maps: n(m.maps),
-        }
-    }
-}
+mirror!(Memory => CheMemory {
+    half_edge_vertices, opposites, vertex_half_edges, edges, curves, topology, positions, maps,
+});
 
 /// Memory per container into `*out`. O(1).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_memory(m: *const CheMesh, out: *mut CheMemory) -> Status {
-    // SAFETY: caller contract.
-    unsafe { value_answer(m, out, |m: &CheMesh| Ok(m.che.memory_bytes().into())) }
+    value!(m, out, |c| Ok((&c.memory_bytes()).into()))
 }

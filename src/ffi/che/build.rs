@@ -1,13 +1,12 @@
 //! Making, freeing and re-levelling `che_mesh` handles, and their counts.
 
-use super::boundary::{
-    cstr_arg, free_handle, guard, guard_or, handle, handle_mut, handle_out, new_handle,
-};
-use super::che::{CheBuildOptions, CheMesh, level_arg};
-use super::mesh_arrays::{Cells, mesh_arrays};
-use super::status::Status;
+use super::{CheBuildOptions, CheMesh, level_arg};
 use crate::che::{BuildOptions, Che, MAX_TRIANGLES};
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::ffi::boundary::{guard, handle_mut, options_arg, path_arg};
+use crate::ffi::mesh_arrays::{Cells, mesh_arrays};
+use crate::ffi::shapes::{count, free, make};
+use crate::ffi::status::Status;
 use std::ffi::c_char;
 
 /// Builds from C arrays (sizes checked before any slice is made).
@@ -57,14 +56,9 @@ pub unsafe extern "C" fn che_mesh_from_triangles(
     level: u32,
     out: *mut *mut CheMesh,
 ) -> Status {
-    let options = CheBuildOptions {
-        level,
-        ..CheBuildOptions::default()
-    };
-    // SAFETY: the same contract as the `_ex` variant; `options` is a local.
-    unsafe {
-        che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &options, out)
-    }
+    let o = CheBuildOptions::at(level);
+    // SAFETY: the same contract as the `_ex` variant; `o` is a local.
+    unsafe { che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &o, out) }
 }
 
 /// `che_mesh_from_triangles` with options (NULL: `che_build_options_default()`). With
@@ -79,16 +73,11 @@ pub unsafe extern "C" fn che_mesh_from_triangles_ex(
     options: *const CheBuildOptions,
     out: *mut *mut CheMesh,
 ) -> Status {
-    guard(|| {
-        // SAFETY: caller contract: `out` is NULL or writable, `options` NULL or readable,
-        // the arrays NULL or of the stated sizes.
-        unsafe {
-            let out = handle_out(out, "out")?;
-            let options = options.as_ref().copied().unwrap_or_default().to_core()?;
-            let mesh = build(triangles, n_triangles, n_vertices, positions, options)?;
-            new_handle(mesh, &out);
-        }
-        Ok(())
+    // SAFETY: caller contract: `options` NULL or readable, the arrays NULL or of the
+    // stated sizes.
+    make!(out, unsafe {
+        let options = options_arg(options).to_core()?;
+        build(triangles, n_triangles, n_vertices, positions, options)
     })
 }
 
@@ -103,12 +92,8 @@ pub unsafe extern "C" fn che_mesh_load(
     level: u32,
     out: *mut *mut CheMesh,
 ) -> Status {
-    let options = CheBuildOptions {
-        level,
-        ..CheBuildOptions::default()
-    };
-    // SAFETY: the same contract as the `_ex` variant; `options` is a local.
-    unsafe { che_mesh_load_ex(path, &options, out) }
+    // SAFETY: the same contract as the `_ex` variant; the options are a local.
+    unsafe { che_mesh_load_ex(path, &CheBuildOptions::at(level), out) }
 }
 
 /// `che_mesh_load` with options (NULL: `che_build_options_default()`).
@@ -118,47 +103,18 @@ pub unsafe extern "C" fn che_mesh_load_ex(
     options: *const CheBuildOptions,
     out: *mut *mut CheMesh,
 ) -> Status {
-    guard(|| {
-        // SAFETY: caller contract: `out` NULL or writable, `options` NULL or readable,
-        // `path` NULL or NUL-terminated.
-        let (out, options, path) = unsafe {
-            (
-                handle_out(out, "out")?,
-                options.as_ref().copied().unwrap_or_default().to_core()?,
-                cstr_arg(path, "path")?,
-            )
-        };
-        let path = std::path::Path::new(
-            <std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(path.to_bytes()),
-        );
-        let data = crate::io::read(path)?;
-        if data.is_volume() {
-            return Err(Error::invalid(format!(
-                "{}: holds {} tetrahedra (a volume mesh), not a surface",
-                path.display(),
-                data.tetrahedra.len()
-            )));
-        }
-        let che = Che::from_triangles(
-            &data.triangles,
-            data.num_vertices(),
-            &data.positions,
-            options,
-        )?;
-        new_handle(CheMesh::new(che), &out);
-        Ok(())
+    // SAFETY: caller contract: `options` NULL or readable, `path` NULL or NUL-terminated.
+    let (options, path) = unsafe { (options_arg(options), path_arg(path, "path")) };
+    make!(out, {
+        let options = options.to_core()?;
+        crate::io::load::che(path?, options).map(CheMesh::new)
     })
 }
 
 /// Frees a mesh; NULL is a no-op. Needs exclusive access.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_free(m: *mut CheMesh) {
-    // Dropping plain vectors cannot panic; guard anyway so that nothing ever unwinds.
-    guard(|| {
-        // SAFETY: caller contract: NULL or a live handle, freed once.
-        unsafe { free_handle(m) };
-        Ok(())
-    });
+    free!(m)
 }
 
 /// Raises or lowers the level (0..3) in place. Ids never change with the level; views
@@ -168,68 +124,49 @@ pub unsafe extern "C" fn che_mesh_build_level(m: *mut CheMesh, level: u32) -> St
     guard(|| {
         // SAFETY: caller contract: NULL or a live handle, not shared during the call.
         let m = unsafe { handle_mut(m, "m")? };
-        m.build_level(level_arg(level)?)
-    })
-}
-
-/// Runs a count on a handle; NULL gives 0.
-///
-/// # Safety
-/// `m` is NULL or a live handle.
-unsafe fn count(m: *const CheMesh, f: impl FnOnce(&Che) -> usize) -> usize {
-    guard_or(0, || {
-        // SAFETY: forwarded contract.
-        let m = unsafe { handle(m, "m")? };
-        Ok(f(&m.che))
+        m.che.build_level(level_arg(level)?)
     })
 }
 
 /// The current level (0..3); 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_level(m: *const CheMesh) -> u32 {
-    // SAFETY: caller contract: NULL or a live handle.
-    unsafe { count(m, |c| c.level() as usize) as u32 }
+    count!(m, 0, |c| c.level() as u32)
 }
 
 /// Vertices of the structure: the input vertices, then the copies made by splitting
 /// non-manifold vertices. 0 for NULL (and likewise for the other counts).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_vertices(m: *const CheMesh) -> usize {
-    // SAFETY: caller contract: NULL or a live handle.
-    unsafe { count(m, Che::num_vertices) }
+    count!(m, 0, |c| c.num_vertices())
 }
 
 /// Vertices given as input (ids `0..n` of the structure are the same vertices).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_input_vertices(m: *const CheMesh) -> usize {
-    // SAFETY: caller contract: NULL or a live handle.
-    unsafe { count(m, Che::num_input_vertices) }
+    count!(m, 0, |c| c.num_input_vertices())
 }
 
 /// Triangles kept (degenerate input triangles are dropped).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_triangles(m: *const CheMesh) -> usize {
-    // SAFETY: caller contract: NULL or a live handle.
-    unsafe { count(m, Che::num_triangles) }
+    count!(m, 0, |c| c.num_triangles())
 }
 
 /// Edges of the structure (the edges of a non-manifold edge count once per triangle).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_edges(m: *const CheMesh) -> usize {
-    // SAFETY: caller contract: NULL or a live handle.
-    unsafe { count(m, Che::num_edges) }
+    count!(m, 0, |c| c.num_edges())
 }
 
 /// Half-edges: 3 per triangle.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_half_edges(m: *const CheMesh) -> usize {
-    // SAFETY: caller contract: NULL or a live handle.
-    unsafe { count(m, Che::num_half_edges) }
+    count!(m, 0, |c| c.num_half_edges())
 }
 
 /// Boundary curves of the structure (O(1) at level 3, O(T) below).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_boundary_curves(m: *const CheMesh) -> usize {
-    // SAFETY: caller contract: NULL or a live handle.
-    unsafe { count(m, Che::num_boundary_curves) }
+    count!(m, 0, |c| c.num_boundary_curves())
 }

@@ -1,9 +1,9 @@
 //! Queries at every level. Level 0 answers by scanning `V`; level 1 reads `O`; level 2
 //! reads `VH` and the edge ranks; level 3 the curves. Ids are the same at every level.
 
-use super::ids::{first, next, prev, tri};
-use super::star::{Rotation, StarStep};
-use super::{Che, matching};
+use super::star::{Rotation, vf_item, vv_item};
+use crate::che::ids::{first, next, prev, tri};
+use crate::che::{Che, pairs};
 use crate::{Ids, NONE};
 use std::borrow::Cow;
 
@@ -63,7 +63,7 @@ impl Che {
         if self.level >= 1 {
             Cow::Borrowed(&self.o)
         } else {
-            Cow::Owned(matching::opposites_by_rule(
+            Cow::Owned(pairs::opposites_by_rule(
                 &self.v,
                 self.n_vertices,
                 &self.non_manifold,
@@ -78,10 +78,19 @@ impl Che {
 
     /// The outgoing half-edge a rotation around `v` starts at: the boundary one on a
     /// boundary vertex, `NONE` for an isolated vertex. O(1) at level 2, a scan below.
+    #[inline]
     pub fn vertex_half_edge(&self, v: u32) -> u32 {
         if self.level >= 2 {
-            return self.vh[v as usize];
+            self.vh[v as usize]
+        } else {
+            self.vertex_half_edge_by_scan(v)
         }
+    }
+
+    /// [`Che::vertex_half_edge`] below level 2: the first boundary half-edge from `v`, else
+    /// the first.
+    #[cold]
+    fn vertex_half_edge_by_scan(&self, v: u32) -> u32 {
         let mut any = NONE;
         for (h, &x) in self.v.iter().enumerate() {
             if x == v {
@@ -119,25 +128,17 @@ impl Che {
 
     /// VV: the vertices around `v`, counter-clockwise, from the boundary on a boundary vertex.
     pub fn vertex_vertices(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.vertex_star(v).map(|s| match s {
-            StarStep::Out(h) => self.v[next(h) as usize],
-            StarStep::LastIn(h) => self.v[h as usize],
-        })
+        self.vertex_star(v).map(|s| vv_item(&self.v, s))
     }
 
     /// VE: the edges around `v`, in the order of [`Che::vertex_vertices`].
     pub fn vertex_edges(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.vertex_star(v).map(|s| match s {
-            StarStep::Out(h) | StarStep::LastIn(h) => self.edge_of(h),
-        })
+        self.vertex_star(v).map(|s| self.ve_item(s))
     }
 
     /// VF: the triangles around `v`, counter-clockwise.
     pub fn vertex_triangles(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.vertex_star(v).filter_map(|s| match s {
-            StarStep::Out(h) => Some(tri(h)),
-            StarStep::LastIn(_) => None,
-        })
+        self.vertex_star(v).filter_map(vf_item)
     }
 
     /// The canonical half-edge of `h`'s edge: `h` itself when unpaired or smaller.

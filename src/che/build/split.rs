@@ -2,9 +2,9 @@
 //! (rotation-connected pieces) gets one copy per extra fan, appended after the input
 //! vertices, so that one `VH` entry reaches the whole star of every vertex.
 
-use super::ids::{next, prev};
 use super::report::push_example;
 use crate::NONE;
+use crate::che::ids::{next, prev};
 use crate::util::dsu::Dsu;
 
 fn test(bits: &[u64], i: u32) -> bool {

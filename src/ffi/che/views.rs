@@ -4,9 +4,9 @@
 //! valid until the mesh is freed or its level changes (`che_mesh_build_level`). An empty
 //! container may be returned as a non-NULL pointer with `*len == 0`.
 
-use super::boundary::view_answer;
-use super::che::CheMesh;
-use super::mesh_arrays::coordinates;
+use super::CheMesh;
+use crate::ffi::mesh_arrays::coordinates;
+use crate::ffi::shapes::view;
 
 /// `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
 /// `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.
@@ -15,16 +15,14 @@ pub unsafe extern "C" fn che_mesh_half_edge_vertices(
     m: *const CheMesh,
     len: *mut usize,
 ) -> *const u32 {
-    // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| Some(m.che.half_edge_vertices())) }
+    view!(m, len, |m| Some(m.che.half_edge_vertices()))
 }
 
 /// `O`: the opposite of every half-edge (`TOPOMESH_NONE` on the boundary). NULL below
 /// level 1.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_opposites(m: *const CheMesh, len: *mut usize) -> *const u32 {
-    // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| m.che.opposites()) }
+    view!(m, len, |m| m.che.opposites())
 }
 
 /// `VH`: one outgoing half-edge per vertex, the boundary one on a boundary vertex,
@@ -34,8 +32,7 @@ pub unsafe extern "C" fn che_mesh_vertex_half_edges(
     m: *const CheMesh,
     len: *mut usize,
 ) -> *const u32 {
-    // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| m.che.vertex_half_edges()) }
+    view!(m, len, |m| m.che.vertex_half_edges())
 }
 
 /// `EH`: the canonical half-edge of every edge (the boundary one on a boundary edge).
@@ -45,8 +42,7 @@ pub unsafe extern "C" fn che_mesh_edge_half_edges(
     m: *const CheMesh,
     len: *mut usize,
 ) -> *const u32 {
-    // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| m.che.edge_half_edges()) }
+    view!(m, len, |m| m.che.edge_half_edges())
 }
 
 /// `CH`: one boundary half-edge per boundary curve (its smallest). NULL below level 3.
@@ -55,21 +51,17 @@ pub unsafe extern "C" fn che_mesh_curve_half_edges(
     m: *const CheMesh,
     len: *mut usize,
 ) -> *const u32 {
-    // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| m.che.curve_half_edges()) }
+    view!(m, len, |m| m.che.curve_half_edges())
 }
 
 /// Positions: x, y, z per structure vertex (copies repeat their origin's position);
 /// `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_positions(m: *const CheMesh, len: *mut usize) -> *const f64 {
-    // SAFETY: caller contract.
-    unsafe {
-        view_answer(m, len, |m| {
-            let p = m.che.positions();
-            (!p.is_empty()).then(|| coordinates(p))
-        })
-    }
+    view!(m, len, |m| {
+        let p = m.che.positions();
+        (!p.is_empty()).then(|| coordinates(p))
+    })
 }
 
 /// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
@@ -77,8 +69,7 @@ pub unsafe extern "C" fn che_mesh_positions(m: *const CheMesh, len: *mut usize) 
 /// identity; then kept with the mesh.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_origins(m: *const CheMesh, len: *mut usize) -> *const u32 {
-    // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| Some(m.vertex_origins())) }
+    view!(m, len, |m| Some(m.vertex_origins()))
 }
 
 /// Structure triangle -> input triangle (`num_triangles` entries; increasing, with gaps
@@ -88,8 +79,7 @@ pub unsafe extern "C" fn che_mesh_triangle_origins(
     m: *const CheMesh,
     len: *mut usize,
 ) -> *const u32 {
-    // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| Some(m.triangle_origins())) }
+    view!(m, len, |m| Some(m.triangle_origins()))
 }
 
 /// The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
@@ -102,6 +92,5 @@ pub unsafe extern "C" fn che_mesh_triangle_origins(
 /// changes). NULL below level 1.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_edge_ranks(m: *const CheMesh, len: *mut usize) -> *const u64 {
-    // SAFETY: caller contract.
-    unsafe { view_answer(m, len, |m| m.edge_ranks()) }
+    view!(m, len, |m| m.che.edge_ranks())
 }

@@ -1,14 +1,11 @@
 //! The exports called from Rust, as a C host would (the full C and C++ suites are in
 //! `c-tests/`): the star iterator and the CSR calls agree with the core's iterators.
 
-use super::boundary::with_last_error;
-use super::che_build::*;
-use super::che_csr::*;
-use super::che_relations::*;
-use super::che_star::*;
-use super::che_views::*;
-use super::{CheMesh, CheStarIter, CheStarStep, Status};
+use super::*;
 use crate::NONE;
+use crate::che::{BuildOptions, Che};
+use crate::ffi::boundary::with_last_error;
+use crate::ffi::status::Status;
 use std::ptr::{null, null_mut};
 
 const STRIP: [u32; 6] = [0, 1, 2, 1, 3, 2];
@@ -118,4 +115,54 @@ fn buffers_views_and_csr() {
         che_mesh_free(m);
         che_mesh_free(null_mut());
     }
+}
+
+/// The arithmetic of `che_edge_of` (topomesh_inline.h) on the lent directory gives the
+/// core's edge ids, at level 1 (computed here) and from level 2 (the core's own).
+#[test]
+fn edge_directory_gives_the_core_edge_ids() {
+    // A strip of 40 triangles (120 half-edges: boundary and interior edges).
+    let mut tris = Vec::new();
+    for i in 0..40u32 {
+        if i % 2 == 0 {
+            tris.extend([i, i + 1, i + 2]);
+        } else {
+            tris.extend([i, i + 2, i + 1]);
+        }
+    }
+    for level in 1..=3 {
+        let mesh =
+            CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(level)).unwrap());
+        let o = mesh.che.opposites().unwrap();
+        let d = mesh.che.edge_ranks().unwrap();
+        assert_eq!(d.len(), o.len().div_ceil(32));
+        for h in 0..o.len() as u32 {
+            let g = o[h as usize];
+            let c = if g != NONE && g < h { g } else { h } as usize;
+            let entry = d[c / 32];
+            let edge =
+                (entry >> 32) as u32 + (entry as u32 & ((1u32 << (c % 32)) - 1)).count_ones();
+            assert_eq!(edge, mesh.che.edge_of(h), "level {level} h {h}");
+        }
+    }
+    let level0 = CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(0)).unwrap());
+    assert!(level0.che.edge_ranks().is_none());
+}
+
+#[test]
+fn validate_passes_at_every_level_and_names_a_null_handle() {
+    let tetra = [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3];
+    for (tris, n) in [(&STRIP[..], 4), (&tetra[..], 4)] {
+        for level in 0..=3 {
+            let m = build(tris, n, level);
+            // SAFETY: a live mesh, freed once.
+            unsafe {
+                assert_eq!(che_mesh_validate(m), Status::Ok, "level {level}");
+                che_mesh_free(m);
+            }
+        }
+    }
+    // SAFETY: NULL is a documented argument.
+    assert_eq!(unsafe { che_mesh_validate(null()) }, Status::NullArgument);
+    assert!(with_last_error(|e| e.contains("'m'")));
 }

@@ -2,9 +2,9 @@
 //! over the boundary half-edges indexes the curve of each in O(1). The next boundary
 //! half-edge after `h = (v -> w)` is `VH[w]`, by the level-2 rule.
 
-use super::Che;
-use super::ids::next;
 use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::next;
 use crate::util::rank::RankBits;
 
 pub(crate) fn build(che: &mut Che) {

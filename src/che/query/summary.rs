@@ -1,9 +1,9 @@
 //! The topology of the input complex as given (input vertices, unique input edges, kept
 //! triangles), whatever the build split or left unpaired, plus what the build did.
 
-use super::Che;
-use super::ids::next;
 use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::next;
 use crate::util::dsu::Dsu;
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.

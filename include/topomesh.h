@@ -889,8 +889,6 @@ topomesh_status che_mesh_report_examples(const struct che_mesh *m,
  */
 topomesh_status che_mesh_memory(const struct che_mesh *m, struct che_memory *out);
 
-/* ---- CHE: zero-copy views of the structure's arrays ---- */
-
 /**
  * Checks every invariant of the mesh at its level (ids in range, `O` an involution on
  * matching vertex pairs, the rules of `VH`, the edge directory and `EH`, the boundary
@@ -899,6 +897,8 @@ topomesh_status che_mesh_memory(const struct che_mesh *m, struct che_memory *out
  * `topomesh_last_error`. O(T).
  */
 topomesh_status che_mesh_validate(const struct che_mesh *m);
+
+/* ---- CHE: zero-copy views of the structure's arrays ---- */
 
 /**
  * `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is

@@ -228,14 +228,16 @@ static void test_views_csr_boundary_summary() {
         CHECK_THROWS(cube.boundary_face(TriangleId{12}), TOPOMESH_STATUS_OUT_OF_RANGE,
                      "boundary triangle 12");
     }
-    che_summary s = skin.summary();
+    Surface::Summary s = skin.summary();
     CHECK(skin.level() == 3 && skin.num_triangles() == 12 && skin.num_boundary_curves() == 0);
     CHECK(s.vertices == 8 && s.edges == 18 && s.euler_characteristic == 2 && s.genus == 0);
 
-    chf_summary sum = v.summary();
+    Volume::Summary sum = v.summary();
+    CHECK(v.raw_summary().faces == sum.faces && v.raw_summary().boundary_faces == 6);
     CHECK(sum.vertices == 5 && sum.edges == 9 && sum.faces == 7 && sum.tetrahedra == 2);
     CHECK(sum.boundary_faces == 6 && sum.euler_characteristic == 1 && sum.manifold);
-    chf_build_report r = v.report();
+    Volume::BuildReport r = v.report();
+    CHECK(v.raw_report().input_faces == 7);
     CHECK(r.input_tetrahedra == 2 && r.boundary_faces == 6 && r.input_faces == 7);
     CHECK(v.report_examples(CHF_REPORT_KIND_DEGENERATE).empty());
     chf_memory m = v.memory();

@@ -245,9 +245,9 @@ private:
     return r;
   }
 
-  // The header-only C++ wrapper (topomesh.hpp): from level 2 its star ranges and fixed-size
-  // relations step inline over the arrays the Surface keeps (FF from level 1); otherwise
-  // they call the C API. Curves go into a std::vector. It borrows the handle (released
+  // The header-only C++ wrapper (topomesh.hpp): from level 2 its vertex relations and
+  // fixed-size ones step inline over the arrays the Surface keeps (FF from level 1);
+  // otherwise they call the C API. It borrows the handle (released
   // before the Surface is destroyed).
   template <class F> auto with_surface(F &&f) {
     topomesh::Surface surf(m_);
@@ -264,7 +264,7 @@ private:
       return with_surface([&](const Surface &s) {
         uint64_t cs = 0;
         for (uint32_t v = 0; v < nv_; ++v)
-          for (VertexId w : s.vertices_around(VertexId{v})) cs += uint64_t(w.value()) * (v + 1), ++n;
+          for (VertexId w : s.vertex_vertices(VertexId{v})) cs += uint64_t(w.value()) * (v + 1), ++n;
         return cs;
       });
     }));
@@ -272,7 +272,7 @@ private:
       return with_surface([&](const Surface &s) {
         uint64_t cs = 0;
         for (uint32_t v = 0; v < nv_; ++v)
-          for (TriangleId t : s.triangles_around(VertexId{v})) cs += uint64_t(t.value() + 1) * (v + 1), ++n;
+          for (TriangleId t : s.vertex_triangles(VertexId{v})) cs += uint64_t(t.value() + 1) * (v + 1), ++n;
         return cs;
       });
     }));

@@ -130,6 +130,41 @@ static const uint32_t DEGEN[] UNUSED_ = {0, 1, 2, 1, 1, 2, 2, 1, 3};
 
 #define NTRI(a) (sizeof(a) / sizeof((a)[0]) / 3)
 
+/* A strip whose second triangle is flipped (repaired by the orientation pass). */
+static const uint32_t FLIPPED[] UNUSED_ = {0, 1, 2, 1, 2, 3};
+
+/* Two strips sharing nothing: two boundary curves. */
+static const uint32_t TWO_STRIPS[] UNUSED_ = {0, 1, 2, 1, 3, 2, 4, 5, 6, 5, 7, 6};
+
+/* Every small surface fixture, for the tests that run on all of them. */
+typedef struct che_fixture {
+    const char *name;
+    const uint32_t *tris;
+    size_t n_tris, n_verts;
+} che_fixture;
+static const che_fixture CHE_FIXTURES[] UNUSED_ = {
+    {"tetrahedron", TETRA, NTRI(TETRA), 4}, {"strip", STRIP, NTRI(STRIP), 4},
+    {"bowtie", BOWTIE, NTRI(BOWTIE), 5},    {"fin", FIN, NTRI(FIN), 5},
+    {"moebius", MOEBIUS, NTRI(MOEBIUS), 6}, {"degenerate", DEGEN, NTRI(DEGEN), 5},
+    {"flipped strip", FLIPPED, NTRI(FLIPPED), 4}, {"two strips", TWO_STRIPS, NTRI(TWO_STRIPS), 8},
+};
+#define N_CHE_FIXTURES (sizeof CHE_FIXTURES / sizeof CHE_FIXTURES[0])
+
+/* A g x g grid of quads, two triangles each, over (g + 1)^2 vertices; without the quad
+   (hole, hole) when hole < g (a boundary inside). Writes the triangles into out (room for
+   6 g^2 ids) and returns their number. */
+static inline size_t grid_triangles(uint32_t g, uint32_t hole, uint32_t *out) {
+    size_t k = 0;
+    for (uint32_t i = 0; i < g; i++)
+        for (uint32_t j = 0; j < g; j++) {
+            if (i == hole && j == hole) continue;
+            const uint32_t a = i * (g + 1) + j, b = a + 1, c = a + g + 1, d = c + 1;
+            const uint32_t quad[6] = {a, b, d, a, d, c};
+            for (int q = 0; q < 6; q++) out[k++] = quad[q];
+        }
+    return k / 3;
+}
+
 static inline che_mesh *make(const uint32_t *tris, size_t n_tris, size_t n_verts, const double *pos,
                       uint32_t level) {
     che_mesh *m = NULL;

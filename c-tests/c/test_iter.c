@@ -3,55 +3,6 @@
 
 #include <pthread.h>
 
-/* The star of every vertex equals VV / VE / VF. */
-static void star_matches_relations(const che_mesh *m) {
-    for (uint32_t v = 0; v < che_mesh_num_vertices(m); v++) {
-        uint32_t vv[64], ve[64], vf[64];
-        size_t nvv = 0, nve = 0, nvf = 0;
-        CHECK_OK(che_vertex_vertices(m, v, vv, 64, &nvv));
-        CHECK_OK(che_vertex_edges(m, v, ve, 64, &nve));
-        CHECK_OK(che_vertex_triangles(m, v, vf, 64, &nvf));
-        che_star_iter it;
-        che_star_step s;
-        CHECK_OK(che_star_begin(m, v, &it));
-        size_t i = 0, t = 0;
-        const uint32_t *V = che_mesh_half_edge_vertices(m, NULL);
-        while (che_star_next(&it, &s)) {
-            CHECK(i < nvv && s.vertex == vv[i] && s.edge == ve[i]);
-            if (s.triangle != TOPOMESH_NONE) {
-                CHECK(t < nvf && s.triangle == vf[t]);
-                CHECK(che_tri(s.half_edge) == s.triangle);
-                CHECK(V[s.half_edge] == v && V[che_next(s.half_edge)] == s.vertex);
-                t++;
-            } else {
-                /* The closing incoming boundary half-edge u -> v. */
-                uint32_t o = 0;
-                CHECK(V[s.half_edge] == s.vertex && V[che_next(s.half_edge)] == v);
-                CHECK_OK(che_half_edge_opposite(m, s.half_edge, &o));
-                CHECK(o == TOPOMESH_NONE);
-            }
-            i++;
-        }
-        CHECK(i == nvv && t == nvf);
-        /* Exhausted stays exhausted. */
-        CHECK(!che_star_next(&it, &s));
-
-        /* The library's step gives the same steps as the inline one (from level 2 the
-           inline step reads V, O and the edge-id directory; below it is this call). */
-        che_star_iter a, b;
-        che_star_step sa, sb;
-        CHECK_OK(che_star_begin(m, v, &a));
-        CHECK_OK(che_star_begin(m, v, &b));
-        for (;;) {
-            bool more_a = che_star_advance(&a, &sa), more_b = che_star_next(&b, &sb);
-            CHECK(more_a == more_b);
-            if (!more_a || !more_b) break;
-            CHECK(sa.half_edge == sb.half_edge && sa.vertex == sb.vertex && sa.edge == sb.edge &&
-                  sa.triangle == sb.triangle);
-        }
-    }
-}
-
 /* The edge-id directory gives che_half_edge_edge inline, from level 1; NULL at level 0. */
 static void edge_ranks_match(const che_mesh *m) {
     size_t nr = 7, no = 0;
@@ -97,42 +48,29 @@ static void test_star(void) {
     CHECK(!che_star_advance(&it, NULL));
     for (uint32_t level = 0; level <= 3; level++) {
         CHECK_OK(che_mesh_build_level(m, level));
-        star_matches_relations(m);
         edge_ranks_match(m);
     }
     /* Down and up again: the directory follows the level. */
     for (uint32_t level = 3; level-- > 0;) {
         CHECK_OK(che_mesh_build_level(m, level));
-        star_matches_relations(m);
         edge_ranks_match(m);
     }
     size_t len = 9;
     CHECK(che_mesh_edge_ranks(NULL, &len) == NULL && len == 0);
     che_mesh_free(m);
 
-    /* A 12 x 12 grid (288 triangles, several words of the edge-id directory). */
+    /* A 12 x 12 grid (288 triangles, several words of the edge-id directory) and every
+       fixture. (test_che_star compares the star steps with the relations.) */
     enum { G = 12 };
-    uint32_t grid[2 * G * G * 3];
-    size_t k = 0;
-    for (uint32_t i = 0; i < G; i++)
-        for (uint32_t j = 0; j < G; j++) {
-            uint32_t a = i * (G + 1) + j, b = a + 1, c = a + G + 1, d = c + 1;
-            uint32_t quad[6] = {a, b, d, a, d, c};
-            for (int q = 0; q < 6; q++) grid[k++] = quad[q];
-        }
+    static uint32_t grid[6 * G * G];
+    const size_t nt = grid_triangles(G, G, grid);
     for (uint32_t level = 0; level <= 3; level++) {
-        m = make(grid, 2 * G * G, (G + 1) * (G + 1), NULL, level);
-        star_matches_relations(m);
+        m = make(grid, nt, (G + 1) * (G + 1), NULL, level);
         edge_ranks_match(m);
         che_mesh_free(m);
-    }
-
-    const uint32_t *fixtures[] = {TETRA, BOWTIE, FIN, MOEBIUS, DEGEN};
-    const size_t nt[] = {4, 2, 3, 6, 3}, nv[] = {4, 5, 5, 6, 5};
-    for (int f = 0; f < 5; f++) {
-        for (uint32_t level = 0; level <= 3; level++) {
-            m = make(fixtures[f], nt[f], nv[f], NULL, level);
-            star_matches_relations(m);
+        for (size_t f = 0; f < N_CHE_FIXTURES; f++) {
+            m = make(CHE_FIXTURES[f].tris, CHE_FIXTURES[f].n_tris, CHE_FIXTURES[f].n_verts,
+                     NULL, level);
             edge_ranks_match(m);
             che_mesh_free(m);
         }
@@ -165,11 +103,10 @@ static void csr_matches(const che_mesh *m, csr_fn csr, relation_fn rel, size_t r
 }
 
 static void test_csr(void) {
-    const uint32_t *fixtures[] = {TETRA, STRIP, BOWTIE, FIN, MOEBIUS, DEGEN};
-    const size_t nt[] = {4, 2, 2, 3, 6, 3}, nv[] = {4, 4, 5, 5, 6, 5};
-    for (int f = 0; f < 6; f++) {
+    for (size_t f = 0; f < N_CHE_FIXTURES; f++) {
         for (uint32_t level = 0; level <= 3; level++) {
-            che_mesh *m = make(fixtures[f], nt[f], nv[f], NULL, level);
+            che_mesh *m = make(CHE_FIXTURES[f].tris, CHE_FIXTURES[f].n_tris,
+                               CHE_FIXTURES[f].n_verts, NULL, level);
             size_t V = che_mesh_num_vertices(m), T = che_mesh_num_triangles(m);
             csr_matches(m, che_mesh_vertex_vertices_csr, che_vertex_vertices, V);
             csr_matches(m, che_mesh_vertex_edges_csr, che_vertex_edges, V);

@@ -294,16 +294,8 @@ int main(void) {
     test_tetrahedron();
     test_strip();
     test_buffer_rules();
-    same_at_every_level("tetrahedron", TETRA, 4, 4);
-    same_at_every_level("strip", STRIP, 2, 4);
-    same_at_every_level("bowtie", BOWTIE, 2, 5);
-    same_at_every_level("fin", FIN, 3, 5);
-    same_at_every_level("moebius", MOEBIUS, 6, 6);
-    same_at_every_level("degenerate", DEGEN, 3, 5);
-    const uint32_t flipped[] = {0, 1, 2, 1, 2, 3};
-    same_at_every_level("flipped strip", flipped, 2, 4);
-    /* Two strips sharing nothing: two boundary curves. */
-    const uint32_t two[] = {0, 1, 2, 1, 3, 2, 4, 5, 6, 5, 7, 6};
-    same_at_every_level("two strips", two, 4, 8);
+    for (size_t f = 0; f < N_CHE_FIXTURES; f++)
+        same_at_every_level(CHE_FIXTURES[f].name, CHE_FIXTURES[f].tris, CHE_FIXTURES[f].n_tris,
+                            CHE_FIXTURES[f].n_verts);
     return finish("test_relations");
 }

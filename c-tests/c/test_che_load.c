@@ -1,6 +1,6 @@
 /* che_mesh_load and che_mesh_load_ex.
-   `test_load args`: argument errors, independent of the file readers.
-   `test_load readers`: needs the OFF and Medit readers (src/io). */
+   `test_che_load args`: argument errors, independent of the file readers.
+   `test_che_load readers`: needs the OFF and Medit readers (src/io). */
 #include "check.h"
 
 static void write_file(const char *path, const char *text) {
@@ -102,7 +102,7 @@ int main(int argc, char **argv) {
     } else if (strcmp(what, "readers") == 0) {
         test_readers();
     } else {
-        fprintf(stderr, "usage: test_load args|readers\n");
+        fprintf(stderr, "usage: test_che_load args|readers\n");
         return 2;
     }
     return finish(what);

@@ -432,9 +432,9 @@ int main() {
         return 1;
     }
     if (failures) {
-        std::fprintf(stderr, "test_wrapper: %d check(s) failed\n", failures);
+        std::fprintf(stderr, "test_che_wrapper: %d check(s) failed\n", failures);
         return 1;
     }
-    std::printf("test_wrapper: all checks passed\n");
+    std::printf("test_che_wrapper: all checks passed\n");
     return 0;
 }

@@ -283,5 +283,5 @@ int main(void) {
     test_star();
     test_csr();
     test_views();
-    return finish("test_iter");
+    return finish("test_che_iter");
 }

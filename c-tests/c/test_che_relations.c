@@ -297,5 +297,5 @@ int main(void) {
     for (size_t f = 0; f < N_CHE_FIXTURES; f++)
         same_at_every_level(CHE_FIXTURES[f].name, CHE_FIXTURES[f].tris, CHE_FIXTURES[f].n_tris,
                             CHE_FIXTURES[f].n_verts);
-    return finish("test_relations");
+    return finish("test_che_relations");
 }

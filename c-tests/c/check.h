@@ -94,6 +94,25 @@ static inline void print_ids_(const char *what, const uint32_t *got, size_t n) {
 
 #define CHECK_EMPTY(n) CHECK((n) == 0)
 
+/* A load (`call`, writing into m) that fails with `want`: no mesh, and a detail that
+   contains `needle`. m is first set to a non-NULL garbage value. */
+#define CHECK_LOAD_FAILS(m, call, want, needle)                                            \
+    do {                                                                                   \
+        (m) = (void *)&(m);                                                                \
+        CHECK_STATUS(call, want);                                                          \
+        CHECK((m) == NULL);                                                                \
+        CHECK_DETAIL(needle);                                                              \
+    } while (0)
+
+/* Writes a test input file into the working directory. */
+static inline void write_file(const char *path, const char *text) {
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(text, f) < 0 || fclose(f) != 0) {
+        fprintf(stderr, "cannot write %s\n", path);
+        exit(2);
+    }
+}
+
 static inline int finish(const char *name) {
     if (check_failures) {
         fprintf(stderr, "%s: %d check(s) failed\n", name, check_failures);
@@ -102,6 +121,23 @@ static inline int finish(const char *name) {
     printf("%s: all checks passed\n", name);
     return 0;
 }
+
+/* The main of a load test: `args` (argument errors, independent of the file readers) or
+   `readers` (needs them). */
+static inline int load_test_main(int argc, char **argv, const char *usage, void (*args)(void),
+                                 void (*readers)(void)) {
+    const char *what = argc > 1 ? argv[1] : "args";
+    if (strcmp(what, "args") == 0) {
+        args();
+    } else if (strcmp(what, "readers") == 0) {
+        readers();
+    } else {
+        fprintf(stderr, "usage: %s args|readers\n", usage);
+        return 2;
+    }
+    return finish(what);
+}
+
 
 /* ---- Fixtures ----------------------------------------------------------------------- */
 
@@ -165,14 +201,19 @@ static inline size_t grid_triangles(uint32_t g, uint32_t hole, uint32_t *out) {
     return k / 3;
 }
 
-static inline che_mesh *make(const uint32_t *tris, size_t n_tris, size_t n_verts, const double *pos,
-                      uint32_t level) {
-    che_mesh *m = NULL;
-    topomesh_status s = che_mesh_from_triangles(tris, n_tris, n_verts, pos, level, &m);
-    if (s != TOPOMESH_STATUS_OK || !m) {
+/* Exits unless a fixture's build succeeded. */
+static inline void fixture_built(topomesh_status s, const void *mesh) {
+    if (s != TOPOMESH_STATUS_OK || !mesh) {
         fprintf(stderr, "fixture build failed: %s: %s\n", topomesh_status_str(s), last_error());
         exit(2);
     }
+}
+
+static inline che_mesh *make(const uint32_t *tris, size_t n_tris, size_t n_verts, const double *pos,
+                      uint32_t level) {
+    che_mesh *m = NULL;
+    const topomesh_status s = che_mesh_from_triangles(tris, n_tris, n_verts, pos, level, &m);
+    fixture_built(s, m);
     return m;
 }
 

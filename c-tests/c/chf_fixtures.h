@@ -40,11 +40,8 @@ static const uint32_t TDEGEN[] UNUSED_ = {0, 1, 2, 3, 0, 1, 1, 2, 4, 1, 3, 2};
 static inline chf_mesh *make_chf(const uint32_t *tets, size_t n_tets, size_t n_verts,
                                  const double *pos, uint32_t level) {
     chf_mesh *m = NULL;
-    topomesh_status s = chf_mesh_from_tetrahedra(tets, n_tets, n_verts, pos, level, &m);
-    if (s != TOPOMESH_STATUS_OK || !m) {
-        fprintf(stderr, "fixture build failed: %s: %s\n", topomesh_status_str(s), last_error());
-        exit(2);
-    }
+    const topomesh_status s = chf_mesh_from_tetrahedra(tets, n_tets, n_verts, pos, level, &m);
+    fixture_built(s, m);
     return m;
 }
 

@@ -1,5 +1,5 @@
 // The C++17 wrapper: RAII, moves, strong ids, ranges, spans, CSR, errors.
-#include <topomesh/topomesh.hpp>
+#include "check.hpp"
 
 #include <array>
 #include <cstdio>
@@ -9,30 +9,6 @@
 #include <thread>
 #include <type_traits>
 #include <vector>
-
-static int failures = 0;
-#define CHECK(cond)                                                                        \
-    do {                                                                                   \
-        if (!(cond)) {                                                                     \
-            std::fprintf(stderr, "%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #cond); \
-            failures++;                                                                    \
-        }                                                                                  \
-    } while (0)
-
-// Expects `expr` to throw topomesh::Error with `status` and a detail containing `needle`.
-#define CHECK_THROWS(expr, want, needle)                                                   \
-    do {                                                                                   \
-        bool thrown_ = false;                                                              \
-        try {                                                                              \
-            (void)(expr);                                                                  \
-        } catch (const topomesh::Error &e) {                                               \
-            thrown_ = true;                                                                \
-            CHECK(e.status() == (want));                                                   \
-            CHECK(e.detail().find(needle) != std::string::npos);                           \
-            CHECK(std::string(e.what()).find(e.detail()) != std::string::npos);           \
-        }                                                                                  \
-        CHECK(thrown_);                                                                    \
-    } while (0)
 
 using namespace topomesh;
 
@@ -45,11 +21,6 @@ static_assert(!std::is_convertible<VertexId, EdgeId>::value, "strong ids");
 static_assert(!std::is_convertible<std::uint32_t, VertexId>::value, "explicit ids");
 static_assert(std::is_same<Che, Surface>::value, "alias");
 
-template <class T> static std::vector<std::uint32_t> raw(const T &range) {
-    std::vector<std::uint32_t> out;
-    for (auto id : range) out.push_back(id.value());
-    return out;
-}
 
 static const std::vector<std::uint32_t> STRIP = {0, 1, 2, 1, 3, 2};
 static const std::vector<double> STRIP_POS = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
@@ -150,6 +121,16 @@ template <class F> static std::vector<std::uint32_t> c_answer(F f, const che_mes
     return out;
 }
 
+// half_edge(id) and is_boundary(id) of the wrapper against the C API's.
+template <class Id, class HalfEdgeFn, class BoundaryFn>
+static void same_half_edge_and_boundary(const Surface &s, Id id, HalfEdgeFn half_edge,
+                                        BoundaryFn is_boundary) {
+    std::uint32_t h = 0;
+    bool b = false;
+    CHECK(half_edge(s.handle(), id.value(), &h) == TOPOMESH_STATUS_OK && s.half_edge(id).value() == h);
+    CHECK(is_boundary(s.handle(), id.value(), &b) == TOPOMESH_STATUS_OK && s.is_boundary(id) == b);
+}
+
 // Every relation of the wrapper (inline where the level stores the
 // arrays) gives the C API's answer, at every level and after level changes.
 static void check_against_c_api(const Surface &s) {
@@ -161,18 +142,12 @@ static void check_against_c_api(const Surface &s) {
         std::vector<std::uint32_t> star;
         for (const StarStep &st : s.star(VertexId{v})) star.push_back(st.vertex.value());
         CHECK(star == c_answer(che_vertex_vertices, m, v));
-        std::uint32_t h = 0;
-        bool b = false;
-        CHECK(che_vertex_half_edge(m, v, &h) == TOPOMESH_STATUS_OK && s.half_edge(VertexId{v}).value() == h);
-        CHECK(che_vertex_is_boundary(m, v, &b) == TOPOMESH_STATUS_OK && s.is_boundary(VertexId{v}) == b);
+        same_half_edge_and_boundary(s, VertexId{v}, che_vertex_half_edge, che_vertex_is_boundary);
     }
     for (std::uint32_t e = 0; e < s.num_edges(); e++) {
         CHECK(raw(s.edge_vertices(EdgeId{e})) == c_answer(che_edge_vertices, m, e));
         CHECK(raw(s.edge_triangles(EdgeId{e})) == c_answer(che_edge_triangles, m, e));
-        std::uint32_t h = 0;
-        bool b = false;
-        CHECK(che_edge_half_edge(m, e, &h) == TOPOMESH_STATUS_OK && s.half_edge(EdgeId{e}).value() == h);
-        CHECK(che_edge_is_boundary(m, e, &b) == TOPOMESH_STATUS_OK && s.is_boundary(EdgeId{e}) == b);
+        same_half_edge_and_boundary(s, EdgeId{e}, che_edge_half_edge, che_edge_is_boundary);
     }
     for (std::uint32_t t = 0; t < s.num_triangles(); t++) {
         CHECK(raw(s.triangle_vertices(TriangleId{t})) == c_answer(che_triangle_vertices, m, t));
@@ -418,7 +393,7 @@ static void test_views_csr_summary() {
 }
 
 int main() {
-    try {
+    return run_tests("test_che_wrapper", [] {
         test_build_and_counts();
         test_moves();
         test_relations_and_ranges();
@@ -427,14 +402,5 @@ int main() {
         test_star_range_iterators();
         test_deprecated_names();
         test_ids();
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "unexpected exception: %s\n", e.what());
-        return 1;
-    }
-    if (failures) {
-        std::fprintf(stderr, "test_che_wrapper: %d check(s) failed\n", failures);
-        return 1;
-    }
-    std::printf("test_che_wrapper: all checks passed\n");
-    return 0;
+    });
 }

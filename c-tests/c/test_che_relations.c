@@ -4,34 +4,61 @@
 
 #include <stdint.h>
 
-typedef topomesh_status (*relation_fn)(const che_mesh *, uint32_t, uint32_t *, size_t, size_t *);
+IDS_QUERY(che_mesh, che_vertex_vertices)
+IDS_QUERY(che_mesh, che_vertex_edges)
+IDS_QUERY(che_mesh, che_vertex_triangles)
+IDS_QUERY(che_mesh, che_edge_vertices)
+IDS_QUERY(che_mesh, che_edge_edges)
+IDS_QUERY(che_mesh, che_edge_triangles)
+IDS_QUERY(che_mesh, che_triangle_vertices)
+IDS_QUERY(che_mesh, che_triangle_edges)
+IDS_QUERY(che_mesh, che_triangle_triangles)
+IDS_QUERY(che_mesh, che_boundary_curve_vertices)
+VALUE_QUERY(che_mesh, che_half_edge_opposite)
+VALUE_QUERY(che_mesh, che_half_edge_edge)
+VALUE_QUERY(che_mesh, che_half_edge_curve)
+VALUE_QUERY(che_mesh, che_vertex_half_edge)
+VALUE_QUERY(che_mesh, che_edge_half_edge)
+FLAG_QUERY(che_mesh, che_vertex_is_boundary)
+FLAG_QUERY(che_mesh, che_edge_is_boundary)
 
-static const struct {
-    const char *name;
-    relation_fn fn;
-    int kind; /* 0 vertex, 1 edge, 2 triangle, 3 curve */
-} RELATIONS[] = {
-    {"che_vertex_vertices", che_vertex_vertices, 0},
-    {"che_vertex_edges", che_vertex_edges, 0},
-    {"che_vertex_triangles", che_vertex_triangles, 0},
-    {"che_edge_vertices", che_edge_vertices, 1},
-    {"che_edge_edges", che_edge_edges, 1},
-    {"che_edge_triangles", che_edge_triangles, 1},
-    {"che_triangle_vertices", che_triangle_vertices, 2},
-    {"che_triangle_edges", che_triangle_edges, 2},
-    {"che_triangle_triangles", che_triangle_triangles, 2},
-    {"che_boundary_curve_vertices", che_boundary_curve_vertices, 3},
-};
-#define N_RELATIONS (sizeof RELATIONS / sizeof RELATIONS[0])
+/* The elements a query's ids run over. */
+enum { VERTEX, EDGE, TRIANGLE, CURVE, HALF_EDGE };
+static const char *const KIND_NAMES[] = {"vertex", "edge", "triangle", "curve", "half-edge"};
 
-static size_t count_of(const che_mesh *m, int kind) {
+static size_t count_of(const void *mesh, int kind) {
+    const che_mesh *m = mesh;
     switch (kind) {
-    case 0: return che_mesh_num_vertices(m);
-    case 1: return che_mesh_num_edges(m);
-    case 2: return che_mesh_num_triangles(m);
-    default: return che_mesh_num_boundary_curves(m);
+    case VERTEX: return che_mesh_num_vertices(m);
+    case EDGE: return che_mesh_num_edges(m);
+    case TRIANGLE: return che_mesh_num_triangles(m);
+    case CURVE: return che_mesh_num_boundary_curves(m);
+    default: return che_mesh_num_half_edges(m);
     }
 }
+
+/* The relations, then the single-value helpers. */
+static const any_query QUERIES[] = {
+    {"che_vertex_vertices", q_che_vertex_vertices, VERTEX},
+    {"che_vertex_edges", q_che_vertex_edges, VERTEX},
+    {"che_vertex_triangles", q_che_vertex_triangles, VERTEX},
+    {"che_edge_vertices", q_che_edge_vertices, EDGE},
+    {"che_edge_edges", q_che_edge_edges, EDGE},
+    {"che_edge_triangles", q_che_edge_triangles, EDGE},
+    {"che_triangle_vertices", q_che_triangle_vertices, TRIANGLE},
+    {"che_triangle_edges", q_che_triangle_edges, TRIANGLE},
+    {"che_triangle_triangles", q_che_triangle_triangles, TRIANGLE},
+    {"che_boundary_curve_vertices", q_che_boundary_curve_vertices, CURVE},
+    {"che_half_edge_opposite", q_che_half_edge_opposite, HALF_EDGE},
+    {"che_half_edge_edge", q_che_half_edge_edge, HALF_EDGE},
+    {"che_half_edge_curve", q_che_half_edge_curve, HALF_EDGE},
+    {"che_vertex_half_edge", q_che_vertex_half_edge, VERTEX},
+    {"che_edge_half_edge", q_che_edge_half_edge, EDGE},
+    {"che_vertex_is_boundary", q_che_vertex_is_boundary, VERTEX},
+    {"che_edge_is_boundary", q_che_edge_is_boundary, EDGE},
+};
+#define N_QUERIES (sizeof QUERIES / sizeof QUERIES[0])
+#define N_RELATIONS 10
 
 static void test_tetrahedron(void) {
     che_mesh *m = make(TETRA, 4, 4, TETRA_POS, 2);
@@ -158,65 +185,15 @@ static void test_buffer_rules(void) {
     che_mesh *m = make(TETRA, 4, 4, NULL, 3);
     che_mesh *strip = make(STRIP, 2, 4, NULL, 3);
     for (size_t r = 0; r < N_RELATIONS; r++) {
-        const che_mesh *mm = RELATIONS[r].kind == 3 ? strip : m;
-        relation_fn f = RELATIONS[r].fn;
-        uint32_t full[16], b[16];
-        size_t n = 0, need = 0;
-        CHECK_OK(f(mm, 0, full, 16, &n));
-        CHECK(n >= 2);
-        /* Size query. */
-        CHECK_OK(f(mm, 0, NULL, 0, &need));
-        CHECK(need == n);
-        /* Too small: the needed length, and the prefix written. */
-        for (size_t i = 0; i < 16; i++) b[i] = 12345;
-        need = 0;
-        CHECK_STATUS(f(mm, 0, b, 1, &need), TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-        CHECK(need == n && b[0] == full[0] && b[1] == 12345);
-        CHECK_DETAIL("needed");
-        /* Exactly enough. */
-        CHECK_OK(f(mm, 0, b, n, &need));
-        CHECK(need == n && memcmp(b, full, n * sizeof *b) == 0);
-        /* A capacity larger than any buffer (SIZE_MAX as "enough"). */
-        CHECK_OK(f(mm, 0, b, SIZE_MAX, &need));
-        CHECK(need == n && memcmp(b, full, n * sizeof *b) == 0);
-        /* NULL handle, NULL buffer with a capacity, NULL out_len. */
-        CHECK_STATUS(f(NULL, 0, b, 16, &n), TOPOMESH_STATUS_NULL_ARGUMENT);
-        CHECK_STATUS(f(mm, 0, NULL, 4, &n), TOPOMESH_STATUS_NULL_ARGUMENT);
-        CHECK_DETAIL("buf");
-        CHECK_STATUS(f(mm, 0, b, 16, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-        CHECK_DETAIL("out_len");
-        /* Out of range: the id in the detail, nothing written. */
-        uint32_t bad = (uint32_t)count_of(mm, RELATIONS[r].kind);
-        n = 777;
-        CHECK_STATUS(f(mm, bad, b, 16, &n), TOPOMESH_STATUS_OUT_OF_RANGE);
-        CHECK(n == 777);
-        char id[32];
-        snprintf(id, sizeof id, "%u", (unsigned)bad);
-        CHECK_DETAIL(id);
-        CHECK_STATUS(f(mm, TOPOMESH_NONE, b, 16, &n), TOPOMESH_STATUS_OUT_OF_RANGE);
+        const che_mesh *mm = QUERIES[r].kind == CURVE ? strip : m;
+        check_buffer_rules(QUERIES[r].fn, mm, count_of(mm, QUERIES[r].kind),
+                           KIND_NAMES[QUERIES[r].kind]);
     }
 
     /* The single-value helpers. */
-    uint32_t x;
-    bool yes;
-    CHECK_STATUS(che_half_edge_opposite(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_half_edge_opposite(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_half_edge_opposite(m, 12, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("half-edge 12");
-    CHECK_STATUS(che_half_edge_edge(m, 12, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(che_half_edge_edge(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_half_edge_curve(m, 12, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(che_half_edge_curve(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_vertex_half_edge(m, 4, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("vertex 4");
-    CHECK_STATUS(che_vertex_half_edge(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_edge_half_edge(m, 6, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("edge 6");
-    CHECK_STATUS(che_edge_half_edge(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_vertex_is_boundary(m, 4, &yes), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(che_vertex_is_boundary(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_edge_is_boundary(m, 6, &yes), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(che_edge_is_boundary(NULL, 0, &yes), TOPOMESH_STATUS_NULL_ARGUMENT);
+    for (size_t q = N_RELATIONS; q < N_QUERIES; q++)
+        check_value_errors(QUERIES[q].fn, m, count_of(m, QUERIES[q].kind),
+                           KIND_NAMES[QUERIES[q].kind]);
     che_mesh_free(m);
     che_mesh_free(strip);
 }
@@ -226,65 +203,17 @@ static void same_at_every_level(const char *name, const uint32_t *tris, size_t n
     che_mesh *ref = make(tris, nt, nv, NULL, 3);
     for (uint32_t level = 0; level < 3; level++) {
         che_mesh *m = make(tris, nt, nv, NULL, level);
-        CHECK(che_mesh_num_vertices(m) == che_mesh_num_vertices(ref));
-        CHECK(che_mesh_num_edges(m) == che_mesh_num_edges(ref));
-        CHECK(che_mesh_num_boundary_curves(m) == che_mesh_num_boundary_curves(ref));
-        for (size_t r = 0; r < N_RELATIONS; r++) {
-            size_t count = count_of(ref, RELATIONS[r].kind);
-            for (uint32_t id = 0; id < count; id++) {
-                uint32_t a[64], b[64];
-                size_t na = 0, nb = 0;
-                CHECK_OK(RELATIONS[r].fn(ref, id, a, 64, &na));
-                CHECK_OK(RELATIONS[r].fn(m, id, b, 64, &nb));
-                if (na != nb || memcmp(a, b, na * sizeof *a)) {
-                    fprintf(stderr, "%s: %s(%u) differs at level %u from level 3\n", name,
-                            RELATIONS[r].name, (unsigned)id, (unsigned)level);
-                    print_ids_("level 3", a, na);
-                    print_ids_("this level", b, nb);
-                    check_failures++;
-                }
-            }
-        }
-        for (uint32_t h = 0; h < che_mesh_num_half_edges(ref); h++) {
-            uint32_t a = 0, b = 1;
-            CHECK_OK(che_half_edge_opposite(ref, h, &a));
-            CHECK_OK(che_half_edge_opposite(m, h, &b));
-            CHECK(a == b);
-            CHECK_OK(che_half_edge_edge(ref, h, &a));
-            CHECK_OK(che_half_edge_edge(m, h, &b));
-            CHECK(a == b);
-            CHECK_OK(che_half_edge_curve(ref, h, &a));
-            CHECK_OK(che_half_edge_curve(m, h, &b));
-            CHECK(a == b);
-        }
-        for (uint32_t v = 0; v < che_mesh_num_vertices(ref); v++) {
-            uint32_t a = 0, b = 1;
-            bool x = false, y = true;
-            CHECK_OK(che_vertex_half_edge(ref, v, &a));
-            CHECK_OK(che_vertex_half_edge(m, v, &b));
-            CHECK(a == b);
-            CHECK_OK(che_vertex_is_boundary(ref, v, &x));
-            CHECK_OK(che_vertex_is_boundary(m, v, &y));
-            CHECK(x == y);
-        }
-        for (uint32_t e = 0; e < che_mesh_num_edges(ref); e++) {
-            uint32_t a = 0, b = 1;
-            bool x = false, y = true;
-            CHECK_OK(che_edge_half_edge(ref, e, &a));
-            CHECK_OK(che_edge_half_edge(m, e, &b));
-            CHECK(a == b);
-            CHECK_OK(che_edge_is_boundary(ref, e, &x));
-            CHECK_OK(che_edge_is_boundary(m, e, &y));
-            CHECK(x == y);
-        }
+        for (int kind = VERTEX; kind <= HALF_EDGE; kind++)
+            CHECK(count_of(m, kind) == count_of(ref, kind));
+        same_answers(name, level, QUERIES, N_QUERIES, count_of, ref, m);
         /* Raising this mesh to level 3 gives the reference's views. */
         CHECK_OK(che_mesh_build_level(m, 3));
         size_t la = 0, lb = 0;
-        const uint32_t *oa = che_mesh_opposites(ref, &la), *ob = che_mesh_opposites(m, &lb);
-        CHECK(oa && ob && la == lb && memcmp(oa, ob, la * sizeof *oa) == 0);
-        oa = che_mesh_vertex_half_edges(ref, &la);
-        ob = che_mesh_vertex_half_edges(m, &lb);
-        CHECK(oa && ob && la == lb && memcmp(oa, ob, la * sizeof *oa) == 0);
+        const uint32_t *a = che_mesh_opposites(ref, &la), *b = che_mesh_opposites(m, &lb);
+        CHECK(same_view(a, la, b, lb));
+        a = che_mesh_vertex_half_edges(ref, &la);
+        b = che_mesh_vertex_half_edges(m, &lb);
+        CHECK(same_view(a, la, b, lb));
         che_mesh_free(m);
     }
     che_mesh_free(ref);

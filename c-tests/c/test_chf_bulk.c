@@ -4,29 +4,71 @@
 
 #include <pthread.h>
 
-typedef topomesh_status (*chf_csr_fn)(const chf_mesh *, uint32_t *, size_t, uint32_t *, size_t,
-                                      size_t *, size_t *);
+IDS_QUERY(chf_mesh, chf_vertex_vertices)
+IDS_QUERY(chf_mesh, chf_vertex_edges)
+IDS_QUERY(chf_mesh, chf_vertex_faces)
+IDS_QUERY(chf_mesh, chf_vertex_tetrahedra)
+IDS_QUERY(chf_mesh, chf_edge_faces)
+IDS_QUERY(chf_mesh, chf_edge_tetrahedra)
+IDS_QUERY(chf_mesh, chf_tetrahedron_tetrahedra)
+CSR_QUERY(chf_mesh, chf_mesh_vertex_vertices_csr)
+CSR_QUERY(chf_mesh, chf_mesh_vertex_edges_csr)
+CSR_QUERY(chf_mesh, chf_mesh_vertex_faces_csr)
+CSR_QUERY(chf_mesh, chf_mesh_vertex_tetrahedra_csr)
+CSR_QUERY(chf_mesh, chf_mesh_edge_faces_csr)
+CSR_QUERY(chf_mesh, chf_mesh_edge_tetrahedra_csr)
+CSR_QUERY(chf_mesh, chf_mesh_tetrahedron_tetrahedra_csr)
+VALUE_QUERY(chf_mesh, chf_boundary_triangle_half_face)
+VALUE_QUERY(chf_mesh, chf_boundary_triangle_face)
+VALUE_QUERY(chf_mesh, chf_half_face_boundary_triangle)
+VALUE_QUERY(chf_mesh, chf_face_boundary_triangle)
+VALUE_QUERY(chf_mesh, chf_vertex_boundary_component)
+VALUE_QUERY(chf_mesh, chf_vertex_boundary_vertex)
+VALUE_QUERY(chf_mesh, chf_boundary_vertex_vertex)
 
-/* A CSR call agrees with the one-element relation, row by row. */
-static void csr_matches(const chf_mesh *m, chf_csr_fn csr, chf_relation_fn rel, size_t rows) {
-    size_t no = 0, ni = 0;
-    CHECK_OK(csr(m, NULL, 0, NULL, 0, &no, &ni));
-    CHECK(no == rows + 1);
-    uint32_t *off = malloc((no + 1) * sizeof *off), *idx = malloc((ni + 1) * sizeof *idx);
-    size_t no2 = 0, ni2 = 0;
-    CHECK_OK(csr(m, off, no, idx, ni, &no2, &ni2));
-    CHECK(no2 == no && ni2 == ni);
-    CHECK(off[0] == 0 && off[rows] == ni);
-    for (uint32_t r = 0; r < rows; r++) {
-        uint32_t b[64];
-        size_t n = 0;
-        CHECK_OK(rel(m, r, b, 64, &n));
-        CHECK(off[r + 1] - off[r] == n);
-        if (off[r + 1] - off[r] == n) CHECK(memcmp(idx + off[r], b, n * sizeof *b) == 0);
+/* The elements a query's ids run over. */
+enum { VERTEX, EDGE, FACE, TETRAHEDRON, HALF_FACE, BOUNDARY_TRIANGLE, BOUNDARY_VERTEX };
+static const char *const KIND_NAMES[] = {"vertex",    "edge",
+                                         "face",      "tetrahedron",
+                                         "half-face", "boundary triangle",
+                                         "boundary vertex"};
+
+static size_t count_of(const void *mesh, int kind) {
+    const chf_mesh *m = mesh;
+    switch (kind) {
+    case VERTEX: return chf_mesh_num_vertices(m);
+    case EDGE: return chf_mesh_num_edges(m);
+    case FACE: return chf_mesh_num_faces(m);
+    case TETRAHEDRON: return chf_mesh_num_tetrahedra(m);
+    case HALF_FACE: return chf_mesh_num_half_faces(m);
+    case BOUNDARY_TRIANGLE: return chf_mesh_num_boundary_triangles(m);
+    default: return chf_mesh_num_boundary_vertices(m);
     }
-    free(off);
-    free(idx);
 }
+
+/* The bulk calls with the relation of their rows. */
+static const any_csr CSRS[] = {
+    {q_chf_mesh_vertex_vertices_csr, q_chf_vertex_vertices, VERTEX},
+    {q_chf_mesh_vertex_edges_csr, q_chf_vertex_edges, VERTEX},
+    {q_chf_mesh_vertex_faces_csr, q_chf_vertex_faces, VERTEX},
+    {q_chf_mesh_vertex_tetrahedra_csr, q_chf_vertex_tetrahedra, VERTEX},
+    {q_chf_mesh_edge_faces_csr, q_chf_edge_faces, EDGE},
+    {q_chf_mesh_edge_tetrahedra_csr, q_chf_edge_tetrahedra, EDGE},
+    {q_chf_mesh_tetrahedron_tetrahedra_csr, q_chf_tetrahedron_tetrahedra, TETRAHEDRON},
+};
+#define N_CSRS (sizeof CSRS / sizeof CSRS[0])
+
+/* The boundary maps (one id each). */
+static const any_query MAPS[] = {
+    {"chf_boundary_triangle_half_face", q_chf_boundary_triangle_half_face, BOUNDARY_TRIANGLE},
+    {"chf_boundary_triangle_face", q_chf_boundary_triangle_face, BOUNDARY_TRIANGLE},
+    {"chf_half_face_boundary_triangle", q_chf_half_face_boundary_triangle, HALF_FACE},
+    {"chf_face_boundary_triangle", q_chf_face_boundary_triangle, FACE},
+    {"chf_vertex_boundary_component", q_chf_vertex_boundary_component, VERTEX},
+    {"chf_vertex_boundary_vertex", q_chf_vertex_boundary_vertex, VERTEX},
+    {"chf_boundary_vertex_vertex", q_chf_boundary_vertex_vertex, BOUNDARY_VERTEX},
+};
+#define N_MAPS (sizeof MAPS / sizeof MAPS[0])
 
 static void test_csr(void) {
     const uint32_t *fixtures[] = {TET, PAIR, SPLIT, CUBE, STAR, BOOK, TDEGEN};
@@ -34,15 +76,8 @@ static void test_csr(void) {
     for (int f = 0; f < 7; f++) {
         for (uint32_t level = 0; level <= 3; level++) {
             chf_mesh *m = make_chf(fixtures[f], nt[f], nv[f], NULL, level);
-            size_t V = chf_mesh_num_vertices(m), E = chf_mesh_num_edges(m);
-            size_t T = chf_mesh_num_tetrahedra(m);
-            csr_matches(m, chf_mesh_vertex_vertices_csr, chf_vertex_vertices, V);
-            csr_matches(m, chf_mesh_vertex_edges_csr, chf_vertex_edges, V);
-            csr_matches(m, chf_mesh_vertex_faces_csr, chf_vertex_faces, V);
-            csr_matches(m, chf_mesh_vertex_tetrahedra_csr, chf_vertex_tetrahedra, V);
-            csr_matches(m, chf_mesh_edge_faces_csr, chf_edge_faces, E);
-            csr_matches(m, chf_mesh_edge_tetrahedra_csr, chf_edge_tetrahedra, E);
-            csr_matches(m, chf_mesh_tetrahedron_tetrahedra_csr, chf_tetrahedron_tetrahedra, T);
+            for (size_t c = 0; c < N_CSRS; c++)
+                csr_matches(&CSRS[c], m, count_of(m, CSRS[c].kind));
             /* The bulk calls do not change the level. */
             CHECK(chf_mesh_level(m) == level);
             chf_mesh_free(m);
@@ -66,37 +101,8 @@ static void test_csr(void) {
     CHECK_IDS(off, no, 0, 3, 7, 11, 15, 18);
     CHECK_IDS(idx, 4, 1, 2, 3, 0); /* VV(0), then VV(1) starts */
     CHECK(chf_mesh_level(m) == 0);
-    /* Too small: both needed lengths reported. */
-    no = ni = 0;
-    CHECK_STATUS(chf_mesh_vertex_vertices_csr(m, off, 16, idx, 3, &no, &ni),
-                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-    CHECK(no == 6 && ni == 18);
-    CHECK_DETAIL("indices");
-    CHECK_STATUS(chf_mesh_vertex_edges_csr(m, off, 2, idx, 32, &no, &ni),
-                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-    CHECK(no == 6 && ni == 18);
-    CHECK_DETAIL("offsets");
-    /* One NULL buffer, NULL lengths, NULL handle. */
-    CHECK_STATUS(chf_mesh_vertex_faces_csr(m, NULL, 0, idx, 32, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_DETAIL("offsets");
-    CHECK_STATUS(chf_mesh_vertex_faces_csr(m, off, 16, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_DETAIL("indices");
-    CHECK_STATUS(chf_mesh_edge_faces_csr(m, off, 16, idx, 32, NULL, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_edge_faces_csr(m, off, 16, idx, 32, &no, NULL),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_tetrahedron_tetrahedra_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_vertex_tetrahedra_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_edge_tetrahedra_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_vertex_vertices_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_vertex_edges_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    /* The buffer rules. */
+    for (size_t c = 0; c < N_CSRS; c++) check_csr_errors(CSRS[c].csr, m);
     chf_mesh_free(m);
 }
 
@@ -336,33 +342,12 @@ static void test_boundary(void) {
     /* Errors. */
     m = make_chf(CUBE, 5, 8, NULL, 3);
     s = (che_mesh *)&s;
-    uint32_t x = 0;
     CHECK_STATUS(chf_mesh_boundary(NULL, &s), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK(s == NULL);
     CHECK_STATUS(chf_mesh_boundary(m, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_DETAIL("out");
-    CHECK_STATUS(chf_boundary_triangle_half_face(m, 12, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("boundary triangle 12");
-    CHECK_STATUS(chf_boundary_triangle_half_face(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_boundary_triangle_face(m, 12, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(chf_boundary_triangle_face(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_half_face_boundary_triangle(m, 20, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("half-face 20");
-    CHECK_STATUS(chf_half_face_boundary_triangle(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_face_boundary_triangle(m, 16, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("face 16");
-    CHECK_STATUS(chf_face_boundary_triangle(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_vertex_boundary_component(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("vertex 8");
-    CHECK_STATUS(chf_vertex_boundary_component(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_vertex_boundary_vertex(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("vertex 8");
-    CHECK_STATUS(chf_vertex_boundary_vertex(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_vertex_boundary_vertex(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_boundary_vertex_vertex(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("boundary vertex 8");
-    CHECK_STATUS(chf_boundary_vertex_vertex(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_boundary_vertex_vertex(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    for (size_t q = 0; q < N_MAPS; q++)
+        check_value_errors(MAPS[q].fn, m, count_of(m, MAPS[q].kind), KIND_NAMES[MAPS[q].kind]);
     CHECK(chf_mesh_num_boundary_triangles(NULL) == 0 && chf_mesh_num_boundary_vertices(NULL) == 0);
     CHECK(chf_mesh_num_non_manifold_half_faces(NULL) == 0 && chf_mesh_num_seam_half_faces(NULL) == 0);
     chf_mesh_free(m);

@@ -66,8 +66,8 @@ struct Caller {
   }
 };
 
-// Estimated seconds of a sweep that costs `per` scans of all half-edges per element (about
-// 1 ns per half-edge scanned, measured on bunny00 at level 1).
+// Estimated seconds of a sweep that costs `per` scans of all half-edges per element, at the
+// 1e-9 s per half-edge scanned this estimate assumes.
 double scan_seconds(size_t elements, size_t nt, double per) { return double(elements) * per * 3.0 * nt * 1e-9; }
 constexpr double kMaxSweepSeconds = 2;
 
@@ -566,7 +566,7 @@ void report(Out &out, const Soup &s, std::vector<LibBench> &rows, int reps) {
       rows[2].faces, s.n_triangles(), rows[2].note.c_str(),
       peers_full ? "" : " The peers refused faces, so they sweep a smaller mesh: the ratios flatter them.");
 
-  // The targets, on this mesh.
+  // The speed targets, on this mesh.
   auto find = [&](const std::string &lib, const std::string &path) -> const LibBench * {
     for (auto &r : rows)
       if (r.lib == lib && r.path == path) return &r;

@@ -1,5 +1,5 @@
 // CGAL 5.5 Surface_mesh (Epick points): differential answers and benchmark. The only CGAL
-// translation unit: it takes about a minute to compile.
+// translation unit (its headers are slow to compile).
 #include "peers.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

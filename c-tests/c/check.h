@@ -155,21 +155,21 @@ typedef struct any_query {
 } any_query;
 typedef size_t (*any_count_fn)(const void *m, int kind);
 
+#define QUERY_HEAD_(fn)                                                                    \
+    static UNUSED_ topomesh_status q_##fn(const void *m, uint32_t id, uint32_t *out,       \
+                                          size_t cap, size_t *len)
 #define IDS_QUERY(mesh_t, fn)                                                              \
-    static topomesh_status q_##fn(const void *m, uint32_t id, uint32_t *out, size_t cap,   \
-                                  size_t *len) {                                           \
+    QUERY_HEAD_(fn) {                                                                      \
         return fn((const mesh_t *)m, id, out, cap, len);                                   \
     }
 #define VALUE_QUERY(mesh_t, fn)                                                            \
-    static topomesh_status q_##fn(const void *m, uint32_t id, uint32_t *out, size_t cap,   \
-                                  size_t *len) {                                           \
+    QUERY_HEAD_(fn) {                                                                      \
         (void)cap;                                                                         \
         if (len) *len = 1;                                                                 \
         return fn((const mesh_t *)m, id, out);                                             \
     }
 #define FLAG_QUERY(mesh_t, fn)                                                             \
-    static topomesh_status q_##fn(const void *m, uint32_t id, uint32_t *out, size_t cap,   \
-                                  size_t *len) {                                           \
+    QUERY_HEAD_(fn) {                                                                      \
         bool b = false;                                                                    \
         const topomesh_status s = fn((const mesh_t *)m, id, out ? &b : NULL);              \
         (void)cap;                                                                         \
@@ -190,10 +190,26 @@ typedef struct any_csr {
 } any_csr;
 
 #define CSR_QUERY(mesh_t, fn)                                                              \
-    static topomesh_status q_##fn(const void *m, uint32_t *o, size_t oc, uint32_t *i,      \
-                                  size_t ic, size_t *no, size_t *ni) {                     \
+    static UNUSED_ topomesh_status q_##fn(const void *m, uint32_t *o, size_t oc,           \
+                                          uint32_t *i, size_t ic, size_t *no, size_t *ni) { \
         return fn((const mesh_t *)m, o, oc, i, ic, no, ni);                                \
     }
+
+/* A zero-copy view of either library, adapted by VIEW_QUERY. */
+typedef const uint32_t *(*any_view_fn)(const void *m, size_t *len);
+#define VIEW_QUERY(mesh_t, fn)                                                             \
+    static UNUSED_ const uint32_t *q_##fn(const void *m, size_t *len) {                    \
+        return fn((const mesh_t *)m, len);                                                 \
+    }
+
+/* Every view of a NULL handle is NULL with a length of 0; a NULL len is allowed. */
+static inline void check_null_views(const any_view_fn *views, size_t n) {
+    for (size_t i = 0; i < n; i++) {
+        size_t len = 99;
+        CHECK(views[i](NULL, &len) == NULL && len == 0);
+        CHECK(views[i](NULL, NULL) == NULL);
+    }
+}
 
 /* A CSR call agrees with its per-element relation, row by row, over `rows` rows. */
 static inline void csr_matches(const any_csr *c, const void *m, size_t rows) {

@@ -1,7 +1,5 @@
 /* The stack star iterator, the bulk CSR calls and the zero-copy views. */
-#include "check.h"
-
-#include <pthread.h>
+#include "threads.h"
 
 /* The edge-id directory gives che_half_edge_edge inline, from level 1; NULL at level 0. */
 static void edge_ranks_match(const che_mesh *m) {
@@ -124,6 +122,18 @@ static void test_csr(void) {
     che_mesh_free(m);
 }
 
+VIEW_QUERY(che_mesh, che_mesh_half_edge_vertices)
+VIEW_QUERY(che_mesh, che_mesh_opposites)
+VIEW_QUERY(che_mesh, che_mesh_vertex_origins)
+VIEW_QUERY(che_mesh, che_mesh_triangle_origins)
+VIEW_QUERY(che_mesh, che_mesh_vertex_half_edges)
+VIEW_QUERY(che_mesh, che_mesh_edge_half_edges)
+VIEW_QUERY(che_mesh, che_mesh_curve_half_edges)
+static const any_view_fn VIEWS[] = {
+    q_che_mesh_half_edge_vertices, q_che_mesh_opposites,       q_che_mesh_vertex_origins,
+    q_che_mesh_triangle_origins,   q_che_mesh_vertex_half_edges, q_che_mesh_edge_half_edges,
+    q_che_mesh_curve_half_edges};
+
 static void test_views(void) {
     che_mesh *m = make(STRIP, 2, 4, STRIP_POS, 0);
     size_t len = 99;
@@ -174,15 +184,9 @@ static void test_views(void) {
     CHECK(che_mesh_opposites(m, &len) != NULL && len == 6);
 
     /* NULL handle: NULL and 0; a NULL len is allowed. */
+    check_null_views(VIEWS, sizeof VIEWS / sizeof VIEWS[0]);
     len = 99;
-    CHECK(che_mesh_half_edge_vertices(NULL, &len) == NULL && len == 0);
-    CHECK(che_mesh_opposites(NULL, NULL) == NULL);
     CHECK(che_mesh_positions(NULL, &len) == NULL && len == 0);
-    CHECK(che_mesh_vertex_origins(NULL, &len) == NULL && len == 0);
-    CHECK(che_mesh_triangle_origins(NULL, &len) == NULL && len == 0);
-    CHECK(che_mesh_vertex_half_edges(NULL, &len) == NULL);
-    CHECK(che_mesh_edge_half_edges(NULL, &len) == NULL);
-    CHECK(che_mesh_curve_half_edges(NULL, &len) == NULL);
     che_mesh_free(m);
 
     /* The O invariants, walked with the inline arithmetic, on a closed mesh. */
@@ -202,16 +206,8 @@ static void test_views(void) {
 
 /* Any number of threads may query one const mesh at once, including the first request of
    an identity origin map (materialised once). */
-#define N_THREADS 4
-typedef struct {
-    const che_mesh *m;
-    const uint32_t *origins;
-    size_t vv_total;
-    int failed;
-} job;
-
 static void *query_everything(void *arg) {
-    job *j = arg;
+    thread_job *j = arg;
     size_t len = 0;
     j->origins = che_mesh_vertex_origins(j->m, &len);
     if (!j->origins || len != che_mesh_num_vertices(j->m)) j->failed = 1;
@@ -227,24 +223,17 @@ static void *query_everything(void *arg) {
         if (che_mesh_vertex_vertices_csr(j->m, NULL, 0, NULL, 0, &no, &ni) != TOPOMESH_STATUS_OK ||
             ni != total)
             j->failed = 1;
-        j->vv_total = total;
+        j->total = total;
     }
     return NULL;
 }
 
 static void test_threads(void) {
     che_mesh *m = make(MOEBIUS, 6, 6, NULL, 1);
-    pthread_t th[N_THREADS];
-    job jobs[N_THREADS];
-    for (int i = 0; i < N_THREADS; i++) {
-        jobs[i] = (job){m, NULL, 0, 0};
-        CHECK(pthread_create(&th[i], NULL, query_everything, &jobs[i]) == 0);
-    }
-    for (int i = 0; i < N_THREADS; i++) CHECK(pthread_join(th[i], NULL) == 0);
-    for (int i = 0; i < N_THREADS; i++) {
-        CHECK(!jobs[i].failed);
-        CHECK(jobs[i].origins == jobs[0].origins && jobs[i].vv_total == jobs[0].vv_total);
-    }
+    size_t vv = 0, n = 0; /* the answer: the total of VV */
+    for (uint32_t v = 0; v < che_mesh_num_vertices(m); v++, vv += n)
+        CHECK_OK(che_vertex_vertices(m, v, NULL, 0, &n));
+    run_threads(m, query_everything, vv);
     che_mesh_free(m);
 }
 

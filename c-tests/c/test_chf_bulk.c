@@ -1,16 +1,8 @@
 /* CHF: the bulk CSR calls, the zero-copy views with the inline half-face arithmetic, the
    boundary surface and its maps, and concurrent queries. */
 #include "chf_fixtures.h"
+#include "threads.h"
 
-#include <pthread.h>
-
-IDS_QUERY(chf_mesh, chf_vertex_vertices)
-IDS_QUERY(chf_mesh, chf_vertex_edges)
-IDS_QUERY(chf_mesh, chf_vertex_faces)
-IDS_QUERY(chf_mesh, chf_vertex_tetrahedra)
-IDS_QUERY(chf_mesh, chf_edge_faces)
-IDS_QUERY(chf_mesh, chf_edge_tetrahedra)
-IDS_QUERY(chf_mesh, chf_tetrahedron_tetrahedra)
 CSR_QUERY(chf_mesh, chf_mesh_vertex_vertices_csr)
 CSR_QUERY(chf_mesh, chf_mesh_vertex_edges_csr)
 CSR_QUERY(chf_mesh, chf_mesh_vertex_faces_csr)
@@ -25,26 +17,6 @@ VALUE_QUERY(chf_mesh, chf_face_boundary_triangle)
 VALUE_QUERY(chf_mesh, chf_vertex_boundary_component)
 VALUE_QUERY(chf_mesh, chf_vertex_boundary_vertex)
 VALUE_QUERY(chf_mesh, chf_boundary_vertex_vertex)
-
-/* The elements a query's ids run over. */
-enum { VERTEX, EDGE, FACE, TETRAHEDRON, HALF_FACE, BOUNDARY_TRIANGLE, BOUNDARY_VERTEX };
-static const char *const KIND_NAMES[] = {"vertex",    "edge",
-                                         "face",      "tetrahedron",
-                                         "half-face", "boundary triangle",
-                                         "boundary vertex"};
-
-static size_t count_of(const void *mesh, int kind) {
-    const chf_mesh *m = mesh;
-    switch (kind) {
-    case VERTEX: return chf_mesh_num_vertices(m);
-    case EDGE: return chf_mesh_num_edges(m);
-    case FACE: return chf_mesh_num_faces(m);
-    case TETRAHEDRON: return chf_mesh_num_tetrahedra(m);
-    case HALF_FACE: return chf_mesh_num_half_faces(m);
-    case BOUNDARY_TRIANGLE: return chf_mesh_num_boundary_triangles(m);
-    default: return chf_mesh_num_boundary_vertices(m);
-    }
-}
 
 /* The bulk calls with the relation of their rows. */
 static const any_csr CSRS[] = {
@@ -111,6 +83,27 @@ static void corners(const uint32_t *V, uint32_t hf, uint32_t out[3]) {
     for (uint32_t j = 0; j < 3; j++) out[j] = V[chf_face_corner(hf, j)];
 }
 
+VIEW_QUERY(chf_mesh, chf_mesh_half_face_vertices)
+VIEW_QUERY(chf_mesh, chf_mesh_opposites)
+VIEW_QUERY(chf_mesh, chf_mesh_vertex_origins)
+VIEW_QUERY(chf_mesh, chf_mesh_tetrahedron_origins)
+VIEW_QUERY(chf_mesh, chf_mesh_vertex_half_faces)
+VIEW_QUERY(chf_mesh, chf_mesh_face_half_faces)
+VIEW_QUERY(chf_mesh, chf_mesh_boundary_half_faces)
+VIEW_QUERY(chf_mesh, chf_mesh_boundary_vertex_components)
+VIEW_QUERY(chf_mesh, chf_mesh_boundary_vertices)
+static const any_view_fn VIEWS[] = {
+    q_chf_mesh_half_face_vertices,
+    q_chf_mesh_opposites,
+    q_chf_mesh_vertex_origins,
+    q_chf_mesh_tetrahedron_origins,
+    q_chf_mesh_vertex_half_faces,
+    q_chf_mesh_face_half_faces,
+    q_chf_mesh_boundary_half_faces,
+    q_chf_mesh_boundary_vertex_components,
+    q_chf_mesh_boundary_vertices,
+};
+
 static void test_views(void) {
     chf_mesh *m = make_chf(PAIR, 2, 5, PAIR_POS, 0);
     size_t len = 99;
@@ -171,17 +164,9 @@ static void test_views(void) {
     CHECK(chf_mesh_opposites(m, &len) != NULL && len == 8);
 
     /* NULL handle: NULL and 0; a NULL len is allowed. */
+    check_null_views(VIEWS, sizeof VIEWS / sizeof VIEWS[0]);
     len = 99;
-    CHECK(chf_mesh_half_face_vertices(NULL, &len) == NULL && len == 0);
-    CHECK(chf_mesh_opposites(NULL, NULL) == NULL);
     CHECK(chf_mesh_positions(NULL, &len) == NULL && len == 0);
-    CHECK(chf_mesh_vertex_origins(NULL, &len) == NULL && len == 0);
-    CHECK(chf_mesh_tetrahedron_origins(NULL, &len) == NULL && len == 0);
-    CHECK(chf_mesh_vertex_half_faces(NULL, &len) == NULL);
-    CHECK(chf_mesh_face_half_faces(NULL, &len) == NULL);
-    CHECK(chf_mesh_boundary_half_faces(NULL, &len) == NULL);
-    CHECK(chf_mesh_boundary_vertex_components(NULL, &len) == NULL);
-    CHECK(chf_mesh_boundary_vertices(NULL, &len) == NULL);
     chf_mesh_free(m);
 
     /* The O and VH invariants, walked with the inline arithmetic. */
@@ -355,16 +340,8 @@ static void test_boundary(void) {
 
 /* Any number of threads may query one const mesh at once, including the first request of
    an identity origin map (materialised once). */
-#define N_THREADS 4
-typedef struct {
-    const chf_mesh *m;
-    const uint32_t *origins;
-    size_t vt_total;
-    int failed;
-} job;
-
 static void *query_everything(void *arg) {
-    job *j = arg;
+    thread_job *j = arg;
     size_t len = 0;
     j->origins = chf_mesh_vertex_origins(j->m, &len);
     if (!j->origins || len != chf_mesh_num_vertices(j->m)) j->failed = 1;
@@ -382,24 +359,14 @@ static void *query_everything(void *arg) {
                 TOPOMESH_STATUS_OK ||
             ni != total || total != 4 * chf_mesh_num_tetrahedra(j->m))
             j->failed = 1;
-        j->vt_total = total;
+        j->total = total;
     }
     return NULL;
 }
 
 static void test_threads(void) {
     chf_mesh *m = make_chf(CUBE, 5, 8, NULL, 1);
-    pthread_t th[N_THREADS];
-    job jobs[N_THREADS];
-    for (int i = 0; i < N_THREADS; i++) {
-        jobs[i] = (job){m, NULL, 0, 0};
-        CHECK(pthread_create(&th[i], NULL, query_everything, &jobs[i]) == 0);
-    }
-    for (int i = 0; i < N_THREADS; i++) CHECK(pthread_join(th[i], NULL) == 0);
-    for (int i = 0; i < N_THREADS; i++) {
-        CHECK(!jobs[i].failed);
-        CHECK(jobs[i].origins == jobs[0].origins && jobs[i].vt_total == 20);
-    }
+    run_threads(m, query_everything, 20);
     chf_mesh_free(m);
 }
 

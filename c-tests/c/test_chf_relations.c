@@ -2,22 +2,6 @@
    meshes, buffer rules, errors, invariants, and the same answers at every level. */
 #include "chf_fixtures.h"
 
-IDS_QUERY(chf_mesh, chf_vertex_vertices)
-IDS_QUERY(chf_mesh, chf_vertex_edges)
-IDS_QUERY(chf_mesh, chf_vertex_faces)
-IDS_QUERY(chf_mesh, chf_vertex_tetrahedra)
-IDS_QUERY(chf_mesh, chf_edge_vertices)
-IDS_QUERY(chf_mesh, chf_edge_edges)
-IDS_QUERY(chf_mesh, chf_edge_faces)
-IDS_QUERY(chf_mesh, chf_edge_tetrahedra)
-IDS_QUERY(chf_mesh, chf_face_vertices)
-IDS_QUERY(chf_mesh, chf_face_edges)
-IDS_QUERY(chf_mesh, chf_face_faces)
-IDS_QUERY(chf_mesh, chf_face_tetrahedra)
-IDS_QUERY(chf_mesh, chf_tetrahedron_vertices)
-IDS_QUERY(chf_mesh, chf_tetrahedron_edges)
-IDS_QUERY(chf_mesh, chf_tetrahedron_faces)
-IDS_QUERY(chf_mesh, chf_tetrahedron_tetrahedra)
 VALUE_QUERY(chf_mesh, chf_half_face_opposite)
 VALUE_QUERY(chf_mesh, chf_half_face_face)
 VALUE_QUERY(chf_mesh, chf_vertex_half_face)
@@ -25,21 +9,6 @@ VALUE_QUERY(chf_mesh, chf_face_half_face)
 FLAG_QUERY(chf_mesh, chf_vertex_is_boundary)
 FLAG_QUERY(chf_mesh, chf_edge_is_boundary)
 FLAG_QUERY(chf_mesh, chf_face_is_boundary)
-
-/* The elements a query's ids run over. */
-enum { VERTEX, EDGE, FACE, TETRAHEDRON, HALF_FACE };
-static const char *const KIND_NAMES[] = {"vertex", "edge", "face", "tetrahedron", "half-face"};
-
-static size_t count_of(const void *mesh, int kind) {
-    const chf_mesh *m = mesh;
-    switch (kind) {
-    case VERTEX: return chf_mesh_num_vertices(m);
-    case EDGE: return chf_mesh_num_edges(m);
-    case FACE: return chf_mesh_num_faces(m);
-    case TETRAHEDRON: return chf_mesh_num_tetrahedra(m);
-    default: return chf_mesh_num_half_faces(m);
-    }
-}
 
 /* The 16 relations, then the single-value helpers. */
 static const any_query QUERIES[] = {

@@ -112,6 +112,39 @@ typedef struct che_star_step {
     uint32_t triangle;
 } che_star_step;
 
+/* The layout of the two structs above is mirrored by hand from src/ffi (which asserts the
+   same numbers): with P = sizeof(void *), che_star_iter is four pointers then four u32,
+   4P + 16 bytes (48 on LP64), and che_star_step four u32, 16 bytes. A drift would be
+   silent undefined behaviour, so it fails to compile instead. */
+#if defined(__cplusplus)
+#define TOPOMESH_STATIC_ASSERT(cond, msg) static_assert(cond, msg)
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L
+#define TOPOMESH_STATIC_ASSERT(cond, msg) _Static_assert(cond, msg)
+#else
+#define TOPOMESH_STATIC_ASSERT_CAT2(a, b) a##b
+#define TOPOMESH_STATIC_ASSERT_CAT(a, b) TOPOMESH_STATIC_ASSERT_CAT2(a, b)
+#define TOPOMESH_STATIC_ASSERT(cond, msg) \
+    typedef char TOPOMESH_STATIC_ASSERT_CAT(topomesh_static_assert_, __LINE__)[(cond) ? 1 : -1]
+#endif
+#define TOPOMESH_P sizeof(void *)
+TOPOMESH_STATIC_ASSERT(sizeof(che_star_iter) == 4 * TOPOMESH_P + 16, "che_star_iter size");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_iter, mesh) == 0, "che_star_iter.mesh");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_iter, v) == TOPOMESH_P, "che_star_iter.v");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_iter, o) == 2 * TOPOMESH_P, "che_star_iter.o");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_iter, edge_ranks) == 3 * TOPOMESH_P,
+                       "che_star_iter.edge_ranks");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_iter, start) == 4 * TOPOMESH_P, "che_star_iter.start");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_iter, cur) == 4 * TOPOMESH_P + 4, "che_star_iter.cur");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_iter, tail) == 4 * TOPOMESH_P + 8, "che_star_iter.tail");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_iter, cur_opposite) == 4 * TOPOMESH_P + 12,
+                       "che_star_iter.cur_opposite");
+TOPOMESH_STATIC_ASSERT(sizeof(che_star_step) == 16, "che_star_step size");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_step, half_edge) == 0, "che_star_step.half_edge");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_step, vertex) == 4, "che_star_step.vertex");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_step, edge) == 8, "che_star_step.edge");
+TOPOMESH_STATIC_ASSERT(offsetof(che_star_step, triangle) == 12, "che_star_step.triangle");
+#undef TOPOMESH_P
+
 #ifdef __cplusplus
 extern "C" {
 #endif

@@ -11,7 +11,7 @@
 # MESH: names under <mesh dir>/tets (default: blobby-12k armadillo-101k bunny00-1m).
 # Makes the meshes (scripts/fetch-tets.sh: tetgen, the 1M one takes under a minute), builds
 # and installs the package into a temporary prefix (or uses --prefix, an installed one),
-# builds c-tests/diffvol's topomesh_bench_vol (-O2 -DNDEBUG, no -march=native; the CGAL
+# builds c-tests/diff_volume's topomesh_bench_vol (-O2 -DNDEBUG, no -march=native; the CGAL
 # translation unit takes about a minute) and runs it. Respects CARGO_TARGET_DIR and
 # TOPOMESH_MESH_DIR.
 set -euo pipefail
@@ -47,7 +47,7 @@ if [[ -z "$prefix" ]]; then
 fi
 echo "== topomesh_bench_vol (the CGAL translation unit compiles slowly: about a minute)"
 # An empty build type: the only optimisation flags are the target's -O2 -DNDEBUG.
-cmake -S "$root/c-tests/diffvol" -B "$work/diffvol" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE= \
+cmake -S "$root/c-tests/diff_volume" -B "$work/diffvol" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE= \
   -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE \
   -DTOPOMESH_MESH_DIR="$dir" >/dev/null
 cmake --build "$work/diffvol" --target topomesh_bench_vol >/dev/null

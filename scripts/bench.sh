@@ -10,7 +10,7 @@
 # MESH: names in the mesh cache (default: bunny00 armadillo holes polygon_mesh
 # blobby-shuffled bunny00-sub2 bunny00-sub3) or paths to .off files. Fetches the meshes
 # (scripts/fetch-meshes.sh), builds and installs the package into a temporary prefix
-# (the cmake/ project, as scripts/c-tests.sh does), builds c-tests/diff's topomesh_bench
+# (the cmake/ project, as scripts/c-tests.sh does), builds c-tests/diff_surface's topomesh_bench
 # (-O2, no -march=native) and runs it. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
 set -euo pipefail
 
@@ -38,7 +38,7 @@ cmake -S "$root/cmake" -B "$work/pkg" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_B
 cmake --build "$work/pkg" >/dev/null
 cmake --install "$work/pkg" >/dev/null
 echo "== topomesh_bench (OpenMesh and CGAL compile slowly: about a minute)"
-cmake -S "$root/c-tests/diff" -B "$work/diff" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+cmake -S "$root/c-tests/diff_surface" -B "$work/diff" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
   -DTOPOMESH_MESH_DIR="$dir" >/dev/null
 cmake --build "$work/diff" --target topomesh_bench >/dev/null
 

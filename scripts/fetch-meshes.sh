@@ -10,17 +10,17 @@
 # bunny, armadillo and dragon come from the Stanford repository: never commit them.
 #
 # Generated: bunny00-sub2.off (1,206,528 triangles) and bunny00-sub3.off (4,826,112), by
-# 1-to-4 midpoint subdivision of bunny00 (c-tests/diff/subdivide.cpp, built with g++).
+# 1-to-4 midpoint subdivision of bunny00 (c-tests/diff_surface/subdivide.cpp, built with g++).
 # Tetrahedral meshes are made from these surfaces by scripts/fetch-tets.sh.
 # --list: print the selected meshes and exit.
 set -euo pipefail
 
 DIR="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-SUBDIVIDE_SRC="$HERE/../c-tests/diff/subdivide.cpp"
+SUBDIVIDE_SRC="$HERE/../c-tests/diff_surface/subdivide.cpp"
 
-# The selection: c-tests/diff/meshes.txt (one name a line, with what each one is for).
-LIST="$HERE/../c-tests/diff/meshes.txt"
+# The selection: c-tests/diff_surface/meshes.txt (one name a line, with what each one is for).
+LIST="$HERE/../c-tests/diff_surface/meshes.txt"
 mapfile -t MESHES < <(sed 's/#.*//; s/[[:space:]]//g; /^$/d' "$LIST")
 GENERATED=(bunny00-sub2 bunny00-sub3)
 for a in "$@"; do

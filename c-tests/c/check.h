@@ -5,6 +5,8 @@
 #include <topomesh/topomesh.h>
 
 #include <stdarg.h>
+#include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -94,6 +96,25 @@ static inline void print_ids_(const char *what, const uint32_t *got, size_t n) {
 
 #define CHECK_EMPTY(n) CHECK((n) == 0)
 
+/* A load (`call`, writing into m) that fails with `want`: no mesh, and a detail that
+   contains `needle`. m is first set to a non-NULL garbage value. */
+#define CHECK_LOAD_FAILS(m, call, want, needle)                                            \
+    do {                                                                                   \
+        (m) = (void *)&(m);                                                                \
+        CHECK_STATUS(call, want);                                                          \
+        CHECK((m) == NULL);                                                                \
+        CHECK_DETAIL(needle);                                                              \
+    } while (0)
+
+/* Writes a test input file into the working directory. */
+static inline void write_file(const char *path, const char *text) {
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(text, f) < 0 || fclose(f) != 0) {
+        fprintf(stderr, "cannot write %s\n", path);
+        exit(2);
+    }
+}
+
 static inline int finish(const char *name) {
     if (check_failures) {
         fprintf(stderr, "%s: %d check(s) failed\n", name, check_failures);
@@ -101,6 +122,229 @@ static inline int finish(const char *name) {
     }
     printf("%s: all checks passed\n", name);
     return 0;
+}
+
+/* The main of a load test: `args` (argument errors, independent of the file readers) or
+   `readers` (needs them). */
+static inline int load_test_main(int argc, char **argv, const char *usage, void (*args)(void),
+                                 void (*readers)(void)) {
+    const char *what = argc > 1 ? argv[1] : "args";
+    if (strcmp(what, "args") == 0) {
+        args();
+    } else if (strcmp(what, "readers") == 0) {
+        readers();
+    } else {
+        fprintf(stderr, "usage: %s args|readers\n", usage);
+        return 2;
+    }
+    return finish(what);
+}
+
+
+/* ---- Queries of either library ------------------------------------------------------ */
+
+/* An id query of CHE or CHF on a mesh given as const void *: a relation (ids into a buffer),
+   a value (one id) or a flag (0 or 1), all with the shape of a relation. The adapters
+   (q_<function>) come from IDS_QUERY, VALUE_QUERY and FLAG_QUERY. */
+typedef topomesh_status (*any_query_fn)(const void *m, uint32_t id, uint32_t *out, size_t cap,
+                                        size_t *len);
+typedef struct any_query {
+    const char *name;
+    any_query_fn fn;
+    int kind; /* the elements its ids run over: the caller's count_fn tells how many */
+} any_query;
+typedef size_t (*any_count_fn)(const void *m, int kind);
+
+#define QUERY_HEAD_(fn)                                                                    \
+    static UNUSED_ topomesh_status q_##fn(const void *m, uint32_t id, uint32_t *out,       \
+                                          size_t cap, size_t *len)
+#define IDS_QUERY(mesh_t, fn)                                                              \
+    QUERY_HEAD_(fn) {                                                                      \
+        return fn((const mesh_t *)m, id, out, cap, len);                                   \
+    }
+#define VALUE_QUERY(mesh_t, fn)                                                            \
+    QUERY_HEAD_(fn) {                                                                      \
+        (void)cap;                                                                         \
+        if (len) *len = 1;                                                                 \
+        return fn((const mesh_t *)m, id, out);                                             \
+    }
+#define FLAG_QUERY(mesh_t, fn)                                                             \
+    QUERY_HEAD_(fn) {                                                                      \
+        bool b = false;                                                                    \
+        const topomesh_status s = fn((const mesh_t *)m, id, out ? &b : NULL);              \
+        (void)cap;                                                                         \
+        if (out) out[0] = b;                                                               \
+        if (len) *len = 1;                                                                 \
+        return s;                                                                          \
+    }
+
+/* A bulk (CSR) call of either library, adapted by CSR_QUERY to a mesh given as const void *,
+   with the per-element relation whose rows it holds. */
+typedef topomesh_status (*any_csr_fn)(const void *m, uint32_t *offsets, size_t offsets_cap,
+                                      uint32_t *indices, size_t indices_cap, size_t *n_offsets,
+                                      size_t *n_indices);
+typedef struct any_csr {
+    any_csr_fn csr;
+    any_query_fn rows;
+    int kind;
+} any_csr;
+
+#define CSR_QUERY(mesh_t, fn)                                                              \
+    static UNUSED_ topomesh_status q_##fn(const void *m, uint32_t *o, size_t oc,           \
+                                          uint32_t *i, size_t ic, size_t *no, size_t *ni) { \
+        return fn((const mesh_t *)m, o, oc, i, ic, no, ni);                                \
+    }
+
+/* A zero-copy view of either library, adapted by VIEW_QUERY. */
+typedef const uint32_t *(*any_view_fn)(const void *m, size_t *len);
+#define VIEW_QUERY(mesh_t, fn)                                                             \
+    static UNUSED_ const uint32_t *q_##fn(const void *m, size_t *len) {                    \
+        return fn((const mesh_t *)m, len);                                                 \
+    }
+
+/* Every view of a NULL handle is NULL with a length of 0; a NULL len is allowed. */
+static inline void check_null_views(const any_view_fn *views, size_t n) {
+    for (size_t i = 0; i < n; i++) {
+        size_t len = 99;
+        CHECK(views[i](NULL, &len) == NULL && len == 0);
+        CHECK(views[i](NULL, NULL) == NULL);
+    }
+}
+
+/* A CSR call agrees with its per-element relation, row by row, over `rows` rows. */
+static inline void csr_matches(const any_csr *c, const void *m, size_t rows) {
+    size_t no = 0, ni = 0;
+    CHECK_OK(c->csr(m, NULL, 0, NULL, 0, &no, &ni));
+    CHECK(no == rows + 1);
+    uint32_t *off = malloc((no + 1) * sizeof *off), *idx = malloc((ni + 1) * sizeof *idx);
+    if (!off || !idx) exit(2);
+    size_t no2 = 0, ni2 = 0;
+    CHECK_OK(c->csr(m, off, no, idx, ni, &no2, &ni2));
+    CHECK(no2 == no && ni2 == ni);
+    CHECK(off[0] == 0 && off[rows] == ni);
+    for (uint32_t r = 0; r < rows; r++) {
+        uint32_t b[64];
+        size_t n = 0;
+        CHECK_OK(c->rows(m, r, b, 64, &n));
+        CHECK(off[r + 1] - off[r] == n);
+        if (off[r + 1] - off[r] == n) CHECK(memcmp(idx + off[r], b, n * sizeof *b) == 0);
+    }
+    free(off);
+    free(idx);
+}
+
+/* The buffer rules and errors of a CSR call on mesh m (whose answer has some indices):
+   either buffer too small (both lengths reported, the detail names it), a NULL buffer
+   with a capacity of 0, NULL lengths, a NULL handle. */
+static inline void check_csr_errors(any_csr_fn f, const void *m) {
+    size_t no = 0, ni = 0, a = 0, b = 0;
+    CHECK_OK(f(m, NULL, 0, NULL, 0, &no, &ni));
+    CHECK(no >= 2 && ni >= 1);
+    uint32_t *off = malloc((no + 1) * sizeof *off), *idx = malloc((ni + 1) * sizeof *idx);
+    if (!off || !idx) exit(2);
+    CHECK_STATUS(f(m, off, no, idx, ni - 1, &a, &b), TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+    CHECK(a == no && b == ni);
+    CHECK_DETAIL("indices");
+    a = b = 0;
+    CHECK_STATUS(f(m, off, no - 1, idx, ni, &a, &b), TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+    CHECK(a == no && b == ni);
+    CHECK_DETAIL("offsets");
+    CHECK_STATUS(f(m, NULL, 0, idx, ni, &a, &b), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("offsets");
+    CHECK_STATUS(f(m, off, no, NULL, 0, &a, &b), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("indices");
+    CHECK_STATUS(f(m, off, no, idx, ni, NULL, &b), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(f(m, off, no, idx, ni, &a, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(f(NULL, NULL, 0, NULL, 0, &a, &b), TOPOMESH_STATUS_NULL_ARGUMENT);
+    free(off);
+    free(idx);
+}
+
+/* Every query gives mesh m the answers it gives ref, for every element of ref. */
+static inline void same_answers(const char *name, uint32_t level, const any_query *qs,
+                                size_t nq, any_count_fn count, const void *ref, const void *m) {
+    for (size_t q = 0; q < nq; q++) {
+        const size_t n = count(ref, qs[q].kind);
+        for (uint32_t id = 0; id < n; id++) {
+            uint32_t a[64], b[64];
+            size_t na = 0, nb = 0;
+            CHECK_OK(qs[q].fn(ref, id, a, 64, &na));
+            CHECK_OK(qs[q].fn(m, id, b, 64, &nb));
+            if (na != nb || memcmp(a, b, na * sizeof *a)) {
+                fprintf(stderr, "%s: %s(%u) differs at level %u from level 3\n", name,
+                        qs[q].name, (unsigned)id, (unsigned)level);
+                print_ids_("level 3", a, na);
+                print_ids_("this level", b, nb);
+                check_failures++;
+            }
+        }
+    }
+}
+
+/* The errors of a single-value helper (a VALUE_QUERY or FLAG_QUERY) on mesh m, whose ids
+   run over `count` elements: a NULL handle or out, and id `count`, out of range (the
+   detail names it as `what` and the id). */
+static inline void check_value_errors(any_query_fn f, const void *m, size_t count,
+                                      const char *what) {
+    uint32_t x = 0;
+    size_t n = 0;
+    CHECK_STATUS(f(NULL, 0, &x, 1, &n), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(f(m, 0, NULL, 1, &n), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(f(m, (uint32_t)count, &x, 1, &n), TOPOMESH_STATUS_OUT_OF_RANGE);
+    char detail[64];
+    snprintf(detail, sizeof detail, "%s %u", what, (unsigned)count);
+    CHECK_DETAIL(detail);
+}
+
+/* Two zero-copy views (pointer and length) hold the same ids. */
+static inline int same_view(const uint32_t *a, size_t la, const uint32_t *b, size_t lb) {
+    return a && b && la == lb && (la == 0 || memcmp(a, b, la * sizeof *a) == 0);
+}
+
+/* The buffer rules and errors of a relation on mesh m (whose ids run over `count`
+   elements): on the element with the longest answer (at least 2 ids), then on id `count`,
+   out of range (the detail names it as `what` and the id). */
+static inline void check_buffer_rules(any_query_fn f, const void *m, size_t count, const char *what) {
+    uint32_t id = 0;
+    size_t n = 0, need = 0;
+    for (uint32_t x = 0; x < count; x++) {
+        CHECK_OK(f(m, x, NULL, 0, &need));
+        if (need > n) n = need, id = x;
+    }
+    CHECK(n >= 2);
+    uint32_t full[64], b[64];
+    CHECK_OK(f(m, id, full, 64, &need));
+    CHECK(need == n);
+    /* Too small: the needed length, and the prefix written. */
+    for (size_t i = 0; i < 64; i++) b[i] = 12345;
+    need = 0;
+    CHECK_STATUS(f(m, id, b, 1, &need), TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+    CHECK(need == n && b[0] == full[0] && b[1] == 12345);
+    CHECK_DETAIL("needed");
+    /* A buffer of zero entries (not a size query) is too small as well. */
+    CHECK_STATUS(f(m, id, b, 0, &need), TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+    CHECK(need == n);
+    /* Exactly enough, and "unbounded". */
+    CHECK_OK(f(m, id, b, n, &need));
+    CHECK(need == n && memcmp(b, full, n * sizeof *b) == 0);
+    CHECK_OK(f(m, id, b, SIZE_MAX, &need));
+    CHECK(need == n && memcmp(b, full, n * sizeof *b) == 0);
+    /* NULL handle, NULL buffer with a capacity, NULL out_len. */
+    CHECK_STATUS(f(NULL, 0, b, 64, &n), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("'m'");
+    CHECK_STATUS(f(m, 0, NULL, 4, &n), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("buf");
+    CHECK_STATUS(f(m, 0, b, 64, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("out_len");
+    /* Out of range: the id in the detail, nothing written. */
+    const uint32_t bad = (uint32_t)count;
+    n = 777;
+    CHECK_STATUS(f(m, bad, b, 64, &n), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK(n == 777);
+    char detail[64];
+    snprintf(detail, sizeof detail, "%s %u", what, (unsigned)bad);
+    CHECK_DETAIL(detail);
+    CHECK_STATUS(f(m, TOPOMESH_NONE, b, 64, &n), TOPOMESH_STATUS_OUT_OF_RANGE);
 }
 
 /* ---- Fixtures ----------------------------------------------------------------------- */
@@ -130,14 +374,54 @@ static const uint32_t DEGEN[] UNUSED_ = {0, 1, 2, 1, 1, 2, 2, 1, 3};
 
 #define NTRI(a) (sizeof(a) / sizeof((a)[0]) / 3)
 
-static inline che_mesh *make(const uint32_t *tris, size_t n_tris, size_t n_verts, const double *pos,
-                      uint32_t level) {
-    che_mesh *m = NULL;
-    topomesh_status s = che_mesh_from_triangles(tris, n_tris, n_verts, pos, level, &m);
-    if (s != TOPOMESH_STATUS_OK || !m) {
+/* A strip whose second triangle is flipped (repaired by the orientation pass). */
+static const uint32_t FLIPPED[] UNUSED_ = {0, 1, 2, 1, 2, 3};
+
+/* Two strips sharing nothing: two boundary curves. */
+static const uint32_t TWO_STRIPS[] UNUSED_ = {0, 1, 2, 1, 3, 2, 4, 5, 6, 5, 7, 6};
+
+/* Every small surface fixture, for the tests that run on all of them. */
+typedef struct che_fixture {
+    const char *name;
+    const uint32_t *tris;
+    size_t n_tris, n_verts;
+} che_fixture;
+static const che_fixture CHE_FIXTURES[] UNUSED_ = {
+    {"tetrahedron", TETRA, NTRI(TETRA), 4}, {"strip", STRIP, NTRI(STRIP), 4},
+    {"bowtie", BOWTIE, NTRI(BOWTIE), 5},    {"fin", FIN, NTRI(FIN), 5},
+    {"moebius", MOEBIUS, NTRI(MOEBIUS), 6}, {"degenerate", DEGEN, NTRI(DEGEN), 5},
+    {"flipped strip", FLIPPED, NTRI(FLIPPED), 4}, {"two strips", TWO_STRIPS, NTRI(TWO_STRIPS), 8},
+};
+#define N_CHE_FIXTURES (sizeof CHE_FIXTURES / sizeof CHE_FIXTURES[0])
+
+/* A g x g grid of quads, two triangles each, over (g + 1)^2 vertices; without the quad
+   (hole, hole) when hole < g (a boundary inside). Writes the triangles into out (room for
+   6 g^2 ids) and returns their number. */
+static inline size_t grid_triangles(uint32_t g, uint32_t hole, uint32_t *out) {
+    size_t k = 0;
+    for (uint32_t i = 0; i < g; i++)
+        for (uint32_t j = 0; j < g; j++) {
+            if (i == hole && j == hole) continue;
+            const uint32_t a = i * (g + 1) + j, b = a + 1, c = a + g + 1, d = c + 1;
+            const uint32_t quad[6] = {a, b, d, a, d, c};
+            for (int q = 0; q < 6; q++) out[k++] = quad[q];
+        }
+    return k / 3;
+}
+
+/* Exits unless a fixture's build succeeded. */
+static inline void fixture_built(topomesh_status s, const void *mesh) {
+    if (s != TOPOMESH_STATUS_OK || !mesh) {
         fprintf(stderr, "fixture build failed: %s: %s\n", topomesh_status_str(s), last_error());
         exit(2);
     }
+}
+
+static inline che_mesh *make(const uint32_t *tris, size_t n_tris, size_t n_verts, const double *pos,
+                      uint32_t level) {
+    che_mesh *m = NULL;
+    const topomesh_status s = che_mesh_from_triangles(tris, n_tris, n_verts, pos, level, &m);
+    fixture_built(s, m);
     return m;
 }
 

@@ -40,16 +40,45 @@ static const uint32_t TDEGEN[] UNUSED_ = {0, 1, 2, 3, 0, 1, 1, 2, 4, 1, 3, 2};
 static inline chf_mesh *make_chf(const uint32_t *tets, size_t n_tets, size_t n_verts,
                                  const double *pos, uint32_t level) {
     chf_mesh *m = NULL;
-    topomesh_status s = chf_mesh_from_tetrahedra(tets, n_tets, n_verts, pos, level, &m);
-    if (s != TOPOMESH_STATUS_OK || !m) {
-        fprintf(stderr, "fixture build failed: %s: %s\n", topomesh_status_str(s), last_error());
-        exit(2);
-    }
+    const topomesh_status s = chf_mesh_from_tetrahedra(tets, n_tets, n_verts, pos, level, &m);
+    fixture_built(s, m);
     return m;
 }
 
-/* A relation's full answer into buf (cap 64); returns its length. */
-typedef topomesh_status (*chf_relation_fn)(const chf_mesh *, uint32_t, uint32_t *, size_t,
-                                           size_t *);
+/* The 16 relations as queries of check.h. */
+IDS_QUERY(chf_mesh, chf_vertex_vertices)
+IDS_QUERY(chf_mesh, chf_vertex_edges)
+IDS_QUERY(chf_mesh, chf_vertex_faces)
+IDS_QUERY(chf_mesh, chf_vertex_tetrahedra)
+IDS_QUERY(chf_mesh, chf_edge_vertices)
+IDS_QUERY(chf_mesh, chf_edge_edges)
+IDS_QUERY(chf_mesh, chf_edge_faces)
+IDS_QUERY(chf_mesh, chf_edge_tetrahedra)
+IDS_QUERY(chf_mesh, chf_face_vertices)
+IDS_QUERY(chf_mesh, chf_face_edges)
+IDS_QUERY(chf_mesh, chf_face_faces)
+IDS_QUERY(chf_mesh, chf_face_tetrahedra)
+IDS_QUERY(chf_mesh, chf_tetrahedron_vertices)
+IDS_QUERY(chf_mesh, chf_tetrahedron_edges)
+IDS_QUERY(chf_mesh, chf_tetrahedron_faces)
+IDS_QUERY(chf_mesh, chf_tetrahedron_tetrahedra)
+
+/* The elements a query's ids run over. */
+enum { VERTEX, EDGE, FACE, TETRAHEDRON, HALF_FACE, BOUNDARY_TRIANGLE, BOUNDARY_VERTEX };
+static const char *const KIND_NAMES[] UNUSED_ = {
+    "vertex", "edge", "face", "tetrahedron", "half-face", "boundary triangle", "boundary vertex"};
+
+static inline size_t count_of(const void *mesh, int kind) {
+    const chf_mesh *m = mesh;
+    switch (kind) {
+    case VERTEX: return chf_mesh_num_vertices(m);
+    case EDGE: return chf_mesh_num_edges(m);
+    case FACE: return chf_mesh_num_faces(m);
+    case TETRAHEDRON: return chf_mesh_num_tetrahedra(m);
+    case HALF_FACE: return chf_mesh_num_half_faces(m);
+    case BOUNDARY_TRIANGLE: return chf_mesh_num_boundary_triangles(m);
+    default: return chf_mesh_num_boundary_vertices(m);
+    }
+}
 
 #endif

@@ -1,32 +1,46 @@
 /* CHF: the bulk CSR calls, the zero-copy views with the inline half-face arithmetic, the
    boundary surface and its maps, and concurrent queries. */
 #include "chf_fixtures.h"
+#include "threads.h"
 
-#include <pthread.h>
+CSR_QUERY(chf_mesh, chf_mesh_vertex_vertices_csr)
+CSR_QUERY(chf_mesh, chf_mesh_vertex_edges_csr)
+CSR_QUERY(chf_mesh, chf_mesh_vertex_faces_csr)
+CSR_QUERY(chf_mesh, chf_mesh_vertex_tetrahedra_csr)
+CSR_QUERY(chf_mesh, chf_mesh_edge_faces_csr)
+CSR_QUERY(chf_mesh, chf_mesh_edge_tetrahedra_csr)
+CSR_QUERY(chf_mesh, chf_mesh_tetrahedron_tetrahedra_csr)
+VALUE_QUERY(chf_mesh, chf_boundary_triangle_half_face)
+VALUE_QUERY(chf_mesh, chf_boundary_triangle_face)
+VALUE_QUERY(chf_mesh, chf_half_face_boundary_triangle)
+VALUE_QUERY(chf_mesh, chf_face_boundary_triangle)
+VALUE_QUERY(chf_mesh, chf_vertex_boundary_component)
+VALUE_QUERY(chf_mesh, chf_vertex_boundary_vertex)
+VALUE_QUERY(chf_mesh, chf_boundary_vertex_vertex)
 
-typedef topomesh_status (*chf_csr_fn)(const chf_mesh *, uint32_t *, size_t, uint32_t *, size_t,
-                                      size_t *, size_t *);
+/* The bulk calls with the relation of their rows. */
+static const any_csr CSRS[] = {
+    {q_chf_mesh_vertex_vertices_csr, q_chf_vertex_vertices, VERTEX},
+    {q_chf_mesh_vertex_edges_csr, q_chf_vertex_edges, VERTEX},
+    {q_chf_mesh_vertex_faces_csr, q_chf_vertex_faces, VERTEX},
+    {q_chf_mesh_vertex_tetrahedra_csr, q_chf_vertex_tetrahedra, VERTEX},
+    {q_chf_mesh_edge_faces_csr, q_chf_edge_faces, EDGE},
+    {q_chf_mesh_edge_tetrahedra_csr, q_chf_edge_tetrahedra, EDGE},
+    {q_chf_mesh_tetrahedron_tetrahedra_csr, q_chf_tetrahedron_tetrahedra, TETRAHEDRON},
+};
+#define N_CSRS (sizeof CSRS / sizeof CSRS[0])
 
-/* A CSR call agrees with the one-element relation, row by row. */
-static void csr_matches(const chf_mesh *m, chf_csr_fn csr, chf_relation_fn rel, size_t rows) {
-    size_t no = 0, ni = 0;
-    CHECK_OK(csr(m, NULL, 0, NULL, 0, &no, &ni));
-    CHECK(no == rows + 1);
-    uint32_t *off = malloc((no + 1) * sizeof *off), *idx = malloc((ni + 1) * sizeof *idx);
-    size_t no2 = 0, ni2 = 0;
-    CHECK_OK(csr(m, off, no, idx, ni, &no2, &ni2));
-    CHECK(no2 == no && ni2 == ni);
-    CHECK(off[0] == 0 && off[rows] == ni);
-    for (uint32_t r = 0; r < rows; r++) {
-        uint32_t b[64];
-        size_t n = 0;
-        CHECK_OK(rel(m, r, b, 64, &n));
-        CHECK(off[r + 1] - off[r] == n);
-        if (off[r + 1] - off[r] == n) CHECK(memcmp(idx + off[r], b, n * sizeof *b) == 0);
-    }
-    free(off);
-    free(idx);
-}
+/* The boundary maps (one id each). */
+static const any_query MAPS[] = {
+    {"chf_boundary_triangle_half_face", q_chf_boundary_triangle_half_face, BOUNDARY_TRIANGLE},
+    {"chf_boundary_triangle_face", q_chf_boundary_triangle_face, BOUNDARY_TRIANGLE},
+    {"chf_half_face_boundary_triangle", q_chf_half_face_boundary_triangle, HALF_FACE},
+    {"chf_face_boundary_triangle", q_chf_face_boundary_triangle, FACE},
+    {"chf_vertex_boundary_component", q_chf_vertex_boundary_component, VERTEX},
+    {"chf_vertex_boundary_vertex", q_chf_vertex_boundary_vertex, VERTEX},
+    {"chf_boundary_vertex_vertex", q_chf_boundary_vertex_vertex, BOUNDARY_VERTEX},
+};
+#define N_MAPS (sizeof MAPS / sizeof MAPS[0])
 
 static void test_csr(void) {
     const uint32_t *fixtures[] = {TET, PAIR, SPLIT, CUBE, STAR, BOOK, TDEGEN};
@@ -34,15 +48,8 @@ static void test_csr(void) {
     for (int f = 0; f < 7; f++) {
         for (uint32_t level = 0; level <= 3; level++) {
             chf_mesh *m = make_chf(fixtures[f], nt[f], nv[f], NULL, level);
-            size_t V = chf_mesh_num_vertices(m), E = chf_mesh_num_edges(m);
-            size_t T = chf_mesh_num_tetrahedra(m);
-            csr_matches(m, chf_mesh_vertex_vertices_csr, chf_vertex_vertices, V);
-            csr_matches(m, chf_mesh_vertex_edges_csr, chf_vertex_edges, V);
-            csr_matches(m, chf_mesh_vertex_faces_csr, chf_vertex_faces, V);
-            csr_matches(m, chf_mesh_vertex_tetrahedra_csr, chf_vertex_tetrahedra, V);
-            csr_matches(m, chf_mesh_edge_faces_csr, chf_edge_faces, E);
-            csr_matches(m, chf_mesh_edge_tetrahedra_csr, chf_edge_tetrahedra, E);
-            csr_matches(m, chf_mesh_tetrahedron_tetrahedra_csr, chf_tetrahedron_tetrahedra, T);
+            for (size_t c = 0; c < N_CSRS; c++)
+                csr_matches(&CSRS[c], m, count_of(m, CSRS[c].kind));
             /* The bulk calls do not change the level. */
             CHECK(chf_mesh_level(m) == level);
             chf_mesh_free(m);
@@ -66,37 +73,8 @@ static void test_csr(void) {
     CHECK_IDS(off, no, 0, 3, 7, 11, 15, 18);
     CHECK_IDS(idx, 4, 1, 2, 3, 0); /* VV(0), then VV(1) starts */
     CHECK(chf_mesh_level(m) == 0);
-    /* Too small: both needed lengths reported. */
-    no = ni = 0;
-    CHECK_STATUS(chf_mesh_vertex_vertices_csr(m, off, 16, idx, 3, &no, &ni),
-                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-    CHECK(no == 6 && ni == 18);
-    CHECK_DETAIL("indices");
-    CHECK_STATUS(chf_mesh_vertex_edges_csr(m, off, 2, idx, 32, &no, &ni),
-                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-    CHECK(no == 6 && ni == 18);
-    CHECK_DETAIL("offsets");
-    /* One NULL buffer, NULL lengths, NULL handle. */
-    CHECK_STATUS(chf_mesh_vertex_faces_csr(m, NULL, 0, idx, 32, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_DETAIL("offsets");
-    CHECK_STATUS(chf_mesh_vertex_faces_csr(m, off, 16, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_DETAIL("indices");
-    CHECK_STATUS(chf_mesh_edge_faces_csr(m, off, 16, idx, 32, NULL, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_edge_faces_csr(m, off, 16, idx, 32, &no, NULL),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_tetrahedron_tetrahedra_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_vertex_tetrahedra_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_edge_tetrahedra_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_vertex_vertices_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_vertex_edges_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    /* The buffer rules. */
+    for (size_t c = 0; c < N_CSRS; c++) check_csr_errors(CSRS[c].csr, m);
     chf_mesh_free(m);
 }
 
@@ -104,6 +82,27 @@ static void test_csr(void) {
 static void corners(const uint32_t *V, uint32_t hf, uint32_t out[3]) {
     for (uint32_t j = 0; j < 3; j++) out[j] = V[chf_face_corner(hf, j)];
 }
+
+VIEW_QUERY(chf_mesh, chf_mesh_half_face_vertices)
+VIEW_QUERY(chf_mesh, chf_mesh_opposites)
+VIEW_QUERY(chf_mesh, chf_mesh_vertex_origins)
+VIEW_QUERY(chf_mesh, chf_mesh_tetrahedron_origins)
+VIEW_QUERY(chf_mesh, chf_mesh_vertex_half_faces)
+VIEW_QUERY(chf_mesh, chf_mesh_face_half_faces)
+VIEW_QUERY(chf_mesh, chf_mesh_boundary_half_faces)
+VIEW_QUERY(chf_mesh, chf_mesh_boundary_vertex_components)
+VIEW_QUERY(chf_mesh, chf_mesh_boundary_vertices)
+static const any_view_fn VIEWS[] = {
+    q_chf_mesh_half_face_vertices,
+    q_chf_mesh_opposites,
+    q_chf_mesh_vertex_origins,
+    q_chf_mesh_tetrahedron_origins,
+    q_chf_mesh_vertex_half_faces,
+    q_chf_mesh_face_half_faces,
+    q_chf_mesh_boundary_half_faces,
+    q_chf_mesh_boundary_vertex_components,
+    q_chf_mesh_boundary_vertices,
+};
 
 static void test_views(void) {
     chf_mesh *m = make_chf(PAIR, 2, 5, PAIR_POS, 0);
@@ -165,17 +164,9 @@ static void test_views(void) {
     CHECK(chf_mesh_opposites(m, &len) != NULL && len == 8);
 
     /* NULL handle: NULL and 0; a NULL len is allowed. */
+    check_null_views(VIEWS, sizeof VIEWS / sizeof VIEWS[0]);
     len = 99;
-    CHECK(chf_mesh_half_face_vertices(NULL, &len) == NULL && len == 0);
-    CHECK(chf_mesh_opposites(NULL, NULL) == NULL);
     CHECK(chf_mesh_positions(NULL, &len) == NULL && len == 0);
-    CHECK(chf_mesh_vertex_origins(NULL, &len) == NULL && len == 0);
-    CHECK(chf_mesh_tetrahedron_origins(NULL, &len) == NULL && len == 0);
-    CHECK(chf_mesh_vertex_half_faces(NULL, &len) == NULL);
-    CHECK(chf_mesh_face_half_faces(NULL, &len) == NULL);
-    CHECK(chf_mesh_boundary_half_faces(NULL, &len) == NULL);
-    CHECK(chf_mesh_boundary_vertex_components(NULL, &len) == NULL);
-    CHECK(chf_mesh_boundary_vertices(NULL, &len) == NULL);
     chf_mesh_free(m);
 
     /* The O and VH invariants, walked with the inline arithmetic. */
@@ -336,33 +327,12 @@ static void test_boundary(void) {
     /* Errors. */
     m = make_chf(CUBE, 5, 8, NULL, 3);
     s = (che_mesh *)&s;
-    uint32_t x = 0;
     CHECK_STATUS(chf_mesh_boundary(NULL, &s), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK(s == NULL);
     CHECK_STATUS(chf_mesh_boundary(m, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_DETAIL("out");
-    CHECK_STATUS(chf_boundary_triangle_half_face(m, 12, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("boundary triangle 12");
-    CHECK_STATUS(chf_boundary_triangle_half_face(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_boundary_triangle_face(m, 12, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(chf_boundary_triangle_face(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_half_face_boundary_triangle(m, 20, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("half-face 20");
-    CHECK_STATUS(chf_half_face_boundary_triangle(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_face_boundary_triangle(m, 16, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("face 16");
-    CHECK_STATUS(chf_face_boundary_triangle(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_vertex_boundary_component(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("vertex 8");
-    CHECK_STATUS(chf_vertex_boundary_component(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_vertex_boundary_vertex(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("vertex 8");
-    CHECK_STATUS(chf_vertex_boundary_vertex(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_vertex_boundary_vertex(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_boundary_vertex_vertex(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("boundary vertex 8");
-    CHECK_STATUS(chf_boundary_vertex_vertex(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_boundary_vertex_vertex(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    for (size_t q = 0; q < N_MAPS; q++)
+        check_value_errors(MAPS[q].fn, m, count_of(m, MAPS[q].kind), KIND_NAMES[MAPS[q].kind]);
     CHECK(chf_mesh_num_boundary_triangles(NULL) == 0 && chf_mesh_num_boundary_vertices(NULL) == 0);
     CHECK(chf_mesh_num_non_manifold_half_faces(NULL) == 0 && chf_mesh_num_seam_half_faces(NULL) == 0);
     chf_mesh_free(m);
@@ -370,16 +340,8 @@ static void test_boundary(void) {
 
 /* Any number of threads may query one const mesh at once, including the first request of
    an identity origin map (materialised once). */
-#define N_THREADS 4
-typedef struct {
-    const chf_mesh *m;
-    const uint32_t *origins;
-    size_t vt_total;
-    int failed;
-} job;
-
 static void *query_everything(void *arg) {
-    job *j = arg;
+    thread_job *j = arg;
     size_t len = 0;
     j->origins = chf_mesh_vertex_origins(j->m, &len);
     if (!j->origins || len != chf_mesh_num_vertices(j->m)) j->failed = 1;
@@ -397,24 +359,14 @@ static void *query_everything(void *arg) {
                 TOPOMESH_STATUS_OK ||
             ni != total || total != 4 * chf_mesh_num_tetrahedra(j->m))
             j->failed = 1;
-        j->vt_total = total;
+        j->total = total;
     }
     return NULL;
 }
 
 static void test_threads(void) {
     chf_mesh *m = make_chf(CUBE, 5, 8, NULL, 1);
-    pthread_t th[N_THREADS];
-    job jobs[N_THREADS];
-    for (int i = 0; i < N_THREADS; i++) {
-        jobs[i] = (job){m, NULL, 0, 0};
-        CHECK(pthread_create(&th[i], NULL, query_everything, &jobs[i]) == 0);
-    }
-    for (int i = 0; i < N_THREADS; i++) CHECK(pthread_join(th[i], NULL) == 0);
-    for (int i = 0; i < N_THREADS; i++) {
-        CHECK(!jobs[i].failed);
-        CHECK(jobs[i].origins == jobs[0].origins && jobs[i].vt_total == 20);
-    }
+    run_threads(m, query_everything, 20);
     chf_mesh_free(m);
 }
 

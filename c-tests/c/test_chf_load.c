@@ -3,19 +3,9 @@
    `test_chf_load readers`: needs the Medit, TetGen and OFF readers (src/io). */
 #include "chf_fixtures.h"
 
-static void write_file(const char *path, const char *text) {
-    FILE *f = fopen(path, "w");
-    if (!f || fputs(text, f) < 0 || fclose(f) != 0) {
-        fprintf(stderr, "cannot write %s\n", path);
-        exit(2);
-    }
-}
-
 static void test_args(void) {
     chf_mesh *m = (chf_mesh *)&m;
-    CHECK_STATUS(chf_mesh_load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK(m == NULL);
-    CHECK_DETAIL("path");
+    CHECK_LOAD_FAILS(m, chf_mesh_load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT, "path");
     CHECK_STATUS(chf_mesh_load("x.mesh", 2, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(chf_mesh_load("x.mesh", 4, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
     CHECK_STATUS(chf_mesh_load_ex(NULL, NULL, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
@@ -24,10 +14,8 @@ static void test_args(void) {
     CHECK_STATUS(chf_mesh_load_ex("x.mesh", &o, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
     /* An unknown extension is not a mesh format. */
     write_file("chf-not-a-volume.xyz", "hello\n");
-    m = (chf_mesh *)&m;
-    CHECK_STATUS(chf_mesh_load("chf-not-a-volume.xyz", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
-    CHECK(m == NULL);
-    CHECK_DETAIL("chf-not-a-volume.xyz");
+    CHECK_LOAD_FAILS(m, chf_mesh_load("chf-not-a-volume.xyz", 2, &m),
+                     TOPOMESH_STATUS_INVALID_INPUT, "chf-not-a-volume.xyz");
 }
 
 /* PAIR in Medit (1-based), with its boundary triangles too (ignored by chf_mesh_load). */
@@ -86,19 +74,15 @@ static void test_readers(void) {
     chf_mesh_free(m);
 
     /* A missing file. */
-    m = (chf_mesh *)&m;
-    CHECK_STATUS(chf_mesh_load("chf-does-not-exist.mesh", 2, &m), TOPOMESH_STATUS_IO);
-    CHECK(m == NULL);
-    CHECK_DETAIL("chf-does-not-exist.mesh");
+    CHECK_LOAD_FAILS(m, chf_mesh_load("chf-does-not-exist.mesh", 2, &m),
+                     TOPOMESH_STATUS_IO, "chf-does-not-exist.mesh");
 
     /* A malformed file: the detail names the file. */
     write_file("chf-malformed.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
                                  "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
                                  "Tetrahedra\n1\n1 2 x 4 0\nEnd\n");
-    m = (chf_mesh *)&m;
-    CHECK_STATUS(chf_mesh_load("chf-malformed.mesh", 2, &m), TOPOMESH_STATUS_PARSE);
-    CHECK(m == NULL);
-    CHECK_DETAIL("chf-malformed.mesh");
+    CHECK_LOAD_FAILS(m, chf_mesh_load("chf-malformed.mesh", 2, &m),
+                     TOPOMESH_STATUS_PARSE, "chf-malformed.mesh");
     write_file("chf-bad-index.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
                                  "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
                                  "Tetrahedra\n1\n1 2 3 9 0\nEnd\n");
@@ -108,10 +92,8 @@ static void test_readers(void) {
     /* A surface file is not a volume. */
     write_file("chf-tetra.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
                             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
-    m = (chf_mesh *)&m;
-    CHECK_STATUS(chf_mesh_load("chf-tetra.off", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
-    CHECK(m == NULL);
-    CHECK_DETAIL("chf-tetra.off");
+    CHECK_LOAD_FAILS(m, chf_mesh_load("chf-tetra.off", 2, &m),
+                     TOPOMESH_STATUS_INVALID_INPUT, "chf-tetra.off");
     CHECK_DETAIL("no tetrahedra");
     /* ... nor is a Medit file with triangles only. */
     write_file("chf-surface.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n3\n"
@@ -122,9 +104,8 @@ static void test_readers(void) {
     /* Strict mode on a file with a non-manifold face. */
     write_file("chf-book.mesh", BOOK_MESH);
     o.strict = true;
-    CHECK_STATUS(chf_mesh_load_ex("chf-book.mesh", &o, &m), TOPOMESH_STATUS_NON_MANIFOLD);
-    CHECK(m == NULL);
-    CHECK_DETAIL("(0, 1, 2)");
+    CHECK_LOAD_FAILS(m, chf_mesh_load_ex("chf-book.mesh", &o, &m),
+                     TOPOMESH_STATUS_NON_MANIFOLD, "(0, 1, 2)");
     o.strict = false;
     CHECK_OK(chf_mesh_load_ex("chf-book.mesh", &o, &m));
     chf_summary s;
@@ -134,14 +115,5 @@ static void test_readers(void) {
 }
 
 int main(int argc, char **argv) {
-    const char *what = argc > 1 ? argv[1] : "args";
-    if (strcmp(what, "args") == 0) {
-        test_args();
-    } else if (strcmp(what, "readers") == 0) {
-        test_readers();
-    } else {
-        fprintf(stderr, "usage: test_chf_load args|readers\n");
-        return 2;
-    }
-    return finish(what);
+    return load_test_main(argc, argv, "test_chf_load", test_args, test_readers);
 }

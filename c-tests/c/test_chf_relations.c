@@ -2,38 +2,42 @@
    meshes, buffer rules, errors, invariants, and the same answers at every level. */
 #include "chf_fixtures.h"
 
-static const struct {
-    const char *name;
-    chf_relation_fn fn;
-    int kind; /* 0 vertex, 1 edge, 2 face, 3 tetrahedron */
-} RELATIONS[] = {
-    {"chf_vertex_vertices", chf_vertex_vertices, 0},
-    {"chf_vertex_edges", chf_vertex_edges, 0},
-    {"chf_vertex_faces", chf_vertex_faces, 0},
-    {"chf_vertex_tetrahedra", chf_vertex_tetrahedra, 0},
-    {"chf_edge_vertices", chf_edge_vertices, 1},
-    {"chf_edge_edges", chf_edge_edges, 1},
-    {"chf_edge_faces", chf_edge_faces, 1},
-    {"chf_edge_tetrahedra", chf_edge_tetrahedra, 1},
-    {"chf_face_vertices", chf_face_vertices, 2},
-    {"chf_face_edges", chf_face_edges, 2},
-    {"chf_face_faces", chf_face_faces, 2},
-    {"chf_face_tetrahedra", chf_face_tetrahedra, 2},
-    {"chf_tetrahedron_vertices", chf_tetrahedron_vertices, 3},
-    {"chf_tetrahedron_edges", chf_tetrahedron_edges, 3},
-    {"chf_tetrahedron_faces", chf_tetrahedron_faces, 3},
-    {"chf_tetrahedron_tetrahedra", chf_tetrahedron_tetrahedra, 3},
-};
-#define N_RELATIONS (sizeof RELATIONS / sizeof RELATIONS[0])
+VALUE_QUERY(chf_mesh, chf_half_face_opposite)
+VALUE_QUERY(chf_mesh, chf_half_face_face)
+VALUE_QUERY(chf_mesh, chf_vertex_half_face)
+VALUE_QUERY(chf_mesh, chf_face_half_face)
+FLAG_QUERY(chf_mesh, chf_vertex_is_boundary)
+FLAG_QUERY(chf_mesh, chf_edge_is_boundary)
+FLAG_QUERY(chf_mesh, chf_face_is_boundary)
 
-static size_t count_of(const chf_mesh *m, int kind) {
-    switch (kind) {
-    case 0: return chf_mesh_num_vertices(m);
-    case 1: return chf_mesh_num_edges(m);
-    case 2: return chf_mesh_num_faces(m);
-    default: return chf_mesh_num_tetrahedra(m);
-    }
-}
+/* The 16 relations, then the single-value helpers. */
+static const any_query QUERIES[] = {
+    {"chf_vertex_vertices", q_chf_vertex_vertices, VERTEX},
+    {"chf_vertex_edges", q_chf_vertex_edges, VERTEX},
+    {"chf_vertex_faces", q_chf_vertex_faces, VERTEX},
+    {"chf_vertex_tetrahedra", q_chf_vertex_tetrahedra, VERTEX},
+    {"chf_edge_vertices", q_chf_edge_vertices, EDGE},
+    {"chf_edge_edges", q_chf_edge_edges, EDGE},
+    {"chf_edge_faces", q_chf_edge_faces, EDGE},
+    {"chf_edge_tetrahedra", q_chf_edge_tetrahedra, EDGE},
+    {"chf_face_vertices", q_chf_face_vertices, FACE},
+    {"chf_face_edges", q_chf_face_edges, FACE},
+    {"chf_face_faces", q_chf_face_faces, FACE},
+    {"chf_face_tetrahedra", q_chf_face_tetrahedra, FACE},
+    {"chf_tetrahedron_vertices", q_chf_tetrahedron_vertices, TETRAHEDRON},
+    {"chf_tetrahedron_edges", q_chf_tetrahedron_edges, TETRAHEDRON},
+    {"chf_tetrahedron_faces", q_chf_tetrahedron_faces, TETRAHEDRON},
+    {"chf_tetrahedron_tetrahedra", q_chf_tetrahedron_tetrahedra, TETRAHEDRON},
+    {"chf_half_face_opposite", q_chf_half_face_opposite, HALF_FACE},
+    {"chf_half_face_face", q_chf_half_face_face, HALF_FACE},
+    {"chf_vertex_half_face", q_chf_vertex_half_face, VERTEX},
+    {"chf_face_half_face", q_chf_face_half_face, FACE},
+    {"chf_vertex_is_boundary", q_chf_vertex_is_boundary, VERTEX},
+    {"chf_edge_is_boundary", q_chf_edge_is_boundary, EDGE},
+    {"chf_face_is_boundary", q_chf_face_is_boundary, FACE},
+};
+#define N_QUERIES (sizeof QUERIES / sizeof QUERIES[0])
+#define N_RELATIONS 16
 
 static void test_single(void) {
     chf_mesh *m = make_chf(TET, 1, 4, TET_POS, 2);
@@ -219,75 +223,14 @@ static void test_pair(void) {
 /* Buffer rules and errors, for every relation. */
 static void test_buffer_rules(void) {
     chf_mesh *m = make_chf(CUBE, 5, 8, CUBE_POS, 3);
-    for (size_t r = 0; r < N_RELATIONS; r++) {
-        chf_relation_fn f = RELATIONS[r].fn;
-        /* The element with the longest answer. */
-        uint32_t id = 0;
-        size_t n = 0, need = 0;
-        for (uint32_t x = 0; x < count_of(m, RELATIONS[r].kind); x++) {
-            CHECK_OK(f(m, x, NULL, 0, &need));
-            if (need > n) n = need, id = x;
-        }
-        CHECK(n >= 2);
-        uint32_t full[64], b[64];
-        CHECK_OK(f(m, id, full, 64, &need));
-        CHECK(need == n);
-        /* Too small: the needed length, and the prefix written. */
-        for (size_t i = 0; i < 64; i++) b[i] = 12345;
-        need = 0;
-        CHECK_STATUS(f(m, id, b, 1, &need), TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-        CHECK(need == n && b[0] == full[0] && b[1] == 12345);
-        CHECK_DETAIL("needed");
-        /* A buffer of zero entries (not a size query) is too small as well. */
-        CHECK_STATUS(f(m, id, b, 0, &need), TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-        CHECK(need == n);
-        /* Exactly enough, and "unbounded". */
-        CHECK_OK(f(m, id, b, n, &need));
-        CHECK(need == n && memcmp(b, full, n * sizeof *b) == 0);
-        CHECK_OK(f(m, id, b, SIZE_MAX, &need));
-        CHECK(need == n && memcmp(b, full, n * sizeof *b) == 0);
-        /* NULL handle, NULL buffer with a capacity, NULL out_len. */
-        CHECK_STATUS(f(NULL, 0, b, 64, &n), TOPOMESH_STATUS_NULL_ARGUMENT);
-        CHECK_DETAIL("'m'");
-        CHECK_STATUS(f(m, 0, NULL, 4, &n), TOPOMESH_STATUS_NULL_ARGUMENT);
-        CHECK_DETAIL("buf");
-        CHECK_STATUS(f(m, 0, b, 64, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-        CHECK_DETAIL("out_len");
-        /* Out of range: the id in the detail, nothing written. */
-        uint32_t bad = (uint32_t)count_of(m, RELATIONS[r].kind);
-        n = 777;
-        CHECK_STATUS(f(m, bad, b, 64, &n), TOPOMESH_STATUS_OUT_OF_RANGE);
-        CHECK(n == 777);
-        char detail[64];
-        static const char *const what[] = {"vertex", "edge", "face", "tetrahedron"};
-        snprintf(detail, sizeof detail, "%s %u", what[RELATIONS[r].kind], (unsigned)bad);
-        CHECK_DETAIL(detail);
-        CHECK_STATUS(f(m, TOPOMESH_NONE, b, 64, &n), TOPOMESH_STATUS_OUT_OF_RANGE);
-    }
+    for (size_t r = 0; r < N_RELATIONS; r++)
+        check_buffer_rules(QUERIES[r].fn, m, count_of(m, QUERIES[r].kind),
+                           KIND_NAMES[QUERIES[r].kind]);
 
     /* The single-value helpers. */
-    uint32_t x;
-    bool yes;
-    CHECK_STATUS(chf_half_face_opposite(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_half_face_opposite(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_DETAIL("out");
-    CHECK_STATUS(chf_half_face_opposite(m, 20, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("half-face 20");
-    CHECK_STATUS(chf_half_face_face(m, 20, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(chf_half_face_face(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_face_half_face(m, 16, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("face 16");
-    CHECK_STATUS(chf_face_half_face(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_vertex_half_face(m, 8, &x), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("vertex 8");
-    CHECK_STATUS(chf_vertex_half_face(NULL, 0, &x), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_vertex_is_boundary(m, 8, &yes), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(chf_vertex_is_boundary(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_edge_is_boundary(m, 18, &yes), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("edge 18");
-    CHECK_STATUS(chf_edge_is_boundary(NULL, 0, &yes), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_face_is_boundary(m, 16, &yes), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(chf_face_is_boundary(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    for (size_t q = N_RELATIONS; q < N_QUERIES; q++)
+        check_value_errors(QUERIES[q].fn, m, count_of(m, QUERIES[q].kind),
+                           KIND_NAMES[QUERIES[q].kind]);
     chf_mesh_free(m);
 }
 
@@ -358,71 +301,20 @@ static void same_at_every_level(const char *name, const uint32_t *tets, size_t n
     invariants(name, ref);
     for (uint32_t level = 0; level < 3; level++) {
         chf_mesh *m = make_chf(tets, nt, nv, pos, level);
-        CHECK(chf_mesh_num_vertices(m) == chf_mesh_num_vertices(ref));
-        CHECK(chf_mesh_num_edges(m) == chf_mesh_num_edges(ref));
-        CHECK(chf_mesh_num_faces(m) == chf_mesh_num_faces(ref));
-        for (size_t r = 0; r < N_RELATIONS; r++) {
-            size_t count = count_of(ref, RELATIONS[r].kind);
-            for (uint32_t id = 0; id < count; id++) {
-                uint32_t a[64], b[64];
-                size_t na = 0, nb = 0;
-                CHECK_OK(RELATIONS[r].fn(ref, id, a, 64, &na));
-                CHECK_OK(RELATIONS[r].fn(m, id, b, 64, &nb));
-                if (na != nb || memcmp(a, b, na * sizeof *a)) {
-                    fprintf(stderr, "%s: %s(%u) differs at level %u from level 3\n", name,
-                            RELATIONS[r].name, (unsigned)id, (unsigned)level);
-                    print_ids_("level 3", a, na);
-                    print_ids_("this level", b, nb);
-                    check_failures++;
-                }
-            }
-        }
-        for (uint32_t hf = 0; hf < chf_mesh_num_half_faces(ref); hf++) {
-            uint32_t a = 0, b = 1;
-            CHECK_OK(chf_half_face_opposite(ref, hf, &a));
-            CHECK_OK(chf_half_face_opposite(m, hf, &b));
-            CHECK(a == b);
-            CHECK_OK(chf_half_face_face(ref, hf, &a));
-            CHECK_OK(chf_half_face_face(m, hf, &b));
-            CHECK(a == b);
-        }
-        for (uint32_t v = 0; v < chf_mesh_num_vertices(ref); v++) {
-            uint32_t a = 0, b = 1;
-            bool x = false, y = true;
-            CHECK_OK(chf_vertex_half_face(ref, v, &a));
-            CHECK_OK(chf_vertex_half_face(m, v, &b));
-            CHECK(a == b);
-            CHECK_OK(chf_vertex_is_boundary(ref, v, &x));
-            CHECK_OK(chf_vertex_is_boundary(m, v, &y));
-            CHECK(x == y);
-        }
-        for (uint32_t e = 0; e < chf_mesh_num_edges(ref); e++) {
-            bool x = false, y = true;
-            CHECK_OK(chf_edge_is_boundary(ref, e, &x));
-            CHECK_OK(chf_edge_is_boundary(m, e, &y));
-            CHECK(x == y);
-        }
-        for (uint32_t f = 0; f < chf_mesh_num_faces(ref); f++) {
-            uint32_t a = 0, b = 1;
-            bool x = false, y = true;
-            CHECK_OK(chf_face_half_face(ref, f, &a));
-            CHECK_OK(chf_face_half_face(m, f, &b));
-            CHECK(a == b);
-            CHECK_OK(chf_face_is_boundary(ref, f, &x));
-            CHECK_OK(chf_face_is_boundary(m, f, &y));
-            CHECK(x == y);
-        }
+        for (int kind = VERTEX; kind <= HALF_FACE; kind++)
+            CHECK(count_of(m, kind) == count_of(ref, kind));
+        same_answers(name, level, QUERIES, N_QUERIES, count_of, ref, m);
         /* Raising this mesh to level 3 gives the reference's views. */
         CHECK_OK(chf_mesh_build_level(m, 3));
         size_t la = 0, lb = 0;
-        const uint32_t *oa = chf_mesh_opposites(ref, &la), *ob = chf_mesh_opposites(m, &lb);
-        CHECK(oa && ob && la == lb && memcmp(oa, ob, la * sizeof *oa) == 0);
-        oa = chf_mesh_vertex_half_faces(ref, &la);
-        ob = chf_mesh_vertex_half_faces(m, &lb);
-        CHECK(oa && ob && la == lb && memcmp(oa, ob, la * sizeof *oa) == 0);
-        oa = chf_mesh_face_half_faces(ref, &la);
-        ob = chf_mesh_face_half_faces(m, &lb);
-        CHECK(oa && ob && la == lb && (la == 0 || memcmp(oa, ob, la * sizeof *oa) == 0));
+        const uint32_t *a = chf_mesh_opposites(ref, &la), *b = chf_mesh_opposites(m, &lb);
+        CHECK(same_view(a, la, b, lb));
+        a = chf_mesh_vertex_half_faces(ref, &la);
+        b = chf_mesh_vertex_half_faces(m, &lb);
+        CHECK(same_view(a, la, b, lb));
+        a = chf_mesh_face_half_faces(ref, &la);
+        b = chf_mesh_face_half_faces(m, &lb);
+        CHECK(same_view(a, la, b, lb));
         chf_mesh_free(m);
     }
     chf_mesh_free(ref);

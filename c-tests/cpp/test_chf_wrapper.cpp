@@ -1,6 +1,6 @@
 // The C++17 wrapper of CHF: Volume (RAII, moves), strong ids, relations, views, CSR,
 // the boundary as a Surface, errors.
-#include <topomesh/topomesh.hpp>
+#include "check.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -8,29 +8,6 @@
 #include <string>
 #include <type_traits>
 #include <vector>
-
-static int failures = 0;
-#define CHECK(cond)                                                                        \
-    do {                                                                                   \
-        if (!(cond)) {                                                                     \
-            std::fprintf(stderr, "%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #cond); \
-            failures++;                                                                    \
-        }                                                                                  \
-    } while (0)
-
-// Expects `expr` to throw topomesh::Error with `status` and a detail containing `needle`.
-#define CHECK_THROWS(expr, want, needle)                                                   \
-    do {                                                                                   \
-        bool thrown_ = false;                                                              \
-        try {                                                                              \
-            (void)(expr);                                                                  \
-        } catch (const topomesh::Error &e) {                                               \
-            thrown_ = true;                                                                \
-            CHECK(e.status() == (want));                                                   \
-            CHECK(e.detail().find(needle) != std::string::npos);                           \
-        }                                                                                  \
-        CHECK(thrown_);                                                                    \
-    } while (0)
 
 using namespace topomesh;
 
@@ -48,11 +25,6 @@ static_assert(next(HalfFaceId{7}) == HalfFaceId{4} && next(HalfFaceId{4}) == Hal
 static_assert(tetrahedron_of(HalfFaceId{7}) == TetrahedronId{1}, "constexpr arithmetic");
 static_assert(face_corner(HalfFaceId{5}, 1) == HalfFaceId{7}, "face 1 is {0, 3, 2}");
 
-template <class T> static std::vector<std::uint32_t> raw(const T &range) {
-    std::vector<std::uint32_t> out;
-    for (auto id : range) out.push_back(id.value());
-    return out;
-}
 using U = std::vector<std::uint32_t>;
 
 static const U PAIR = {0, 1, 2, 3, 4, 1, 3, 2};
@@ -228,14 +200,16 @@ static void test_views_csr_boundary_summary() {
         CHECK_THROWS(cube.boundary_face(TriangleId{12}), TOPOMESH_STATUS_OUT_OF_RANGE,
                      "boundary triangle 12");
     }
-    che_summary s = skin.summary();
+    Surface::Summary s = skin.summary();
     CHECK(skin.level() == 3 && skin.num_triangles() == 12 && skin.num_boundary_curves() == 0);
     CHECK(s.vertices == 8 && s.edges == 18 && s.euler_characteristic == 2 && s.genus == 0);
 
-    chf_summary sum = v.summary();
+    Volume::Summary sum = v.summary();
+    CHECK(v.raw_summary().faces == sum.faces && v.raw_summary().boundary_faces == 6);
     CHECK(sum.vertices == 5 && sum.edges == 9 && sum.faces == 7 && sum.tetrahedra == 2);
     CHECK(sum.boundary_faces == 6 && sum.euler_characteristic == 1 && sum.manifold);
-    chf_build_report r = v.report();
+    Volume::BuildReport r = v.report();
+    CHECK(v.raw_report().input_faces == 7);
     CHECK(r.input_tetrahedra == 2 && r.boundary_faces == 6 && r.input_faces == 7);
     CHECK(v.report_examples(CHF_REPORT_KIND_DEGENERATE).empty());
     chf_memory m = v.memory();
@@ -248,19 +222,10 @@ static void test_views_csr_boundary_summary() {
 }
 
 int main() {
-    try {
+    return run_tests("test_chf_wrapper", [] {
         test_build_and_counts();
         test_moves();
         test_relations();
         test_views_csr_boundary_summary();
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "unexpected exception: %s\n", e.what());
-        return 1;
-    }
-    if (failures) {
-        std::fprintf(stderr, "test_chf_wrapper: %d check(s) failed\n", failures);
-        return 1;
-    }
-    std::printf("test_chf_wrapper: all checks passed\n");
-    return 0;
+    });
 }

@@ -7,7 +7,7 @@ int main() {
     Surface s = Surface::from_triangles({0, 1, 2, 1, 3, 2}, 4, {}, {/*level*/ 2});
 
     std::cout << "around vertex 1:";
-    for (VertexId w : s.vertices_around(VertexId{1})) std::cout << ' ' << w.value();
+    for (VertexId w : s.vertex_vertices(VertexId{1})) std::cout << ' ' << w.value();
     std::cout << '\n';
 
     for (const StarStep &step : s.star(VertexId{2}))
@@ -18,7 +18,7 @@ int main() {
     for (std::uint32_t h = 0; h < V.size(); h++)
         if (O[h] == none) std::cout << "boundary " << V[h] << " -> " << V[che_next(h)] << '\n';
 
-    che_summary sum = s.summary();
+    Surface::Summary sum = s.summary();
     std::cout << "euler=" << sum.euler_characteristic << " genus=" << sum.genus << '\n';
 
     try {

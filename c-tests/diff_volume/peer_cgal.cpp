@@ -1,4 +1,4 @@
-// The only translation unit that includes CGAL (about a minute to compile). See peer_cgal.hpp.
+// The only translation unit that includes CGAL (slow to compile). See peer_cgal.hpp.
 #include "peer_cgal.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

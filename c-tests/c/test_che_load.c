@@ -1,31 +1,19 @@
 /* che_mesh_load and che_mesh_load_ex.
-   `test_load args`: argument errors, independent of the file readers.
-   `test_load readers`: needs the OFF and Medit readers (src/io). */
+   `test_che_load args`: argument errors, independent of the file readers.
+   `test_che_load readers`: needs the OFF and Medit readers (src/io). */
 #include "check.h"
-
-static void write_file(const char *path, const char *text) {
-    FILE *f = fopen(path, "w");
-    if (!f || fputs(text, f) < 0 || fclose(f) != 0) {
-        fprintf(stderr, "cannot write %s\n", path);
-        exit(2);
-    }
-}
 
 static void test_args(void) {
     che_mesh *m = (che_mesh *)&m;
-    CHECK_STATUS(che_mesh_load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK(m == NULL);
-    CHECK_DETAIL("path");
+    CHECK_LOAD_FAILS(m, che_mesh_load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT, "path");
     CHECK_STATUS(che_mesh_load("x.off", 2, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(che_mesh_load("x.off", 4, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
     CHECK_STATUS(che_mesh_load_ex(NULL, NULL, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(che_mesh_load_ex("x.off", NULL, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
     /* An unknown extension is not a mesh format. */
     write_file("not-a-mesh.xyz", "hello\n");
-    m = (che_mesh *)&m;
-    CHECK_STATUS(che_mesh_load("not-a-mesh.xyz", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
-    CHECK(m == NULL);
-    CHECK_DETAIL("not-a-mesh.xyz");
+    CHECK_LOAD_FAILS(m, che_mesh_load("not-a-mesh.xyz", 2, &m),
+                     TOPOMESH_STATUS_INVALID_INPUT, "not-a-mesh.xyz");
 }
 
 static const char *TETRA_OFF = "OFF\n"
@@ -61,16 +49,13 @@ static void test_readers(void) {
     che_mesh_free(m);
 
     /* A missing file. */
-    m = (che_mesh *)&m;
-    CHECK_STATUS(che_mesh_load("does-not-exist.off", 2, &m), TOPOMESH_STATUS_IO);
-    CHECK(m == NULL);
-    CHECK_DETAIL("does-not-exist.off");
+    CHECK_LOAD_FAILS(m, che_mesh_load("does-not-exist.off", 2, &m),
+                     TOPOMESH_STATUS_IO, "does-not-exist.off");
 
     /* A malformed file: the detail names the file and the line. */
     write_file("malformed.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1\n3 0 1 2\n");
-    CHECK_STATUS(che_mesh_load("malformed.off", 2, &m), TOPOMESH_STATUS_PARSE);
-    CHECK(m == NULL);
-    CHECK_DETAIL("malformed.off");
+    CHECK_LOAD_FAILS(m, che_mesh_load("malformed.off", 2, &m),
+                     TOPOMESH_STATUS_PARSE, "malformed.off");
     write_file("bad-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
     CHECK(che_mesh_load("bad-index.off", 2, &m) != TOPOMESH_STATUS_OK);
     CHECK(m == NULL);
@@ -90,20 +75,10 @@ static void test_readers(void) {
     write_file("tet.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
                            "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
                            "Tetrahedra\n1\n1 2 3 4 0\nEnd\n");
-    CHECK_STATUS(che_mesh_load("tet.mesh", 2, &m), TOPOMESH_STATUS_INVALID_INPUT);
-    CHECK(m == NULL);
-    CHECK_DETAIL("tetrahedra");
+    CHECK_LOAD_FAILS(m, che_mesh_load("tet.mesh", 2, &m),
+                     TOPOMESH_STATUS_INVALID_INPUT, "tetrahedra");
 }
 
 int main(int argc, char **argv) {
-    const char *what = argc > 1 ? argv[1] : "args";
-    if (strcmp(what, "args") == 0) {
-        test_args();
-    } else if (strcmp(what, "readers") == 0) {
-        test_readers();
-    } else {
-        fprintf(stderr, "usage: test_load args|readers\n");
-        return 2;
-    }
-    return finish(what);
+    return load_test_main(argc, argv, "test_che_load", test_args, test_readers);
 }

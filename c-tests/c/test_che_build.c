@@ -305,5 +305,5 @@ int main(void) {
     test_degenerate_and_isolated();
     test_moebius();
     test_orientation_repair();
-    return finish("test_build");
+    return finish("test_che_build");
 }

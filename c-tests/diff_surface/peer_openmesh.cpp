@@ -22,25 +22,32 @@ void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fa
     auto h = m.add_vertex(Mesh::Point(p[0], p[1], p[2]));
     if ((size_t)h.idx() != v) b.vertices_in_order = false;
   }
-  for (size_t t = 0; t < in.n_triangles; ++t) {
-    const uint32_t *c = in.triangles + 3 * t;
-    if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) {
-      b.skipped_degenerate++;
-      continue;
-    }
-    b.submitted++;
-    auto f = m.add_face(OpenMesh::VertexHandle(int(c[0])), OpenMesh::VertexHandle(int(c[1])),
-                        OpenMesh::VertexHandle(int(c[2])));
-    if (!f.is_valid()) {
-      if (b.refused_examples.size() < 8) b.refused_examples.push_back(uint32_t(t));
-      b.refused++;
-    } else if (face_input) {
-      face_input->push_back(uint32_t(t));
-    }
-  }
+  add_triangles(in, b, face_input, [&](const uint32_t *c) {
+    return m.add_face(OpenMesh::VertexHandle(int(c[0])), OpenMesh::VertexHandle(int(c[1])),
+                      OpenMesh::VertexHandle(int(c[2])))
+        .is_valid();
+  });
 }
 
 uint32_t vid(OpenMesh::VertexHandle h) { return uint32_t(h.idx()); }
+
+// The adapter of peers.hpp.
+struct Peer {
+  using Mesh = diffmesh::Mesh;
+  static void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fin) {
+    diffmesh::build(in, m, b, fin);
+  }
+  using H = OpenMesh::HalfedgeHandle;
+  static auto halfedges(const Mesh &m) { return m.halfedges(); }
+  static size_t index(OpenMesh::HalfedgeHandle h) { return size_t(h.idx()); }
+  static bool border(const Mesh &m, OpenMesh::HalfedgeHandle h) { return m.is_boundary(h); }
+  static uint32_t source(const Mesh &m, OpenMesh::HalfedgeHandle h) {
+    return vid(m.from_vertex_handle(h));
+  }
+  static OpenMesh::HalfedgeHandle next(const Mesh &m, OpenMesh::HalfedgeHandle h) {
+    return m.next_halfedge_handle(h);
+  }
+};
 
 } // namespace
 
@@ -98,34 +105,14 @@ Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
     std::sort(a.ef[i].begin(), a.ef[i].end());
     std::sort(a.ee[i].begin(), a.ee[i].end());
   }
-  // Boundary loops: the face-less half-edges run against topomesh's curves; reverse.
-  a.have_curves = true;
-  std::vector<uint8_t> seen(m.n_halfedges(), 0);
-  for (auto h : m.halfedges()) {
-    if (!m.is_boundary(h) || seen[size_t(h.idx())]) continue;
-    std::vector<uint32_t> loop;
-    auto g = h;
-    do {
-      seen[size_t(g.idx())] = 1;
-      loop.push_back(vid(m.from_vertex_handle(g)));
-      g = m.next_halfedge_handle(g);
-    } while (g != h && loop.size() <= m.n_halfedges());
-    std::reverse(loop.begin(), loop.end());
-    a.curves.push_back(loop);
-  }
+  boundary_loops<Peer>(m, m.n_halfedges(), a);
   return a;
 }
 
 namespace {
-class OpenMeshSubject : public Subject {
+class OpenMeshSubject : public PeerSubject<Peer> {
 public:
-  explicit OpenMeshSubject(const PeerInput &in) : in_(in) {}
-  void release() override { m_.reset(); }
-  void build() override {
-    m_ = std::make_unique<Mesh>();
-    b_ = PeerBuild();
-    diffmesh::build(in_, *m_, b_, nullptr);
-  }
+  using PeerSubject::PeerSubject;
   void describe(LibBench &r) const override {
     r.refused = b_.refused;
     r.faces = m_->n_faces();
@@ -172,28 +159,11 @@ public:
       return cs;
     }));
     r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      std::vector<bool> seen(m.n_halfedges(), false);
-      for (auto h : m.halfedges()) {
-        if (seen[size_t(h.idx())] || !m.is_boundary(h)) continue;
-        auto g = h;
-        do {
-          seen[size_t(g.idx())] = true;
-          cs += uint64_t(m.from_vertex_handle(g).idx() + 1);
-          ++n;
-          g = m.next_halfedge_handle(g);
-        } while (g != h);
-      }
-      return cs;
+      return curve_sweep<Peer>(*m_, m_->n_halfedges(), n);
     }));
     return {r};
   }
 
-private:
-  const PeerInput &in_;
-  std::unique_ptr<Mesh> m_;
-  PeerBuild b_;
 };
 } // namespace
 

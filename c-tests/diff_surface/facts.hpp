@@ -2,6 +2,8 @@
 // must say about the input complex.
 #pragma once
 
+#include "../diff_common/dsu.hpp"
+
 #include "off_reader.hpp"
 
 #include <algorithm>
@@ -19,18 +21,7 @@ struct Facts {
 };
 
 namespace detail {
-struct Dsu {
-  std::vector<uint32_t> p;
-  explicit Dsu(size_t n) : p(n) { std::iota(p.begin(), p.end(), 0u); }
-  uint32_t find(uint32_t x) {
-    while (p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  }
-  void join(uint32_t a, uint32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) p[std::max(a, b)] = std::min(a, b);
-  }
-};
+using diffcommon::Dsu;
 // Union-find with parity (for orientation): parity(x) relative to its root.
 struct ParityDsu {
   std::vector<uint32_t> p;

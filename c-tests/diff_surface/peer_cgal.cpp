@@ -1,5 +1,5 @@
 // CGAL 5.5 Surface_mesh (Epick points): differential answers and benchmark. The only CGAL
-// translation unit: it takes about a minute to compile.
+// translation unit (its headers are slow to compile).
 #include "peers.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -23,24 +23,26 @@ void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fa
     VI h = m.add_vertex(K::Point_3(p[0], p[1], p[2]));
     if (size_t(h) != v) b.vertices_in_order = false;
   }
-  for (size_t t = 0; t < in.n_triangles; ++t) {
-    const uint32_t *c = in.triangles + 3 * t;
-    if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) {
-      b.skipped_degenerate++;
-      continue;
-    }
-    b.submitted++;
-    FI f = m.add_face(VI(c[0]), VI(c[1]), VI(c[2]));
-    if (f == Mesh::null_face()) {
-      if (b.refused_examples.size() < 8) b.refused_examples.push_back(uint32_t(t));
-      b.refused++;
-    } else if (face_input) {
-      face_input->push_back(uint32_t(t));
-    }
-  }
+  add_triangles(in, b, face_input, [&](const uint32_t *c) {
+    return m.add_face(VI(c[0]), VI(c[1]), VI(c[2])) != Mesh::null_face();
+  });
 }
 
 uint32_t id(VI v) { return uint32_t(size_t(v)); }
+
+// The adapter of peers.hpp.
+struct Peer {
+  using Mesh = diffmesh::Mesh;
+  static void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fin) {
+    diffmesh::build(in, m, b, fin);
+  }
+  using H = HI;
+  static auto halfedges(const Mesh &m) { return m.halfedges(); }
+  static size_t index(HI h) { return size_t(h); }
+  static bool border(const Mesh &m, HI h) { return m.is_border(h); }
+  static uint32_t source(const Mesh &m, HI h) { return id(m.source(h)); }
+  static HI next(const Mesh &m, HI h) { return m.next(h); }
+};
 
 } // namespace
 
@@ -101,33 +103,14 @@ Answers cgal_answers(const PeerInput &in, PeerBuild &b) {
     std::sort(a.ef[i].begin(), a.ef[i].end());
     std::sort(a.ee[i].begin(), a.ee[i].end());
   }
-  a.have_curves = true;
-  std::vector<uint8_t> seen(m.number_of_halfedges(), 0);
-  for (HI h : m.halfedges()) {
-    if (!m.is_border(h) || seen[size_t(h)]) continue;
-    std::vector<uint32_t> loop;
-    HI g = h;
-    do {
-      seen[size_t(g)] = 1;
-      loop.push_back(id(m.source(g)));
-      g = m.next(g);
-    } while (g != h && loop.size() <= m.number_of_halfedges());
-    std::reverse(loop.begin(), loop.end());
-    a.curves.push_back(loop);
-  }
+  boundary_loops<Peer>(m, m.number_of_halfedges(), a);
   return a;
 }
 
 namespace {
-class CgalSubject : public Subject {
+class CgalSubject : public PeerSubject<Peer> {
 public:
-  explicit CgalSubject(const PeerInput &in) : in_(in) {}
-  void release() override { m_.reset(); }
-  void build() override {
-    m_ = std::make_unique<Mesh>();
-    b_ = PeerBuild();
-    diffmesh::build(in_, *m_, b_, nullptr);
-  }
+  using PeerSubject::PeerSubject;
   void describe(LibBench &r) const override {
     const Mesh &m = *m_;
     r.refused = b_.refused;
@@ -180,28 +163,11 @@ public:
       return cs;
     }));
     r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      std::vector<bool> seen(m.number_of_halfedges(), false);
-      for (HI h : m.halfedges()) {
-        if (seen[size_t(h)] || !m.is_border(h)) continue;
-        HI g = h;
-        do {
-          seen[size_t(g)] = true;
-          cs += uint64_t(size_t(m.source(g)) + 1);
-          ++n;
-          g = m.next(g);
-        } while (g != h);
-      }
-      return cs;
+      return curve_sweep<Peer>(*m_, m_->number_of_halfedges(), n);
     }));
     return {r};
   }
 
-private:
-  const PeerInput &in_;
-  std::unique_ptr<Mesh> m_;
-  PeerBuild b_;
 };
 } // namespace
 

@@ -66,8 +66,8 @@ struct Caller {
   }
 };
 
-// Estimated seconds of a sweep that costs `per` scans of all half-edges per element (about
-// 1 ns per half-edge scanned, measured on bunny00 at level 1).
+// Estimated seconds of a sweep that costs `per` scans of all half-edges per element, at the
+// 1e-9 s per half-edge scanned this estimate assumes.
 double scan_seconds(size_t elements, size_t nt, double per) { return double(elements) * per * 3.0 * nt * 1e-9; }
 constexpr double kMaxSweepSeconds = 2;
 
@@ -245,9 +245,9 @@ private:
     return r;
   }
 
-  // The header-only C++ wrapper (topomesh.hpp): from level 2 its star ranges and fixed-size
-  // relations step inline over the arrays the Surface keeps (FF from level 1); otherwise
-  // they call the C API. Curves go into a std::vector. It borrows the handle (released
+  // The header-only C++ wrapper (topomesh.hpp): from level 2 its vertex relations and
+  // fixed-size ones step inline over the arrays the Surface keeps (FF from level 1);
+  // otherwise they call the C API. It borrows the handle (released
   // before the Surface is destroyed).
   template <class F> auto with_surface(F &&f) {
     topomesh::Surface surf(m_);
@@ -264,7 +264,7 @@ private:
       return with_surface([&](const Surface &s) {
         uint64_t cs = 0;
         for (uint32_t v = 0; v < nv_; ++v)
-          for (VertexId w : s.vertices_around(VertexId{v})) cs += uint64_t(w.value()) * (v + 1), ++n;
+          for (VertexId w : s.vertex_vertices(VertexId{v})) cs += uint64_t(w.value()) * (v + 1), ++n;
         return cs;
       });
     }));
@@ -272,7 +272,7 @@ private:
       return with_surface([&](const Surface &s) {
         uint64_t cs = 0;
         for (uint32_t v = 0; v < nv_; ++v)
-          for (TriangleId t : s.triangles_around(VertexId{v})) cs += uint64_t(t.value() + 1) * (v + 1), ++n;
+          for (TriangleId t : s.vertex_triangles(VertexId{v})) cs += uint64_t(t.value() + 1) * (v + 1), ++n;
         return cs;
       });
     }));
@@ -566,7 +566,7 @@ void report(Out &out, const Soup &s, std::vector<LibBench> &rows, int reps) {
       rows[2].faces, s.n_triangles(), rows[2].note.c_str(),
       peers_full ? "" : " The peers refused faces, so they sweep a smaller mesh: the ratios flatter them.");
 
-  // The targets, on this mesh.
+  // The speed targets, on this mesh.
   auto find = [&](const std::string &lib, const std::string &path) -> const LibBench * {
     for (auto &r : rows)
       if (r.lib == lib && r.path == path) return &r;

@@ -3,10 +3,10 @@
 // CGAL and topomesh are always built from the SAME arrays held here.
 #pragma once
 
+#include "../diff_common/text.hpp"
+
 #include <array>
-#include <charconv>
 #include <cstdint>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -21,43 +21,9 @@ struct TetSoup {
 };
 
 namespace detail {
-inline bool slurp(const std::string &path, std::string &text) {
-  std::FILE *f = std::fopen(path.c_str(), "rb");
-  if (!f) return false;
-  std::fseek(f, 0, SEEK_END);
-  long size = std::ftell(f);
-  std::fseek(f, 0, SEEK_SET);
-  text.resize(size > 0 ? size_t(size) : 0);
-  size_t got = std::fread(text.data(), 1, text.size(), f);
-  std::fclose(f);
-  return got == text.size();
-}
-// Splits into non-empty lines without '#' comments.
-struct Lines {
-  const char *p, *end;
-  bool next(const char *&b, const char *&e) {
-    while (p < end) {
-      const char *s = p;
-      while (p < end && *p != '\n') ++p;
-      const char *t = p;
-      if (p < end) ++p;
-      for (const char *q = s; q < t; ++q)
-        if (*q == '#') { t = q; break; }
-      while (s < t && (*s == ' ' || *s == '\t' || *s == '\r')) ++s;
-      while (t > s && (t[-1] == ' ' || t[-1] == '\t' || t[-1] == '\r')) --t;
-      if (s < t) { b = s; e = t; return true; }
-    }
-    return false;
-  }
-};
-template <class T> bool num(const char *&b, const char *e, T &out) {
-  while (b < e && (*b == ' ' || *b == '\t')) ++b;
-  if (b < e && *b == '+') ++b;
-  auto r = std::from_chars(b, e, out);
-  if (r.ec != std::errc()) return false;
-  b = r.ptr;
-  return true;
-}
+using difftext::Lines;
+using difftext::num;
+using difftext::slurp;
 } // namespace detail
 
 // Reads tetgen's `<base>.node` and `<base>.ele` (numbered from 0 or 1: the first node's

@@ -1,37 +1,14 @@
 // The C++17 wrapper: RAII, moves, strong ids, ranges, spans, CSR, errors.
-#include <topomesh/topomesh.hpp>
+#include "check.hpp"
 
 #include <array>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <vector>
-
-static int failures = 0;
-#define CHECK(cond)                                                                        \
-    do {                                                                                   \
-        if (!(cond)) {                                                                     \
-            std::fprintf(stderr, "%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #cond); \
-            failures++;                                                                    \
-        }                                                                                  \
-    } while (0)
-
-// Expects `expr` to throw topomesh::Error with `status` and a detail containing `needle`.
-#define CHECK_THROWS(expr, want, needle)                                                   \
-    do {                                                                                   \
-        bool thrown_ = false;                                                              \
-        try {                                                                              \
-            (void)(expr);                                                                  \
-        } catch (const topomesh::Error &e) {                                               \
-            thrown_ = true;                                                                \
-            CHECK(e.status() == (want));                                                   \
-            CHECK(e.detail().find(needle) != std::string::npos);                           \
-            CHECK(std::string(e.what()).find(e.detail()) != std::string::npos);           \
-        }                                                                                  \
-        CHECK(thrown_);                                                                    \
-    } while (0)
 
 using namespace topomesh;
 
@@ -44,11 +21,6 @@ static_assert(!std::is_convertible<VertexId, EdgeId>::value, "strong ids");
 static_assert(!std::is_convertible<std::uint32_t, VertexId>::value, "explicit ids");
 static_assert(std::is_same<Che, Surface>::value, "alias");
 
-template <class T> static std::vector<std::uint32_t> raw(const T &range) {
-    std::vector<std::uint32_t> out;
-    for (auto id : range) out.push_back(id.value());
-    return out;
-}
 
 static const std::vector<std::uint32_t> STRIP = {0, 1, 2, 1, 3, 2};
 static const std::vector<double> STRIP_POS = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
@@ -95,10 +67,10 @@ static void test_moves() {
 
 static void test_relations_and_ranges() {
     Surface s = Surface::from_triangles(STRIP, 4);
-    CHECK((raw(s.vertices_around(VertexId{1})) == std::vector<std::uint32_t>{3, 2, 0}));
-    CHECK((raw(s.edges_around(VertexId{1})) == std::vector<std::uint32_t>{3, 1, 0}));
-    CHECK((raw(s.triangles_around(VertexId{1})) == std::vector<std::uint32_t>{1, 0}));
-    CHECK((raw(s.vertices_around(VertexId{1}).to_vector()) == std::vector<std::uint32_t>{3, 2, 0}));
+    CHECK((raw(s.vertex_vertices(VertexId{1})) == std::vector<std::uint32_t>{3, 2, 0}));
+    CHECK((raw(s.vertex_edges(VertexId{1})) == std::vector<std::uint32_t>{3, 1, 0}));
+    CHECK((raw(s.vertex_triangles(VertexId{1})) == std::vector<std::uint32_t>{1, 0}));
+    CHECK((raw(s.vertex_vertices(VertexId{1}).to_vector()) == std::vector<std::uint32_t>{3, 2, 0}));
     int steps = 0, closing = 0;
     for (const StarStep &st : s.star(VertexId{1})) {
         steps++;
@@ -108,7 +80,7 @@ static void test_relations_and_ranges() {
     }
     CHECK(steps == 3 && closing == 1);
     CHECK_THROWS(s.star(VertexId{4}).begin(), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex 4");
-    CHECK_THROWS(s.vertices_around(VertexId{}).to_vector(), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+    CHECK_THROWS(s.vertex_vertices(VertexId{}), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
 
     auto ev = s.edge_vertices(EdgeId{1});
     CHECK(ev[0] == VertexId{1} && ev[1] == VertexId{2});
@@ -148,35 +120,34 @@ template <class F> static std::vector<std::uint32_t> c_answer(F f, const che_mes
     if (len && f(m, id, out.data(), len, &len) != TOPOMESH_STATUS_OK) return {none};
     return out;
 }
-template <class T, std::size_t N> static std::vector<std::uint32_t> raw(const std::array<T, N> &a) {
-    std::vector<std::uint32_t> out;
-    for (auto id : a) out.push_back(id.value());
-    return out;
+
+// half_edge(id) and is_boundary(id) of the wrapper against the C API's.
+template <class Id, class HalfEdgeFn, class BoundaryFn>
+static void same_half_edge_and_boundary(const Surface &s, Id id, HalfEdgeFn half_edge,
+                                        BoundaryFn is_boundary) {
+    std::uint32_t h = 0;
+    bool b = false;
+    CHECK(half_edge(s.handle(), id.value(), &h) == TOPOMESH_STATUS_OK && s.half_edge(id).value() == h);
+    CHECK(is_boundary(s.handle(), id.value(), &b) == TOPOMESH_STATUS_OK && s.is_boundary(id) == b);
 }
 
-// Every range and fixed-size relation of the wrapper (inline where the level stores the
+// Every relation of the wrapper (inline where the level stores the
 // arrays) gives the C API's answer, at every level and after level changes.
 static void check_against_c_api(const Surface &s) {
     const che_mesh *m = s.handle();
     for (std::uint32_t v = 0; v < s.num_vertices(); v++) {
-        CHECK(raw(s.vertices_around(VertexId{v})) == c_answer(che_vertex_vertices, m, v));
-        CHECK(raw(s.edges_around(VertexId{v})) == c_answer(che_vertex_edges, m, v));
-        CHECK(raw(s.triangles_around(VertexId{v})) == c_answer(che_vertex_triangles, m, v));
+        CHECK(raw(s.vertex_vertices(VertexId{v})) == c_answer(che_vertex_vertices, m, v));
+        CHECK(raw(s.vertex_edges(VertexId{v})) == c_answer(che_vertex_edges, m, v));
+        CHECK(raw(s.vertex_triangles(VertexId{v})) == c_answer(che_vertex_triangles, m, v));
         std::vector<std::uint32_t> star;
         for (const StarStep &st : s.star(VertexId{v})) star.push_back(st.vertex.value());
         CHECK(star == c_answer(che_vertex_vertices, m, v));
-        std::uint32_t h = 0;
-        bool b = false;
-        CHECK(che_vertex_half_edge(m, v, &h) == TOPOMESH_STATUS_OK && s.half_edge(VertexId{v}).value() == h);
-        CHECK(che_vertex_is_boundary(m, v, &b) == TOPOMESH_STATUS_OK && s.is_boundary(VertexId{v}) == b);
+        same_half_edge_and_boundary(s, VertexId{v}, che_vertex_half_edge, che_vertex_is_boundary);
     }
     for (std::uint32_t e = 0; e < s.num_edges(); e++) {
         CHECK(raw(s.edge_vertices(EdgeId{e})) == c_answer(che_edge_vertices, m, e));
         CHECK(raw(s.edge_triangles(EdgeId{e})) == c_answer(che_edge_triangles, m, e));
-        std::uint32_t h = 0;
-        bool b = false;
-        CHECK(che_edge_half_edge(m, e, &h) == TOPOMESH_STATUS_OK && s.half_edge(EdgeId{e}).value() == h);
-        CHECK(che_edge_is_boundary(m, e, &b) == TOPOMESH_STATUS_OK && s.is_boundary(EdgeId{e}) == b);
+        same_half_edge_and_boundary(s, EdgeId{e}, che_edge_half_edge, che_edge_is_boundary);
     }
     for (std::uint32_t t = 0; t < s.num_triangles(); t++) {
         CHECK(raw(s.triangle_vertices(TriangleId{t})) == c_answer(che_triangle_vertices, m, t));
@@ -192,8 +163,8 @@ static void check_against_c_api(const Surface &s) {
                         ne = static_cast<std::uint32_t>(s.num_edges()),
                         nt = static_cast<std::uint32_t>(s.num_triangles()),
                         nh = static_cast<std::uint32_t>(s.num_half_edges());
-    CHECK_THROWS(s.vertices_around(VertexId{nv}).begin(), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
-    CHECK_THROWS(s.triangles_around(VertexId{nv}).begin(), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+    CHECK_THROWS(s.vertex_vertices(VertexId{nv}), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+    CHECK_THROWS(s.vertex_triangles(VertexId{nv}), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
     CHECK_THROWS(s.half_edge(VertexId{nv}), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
     CHECK_THROWS(s.is_boundary(VertexId{nv}), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
     CHECK_THROWS(s.edge_vertices(EdgeId{ne}), TOPOMESH_STATUS_OUT_OF_RANGE, "edge");
@@ -234,9 +205,9 @@ static void test_inline_paths() {
         Surface t = std::move(s);
         check_against_c_api(t);
     }
-    // High degrees (the inline walk goes in batches of 16 steps): an open fan of 40
-    // triangles and a closed one of 32 (a double cone), around vertex 0.
-    for (std::uint32_t k : {15u, 16u, 17u, 32u, 40u}) {
+    // High degrees, around the inline capacity of Ids (32): open fans and closed ones
+    // (double cones) around vertex 0.
+    for (std::uint32_t k : {15u, 16u, 17u, 31u, 32u, 33u, 40u}) {
         std::vector<std::uint32_t> fan;
         for (std::uint32_t i = 0; i < k; i++) fan.insert(fan.end(), {0, 1 + i, 2 + i});
         std::vector<std::uint32_t> cone;
@@ -247,16 +218,127 @@ static void test_inline_paths() {
         for (std::uint32_t level = 1; level <= 3; level++) {
             Surface f = Surface::from_triangles(fan, k + 2, {}, Options{level, false});
             check_against_c_api(f);
-            CHECK(raw(f.vertices_around(VertexId{0})).size() == k + 1);
+            CHECK(raw(f.vertex_vertices(VertexId{0})).size() == k + 1);
             Surface c = Surface::from_triangles(cone, k + 2, {}, Options{level, false});
             check_against_c_api(c);
-            CHECK(raw(c.triangles_around(VertexId{0})).size() == k);
+            CHECK(raw(c.vertex_triangles(VertexId{0})).size() == k);
         }
     }
-    // Ranges taken from a Surface without a handle fail as the C API does.
+    // Relations of a Surface without a handle fail as the C API does.
     Surface empty(nullptr);
-    CHECK_THROWS(empty.vertices_around(VertexId{0}).begin(), TOPOMESH_STATUS_NULL_ARGUMENT, "m");
+    CHECK_THROWS(empty.vertex_vertices(VertexId{0}), TOPOMESH_STATUS_NULL_ARGUMENT, "m");
     CHECK_THROWS(empty.triangle_triangles(TriangleId{0}), TOPOMESH_STATUS_NULL_ARGUMENT, "m");
+}
+
+// The star of every vertex, one step as four raw ids, walked by one iterator.
+static std::vector<std::uint32_t> star_steps(const StarRange &range) {
+    std::vector<std::uint32_t> out;
+    for (const StarStep &st : range)
+        out.insert(out.end(), {st.half_edge.value(), st.vertex.value(), st.edge.value(),
+                               st.triangle.value()});
+    return out;
+}
+
+// Every iterator of a StarRange has its own state: two iterators of one range interleaved,
+// and one const range shared by threads, each give the single-threaded walk.
+static void test_star_range_iterators() {
+    std::vector<std::uint32_t> tris; // an 8 x 8 grid: vertices of degree 2 to 6
+    const std::uint32_t g = 8;
+    for (std::uint32_t i = 0; i < g; i++)
+        for (std::uint32_t j = 0; j < g; j++) {
+            std::uint32_t a = i * (g + 1) + j, b = a + 1, c = a + g + 1, d = c + 1;
+            tris.insert(tris.end(), {a, b, d, a, d, c});
+        }
+    const std::uint32_t nv = (g + 1) * (g + 1);
+    for (std::uint32_t level = 0; level <= 3; level++) {
+        const Surface s = Surface::from_triangles(tris, nv, {}, Options{level, false});
+        std::vector<StarRange> ranges;
+        std::vector<std::vector<std::uint32_t>> expected;
+        for (std::uint32_t v = 0; v < nv; v++) {
+            ranges.push_back(s.star(VertexId{v}));
+            expected.push_back(star_steps(ranges.back()));
+            CHECK(expected.back().size() == 4 * s.vertex_vertices(VertexId{v}).size());
+        }
+
+        // Two iterators of one range, stepped in turn: the second starts when the first is
+        // one step in, and both see every step.
+        for (std::uint32_t v = 0; v < nv; v++) {
+            const StarRange &r = ranges[v];
+            auto a = r.begin();
+            std::vector<std::uint32_t> seen_a, seen_b;
+            if (a != r.end()) {
+                seen_a.push_back(a->vertex.value());
+                ++a;
+            }
+            auto b = r.begin();
+            while (a != r.end() || b != r.end()) {
+                if (b != r.end()) {
+                    seen_b.push_back(b->vertex.value());
+                    ++b;
+                }
+                if (a != r.end()) {
+                    seen_a.push_back(a->vertex.value());
+                    ++a;
+                }
+            }
+            const std::vector<std::uint32_t> want = raw(s.vertex_vertices(VertexId{v}));
+            CHECK(seen_a == want && seen_b == want);
+        }
+
+        // Threads walking the same const ranges many times at once.
+        const std::vector<StarRange> &shared = ranges;
+        std::vector<int> mismatches(4, 0);
+        std::vector<std::thread> threads;
+        for (std::size_t t = 0; t < mismatches.size(); t++)
+            threads.emplace_back([&shared, &expected, &mismatches, t] {
+                for (int round = 0; round < 50; round++)
+                    for (std::size_t v = 0; v < shared.size(); v++)
+                        if (star_steps(shared[v]) != expected[v]) mismatches[t]++;
+            });
+        for (std::thread &t : threads) t.join();
+        for (int m : mismatches) CHECK(m == 0);
+    }
+}
+
+// The old names stay for one release and answer as the new ones.
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+static void test_deprecated_names() {
+    Surface s = Surface::from_triangles(STRIP, 4);
+    CHECK(s.vertices_around(VertexId{1}) == s.vertex_vertices(VertexId{1}));
+    CHECK(s.edges_around(VertexId{1}) == s.vertex_edges(VertexId{1}));
+    CHECK(s.triangles_around(VertexId{1}) == s.vertex_triangles(VertexId{1}));
+    static_assert(std::is_same<VerticesAround, Ids<VertexId>>::value, "old range name");
+    static_assert(std::is_same<IdList<FaceId>, Ids<FaceId>>::value, "old list name");
+}
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+// Ids: inline up to its capacity, on the heap past it (when it grows), a value type.
+static void test_ids() {
+    Ids<VertexId, 32> a;
+    for (std::uint32_t i = 0; i < 40; i++) a.push_back(VertexId{i});
+    CHECK(a.size() == 40 && a[31] == VertexId{31} && a[39] == VertexId{39} && a.back() == VertexId{39});
+    Ids<VertexId, 32> b = a;
+    CHECK(b == a && b.raw().size() == 40 && b.raw()[35] == 35);
+    Ids<VertexId, 32> c = std::move(b);
+    CHECK(c == a);
+    Ids<EdgeId, 3> small;
+    for (std::uint32_t i = 0; i < 3; i++) small.push_back(EdgeId{i});
+    Ids<EdgeId, 3> small2;
+    small2 = small;
+    CHECK(small2 == small && small2.front() == EdgeId{0} && *(small2.end() - 1) == EdgeId{2});
+    bool length = false;
+    try {
+        small.push_back(EdgeId{3});
+    } catch (const std::length_error &) {
+        length = true;
+    }
+    CHECK(length);
+    static_assert(Ids<VertexId>::grows && !Ids<VertexId, 3>::grows, "bounded Ids do not grow");
 }
 
 static void test_views_csr_summary() {
@@ -291,11 +373,15 @@ static void test_views_csr_summary() {
     Csr ff = s.triangle_triangles_csr();
     CHECK((ff.indices == std::vector<std::uint32_t>{none, 1, none, none, none, 0}));
 
-    che_summary sum2 = s.summary();
+    Surface::Summary sum2 = s.summary();
+    static_assert(std::is_same<decltype(sum2.vertices), std::size_t>::value, "C++ counts");
     CHECK(sum2.vertices == 4 && sum2.edges == 5 && sum2.euler_characteristic == 1);
     CHECK(sum2.genus == 0 && sum2.boundary_curves == 1 && sum2.manifold && sum2.orientable);
-    che_build_report r = s.report();
+    const che_summary raw_sum = s.raw_summary();
+    CHECK(raw_sum.vertices == 4 && raw_sum.triangles == sum2.triangles && raw_sum.genus == 0);
+    Surface::BuildReport r = s.report();
     CHECK(r.input_triangles == 2 && r.boundary_edges == 4);
+    CHECK(s.raw_report().input_triangles == 2);
     CHECK(s.report_examples(CHE_REPORT_KIND_DEGENERATE).empty());
     che_memory m = s.memory();
     CHECK(m.half_edge_vertices == 24 && m.positions == 96);
@@ -307,20 +393,14 @@ static void test_views_csr_summary() {
 }
 
 int main() {
-    try {
+    return run_tests("test_che_wrapper", [] {
         test_build_and_counts();
         test_moves();
         test_relations_and_ranges();
         test_inline_paths();
         test_views_csr_summary();
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "unexpected exception: %s\n", e.what());
-        return 1;
-    }
-    if (failures) {
-        std::fprintf(stderr, "test_wrapper: %d check(s) failed\n", failures);
-        return 1;
-    }
-    std::printf("test_wrapper: all checks passed\n");
-    return 0;
+        test_star_range_iterators();
+        test_deprecated_names();
+        test_ids();
+    });
 }

@@ -1,6 +1,8 @@
 // The brute-force oracle and the comparisons (see answers.hpp).
 #include "answers.hpp"
 
+#include "../diff_common/dsu.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <sstream>
@@ -10,18 +12,7 @@ namespace diffvol {
 
 namespace {
 
-struct Dsu {
-  std::vector<uint32_t> p;
-  explicit Dsu(size_t n) : p(n) { std::iota(p.begin(), p.end(), 0u); }
-  uint32_t find(uint32_t x) {
-    while (p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  }
-  void join(uint32_t a, uint32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) p[std::max(a, b)] = std::min(a, b);
-  }
-};
+using diffcommon::Dsu;
 
 std::array<uint32_t, 3> face_opposite(const TetSoup &s, size_t t, int j) {
   std::array<uint32_t, 3> f;

@@ -8,9 +8,9 @@
 // (a repeated vertex id) are kept in the arrays and counted; the caller decides.
 #pragma once
 
-#include <charconv>
+#include "../diff_common/text.hpp"
+
 #include <cstdint>
-#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,49 +37,15 @@ struct Soup {
 };
 
 namespace detail {
-struct Lines {
-  const char *p, *end;
-  // Next non-empty line without its comment; false at the end.
-  bool next(const char *&b, const char *&e) {
-    while (p < end) {
-      const char *s = p;
-      while (p < end && *p != '\n') ++p;
-      const char *t = p;
-      if (p < end) ++p;
-      for (const char *q = s; q < t; ++q)
-        if (*q == '#') { t = q; break; }
-      while (s < t && (*s == ' ' || *s == '\t' || *s == '\r')) ++s;
-      while (t > s && (t[-1] == ' ' || t[-1] == '\t' || t[-1] == '\r')) --t;
-      if (s < t) { b = s; e = t; return true; }
-    }
-    return false;
-  }
-};
-inline void skip_ws(const char *&b, const char *e) {
-  while (b < e && (*b == ' ' || *b == '\t' || *b == '\r')) ++b;
-}
-template <class T> bool num(const char *&b, const char *e, T &out) {
-  skip_ws(b, e);
-  if (b < e && *b == '+') ++b;
-  auto r = std::from_chars(b, e, out);
-  if (r.ec != std::errc()) return false;
-  b = r.ptr;
-  return true;
-}
+using difftext::Lines;
+using difftext::num;
+using difftext::skip_ws;
 } // namespace detail
 
 // Reads `path` into `s`; on failure returns false with a message in `err`.
 inline bool read_off(const std::string &path, Soup &s, std::string &err) {
-  std::FILE *f = std::fopen(path.c_str(), "rb");
-  if (!f) { err = "cannot open " + path; return false; }
   std::string text;
-  std::fseek(f, 0, SEEK_END);
-  long size = std::ftell(f);
-  std::fseek(f, 0, SEEK_SET);
-  text.resize(size_t(size));
-  size_t got = std::fread(text.data(), 1, text.size(), f);
-  std::fclose(f);
-  if (got != text.size()) { err = "short read on " + path; return false; }
+  if (!difftext::slurp(path, text)) { err = "cannot read " + path; return false; }
   s = Soup();
   auto slash = path.find_last_of('/');
   s.name = path.substr(slash == std::string::npos ? 0 : slash + 1);

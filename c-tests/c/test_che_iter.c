@@ -1,56 +1,5 @@
 /* The stack star iterator, the bulk CSR calls and the zero-copy views. */
-#include "check.h"
-
-#include <pthread.h>
-
-/* The star of every vertex equals VV / VE / VF. */
-static void star_matches_relations(const che_mesh *m) {
-    for (uint32_t v = 0; v < che_mesh_num_vertices(m); v++) {
-        uint32_t vv[64], ve[64], vf[64];
-        size_t nvv = 0, nve = 0, nvf = 0;
-        CHECK_OK(che_vertex_vertices(m, v, vv, 64, &nvv));
-        CHECK_OK(che_vertex_edges(m, v, ve, 64, &nve));
-        CHECK_OK(che_vertex_triangles(m, v, vf, 64, &nvf));
-        che_star_iter it;
-        che_star_step s;
-        CHECK_OK(che_star_begin(m, v, &it));
-        size_t i = 0, t = 0;
-        const uint32_t *V = che_mesh_half_edge_vertices(m, NULL);
-        while (che_star_next(&it, &s)) {
-            CHECK(i < nvv && s.vertex == vv[i] && s.edge == ve[i]);
-            if (s.triangle != TOPOMESH_NONE) {
-                CHECK(t < nvf && s.triangle == vf[t]);
-                CHECK(che_tri(s.half_edge) == s.triangle);
-                CHECK(V[s.half_edge] == v && V[che_next(s.half_edge)] == s.vertex);
-                t++;
-            } else {
-                /* The closing incoming boundary half-edge u -> v. */
-                uint32_t o = 0;
-                CHECK(V[s.half_edge] == s.vertex && V[che_next(s.half_edge)] == v);
-                CHECK_OK(che_half_edge_opposite(m, s.half_edge, &o));
-                CHECK(o == TOPOMESH_NONE);
-            }
-            i++;
-        }
-        CHECK(i == nvv && t == nvf);
-        /* Exhausted stays exhausted. */
-        CHECK(!che_star_next(&it, &s));
-
-        /* The library's step gives the same steps as the inline one (from level 2 the
-           inline step reads V, O and the edge-id directory; below it is this call). */
-        che_star_iter a, b;
-        che_star_step sa, sb;
-        CHECK_OK(che_star_begin(m, v, &a));
-        CHECK_OK(che_star_begin(m, v, &b));
-        for (;;) {
-            bool more_a = che_star_advance(&a, &sa), more_b = che_star_next(&b, &sb);
-            CHECK(more_a == more_b);
-            if (!more_a || !more_b) break;
-            CHECK(sa.half_edge == sb.half_edge && sa.vertex == sb.vertex && sa.edge == sb.edge &&
-                  sa.triangle == sb.triangle);
-        }
-    }
-}
+#include "threads.h"
 
 /* The edge-id directory gives che_half_edge_edge inline, from level 1; NULL at level 0. */
 static void edge_ranks_match(const che_mesh *m) {
@@ -97,84 +46,61 @@ static void test_star(void) {
     CHECK(!che_star_advance(&it, NULL));
     for (uint32_t level = 0; level <= 3; level++) {
         CHECK_OK(che_mesh_build_level(m, level));
-        star_matches_relations(m);
         edge_ranks_match(m);
     }
     /* Down and up again: the directory follows the level. */
     for (uint32_t level = 3; level-- > 0;) {
         CHECK_OK(che_mesh_build_level(m, level));
-        star_matches_relations(m);
         edge_ranks_match(m);
     }
     size_t len = 9;
     CHECK(che_mesh_edge_ranks(NULL, &len) == NULL && len == 0);
     che_mesh_free(m);
 
-    /* A 12 x 12 grid (288 triangles, several words of the edge-id directory). */
+    /* A 12 x 12 grid (288 triangles, several words of the edge-id directory) and every
+       fixture. (test_che_star compares the star steps with the relations.) */
     enum { G = 12 };
-    uint32_t grid[2 * G * G * 3];
-    size_t k = 0;
-    for (uint32_t i = 0; i < G; i++)
-        for (uint32_t j = 0; j < G; j++) {
-            uint32_t a = i * (G + 1) + j, b = a + 1, c = a + G + 1, d = c + 1;
-            uint32_t quad[6] = {a, b, d, a, d, c};
-            for (int q = 0; q < 6; q++) grid[k++] = quad[q];
-        }
+    static uint32_t grid[6 * G * G];
+    const size_t nt = grid_triangles(G, G, grid);
     for (uint32_t level = 0; level <= 3; level++) {
-        m = make(grid, 2 * G * G, (G + 1) * (G + 1), NULL, level);
-        star_matches_relations(m);
+        m = make(grid, nt, (G + 1) * (G + 1), NULL, level);
         edge_ranks_match(m);
         che_mesh_free(m);
-    }
-
-    const uint32_t *fixtures[] = {TETRA, BOWTIE, FIN, MOEBIUS, DEGEN};
-    const size_t nt[] = {4, 2, 3, 6, 3}, nv[] = {4, 5, 5, 6, 5};
-    for (int f = 0; f < 5; f++) {
-        for (uint32_t level = 0; level <= 3; level++) {
-            m = make(fixtures[f], nt[f], nv[f], NULL, level);
-            star_matches_relations(m);
+        for (size_t f = 0; f < N_CHE_FIXTURES; f++) {
+            m = make(CHE_FIXTURES[f].tris, CHE_FIXTURES[f].n_tris, CHE_FIXTURES[f].n_verts,
+                     NULL, level);
             edge_ranks_match(m);
             che_mesh_free(m);
         }
     }
 }
 
-typedef topomesh_status (*csr_fn)(const che_mesh *, uint32_t *, size_t, uint32_t *, size_t,
-                                  size_t *, size_t *);
-typedef topomesh_status (*relation_fn)(const che_mesh *, uint32_t, uint32_t *, size_t, size_t *);
+IDS_QUERY(che_mesh, che_vertex_vertices)
+IDS_QUERY(che_mesh, che_vertex_edges)
+IDS_QUERY(che_mesh, che_vertex_triangles)
+IDS_QUERY(che_mesh, che_triangle_triangles)
+CSR_QUERY(che_mesh, che_mesh_vertex_vertices_csr)
+CSR_QUERY(che_mesh, che_mesh_vertex_edges_csr)
+CSR_QUERY(che_mesh, che_mesh_vertex_triangles_csr)
+CSR_QUERY(che_mesh, che_mesh_triangle_triangles_csr)
 
-/* A CSR call agrees with the one-element relation, row by row. */
-static void csr_matches(const che_mesh *m, csr_fn csr, relation_fn rel, size_t rows) {
-    size_t no = 0, ni = 0;
-    CHECK_OK(csr(m, NULL, 0, NULL, 0, &no, &ni));
-    CHECK(no == rows + 1);
-    uint32_t *off = malloc((no + 1) * sizeof *off), *idx = malloc((ni + 1) * sizeof *idx);
-    size_t no2 = 0, ni2 = 0;
-    CHECK_OK(csr(m, off, no, idx, ni, &no2, &ni2));
-    CHECK(no2 == no && ni2 == ni);
-    CHECK(off[0] == 0 && off[rows] == ni);
-    for (uint32_t r = 0; r < rows; r++) {
-        uint32_t b[64];
-        size_t n = 0;
-        CHECK_OK(rel(m, r, b, 64, &n));
-        CHECK(off[r + 1] - off[r] == n);
-        if (off[r + 1] - off[r] == n) CHECK(memcmp(idx + off[r], b, n * sizeof *b) == 0);
-    }
-    free(off);
-    free(idx);
-}
+/* The bulk calls with the relation of their rows: over vertices (0) or triangles (1). */
+static const any_csr CSRS[] = {
+    {q_che_mesh_vertex_vertices_csr, q_che_vertex_vertices, 0},
+    {q_che_mesh_vertex_edges_csr, q_che_vertex_edges, 0},
+    {q_che_mesh_vertex_triangles_csr, q_che_vertex_triangles, 0},
+    {q_che_mesh_triangle_triangles_csr, q_che_triangle_triangles, 1},
+};
+#define N_CSRS (sizeof CSRS / sizeof CSRS[0])
 
 static void test_csr(void) {
-    const uint32_t *fixtures[] = {TETRA, STRIP, BOWTIE, FIN, MOEBIUS, DEGEN};
-    const size_t nt[] = {4, 2, 2, 3, 6, 3}, nv[] = {4, 4, 5, 5, 6, 5};
-    for (int f = 0; f < 6; f++) {
+    for (size_t f = 0; f < N_CHE_FIXTURES; f++) {
         for (uint32_t level = 0; level <= 3; level++) {
-            che_mesh *m = make(fixtures[f], nt[f], nv[f], NULL, level);
-            size_t V = che_mesh_num_vertices(m), T = che_mesh_num_triangles(m);
-            csr_matches(m, che_mesh_vertex_vertices_csr, che_vertex_vertices, V);
-            csr_matches(m, che_mesh_vertex_edges_csr, che_vertex_edges, V);
-            csr_matches(m, che_mesh_vertex_triangles_csr, che_vertex_triangles, V);
-            csr_matches(m, che_mesh_triangle_triangles_csr, che_triangle_triangles, T);
+            che_mesh *m = make(CHE_FIXTURES[f].tris, CHE_FIXTURES[f].n_tris,
+                               CHE_FIXTURES[f].n_verts, NULL, level);
+            for (size_t c = 0; c < N_CSRS; c++)
+                csr_matches(&CSRS[c], m,
+                            CSRS[c].kind ? che_mesh_num_triangles(m) : che_mesh_num_vertices(m));
             /* The bulk calls do not change the level. */
             CHECK(che_mesh_level(m) == level);
             che_mesh_free(m);
@@ -191,31 +117,22 @@ static void test_csr(void) {
     CHECK_OK(che_mesh_triangle_triangles_csr(m, off, 8, idx, 16, &no, &ni));
     CHECK_IDS(off, no, 0, 3, 6);
     CHECK_IDS(idx, ni, N_, 1, N_, N_, N_, 0);
-    /* Too small: both needed lengths reported. */
-    no = ni = 0;
-    CHECK_STATUS(che_mesh_vertex_vertices_csr(m, off, 8, idx, 3, &no, &ni),
-                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-    CHECK(no == 5 && ni == 10);
-    CHECK_DETAIL("indices");
-    CHECK_STATUS(che_mesh_vertex_edges_csr(m, off, 2, idx, 16, &no, &ni),
-                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
-    CHECK(no == 5 && ni == 10);
-    CHECK_DETAIL("offsets");
-    /* One NULL buffer, NULL lengths, NULL handle. */
-    CHECK_STATUS(che_mesh_vertex_triangles_csr(m, NULL, 0, idx, 16, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_DETAIL("offsets");
-    CHECK_STATUS(che_mesh_vertex_triangles_csr(m, off, 8, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_DETAIL("indices");
-    CHECK_STATUS(che_mesh_vertex_triangles_csr(m, off, 8, idx, 16, NULL, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_mesh_vertex_triangles_csr(m, off, 8, idx, 16, &no, NULL),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_mesh_triangle_triangles_csr(NULL, NULL, 0, NULL, 0, &no, &ni),
-                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    /* The buffer rules. */
+    for (size_t c = 0; c < N_CSRS; c++) check_csr_errors(CSRS[c].csr, m);
     che_mesh_free(m);
 }
+
+VIEW_QUERY(che_mesh, che_mesh_half_edge_vertices)
+VIEW_QUERY(che_mesh, che_mesh_opposites)
+VIEW_QUERY(che_mesh, che_mesh_vertex_origins)
+VIEW_QUERY(che_mesh, che_mesh_triangle_origins)
+VIEW_QUERY(che_mesh, che_mesh_vertex_half_edges)
+VIEW_QUERY(che_mesh, che_mesh_edge_half_edges)
+VIEW_QUERY(che_mesh, che_mesh_curve_half_edges)
+static const any_view_fn VIEWS[] = {
+    q_che_mesh_half_edge_vertices, q_che_mesh_opposites,       q_che_mesh_vertex_origins,
+    q_che_mesh_triangle_origins,   q_che_mesh_vertex_half_edges, q_che_mesh_edge_half_edges,
+    q_che_mesh_curve_half_edges};
 
 static void test_views(void) {
     che_mesh *m = make(STRIP, 2, 4, STRIP_POS, 0);
@@ -267,15 +184,9 @@ static void test_views(void) {
     CHECK(che_mesh_opposites(m, &len) != NULL && len == 6);
 
     /* NULL handle: NULL and 0; a NULL len is allowed. */
+    check_null_views(VIEWS, sizeof VIEWS / sizeof VIEWS[0]);
     len = 99;
-    CHECK(che_mesh_half_edge_vertices(NULL, &len) == NULL && len == 0);
-    CHECK(che_mesh_opposites(NULL, NULL) == NULL);
     CHECK(che_mesh_positions(NULL, &len) == NULL && len == 0);
-    CHECK(che_mesh_vertex_origins(NULL, &len) == NULL && len == 0);
-    CHECK(che_mesh_triangle_origins(NULL, &len) == NULL && len == 0);
-    CHECK(che_mesh_vertex_half_edges(NULL, &len) == NULL);
-    CHECK(che_mesh_edge_half_edges(NULL, &len) == NULL);
-    CHECK(che_mesh_curve_half_edges(NULL, &len) == NULL);
     che_mesh_free(m);
 
     /* The O invariants, walked with the inline arithmetic, on a closed mesh. */
@@ -295,16 +206,8 @@ static void test_views(void) {
 
 /* Any number of threads may query one const mesh at once, including the first request of
    an identity origin map (materialised once). */
-#define N_THREADS 4
-typedef struct {
-    const che_mesh *m;
-    const uint32_t *origins;
-    size_t vv_total;
-    int failed;
-} job;
-
 static void *query_everything(void *arg) {
-    job *j = arg;
+    thread_job *j = arg;
     size_t len = 0;
     j->origins = che_mesh_vertex_origins(j->m, &len);
     if (!j->origins || len != che_mesh_num_vertices(j->m)) j->failed = 1;
@@ -320,24 +223,17 @@ static void *query_everything(void *arg) {
         if (che_mesh_vertex_vertices_csr(j->m, NULL, 0, NULL, 0, &no, &ni) != TOPOMESH_STATUS_OK ||
             ni != total)
             j->failed = 1;
-        j->vv_total = total;
+        j->total = total;
     }
     return NULL;
 }
 
 static void test_threads(void) {
     che_mesh *m = make(MOEBIUS, 6, 6, NULL, 1);
-    pthread_t th[N_THREADS];
-    job jobs[N_THREADS];
-    for (int i = 0; i < N_THREADS; i++) {
-        jobs[i] = (job){m, NULL, 0, 0};
-        CHECK(pthread_create(&th[i], NULL, query_everything, &jobs[i]) == 0);
-    }
-    for (int i = 0; i < N_THREADS; i++) CHECK(pthread_join(th[i], NULL) == 0);
-    for (int i = 0; i < N_THREADS; i++) {
-        CHECK(!jobs[i].failed);
-        CHECK(jobs[i].origins == jobs[0].origins && jobs[i].vv_total == jobs[0].vv_total);
-    }
+    size_t vv = 0, n = 0; /* the answer: the total of VV */
+    for (uint32_t v = 0; v < che_mesh_num_vertices(m); v++, vv += n)
+        CHECK_OK(che_vertex_vertices(m, v, NULL, 0, &n));
+    run_threads(m, query_everything, vv);
     che_mesh_free(m);
 }
 
@@ -346,5 +242,5 @@ int main(void) {
     test_star();
     test_csr();
     test_views();
-    return finish("test_iter");
+    return finish("test_che_iter");
 }

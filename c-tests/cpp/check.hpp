@@ -1,0 +1,60 @@
+// Tiny test harness shared by the C++ wrapper tests.
+#ifndef TOPOMESH_TEST_CHECK_HPP
+#define TOPOMESH_TEST_CHECK_HPP
+
+#include <topomesh/topomesh.hpp>
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+static int failures = 0;
+#define CHECK(cond)                                                                        \
+    do {                                                                                   \
+        if (!(cond)) {                                                                     \
+            std::fprintf(stderr, "%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #cond); \
+            failures++;                                                                    \
+        }                                                                                  \
+    } while (0)
+
+// Expects `expr` to throw topomesh::Error with `status` and a detail containing `needle`
+// (which what() repeats).
+#define CHECK_THROWS(expr, want, needle)                                                   \
+    do {                                                                                   \
+        bool thrown_ = false;                                                              \
+        try {                                                                              \
+            (void)(expr);                                                                  \
+        } catch (const topomesh::Error &e) {                                               \
+            thrown_ = true;                                                                \
+            CHECK(e.status() == (want));                                                   \
+            CHECK(e.detail().find(needle) != std::string::npos);                           \
+            CHECK(std::string(e.what()).find(e.detail()) != std::string::npos);           \
+        }                                                                                  \
+        CHECK(thrown_);                                                                    \
+    } while (0)
+
+// The ids of a range as raw integers.
+template <class T> static std::vector<std::uint32_t> raw(const T &range) {
+    std::vector<std::uint32_t> out;
+    for (auto id : range) out.push_back(id.value());
+    return out;
+}
+
+// The end of a test's main: runs `body`, reports an unexpected exception or the failures.
+template <class F> static int run_tests(const char *name, F body) {
+    try {
+        body();
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "unexpected exception: %s\n", e.what());
+        return 1;
+    }
+    if (failures) {
+        std::fprintf(stderr, "%s: %d check(s) failed\n", name, failures);
+        return 1;
+    }
+    std::printf("%s: all checks passed\n", name);
+    return 0;
+}
+
+#endif

@@ -86,7 +86,7 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
   echo "- \`scripts/bench-volumes.sh [--reps N] [--prefix DIR] [--out FILE] [MESH...]\` makes the"
   echo "  meshes (\`scripts/fetch-tets.sh\`, Debian's tetgen on closed surfaces of CGAL's demo data),"
   echo "  installs the package into a temporary prefix (or uses an installed one), builds the harness"
-  echo "  \`topomesh_bench_vol\` (\`c-tests/diffvol/\`, \`-O2 -DNDEBUG\`, no \`-march=native\`) and"
+  echo "  \`topomesh_bench_vol\` (\`c-tests/diff_volume/\`, \`-O2 -DNDEBUG\`, no \`-march=native\`) and"
   echo "  rewrites this page."
   echo "- CGAL: \`Triangulation_3<Epick, Triangulation_data_structure_3>\` with the plain vertex and"
   echo "  cell bases (plus the no-op setters \`build_triangulation\` calls: the leanest triangulation it"
@@ -101,7 +101,7 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
   echo "  sweep runs on one thread."
   echo "- Each build and sweep runs N times; the tables give the median. Checksums count the"
   echo "  entries a sweep visits (boundary NONE excluded): equal counts mean every library did the"
-  echo "  same work. The differential tests (\`c-tests/diffvol/\`) compare the answers element by"
+  echo "  same work. The differential tests (\`c-tests/diff_volume/\`) compare the answers element by"
   echo "  element."
   echo "- The Rust core alone: \`cargo bench --bench chf\` (criterion); it is not recorded here."
   echo

@@ -79,7 +79,7 @@ out="$root/BENCHMARKS.md"
   echo
   echo "- \`scripts/bench.sh [--reps N] [MESH...]\` fetches the meshes (\`scripts/fetch-meshes.sh\`),"
   echo "  installs the package into a temporary prefix, builds the harness \`topomesh_bench\`"
-  echo "  (\`c-tests/diff/bench.cpp\`) against it and rewrites this page."
+  echo "  (\`c-tests/diff_surface/bench.cpp\`) against it and rewrites this page."
   echo "- Each build and sweep runs N times, interleaved across the libraries (round r builds each"
   echo "  of them in turn, from a different first one, then runs each sweep in turn); the tables give"
   echo "  the median of the benchmark thread's CPU time (CLOCK_THREAD_CPUTIME_ID, user + system: the"

@@ -18,6 +18,8 @@
 #endif
 
 static int check_failures UNUSED_ = 0;
+/* How many checks ran: finish() reports it, so a rewrite can show it dropped none. */
+static unsigned long check_count UNUSED_ = 0;
 
 static inline const char *last_error(void) {
     static char buf[1024];
@@ -29,6 +31,7 @@ static inline const char *last_error(void) {
 
 #define CHECK(cond)                                                                        \
     do {                                                                                   \
+        check_count++;                                                                     \
         if (!(cond)) {                                                                     \
             fprintf(stderr, "%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #cond);      \
             check_failures++;                                                              \
@@ -38,6 +41,7 @@ static inline const char *last_error(void) {
 /* Expects a status; prints the detail on a mismatch. */
 #define CHECK_STATUS(expr, want)                                                           \
     do {                                                                                   \
+        check_count++;                                                                     \
         topomesh_status got_ = (expr);                                                     \
         topomesh_status want_ = (want);                                                    \
         if (got_ != want_) {                                                               \
@@ -53,6 +57,7 @@ static inline const char *last_error(void) {
 /* The last error detail contains `needle`. */
 #define CHECK_DETAIL(needle)                                                               \
     do {                                                                                   \
+        check_count++;                                                                     \
         const char *d_ = last_error();                                                     \
         if (!strstr(d_, (needle))) {                                                       \
             fprintf(stderr, "%s:%d: detail \"%s\" lacks \"%s\"\n", __FILE__, __LINE__, d_, \
@@ -86,6 +91,7 @@ static inline void print_ids_(const char *what, const uint32_t *got, size_t n) {
 /* CHECK_IDS(buf, len, a, b, c): buf[0..len) == {a, b, c}. */
 #define CHECK_IDS(got, n, ...)                                                             \
     do {                                                                                   \
+        check_count++;                                                                     \
         if (!ids_equal_((got), (n), NARGS_(__VA_ARGS__), __VA_ARGS__)) {                   \
             fprintf(stderr, "%s:%d: %s[0..%s) != {%s}\n", __FILE__, __LINE__, #got, #n,    \
                     #__VA_ARGS__);                                                         \
@@ -120,7 +126,7 @@ static inline int finish(const char *name) {
         fprintf(stderr, "%s: %d check(s) failed\n", name, check_failures);
         return 1;
     }
-    printf("%s: all checks passed\n", name);
+    printf("%s: all %lu checks passed\n", name, check_count);
     return 0;
 }
 
@@ -270,6 +276,7 @@ static inline void same_answers(const char *name, uint32_t level, const any_quer
             size_t na = 0, nb = 0;
             CHECK_OK(qs[q].fn(ref, id, a, 64, &na));
             CHECK_OK(qs[q].fn(m, id, b, 64, &nb));
+            check_count++;
             if (na != nb || memcmp(a, b, na * sizeof *a)) {
                 fprintf(stderr, "%s: %s(%u) differs at level %u from level 3\n", name,
                         qs[q].name, (unsigned)id, (unsigned)level);

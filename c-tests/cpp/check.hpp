@@ -10,8 +10,11 @@
 #include <vector>
 
 static int failures = 0;
+// How many checks ran: run_tests() reports it, so a rewrite can show it dropped none.
+static unsigned long check_count = 0;
 #define CHECK(cond)                                                                        \
     do {                                                                                   \
+        check_count++;                                                                     \
         if (!(cond)) {                                                                     \
             std::fprintf(stderr, "%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #cond); \
             failures++;                                                                    \
@@ -53,7 +56,7 @@ template <class F> static int run_tests(const char *name, F body) {
         std::fprintf(stderr, "%s: %d check(s) failed\n", name, failures);
         return 1;
     }
-    std::printf("%s: all checks passed\n", name);
+    std::printf("%s: all %lu checks passed\n", name, check_count);
     return 0;
 }
 

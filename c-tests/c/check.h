@@ -174,15 +174,65 @@ typedef size_t (*any_count_fn)(const void *m, int kind);
         if (len) *len = 1;                                                                 \
         return fn((const mesh_t *)m, id, out);                                             \
     }
+/* The flag starts as out[0] says, so a table row (which seeds out[0] with the opposite of
+   its answer) sees a flag the call did not write. */
 #define FLAG_QUERY(mesh_t, fn)                                                             \
     QUERY_HEAD_(fn) {                                                                      \
-        bool b = false;                                                                    \
+        bool b = out ? out[0] != 0 : false;                                                \
         const topomesh_status s = fn((const mesh_t *)m, id, out ? &b : NULL);              \
         (void)cap;                                                                         \
         if (out) out[0] = b;                                                               \
         if (len) *len = 1;                                                                 \
         return s;                                                                          \
     }
+
+/* A table of expected answers: one query (a q_<function> adapter) on one element, with
+   the status it gives and, when that is OK, its ids; when it is an error, a text that the
+   detail contains (or NULL). check_answers walks a table: two checks per OK row (status,
+   ids), one or two per error row (status, detail), as the CHECK_OK/CHECK_IDS pairs did. */
+typedef struct answer_row {
+    const char *name;
+    any_query_fn fn;
+    uint32_t id;
+    topomesh_status status;
+    const char *detail;
+    size_t n;
+    uint32_t want[12];
+} answer_row;
+#define ROW(fn, id, ...)                                                                   \
+    { #fn, q_##fn, (id), TOPOMESH_STATUS_OK, NULL, NARGS_(__VA_ARGS__), {__VA_ARGS__} }
+#define ROW_FAILS(fn, id, status, detail) { #fn, q_##fn, (id), (status), (detail), 0, {0} }
+#define N_ROWS(t) (sizeof(t) / sizeof((t)[0]))
+
+static inline void check_answers(const char *mesh, const void *m, const answer_row *rows,
+                                 size_t n_rows) {
+    for (size_t r = 0; r < n_rows; r++) {
+        const answer_row *w = &rows[r];
+        uint32_t got[16];
+        size_t len = 0;
+        /* Seeded unlike the answer, so an id the call does not write is a mismatch. */
+        for (size_t i = 0; i < 16; i++) got[i] = i < w->n && w->want[i] == 0;
+        const topomesh_status s = w->fn(m, w->id, got, 16, &len);
+        check_count++;
+        if (s != w->status) {
+            fprintf(stderr, "%s: %s(%u) gave %s, expected %s; detail: %s\n", mesh, w->name,
+                    (unsigned)w->id, topomesh_status_str(s), topomesh_status_str(w->status),
+                    last_error());
+            check_failures++;
+        }
+        if (w->status != TOPOMESH_STATUS_OK) {
+            if (w->detail) CHECK_DETAIL(w->detail);
+            continue;
+        }
+        check_count++;
+        if (len != w->n || memcmp(got, w->want, len * sizeof *got) != 0) {
+            fprintf(stderr, "%s: %s(%u) gave other ids\n", mesh, w->name, (unsigned)w->id);
+            print_ids_("got", got, len);
+            print_ids_("expected", w->want, w->n);
+            check_failures++;
+        }
+    }
+}
 
 /* A bulk (CSR) call of either library, adapted by CSR_QUERY to a mesh given as const void *,
    with the per-element relation whose rows it holds. */
@@ -272,7 +322,7 @@ static inline void same_answers(const char *name, uint32_t level, const any_quer
     for (size_t q = 0; q < nq; q++) {
         const size_t n = count(ref, qs[q].kind);
         for (uint32_t id = 0; id < n; id++) {
-            uint32_t a[64], b[64];
+            uint32_t a[64] = {0}, b[64] = {0};
             size_t na = 0, nb = 0;
             CHECK_OK(qs[q].fn(ref, id, a, 64, &na));
             CHECK_OK(qs[q].fn(m, id, b, 64, &nb));

@@ -39,174 +39,140 @@ static const any_query QUERIES[] = {
 #define N_QUERIES (sizeof QUERIES / sizeof QUERIES[0])
 #define N_RELATIONS 16
 
+/* One tetrahedron at level 2. Half-face i is opposite vertex i: faces f0 = (1,2,3),
+   f1 = (0,3,2), f2 = (0,1,3), f3 = (0,2,1), outward. Edge k is the local pair k: (0,1) (0,2)
+   (0,3) (1,2) (1,3) (2,3), directed by its smallest boundary half-edge. */
+static const answer_row SINGLE_ANSWERS[] = {
+    ROW(chf_vertex_vertices, 0, 1, 2, 3),
+    ROW(chf_vertex_edges, 0, 0, 1, 2),
+    ROW(chf_vertex_faces, 0, 1, 2, 3),
+    ROW(chf_vertex_tetrahedra, 0, 0),
+    ROW(chf_vertex_vertices, 3, 0, 1, 2),
+    ROW(chf_vertex_edges, 3, 2, 4, 5),
+    ROW(chf_vertex_faces, 3, 0, 1, 2),
+    ROW(chf_edge_vertices, 0, 0, 1),
+    ROW(chf_edge_vertices, 1, 2, 0),
+    ROW(chf_edge_vertices, 2, 0, 3),
+    ROW(chf_edge_vertices, 3, 1, 2),
+    ROW(chf_edge_vertices, 4, 3, 1),
+    ROW(chf_edge_vertices, 5, 2, 3),
+    ROW(chf_edge_tetrahedra, 0, 0),
+    ROW(chf_edge_tetrahedra, 1, 0),
+    ROW(chf_edge_tetrahedra, 2, 0),
+    ROW(chf_edge_tetrahedra, 3, 0),
+    ROW(chf_edge_tetrahedra, 4, 0),
+    ROW(chf_edge_tetrahedra, 5, 0),
+    ROW(chf_edge_faces, 0, 2, 3),
+    ROW(chf_edge_edges, 0, 4, 2, 1, 3),
+    ROW(chf_face_vertices, 0, 1, 2, 3),
+    ROW(chf_face_vertices, 1, 0, 3, 2),
+    ROW(chf_face_vertices, 3, 0, 2, 1),
+    ROW(chf_face_edges, 0, 3, 5, 4),
+    ROW(chf_face_edges, 1, 2, 5, 1),
+    ROW(chf_face_faces, 0, 1, 2, 3),
+    ROW(chf_face_faces, 2, 3, 0, 1),
+    ROW(chf_face_tetrahedra, 0, 0),
+    ROW(chf_tetrahedron_vertices, 0, 0, 1, 2, 3),
+    ROW(chf_tetrahedron_edges, 0, 0, 1, 2, 3, 4, 5),
+    ROW(chf_tetrahedron_faces, 0, 0, 1, 2, 3),
+    ROW(chf_tetrahedron_tetrahedra, 0, N_, N_, N_, N_),
+    ROW(chf_vertex_is_boundary, 0, 1),
+    ROW(chf_vertex_is_boundary, 1, 1),
+    ROW(chf_vertex_is_boundary, 2, 1),
+    ROW(chf_vertex_is_boundary, 3, 1),
+    ROW(chf_face_is_boundary, 0, 1),
+    ROW(chf_face_is_boundary, 1, 1),
+    ROW(chf_face_is_boundary, 2, 1),
+    ROW(chf_face_is_boundary, 3, 1),
+};
+
 static void test_single(void) {
     chf_mesh *m = make_chf(TET, 1, 4, TET_POS, 2);
+    check_answers("single", m, SINGLE_ANSWERS, N_ROWS(SINGLE_ANSWERS));
     uint32_t b[16];
     size_t n = 0;
-    /* Half-face i is opposite vertex i: faces f0 = (1,2,3), f1 = (0,3,2), f2 = (0,1,3),
-       f3 = (0,2,1), outward. Edge k is the local pair k: (0,1) (0,2) (0,3) (1,2) (1,3) (2,3),
-       directed by its smallest boundary half-edge. */
-    CHECK_OK(chf_vertex_vertices(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 1, 2, 3);
-    CHECK_OK(chf_vertex_edges(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1, 2);
-    CHECK_OK(chf_vertex_faces(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 1, 2, 3);
-    CHECK_OK(chf_vertex_tetrahedra(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 0);
-    CHECK_OK(chf_vertex_vertices(m, 3, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1, 2);
-    CHECK_OK(chf_vertex_edges(m, 3, b, 16, &n));
-    CHECK_IDS(b, n, 2, 4, 5);
-    CHECK_OK(chf_vertex_faces(m, 3, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1, 2);
-    const uint32_t ev[6][2] = {{0, 1}, {2, 0}, {0, 3}, {1, 2}, {3, 1}, {2, 3}};
     for (uint32_t e = 0; e < 6; e++) {
-        CHECK_OK(chf_edge_vertices(m, e, b, 16, &n));
-        CHECK_IDS(b, n, ev[e][0], ev[e][1]);
-        CHECK_OK(chf_edge_tetrahedra(m, e, b, 16, &n));
-        CHECK_IDS(b, n, 0);
         CHECK_OK(chf_edge_faces(m, e, b, 16, &n));
         CHECK(n == 2);
-    }
-    CHECK_OK(chf_edge_faces(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 2, 3);
-    CHECK_OK(chf_edge_edges(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 4, 2, 1, 3);
-    CHECK_OK(chf_face_vertices(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 1, 2, 3);
-    CHECK_OK(chf_face_vertices(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 0, 3, 2);
-    CHECK_OK(chf_face_vertices(m, 3, b, 16, &n));
-    CHECK_IDS(b, n, 0, 2, 1);
-    CHECK_OK(chf_face_edges(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 3, 5, 4);
-    CHECK_OK(chf_face_edges(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 2, 5, 1);
-    CHECK_OK(chf_face_faces(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 1, 2, 3);
-    CHECK_OK(chf_face_faces(m, 2, b, 16, &n));
-    CHECK_IDS(b, n, 3, 0, 1);
-    CHECK_OK(chf_face_tetrahedra(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 0);
-    CHECK_OK(chf_tetrahedron_vertices(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1, 2, 3);
-    CHECK_OK(chf_tetrahedron_edges(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1, 2, 3, 4, 5);
-    CHECK_OK(chf_tetrahedron_faces(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1, 2, 3);
-    CHECK_OK(chf_tetrahedron_tetrahedra(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, N_, N_, N_, N_);
-    bool yes = false;
-    for (uint32_t x = 0; x < 4; x++) {
-        CHECK_OK(chf_vertex_is_boundary(m, x, &yes));
-        CHECK(yes);
-        CHECK_OK(chf_face_is_boundary(m, x, &yes));
-        CHECK(yes);
     }
     chf_mesh_free(m);
 }
 
+/* Two tetrahedra at level 2. Faces: half-faces 0 1 2 3 5 6 7 (4 is the twin of 0):
+   f4 = (4,2,3), f5 = (4,1,2), f6 = (4,3,1). Edges: the six of tetrahedron 0, then (4,1)
+   (4,3) (4,2). Around a vertex the answers come in increasing order; around the shared edge
+   (1,2) (e3) from the boundary face f3 through f0 to f5. */
+static const answer_row PAIR_ANSWERS[] = {
+    ROW(chf_vertex_vertices, 1, 0, 2, 3, 4),
+    ROW(chf_vertex_edges, 1, 0, 3, 4, 6),
+    ROW(chf_vertex_faces, 1, 0, 2, 3, 5, 6),
+    ROW(chf_vertex_tetrahedra, 1, 0, 1),
+    ROW(chf_vertex_vertices, 4, 1, 2, 3),
+    ROW(chf_vertex_edges, 4, 6, 7, 8),
+    ROW(chf_vertex_faces, 4, 4, 5, 6),
+    ROW(chf_vertex_tetrahedra, 4, 1),
+    ROW(chf_edge_vertices, 0, 0, 1),
+    ROW(chf_edge_vertices, 1, 2, 0),
+    ROW(chf_edge_vertices, 2, 0, 3),
+    ROW(chf_edge_vertices, 3, 2, 1),
+    ROW(chf_edge_vertices, 4, 1, 3),
+    ROW(chf_edge_vertices, 5, 3, 2),
+    ROW(chf_edge_vertices, 6, 4, 1),
+    ROW(chf_edge_vertices, 7, 3, 4),
+    ROW(chf_edge_vertices, 8, 4, 2),
+    ROW(chf_edge_tetrahedra, 3, 0, 1),
+    ROW(chf_edge_faces, 3, 3, 0, 5),
+    ROW(chf_edge_edges, 3, 0, 1, 5, 4, 8, 6),
+    ROW(chf_edge_tetrahedra, 6, 1),
+    ROW(chf_face_vertices, 4, 4, 2, 3),
+    ROW(chf_face_vertices, 6, 4, 3, 1),
+    ROW(chf_face_edges, 0, 3, 5, 4),
+    ROW(chf_face_edges, 4, 8, 5, 7),
+    ROW(chf_face_faces, 0, 1, 2, 3, 4, 5, 6),
+    ROW(chf_face_faces, 1, 2, 3, 0),
+    ROW(chf_face_tetrahedra, 0, 0, 1),
+    ROW(chf_face_tetrahedra, 4, 1),
+    ROW(chf_tetrahedron_vertices, 1, 4, 1, 3, 2),
+    ROW(chf_tetrahedron_edges, 1, 6, 7, 8, 4, 3, 5),
+    ROW(chf_tetrahedron_faces, 1, 0, 4, 5, 6),
+    ROW(chf_tetrahedron_tetrahedra, 0, 1, N_, N_, N_),
+    ROW(chf_tetrahedron_tetrahedra, 1, 0, N_, N_, N_),
+    ROW(chf_half_face_opposite, 0, 4),
+    ROW(chf_half_face_opposite, 4, 0),
+    ROW(chf_half_face_opposite, 1, N_),
+    ROW(chf_half_face_face, 4, 0),
+    ROW(chf_half_face_face, 7, 6),
+    ROW(chf_face_half_face, 4, 5),
+    ROW(chf_vertex_half_face, 1, 2), /* the first boundary half-face holding vertex 1 */
+    ROW(chf_vertex_half_face, 4, 5),
+    ROW(chf_face_is_boundary, 0, 0),
+    ROW(chf_face_is_boundary, 1, 1),
+    ROW(chf_edge_is_boundary, 0, 1),
+    ROW(chf_edge_is_boundary, 1, 1),
+    ROW(chf_edge_is_boundary, 2, 1),
+    ROW(chf_edge_is_boundary, 3, 1),
+    ROW(chf_edge_is_boundary, 4, 1),
+    ROW(chf_edge_is_boundary, 5, 1),
+    ROW(chf_edge_is_boundary, 6, 1),
+    ROW(chf_edge_is_boundary, 7, 1),
+    ROW(chf_edge_is_boundary, 8, 1),
+    ROW(chf_vertex_is_boundary, 0, 1),
+    ROW(chf_vertex_is_boundary, 1, 1),
+    ROW(chf_vertex_is_boundary, 2, 1),
+    ROW(chf_vertex_is_boundary, 3, 1),
+    ROW(chf_vertex_is_boundary, 4, 1),
+};
+
 static void test_pair(void) {
     chf_mesh *m = make_chf(PAIR, 2, 5, PAIR_POS, 2);
-    uint32_t b[16];
-    size_t n = 0;
-    /* Faces: half-faces 0 1 2 3 5 6 7 (4 is the twin of 0): f4 = (4,2,3), f5 = (4,1,2),
-       f6 = (4,3,1). Edges: the six of tetrahedron 0, then (4,1) (4,3) (4,2). */
-    CHECK_OK(chf_vertex_vertices(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 0, 2, 3, 4);
-    CHECK_OK(chf_vertex_edges(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 0, 3, 4, 6);
-    CHECK_OK(chf_vertex_faces(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 0, 2, 3, 5, 6);
-    CHECK_OK(chf_vertex_tetrahedra(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1);
-    /* Around a vertex: increasing order. */
-    CHECK_OK(chf_vertex_vertices(m, 4, b, 16, &n));
-    CHECK_IDS(b, n, 1, 2, 3);
-    CHECK_OK(chf_vertex_edges(m, 4, b, 16, &n));
-    CHECK_IDS(b, n, 6, 7, 8);
-    CHECK_OK(chf_vertex_faces(m, 4, b, 16, &n));
-    CHECK_IDS(b, n, 4, 5, 6);
-    CHECK_OK(chf_vertex_tetrahedra(m, 4, b, 16, &n));
-    CHECK_IDS(b, n, 1);
-    const uint32_t ev[9][2] = {{0, 1}, {2, 0}, {0, 3}, {2, 1}, {1, 3},
-                               {3, 2}, {4, 1}, {3, 4}, {4, 2}};
-    for (uint32_t e = 0; e < 9; e++) {
-        CHECK_OK(chf_edge_vertices(m, e, b, 16, &n));
-        CHECK_IDS(b, n, ev[e][0], ev[e][1]);
-    }
-    /* Around the shared edge (1,2): from the boundary face f3 through f0 to f5. */
-    CHECK_OK(chf_edge_tetrahedra(m, 3, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1);
-    CHECK_OK(chf_edge_faces(m, 3, b, 16, &n));
-    CHECK_IDS(b, n, 3, 0, 5);
-    CHECK_OK(chf_edge_edges(m, 3, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1, 5, 4, 8, 6);
-    CHECK_OK(chf_edge_tetrahedra(m, 6, b, 16, &n));
-    CHECK_IDS(b, n, 1);
-    CHECK_OK(chf_face_vertices(m, 4, b, 16, &n));
-    CHECK_IDS(b, n, 4, 2, 3);
-    CHECK_OK(chf_face_vertices(m, 6, b, 16, &n));
-    CHECK_IDS(b, n, 4, 3, 1);
-    CHECK_OK(chf_face_edges(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 3, 5, 4);
-    CHECK_OK(chf_face_edges(m, 4, b, 16, &n));
-    CHECK_IDS(b, n, 8, 5, 7);
-    CHECK_OK(chf_face_faces(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 1, 2, 3, 4, 5, 6);
-    CHECK_OK(chf_face_faces(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 2, 3, 0);
-    CHECK_OK(chf_face_tetrahedra(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 0, 1);
-    CHECK_OK(chf_face_tetrahedra(m, 4, b, 16, &n));
-    CHECK_IDS(b, n, 1);
-    CHECK_OK(chf_tetrahedron_vertices(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 4, 1, 3, 2);
-    CHECK_OK(chf_tetrahedron_edges(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 6, 7, 8, 4, 3, 5);
-    CHECK_OK(chf_tetrahedron_faces(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 0, 4, 5, 6);
-    CHECK_OK(chf_tetrahedron_tetrahedra(m, 0, b, 16, &n));
-    CHECK_IDS(b, n, 1, N_, N_, N_);
-    CHECK_OK(chf_tetrahedron_tetrahedra(m, 1, b, 16, &n));
-    CHECK_IDS(b, n, 0, N_, N_, N_);
-
-    /* Half-face helpers and boundary tests. */
-    uint32_t x = 0;
-    bool yes = false;
-    CHECK_OK(chf_half_face_opposite(m, 0, &x));
-    CHECK(x == 4);
-    CHECK_OK(chf_half_face_opposite(m, 4, &x));
-    CHECK(x == 0);
-    CHECK_OK(chf_half_face_opposite(m, 1, &x));
-    CHECK(x == TOPOMESH_NONE);
-    CHECK_OK(chf_half_face_face(m, 4, &x));
-    CHECK(x == 0);
-    CHECK_OK(chf_half_face_face(m, 7, &x));
-    CHECK(x == 6);
-    CHECK_OK(chf_face_half_face(m, 4, &x));
-    CHECK(x == 5);
-    CHECK_OK(chf_vertex_half_face(m, 1, &x));
-    CHECK(x == 2); /* the first boundary half-face holding vertex 1 */
-    CHECK_OK(chf_vertex_half_face(m, 4, &x));
-    CHECK(x == 5);
-    CHECK_OK(chf_face_is_boundary(m, 0, &yes));
-    CHECK(!yes);
-    CHECK_OK(chf_face_is_boundary(m, 1, &yes));
-    CHECK(yes);
-    for (uint32_t e = 0; e < 9; e++) {
-        CHECK_OK(chf_edge_is_boundary(m, e, &yes));
-        CHECK(yes);
-    }
-    for (uint32_t v = 0; v < 5; v++) {
-        CHECK_OK(chf_vertex_is_boundary(m, v, &yes));
-        CHECK(yes);
-    }
+    check_answers("pair", m, PAIR_ANSWERS, N_ROWS(PAIR_ANSWERS));
     chf_mesh_free(m);
 
     /* The cube has one interior face per corner tetrahedron, and interior edges none. */
     m = make_chf(CUBE, 5, 8, CUBE_POS, 2);
+    uint32_t b[16];
+    size_t n = 0;
+    bool yes = false;
     size_t interior = 0;
     for (uint32_t f = 0; f < chf_mesh_num_faces(m); f++) {
         CHECK_OK(chf_face_is_boundary(m, f, &yes));

@@ -338,6 +338,43 @@ static inline void same_answers(const char *name, uint32_t level, const any_quer
     }
 }
 
+/* Two zero-copy views (pointer and length) hold the same ids. */
+static inline int same_view(const uint32_t *a, size_t la, const uint32_t *b, size_t lb) {
+    return a && b && la == lb && (la == 0 || memcmp(a, b, la * sizeof *a) == 0);
+}
+
+/* What the level test needs of a library: its queries, the count of each of its `n_kinds`
+   element kinds, the views that level 3 adds, raising a mesh's level and freeing it. */
+typedef struct level_suite {
+    const any_query *queries;
+    size_t n_queries;
+    any_count_fn count;
+    int n_kinds;
+    const any_view_fn *views;
+    size_t n_views;
+    topomesh_status (*build_level)(void *m, uint32_t level);
+    void (*free)(void *m);
+} level_suite;
+
+/* Meshes lower[0..3) (built from ref's input at levels 0, 1, 2) have ref's counts and give
+   every answer ref (level 3) gives; raised to level 3, they have ref's views. Frees them. */
+static inline void same_as_level_3(const char *name, const level_suite *s, const void *ref,
+                                   void *const lower[3]) {
+    for (uint32_t level = 0; level < 3; level++) {
+        void *m = lower[level];
+        for (int kind = 0; kind < s->n_kinds; kind++)
+            CHECK(s->count(m, kind) == s->count(ref, kind));
+        same_answers(name, level, s->queries, s->n_queries, s->count, ref, m);
+        CHECK_OK(s->build_level(m, 3));
+        for (size_t v = 0; v < s->n_views; v++) {
+            size_t la = 0, lb = 0;
+            const uint32_t *a = s->views[v](ref, &la), *b = s->views[v](m, &lb);
+            CHECK(same_view(a, la, b, lb));
+        }
+        s->free(m);
+    }
+}
+
 /* The errors of a single-value helper (a VALUE_QUERY or FLAG_QUERY) on mesh m, whose ids
    run over `count` elements: a NULL handle or out, and id `count`, out of range (the
    detail names it as `what` and the id). */
@@ -351,11 +388,6 @@ static inline void check_value_errors(any_query_fn f, const void *m, size_t coun
     char detail[64];
     snprintf(detail, sizeof detail, "%s %u", what, (unsigned)count);
     CHECK_DETAIL(detail);
-}
-
-/* Two zero-copy views (pointer and length) hold the same ids. */
-static inline int same_view(const uint32_t *a, size_t la, const uint32_t *b, size_t lb) {
-    return a && b && la == lb && (la == 0 || memcmp(a, b, la * sizeof *a) == 0);
 }
 
 /* The buffer rules and errors of a relation on mesh m (whose ids run over `count`

@@ -154,24 +154,22 @@ static void test_buffer_rules(void) {
     che_mesh_free(strip);
 }
 
+VIEW_QUERY(che_mesh, che_mesh_opposites)
+VIEW_QUERY(che_mesh, che_mesh_vertex_half_edges)
+static const any_view_fn LEVEL_3_VIEWS[] = {q_che_mesh_opposites, q_che_mesh_vertex_half_edges};
+static topomesh_status build_level(void *m, uint32_t level) {
+    return che_mesh_build_level(m, level);
+}
+static void free_mesh(void *m) { che_mesh_free(m); }
+static const level_suite SUITE = {QUERIES, N_QUERIES, count_of, HALF_EDGE + 1, LEVEL_3_VIEWS,
+                                  2, build_level, free_mesh};
+
 /* Every relation and helper gives the same answer at levels 0, 1, 2 as at level 3. */
 static void same_at_every_level(const char *name, const uint32_t *tris, size_t nt, size_t nv) {
     che_mesh *ref = make(tris, nt, nv, NULL, 3);
-    for (uint32_t level = 0; level < 3; level++) {
-        che_mesh *m = make(tris, nt, nv, NULL, level);
-        for (int kind = VERTEX; kind <= HALF_EDGE; kind++)
-            CHECK(count_of(m, kind) == count_of(ref, kind));
-        same_answers(name, level, QUERIES, N_QUERIES, count_of, ref, m);
-        /* Raising this mesh to level 3 gives the reference's views. */
-        CHECK_OK(che_mesh_build_level(m, 3));
-        size_t la = 0, lb = 0;
-        const uint32_t *a = che_mesh_opposites(ref, &la), *b = che_mesh_opposites(m, &lb);
-        CHECK(same_view(a, la, b, lb));
-        a = che_mesh_vertex_half_edges(ref, &la);
-        b = che_mesh_vertex_half_edges(m, &lb);
-        CHECK(same_view(a, la, b, lb));
-        che_mesh_free(m);
-    }
+    void *lower[3];
+    for (uint32_t level = 0; level < 3; level++) lower[level] = make(tris, nt, nv, NULL, level);
+    same_as_level_3(name, &SUITE, ref, lower);
     che_mesh_free(ref);
 }
 

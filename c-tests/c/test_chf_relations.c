@@ -260,29 +260,27 @@ static void invariants(const char *name, const chf_mesh *m) {
     if (check_failures != failures_before) fprintf(stderr, "  (invariants of %s)\n", name);
 }
 
-/* Every relation and helper gives the same answer at levels 0, 1, 2 as at level 3. */
+VIEW_QUERY(chf_mesh, chf_mesh_opposites)
+VIEW_QUERY(chf_mesh, chf_mesh_vertex_half_faces)
+VIEW_QUERY(chf_mesh, chf_mesh_face_half_faces)
+static const any_view_fn LEVEL_3_VIEWS[] = {q_chf_mesh_opposites, q_chf_mesh_vertex_half_faces,
+                                            q_chf_mesh_face_half_faces};
+static topomesh_status build_level(void *m, uint32_t level) {
+    return chf_mesh_build_level(m, level);
+}
+static void free_mesh(void *m) { chf_mesh_free(m); }
+static const level_suite SUITE = {QUERIES, N_QUERIES, count_of, HALF_FACE + 1, LEVEL_3_VIEWS,
+                                  3, build_level, free_mesh};
+
+/* Every relation and helper gives the same answer at levels 0, 1, 2 as at level 3, and the
+   level-3 mesh keeps the invariants. */
 static void same_at_every_level(const char *name, const uint32_t *tets, size_t nt, size_t nv,
                                 const double *pos) {
     chf_mesh *ref = make_chf(tets, nt, nv, pos, 3);
     invariants(name, ref);
-    for (uint32_t level = 0; level < 3; level++) {
-        chf_mesh *m = make_chf(tets, nt, nv, pos, level);
-        for (int kind = VERTEX; kind <= HALF_FACE; kind++)
-            CHECK(count_of(m, kind) == count_of(ref, kind));
-        same_answers(name, level, QUERIES, N_QUERIES, count_of, ref, m);
-        /* Raising this mesh to level 3 gives the reference's views. */
-        CHECK_OK(chf_mesh_build_level(m, 3));
-        size_t la = 0, lb = 0;
-        const uint32_t *a = chf_mesh_opposites(ref, &la), *b = chf_mesh_opposites(m, &lb);
-        CHECK(same_view(a, la, b, lb));
-        a = chf_mesh_vertex_half_faces(ref, &la);
-        b = chf_mesh_vertex_half_faces(m, &lb);
-        CHECK(same_view(a, la, b, lb));
-        a = chf_mesh_face_half_faces(ref, &la);
-        b = chf_mesh_face_half_faces(m, &lb);
-        CHECK(same_view(a, la, b, lb));
-        chf_mesh_free(m);
-    }
+    void *lower[3];
+    for (uint32_t level = 0; level < 3; level++) lower[level] = make_chf(tets, nt, nv, pos, level);
+    same_as_level_3(name, &SUITE, ref, lower);
     chf_mesh_free(ref);
 }
 

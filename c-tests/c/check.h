@@ -186,10 +186,10 @@ typedef size_t (*any_count_fn)(const void *m, int kind);
         return s;                                                                          \
     }
 
-/* A table of expected answers: one query (a q_<function> adapter) on one element, with
-   the status it gives and, when that is OK, its ids; when it is an error, a text that the
-   detail contains (or NULL). check_answers walks a table: two checks per OK row (status,
-   ids), one or two per error row (status, detail), as the CHECK_OK/CHECK_IDS pairs did. */
+/* One expected answer: a query (a q_<function> adapter) on one element, with the status it
+   gives and, when that is OK, its ids; when it is an error, a text that the detail contains
+   (or NULL). check_answers checks a row as the CHECK_OK/CHECK_IDS pairs did: two checks for
+   an OK row (status, ids), one or two for an error row (status, detail). */
 typedef struct answer_row {
     const char *name;
     any_query_fn fn;
@@ -199,10 +199,6 @@ typedef struct answer_row {
     size_t n;
     uint32_t want[12];
 } answer_row;
-#define ROW(fn, id, ...)                                                                   \
-    { #fn, q_##fn, (id), TOPOMESH_STATUS_OK, NULL, NARGS_(__VA_ARGS__), {__VA_ARGS__} }
-#define ROW_FAILS(fn, id, status, detail) { #fn, q_##fn, (id), (status), (detail), 0, {0} }
-#define N_ROWS(t) (sizeof(t) / sizeof((t)[0]))
 
 static inline void check_answers(const char *mesh, const void *m, const answer_row *rows,
                                  size_t n_rows) {
@@ -232,6 +228,92 @@ static inline void check_answers(const char *mesh, const void *m, const answer_r
             check_failures++;
         }
     }
+}
+
+/* The statuses an answer file names. */
+static const struct {
+    const char *name;
+    topomesh_status status;
+} STATUS_NAMES_[] = {
+    {"NULL_ARGUMENT", TOPOMESH_STATUS_NULL_ARGUMENT},
+    {"OUT_OF_RANGE", TOPOMESH_STATUS_OUT_OF_RANGE},
+    {"INVALID_INPUT", TOPOMESH_STATUS_INVALID_INPUT},
+    {"NON_MANIFOLD", TOPOMESH_STATUS_NON_MANIFOLD},
+    {"BUFFER_TOO_SMALL", TOPOMESH_STATUS_BUFFER_TOO_SMALL},
+};
+
+/* Reads one line of an answer file into *row: `<query> <id> = <ids>` (N for TOPOMESH_NONE)
+   or `<query> <id> ! <STATUS> [<detail text>]`, the query named in qs. Exits on a line it
+   cannot read: a typo in a table must not pass as a test. */
+static inline void parse_answer_(const char *line, const any_query *qs, size_t nq,
+                                 answer_row *row, char *detail) {
+    char query[64], op = 0;
+    unsigned id = 0;
+    int used = 0;
+    memset(row, 0, sizeof *row);
+    if (sscanf(line, "%63s %u %c%n", query, &id, &op, &used) != 3 || (op != '=' && op != '!'))
+        goto bad;
+    for (size_t q = 0; q < nq && !row->fn; q++)
+        if (strcmp(qs[q].name, query) == 0) row->name = qs[q].name, row->fn = qs[q].fn;
+    if (!row->fn) goto bad;
+    row->id = id;
+    const char *rest = line + used;
+    if (op == '!') {
+        char status[32];
+        int more = 0;
+        if (sscanf(rest, "%31s %n", status, &more) != 1) goto bad;
+        row->status = TOPOMESH_STATUS_PANIC;
+        for (size_t i = 0; i < sizeof STATUS_NAMES_ / sizeof STATUS_NAMES_[0]; i++)
+            if (strcmp(STATUS_NAMES_[i].name, status) == 0) row->status = STATUS_NAMES_[i].status;
+        if (row->status == TOPOMESH_STATUS_PANIC) goto bad;
+        strcpy(detail, rest + more);
+        detail[strcspn(detail, "\r\n")] = 0;
+        row->detail = detail[0] ? detail : NULL;
+        return;
+    }
+    char word[16];
+    int w = 0;
+    while (sscanf(rest, "%15s%n", word, &w) == 1 && word[0] != '#') {
+        char *end = word + 1;
+        const uint32_t x =
+            strcmp(word, "N") == 0 ? TOPOMESH_NONE : (uint32_t)strtoul(word, &end, 10);
+        if (*end || row->n == 12) goto bad;
+        row->want[row->n++] = x;
+        rest += w;
+    }
+    if (row->n == 0) goto bad;
+    return;
+bad:
+    fprintf(stderr, "cannot read the answer line: %s", line);
+    exit(2);
+}
+
+/* Checks mesh m against the section `[mesh]` of an answer file (a file of expected answers,
+   one a line; `#` starts a comment). The section must hold at least one answer. */
+static inline void check_answer_file(const char *path, const char *mesh, const void *m,
+                                     const any_query *qs, size_t nq) {
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        fprintf(stderr, "cannot open %s\n", path);
+        exit(2);
+    }
+    char line[256], header[80], detail[256];
+    snprintf(header, sizeof header, "[%s]", mesh);
+    int inside = 0, rows = 0;
+    while (fgets(line, sizeof line, f)) {
+        if (line[0] == '#' || line[strspn(line, " \r\n")] == 0) continue;
+        if (line[0] == '[') {
+            inside = strncmp(line, header, strlen(header)) == 0;
+            continue;
+        }
+        if (!inside) continue;
+        answer_row row;
+        parse_answer_(line, qs, nq, &row, detail);
+        check_answers(mesh, m, &row, 1);
+        rows++;
+    }
+    fclose(f);
+    CHECK(rows > 0);
 }
 
 /* A bulk (CSR) call of either library, adapted by CSR_QUERY to a mesh given as const void *,
@@ -393,7 +475,8 @@ static inline void check_value_errors(any_query_fn f, const void *m, size_t coun
 /* The buffer rules and errors of a relation on mesh m (whose ids run over `count`
    elements): on the element with the longest answer (at least 2 ids), then on id `count`,
    out of range (the detail names it as `what` and the id). */
-static inline void check_buffer_rules(any_query_fn f, const void *m, size_t count, const char *what) {
+static inline void check_buffer_rules(any_query_fn f, const void *m, size_t count,
+                                      const char *what) {
     uint32_t id = 0;
     size_t n = 0, need = 0;
     for (uint32_t x = 0; x < count; x++) {

@@ -58,72 +58,14 @@ static const any_query QUERIES[] = {
     {"che_edge_is_boundary", q_che_edge_is_boundary, EDGE},
 };
 #define N_QUERIES (sizeof QUERIES / sizeof QUERIES[0])
+
+/* The expected answers on the small meshes, one section a mesh. */
+#define ANSWERS TOPOMESH_TEST_DATA "/che_relations.txt"
 #define N_RELATIONS 10
-
-/* The surface of a tetrahedron at level 2. Half-edges: T0 = 0->2, 2->1, 1->0; T1 = 0->1,
-   1->3, 3->0; T2 = 0->3, 3->2, 2->0; T3 = 1->2, 2->3, 3->1. Edges are numbered by their
-   smaller half-edge: e0 = h0 {0,2}, e1 = h1 {2,1}, e2 = h2 {1,0}, e3 = h4 {1,3},
-   e4 = h5 {3,0}, e5 = h7 {3,2}. */
-static const answer_row TETRA_ANSWERS[] = {
-    ROW(che_vertex_vertices, 0, 2, 1, 3),
-    ROW(che_vertex_edges, 0, 0, 2, 4),
-    ROW(che_vertex_triangles, 0, 0, 1, 2),
-    ROW(che_vertex_vertices, 3, 0, 1, 2),
-    ROW(che_edge_vertices, 0, 0, 2),
-    ROW(che_edge_vertices, 2, 1, 0),
-    ROW(che_edge_triangles, 0, 0, 2),
-    ROW(che_edge_edges, 0, 1, 2, 4, 5),
-    ROW(che_triangle_vertices, 0, 0, 2, 1),
-    ROW(che_triangle_edges, 0, 0, 1, 2),
-    ROW(che_triangle_triangles, 0, 2, 3, 1),
-    ROW(che_triangle_triangles, 3, 0, 2, 1),
-    ROW(che_half_edge_opposite, 0, 8),
-    ROW(che_half_edge_edge, 8, 0),
-    ROW(che_half_edge_edge, 11, 3),
-    ROW(che_edge_half_edge, 5, 7),
-    ROW(che_half_edge_curve, 0, N_),
-    ROW(che_vertex_is_boundary, 0, 0),
-    ROW(che_edge_is_boundary, 0, 0),
-    ROW_FAILS(che_boundary_curve_vertices, 0, TOPOMESH_STATUS_OUT_OF_RANGE, "curve 0"),
-};
-
-/* The strip at level 3: T0 = 0->1, 1->2, 2->0; T1 = 1->3, 3->2, 2->1; edges e0..e4 =
-   h0..h4. */
-static const answer_row STRIP_ANSWERS[] = {
-    ROW(che_vertex_vertices, 1, 3, 2, 0),
-    ROW(che_vertex_edges, 1, 3, 1, 0),
-    ROW(che_vertex_triangles, 1, 1, 0),
-    ROW(che_vertex_vertices, 0, 1, 2),
-    ROW(che_vertex_triangles, 0, 0),
-    ROW(che_vertex_vertices, 2, 0, 1, 3),
-    ROW(che_vertex_triangles, 2, 0, 1),
-    ROW(che_vertex_vertices, 3, 2, 1),
-    ROW(che_edge_vertices, 1, 1, 2),
-    ROW(che_edge_triangles, 1, 0, 1),
-    ROW(che_edge_triangles, 3, 1),
-    ROW(che_edge_edges, 1, 2, 0, 3, 4),
-    ROW(che_edge_edges, 0, 1, 2),
-    ROW(che_triangle_triangles, 0, N_, 1, N_),
-    ROW(che_triangle_triangles, 1, N_, N_, 0),
-    ROW(che_triangle_edges, 1, 3, 4, 1),
-    ROW(che_boundary_curve_vertices, 0, 0, 1, 3, 2),
-    ROW_FAILS(che_boundary_curve_vertices, 1, TOPOMESH_STATUS_OUT_OF_RANGE, NULL),
-    ROW(che_vertex_half_edge, 1, 3),
-    ROW(che_half_edge_opposite, 0, N_),
-    ROW(che_half_edge_opposite, 5, 1),
-    ROW(che_half_edge_curve, 4, 0),
-    ROW(che_half_edge_curve, 1, N_),
-    ROW(che_vertex_is_boundary, 0, 1),
-    ROW(che_vertex_is_boundary, 1, 1),
-    ROW(che_vertex_is_boundary, 2, 1),
-    ROW(che_vertex_is_boundary, 3, 1),
-    ROW(che_edge_is_boundary, 1, 0),
-    ROW(che_edge_is_boundary, 4, 1),
-};
 
 static void test_tetrahedron(void) {
     che_mesh *m = make(TETRA, 4, 4, TETRA_POS, 2);
-    check_answers("tetrahedron", m, TETRA_ANSWERS, N_ROWS(TETRA_ANSWERS));
+    check_answer_file(ANSWERS, "tetrahedron", m, QUERIES, N_QUERIES);
     uint32_t x = 0;
     CHECK_OK(che_vertex_half_edge(m, 3, &x));
     CHECK(x != TOPOMESH_NONE);
@@ -132,7 +74,7 @@ static void test_tetrahedron(void) {
 
 static void test_strip(void) {
     che_mesh *m = make(STRIP, 2, 4, STRIP_POS, 3);
-    check_answers("strip", m, STRIP_ANSWERS, N_ROWS(STRIP_ANSWERS));
+    check_answer_file(ANSWERS, "strip", m, QUERIES, N_QUERIES);
     che_mesh_free(m);
 }
 

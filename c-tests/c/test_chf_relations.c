@@ -37,58 +37,14 @@ static const any_query QUERIES[] = {
     {"chf_face_is_boundary", q_chf_face_is_boundary, FACE},
 };
 #define N_QUERIES (sizeof QUERIES / sizeof QUERIES[0])
-#define N_RELATIONS 16
 
-/* One tetrahedron at level 2. Half-face i is opposite vertex i: faces f0 = (1,2,3),
-   f1 = (0,3,2), f2 = (0,1,3), f3 = (0,2,1), outward. Edge k is the local pair k: (0,1) (0,2)
-   (0,3) (1,2) (1,3) (2,3), directed by its smallest boundary half-edge. */
-static const answer_row SINGLE_ANSWERS[] = {
-    ROW(chf_vertex_vertices, 0, 1, 2, 3),
-    ROW(chf_vertex_edges, 0, 0, 1, 2),
-    ROW(chf_vertex_faces, 0, 1, 2, 3),
-    ROW(chf_vertex_tetrahedra, 0, 0),
-    ROW(chf_vertex_vertices, 3, 0, 1, 2),
-    ROW(chf_vertex_edges, 3, 2, 4, 5),
-    ROW(chf_vertex_faces, 3, 0, 1, 2),
-    ROW(chf_edge_vertices, 0, 0, 1),
-    ROW(chf_edge_vertices, 1, 2, 0),
-    ROW(chf_edge_vertices, 2, 0, 3),
-    ROW(chf_edge_vertices, 3, 1, 2),
-    ROW(chf_edge_vertices, 4, 3, 1),
-    ROW(chf_edge_vertices, 5, 2, 3),
-    ROW(chf_edge_tetrahedra, 0, 0),
-    ROW(chf_edge_tetrahedra, 1, 0),
-    ROW(chf_edge_tetrahedra, 2, 0),
-    ROW(chf_edge_tetrahedra, 3, 0),
-    ROW(chf_edge_tetrahedra, 4, 0),
-    ROW(chf_edge_tetrahedra, 5, 0),
-    ROW(chf_edge_faces, 0, 2, 3),
-    ROW(chf_edge_edges, 0, 4, 2, 1, 3),
-    ROW(chf_face_vertices, 0, 1, 2, 3),
-    ROW(chf_face_vertices, 1, 0, 3, 2),
-    ROW(chf_face_vertices, 3, 0, 2, 1),
-    ROW(chf_face_edges, 0, 3, 5, 4),
-    ROW(chf_face_edges, 1, 2, 5, 1),
-    ROW(chf_face_faces, 0, 1, 2, 3),
-    ROW(chf_face_faces, 2, 3, 0, 1),
-    ROW(chf_face_tetrahedra, 0, 0),
-    ROW(chf_tetrahedron_vertices, 0, 0, 1, 2, 3),
-    ROW(chf_tetrahedron_edges, 0, 0, 1, 2, 3, 4, 5),
-    ROW(chf_tetrahedron_faces, 0, 0, 1, 2, 3),
-    ROW(chf_tetrahedron_tetrahedra, 0, N_, N_, N_, N_),
-    ROW(chf_vertex_is_boundary, 0, 1),
-    ROW(chf_vertex_is_boundary, 1, 1),
-    ROW(chf_vertex_is_boundary, 2, 1),
-    ROW(chf_vertex_is_boundary, 3, 1),
-    ROW(chf_face_is_boundary, 0, 1),
-    ROW(chf_face_is_boundary, 1, 1),
-    ROW(chf_face_is_boundary, 2, 1),
-    ROW(chf_face_is_boundary, 3, 1),
-};
+/* The expected answers on the small meshes, one section a mesh. */
+#define ANSWERS TOPOMESH_TEST_DATA "/chf_relations.txt"
+#define N_RELATIONS 16
 
 static void test_single(void) {
     chf_mesh *m = make_chf(TET, 1, 4, TET_POS, 2);
-    check_answers("single", m, SINGLE_ANSWERS, N_ROWS(SINGLE_ANSWERS));
+    check_answer_file(ANSWERS, "single", m, QUERIES, N_QUERIES);
     uint32_t b[16];
     size_t n = 0;
     for (uint32_t e = 0; e < 6; e++) {
@@ -98,74 +54,9 @@ static void test_single(void) {
     chf_mesh_free(m);
 }
 
-/* Two tetrahedra at level 2. Faces: half-faces 0 1 2 3 5 6 7 (4 is the twin of 0):
-   f4 = (4,2,3), f5 = (4,1,2), f6 = (4,3,1). Edges: the six of tetrahedron 0, then (4,1)
-   (4,3) (4,2). Around a vertex the answers come in increasing order; around the shared edge
-   (1,2) (e3) from the boundary face f3 through f0 to f5. */
-static const answer_row PAIR_ANSWERS[] = {
-    ROW(chf_vertex_vertices, 1, 0, 2, 3, 4),
-    ROW(chf_vertex_edges, 1, 0, 3, 4, 6),
-    ROW(chf_vertex_faces, 1, 0, 2, 3, 5, 6),
-    ROW(chf_vertex_tetrahedra, 1, 0, 1),
-    ROW(chf_vertex_vertices, 4, 1, 2, 3),
-    ROW(chf_vertex_edges, 4, 6, 7, 8),
-    ROW(chf_vertex_faces, 4, 4, 5, 6),
-    ROW(chf_vertex_tetrahedra, 4, 1),
-    ROW(chf_edge_vertices, 0, 0, 1),
-    ROW(chf_edge_vertices, 1, 2, 0),
-    ROW(chf_edge_vertices, 2, 0, 3),
-    ROW(chf_edge_vertices, 3, 2, 1),
-    ROW(chf_edge_vertices, 4, 1, 3),
-    ROW(chf_edge_vertices, 5, 3, 2),
-    ROW(chf_edge_vertices, 6, 4, 1),
-    ROW(chf_edge_vertices, 7, 3, 4),
-    ROW(chf_edge_vertices, 8, 4, 2),
-    ROW(chf_edge_tetrahedra, 3, 0, 1),
-    ROW(chf_edge_faces, 3, 3, 0, 5),
-    ROW(chf_edge_edges, 3, 0, 1, 5, 4, 8, 6),
-    ROW(chf_edge_tetrahedra, 6, 1),
-    ROW(chf_face_vertices, 4, 4, 2, 3),
-    ROW(chf_face_vertices, 6, 4, 3, 1),
-    ROW(chf_face_edges, 0, 3, 5, 4),
-    ROW(chf_face_edges, 4, 8, 5, 7),
-    ROW(chf_face_faces, 0, 1, 2, 3, 4, 5, 6),
-    ROW(chf_face_faces, 1, 2, 3, 0),
-    ROW(chf_face_tetrahedra, 0, 0, 1),
-    ROW(chf_face_tetrahedra, 4, 1),
-    ROW(chf_tetrahedron_vertices, 1, 4, 1, 3, 2),
-    ROW(chf_tetrahedron_edges, 1, 6, 7, 8, 4, 3, 5),
-    ROW(chf_tetrahedron_faces, 1, 0, 4, 5, 6),
-    ROW(chf_tetrahedron_tetrahedra, 0, 1, N_, N_, N_),
-    ROW(chf_tetrahedron_tetrahedra, 1, 0, N_, N_, N_),
-    ROW(chf_half_face_opposite, 0, 4),
-    ROW(chf_half_face_opposite, 4, 0),
-    ROW(chf_half_face_opposite, 1, N_),
-    ROW(chf_half_face_face, 4, 0),
-    ROW(chf_half_face_face, 7, 6),
-    ROW(chf_face_half_face, 4, 5),
-    ROW(chf_vertex_half_face, 1, 2), /* the first boundary half-face holding vertex 1 */
-    ROW(chf_vertex_half_face, 4, 5),
-    ROW(chf_face_is_boundary, 0, 0),
-    ROW(chf_face_is_boundary, 1, 1),
-    ROW(chf_edge_is_boundary, 0, 1),
-    ROW(chf_edge_is_boundary, 1, 1),
-    ROW(chf_edge_is_boundary, 2, 1),
-    ROW(chf_edge_is_boundary, 3, 1),
-    ROW(chf_edge_is_boundary, 4, 1),
-    ROW(chf_edge_is_boundary, 5, 1),
-    ROW(chf_edge_is_boundary, 6, 1),
-    ROW(chf_edge_is_boundary, 7, 1),
-    ROW(chf_edge_is_boundary, 8, 1),
-    ROW(chf_vertex_is_boundary, 0, 1),
-    ROW(chf_vertex_is_boundary, 1, 1),
-    ROW(chf_vertex_is_boundary, 2, 1),
-    ROW(chf_vertex_is_boundary, 3, 1),
-    ROW(chf_vertex_is_boundary, 4, 1),
-};
-
 static void test_pair(void) {
     chf_mesh *m = make_chf(PAIR, 2, 5, PAIR_POS, 2);
-    check_answers("pair", m, PAIR_ANSWERS, N_ROWS(PAIR_ANSWERS));
+    check_answer_file(ANSWERS, "pair", m, QUERIES, N_QUERIES);
     chf_mesh_free(m);
 
     /* The cube has one interior face per corner tetrahedron, and interior edges none. */

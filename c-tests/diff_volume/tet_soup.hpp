@@ -158,125 +158,81 @@ inline TetSoup kuhn_cubes(const std::string &name, int n,
 }
 } // namespace detail
 
+// A case from its points and tetrahedra.
+inline Case soup_case(const std::string &name, const std::vector<std::array<double, 3>> &points,
+                      const std::vector<std::array<uint32_t, 4>> &tets, const Expect &expect,
+                      CgalExpect cgal = CgalExpect::Accept, const std::string &why = "") {
+  Case c;
+  c.soup.name = name;
+  for (const auto &p : points) detail::add_point(c.soup, p[0], p[1], p[2]);
+  for (const auto &t : tets) detail::add_tet(c.soup, t[0], t[1], t[2], t[3]);
+  c.expect = expect;
+  c.cgal = cgal;
+  c.why = why;
+  return c;
+}
+
+// A case of Kuhn cubes: the cubes (i, j, k) of an n^3 grid that `keep` accepts.
+template <class Keep>
+inline Case cubes_case(const std::string &name, int n, Keep keep, const Expect &expect) {
+  std::vector<std::array<int, 3>> cubes;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if (keep(i, j, k)) cubes.push_back({i, j, k});
+  Case c;
+  c.soup = detail::kuhn_cubes(name, n, cubes);
+  c.expect = expect;
+  return c;
+}
+
 inline std::vector<Case> pathological_cases() {
-  using detail::add_point;
-  using detail::add_tet;
+  // The corners of the unit tetrahedron at x = 0, and of its copy moved to x = 5.
+  const std::array<double, 3> o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  const std::array<double, 3> o5{5, 0, 0}, x5{6, 0, 0}, y5{5, 1, 0}, z5{5, 0, 1};
   std::vector<Case> out;
-  auto unit_tet = [](TetSoup &s, double ox) { // 4 new points, returns their first id
-    uint32_t b = uint32_t(s.n_vertices);
-    add_point(s, ox, 0, 0);
-    add_point(s, ox + 1, 0, 0);
-    add_point(s, ox, 1, 0);
-    add_point(s, ox, 0, 1);
-    return b;
-  };
-  {
-    Case c;
-    c.soup.name = "one-tet";
-    unit_tet(c.soup, 0);
-    add_tet(c.soup, 0, 1, 2, 3);
-    c.expect = {4, 6, 4, 1, 4, 1, 1, 1, 1, 0, 0, 0, 4, 2};
-    out.push_back(c);
-  }
-  {
-    Case c; // 0,1,2 shared; 3 above, 4 below
-    c.soup.name = "two-share-face";
-    add_point(c.soup, 0, 0, 0);
-    add_point(c.soup, 1, 0, 0);
-    add_point(c.soup, 0, 1, 0);
-    add_point(c.soup, 0.3, 0.3, 1);
-    add_point(c.soup, 0.3, 0.3, -1);
-    add_tet(c.soup, 0, 1, 2, 3);
-    add_tet(c.soup, 0, 2, 1, 4);
-    c.expect = {5, 9, 7, 2, 6, 1, 1, 1, 1, 0, 0, 0, 5, 2};
-    out.push_back(c);
-  }
-  {
-    Case c; // edge 0-1 shared by two tetrahedra that share nothing else
-    c.soup.name = "two-share-edge";
-    add_point(c.soup, 0, 0, 0);
-    add_point(c.soup, 1, 0, 0);
-    add_point(c.soup, 0, 1, 0.2);
-    add_point(c.soup, 0, 0.2, 1);
-    add_point(c.soup, 0, -1, -0.2);
-    add_point(c.soup, 0, -0.2, -1);
-    add_tet(c.soup, 0, 1, 2, 3);
-    add_tet(c.soup, 0, 1, 4, 5);
-    // Both ends of the edge have two face-disconnected stars: split, 2 copies added.
-    c.expect = {6, 11, 8, 2, 8, 1, 1, 1, 0, 2, 0, 1, 8, -1};
-    c.cgal = CgalExpect::Refuse;
-    c.why = "four boundary facets on one edge: the infinite cells cannot be glued";
-    out.push_back(c);
-  }
-  {
-    Case c; // vertex 0 shared
-    c.soup.name = "two-share-vertex";
-    unit_tet(c.soup, 0);
-    add_point(c.soup, -1, 0, 0);
-    add_point(c.soup, 0, -1, 0);
-    add_point(c.soup, 0, 0, -1);
-    add_tet(c.soup, 0, 1, 2, 3);
-    add_tet(c.soup, 0, 4, 5, 6);
-    c.expect = {7, 12, 8, 2, 8, 1, 1, 1, 0, 1, 0, 0, 8, -1};
-    c.cgal = CgalExpect::AcceptButWrong;
-    c.why = "one cell per vertex: the star of vertex 0 reaches one of its two tetrahedra";
-    out.push_back(c);
-  }
-  {
-    Case c; // face 0,1,2 in three tetrahedra
-    c.soup.name = "three-on-face";
-    add_point(c.soup, 0, 0, 0);
-    add_point(c.soup, 1, 0, 0);
-    add_point(c.soup, 0, 1, 0);
-    add_point(c.soup, 0.3, 0.3, 1);
-    add_point(c.soup, 0.3, 0.3, -1);
-    add_point(c.soup, 0.3, 0.3, 2);
-    add_tet(c.soup, 0, 1, 2, 3);
-    add_tet(c.soup, 0, 2, 1, 4);
-    add_tet(c.soup, 0, 1, 2, 5);
-    // The face is non-manifold (never paired); its three edges then carry three fans and
-    // its three vertices three face-disconnected pieces each: 6 copies added.
-    c.expect = {6, 12, 10, 3, 9, 1, 1, 1, 0, 3, 1, 3, 12, -1};
-    c.cgal = CgalExpect::Refuse;
-    c.why = "a facet with three cells";
-    out.push_back(c);
-  }
-  {
-    std::vector<std::array<int, 3>> cubes;
-    for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i)
-          if (!(i == 1 && j == 1 && k == 1)) cubes.push_back({i, j, k});
-    Case c;
-    c.soup = detail::kuhn_cubes("cavity", 3, cubes);
-    // A ball minus a ball: chi = 2; boundary: two spheres (outer 6x9x2 + inner 6x2
-    // triangles), boundary chi = 4. V = 64, T = 26 x 6.
-    c.expect = {64, -1, -1, 156, 120, 2, 1, 2, 1, 0, 0, 0, 64, 4};
-    out.push_back(c);
-  }
-  {
-    std::vector<std::array<int, 3>> cubes;
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i)
-        if (!(i == 1 && j == 1)) cubes.push_back({i, j, 0});
-    Case c;
-    c.soup = detail::kuhn_cubes("solid-torus", 3, cubes);
-    // A solid torus: chi = 0; boundary: one torus (chi 0). V = 32, T = 8 x 6,
-    // boundary triangles: 2 x 8 x 2 (top, bottom) + (12 outer + 4 inner squares) x 2.
-    c.expect = {32, -1, -1, 48, 64, 1, 1, 0, 1, 0, 0, 0, 32, 0};
-    out.push_back(c);
-  }
-  {
-    Case c; // two tetrahedra apart and an isolated vertex
-    c.soup.name = "two-apart-isolated";
-    unit_tet(c.soup, 0);
-    unit_tet(c.soup, 5);
-    add_point(c.soup, 9, 9, 9);
-    add_tet(c.soup, 0, 1, 2, 3);
-    add_tet(c.soup, 4, 5, 6, 7);
-    c.expect = {9, 12, 8, 2, 8, 2, 2, 3, 1, 0, 0, 0, 9, 4};
-    out.push_back(c);
-  }
+  out.push_back(soup_case("one-tet", {o, x, y, z}, {{0, 1, 2, 3}},
+                          {4, 6, 4, 1, 4, 1, 1, 1, 1, 0, 0, 0, 4, 2}));
+  // 0,1,2 shared; 3 above, 4 below.
+  out.push_back(soup_case("two-share-face", {o, x, y, {0.3, 0.3, 1}, {0.3, 0.3, -1}},
+                          {{0, 1, 2, 3}, {0, 2, 1, 4}},
+                          {5, 9, 7, 2, 6, 1, 1, 1, 1, 0, 0, 0, 5, 2}));
+  // Edge 0-1 shared by two tetrahedra that share nothing else. Both ends of the edge have
+  // two face-disconnected stars: split, 2 copies added.
+  out.push_back(soup_case("two-share-edge",
+                          {o, x, {0, 1, 0.2}, {0, 0.2, 1}, {0, -1, -0.2}, {0, -0.2, -1}},
+                          {{0, 1, 2, 3}, {0, 1, 4, 5}},
+                          {6, 11, 8, 2, 8, 1, 1, 1, 0, 2, 0, 1, 8, -1},
+                          CgalExpect::Refuse,
+                          "four boundary facets on one edge: the infinite cells cannot be glued"));
+  // Vertex 0 shared.
+  out.push_back(soup_case(
+      "two-share-vertex", {o, x, y, z, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}},
+      {{0, 1, 2, 3}, {0, 4, 5, 6}}, {7, 12, 8, 2, 8, 1, 1, 1, 0, 1, 0, 0, 8, -1},
+      CgalExpect::AcceptButWrong,
+      "one cell per vertex: the star of vertex 0 reaches one of its two tetrahedra"));
+  // Face 0,1,2 in three tetrahedra. The face is non-manifold (never paired); its three
+  // edges then carry three fans and its three vertices three face-disconnected pieces
+  // each: 6 copies added.
+  out.push_back(soup_case("three-on-face",
+                          {o, x, y, {0.3, 0.3, 1}, {0.3, 0.3, -1}, {0.3, 0.3, 2}},
+                          {{0, 1, 2, 3}, {0, 2, 1, 4}, {0, 1, 2, 5}},
+                          {6, 12, 10, 3, 9, 1, 1, 1, 0, 3, 1, 3, 12, -1}, CgalExpect::Refuse,
+                          "a facet with three cells"));
+  // A ball minus a ball: chi = 2; boundary: two spheres (outer 6x9x2 + inner 6x2
+  // triangles), boundary chi = 4. V = 64, T = 26 x 6.
+  const auto all_but_middle = [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); };
+  out.push_back(cubes_case("cavity", 3, all_but_middle,
+                           {64, -1, -1, 156, 120, 2, 1, 2, 1, 0, 0, 0, 64, 4}));
+  // A solid torus: chi = 0; boundary: one torus (chi 0). V = 32, T = 8 x 6,
+  // boundary triangles: 2 x 8 x 2 (top, bottom) + (12 outer + 4 inner squares) x 2.
+  const auto ring = [](int i, int j, int k) { return k == 0 && !(i == 1 && j == 1); };
+  out.push_back(
+      cubes_case("solid-torus", 3, ring, {32, -1, -1, 48, 64, 1, 1, 0, 1, 0, 0, 0, 32, 0}));
+  // Two tetrahedra apart and an isolated vertex.
+  out.push_back(soup_case("two-apart-isolated", {o, x, y, z, o5, x5, y5, z5, {9, 9, 9}},
+                          {{0, 1, 2, 3}, {4, 5, 6, 7}},
+                          {9, 12, 8, 2, 8, 2, 2, 3, 1, 0, 0, 0, 9, 4}));
   return out;
 }
 

@@ -1,6 +1,8 @@
 // topomesh through its C API: answers in common ids, self-consistency and view checks.
 #include "tm_answers.hpp"
 
+#include "../diff_common/relation_call.hpp"
+
 #include <algorithm>
 #include <set>
 
@@ -31,22 +33,11 @@ std::string last_error() {
 }
 
 bool relation(RelationFn f, const che_mesh *m, uint32_t id, std::vector<uint32_t> &out) {
-  if (out.capacity() < 16) out.reserve(16);
-  out.resize(out.capacity());
-  size_t len = 0;
-  topomesh_status s = f(m, id, out.data(), out.size(), &len);
-  if (s == TOPOMESH_STATUS_BUFFER_TOO_SMALL) {
-    out.resize(len);
-    s = f(m, id, out.data(), out.size(), &len);
-  }
-  if (s != TOPOMESH_STATUS_OK) {
+  const topomesh_status s = diffcall::call_relation(f, m, id, out, 16);
+  if (s != TOPOMESH_STATUS_OK)
     std::printf("ERROR: relation call on id %u: %s (%s)\n", id, topomesh_status_str(s),
                 last_error().c_str());
-    out.clear();
-    return false;
-  }
-  out.resize(len);
-  return true;
+  return s == TOPOMESH_STATUS_OK;
 }
 
 namespace {

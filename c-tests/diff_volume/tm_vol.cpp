@@ -1,6 +1,8 @@
 // topomesh's answers through the C API (see tm_vol.hpp).
 #include "tm_vol.hpp"
 
+#include "../diff_common/relation_call.hpp"
+
 #include <algorithm>
 
 namespace diffvol {
@@ -19,21 +21,10 @@ using Relation = topomesh_status (*)(const chf_mesh *, uint32_t, uint32_t *, siz
 
 // One per-element call into `out`, growing the buffer on BUFFER_TOO_SMALL.
 bool call(Relation f, const chf_mesh *m, uint32_t id, std::vector<uint32_t> &out, Diff &d, const char *name) {
-  if (out.capacity() < 64) out.reserve(64);
-  out.resize(out.capacity());
-  size_t len = 0;
-  topomesh_status st = f(m, id, out.data(), out.size(), &len);
-  if (st == TOPOMESH_STATUS_BUFFER_TOO_SMALL) {
-    out.resize(len);
-    st = f(m, id, out.data(), out.size(), &len);
-  }
-  if (st != TOPOMESH_STATUS_OK) {
+  const topomesh_status st = diffcall::call_relation(f, m, id, out, 64);
+  if (st != TOPOMESH_STATUS_OK)
     d.add(std::string(name) + "(" + std::to_string(id) + ") failed: " + last_error(st));
-    out.clear();
-    return false;
-  }
-  out.resize(len);
-  return true;
+  return st == TOPOMESH_STATUS_OK;
 }
 
 using CsrCall = topomesh_status (*)(const chf_mesh *, uint32_t *, size_t, uint32_t *, size_t, size_t *, size_t *);

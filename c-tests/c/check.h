@@ -147,6 +147,46 @@ static inline int load_test_main(int argc, char **argv, const char *usage, void 
 }
 
 
+/* ---- Loading files, for either library ---------------------------------------------- */
+
+/* The load calls of CHE or CHF, adapted to a mesh given as void *. */
+typedef struct any_loader {
+    topomesh_status (*load)(const char *path, uint32_t level, void **m);
+    topomesh_status (*load_ex)(const char *path, const void *options, void **m);
+    const char *ext; /* of a format it reads, with the dot */
+} any_loader;
+
+/* The argument errors of a loader, which need no file reader: a NULL path (named in the
+   detail) or out, level 4, and a file whose extension (of `unknown`) is no mesh format. */
+static inline void check_load_args(const any_loader *l, const char *unknown) {
+    void *m = NULL;
+    char path[32];
+    snprintf(path, sizeof path, "x%s", l->ext);
+    CHECK_LOAD_FAILS(m, l->load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT, "path");
+    CHECK_STATUS(l->load(path, 2, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(l->load(path, 4, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(l->load_ex(NULL, NULL, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(l->load_ex(path, NULL, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    write_file(unknown, "hello\n");
+    CHECK_LOAD_FAILS(m, l->load(unknown, 2, &m), TOPOMESH_STATUS_INVALID_INPUT, unknown);
+}
+
+/* The file errors of a loader: a missing file (IO), a malformed one (PARSE), both named in
+   the detail, and one with a vertex index out of range (an error, no mesh). The files are
+   written from the texts given. */
+typedef struct bad_files {
+    const char *missing, *malformed, *malformed_text, *bad_index, *bad_index_text;
+} bad_files;
+static inline void check_load_file_errors(const any_loader *l, const bad_files *f) {
+    void *m = NULL;
+    CHECK_LOAD_FAILS(m, l->load(f->missing, 2, &m), TOPOMESH_STATUS_IO, f->missing);
+    write_file(f->malformed, f->malformed_text);
+    CHECK_LOAD_FAILS(m, l->load(f->malformed, 2, &m), TOPOMESH_STATUS_PARSE, f->malformed);
+    write_file(f->bad_index, f->bad_index_text);
+    CHECK(l->load(f->bad_index, 2, &m) != TOPOMESH_STATUS_OK);
+    CHECK(m == NULL);
+}
+
 /* ---- Queries of either library ------------------------------------------------------ */
 
 /* An id query of CHE or CHF on a mesh given as const void *: a relation (ids into a buffer),

@@ -3,18 +3,15 @@
    `test_che_load readers`: needs the OFF and Medit readers (src/io). */
 #include "check.h"
 
-static void test_args(void) {
-    che_mesh *m = (che_mesh *)&m;
-    CHECK_LOAD_FAILS(m, che_mesh_load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT, "path");
-    CHECK_STATUS(che_mesh_load("x.off", 2, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_mesh_load("x.off", 4, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(che_mesh_load_ex(NULL, NULL, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(che_mesh_load_ex("x.off", NULL, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    /* An unknown extension is not a mesh format. */
-    write_file("not-a-mesh.xyz", "hello\n");
-    CHECK_LOAD_FAILS(m, che_mesh_load("not-a-mesh.xyz", 2, &m),
-                     TOPOMESH_STATUS_INVALID_INPUT, "not-a-mesh.xyz");
+static topomesh_status load(const char *path, uint32_t level, void **m) {
+    return che_mesh_load(path, level, (che_mesh **)m);
 }
+static topomesh_status load_ex(const char *path, const void *options, void **m) {
+    return che_mesh_load_ex(path, options, (che_mesh **)m);
+}
+static const any_loader LOADER = {load, load_ex, ".off"};
+
+static void test_args(void) { check_load_args(&LOADER, "not-a-mesh.xyz"); }
 
 static const char *TETRA_OFF = "OFF\n"
                                "# the surface of a tetrahedron\n"
@@ -48,17 +45,12 @@ static void test_readers(void) {
     CHECK(m != NULL && che_mesh_level(m) == 1);
     che_mesh_free(m);
 
-    /* A missing file. */
-    CHECK_LOAD_FAILS(m, che_mesh_load("does-not-exist.off", 2, &m),
-                     TOPOMESH_STATUS_IO, "does-not-exist.off");
-
-    /* A malformed file: the detail names the file and the line. */
-    write_file("malformed.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1\n3 0 1 2\n");
-    CHECK_LOAD_FAILS(m, che_mesh_load("malformed.off", 2, &m),
-                     TOPOMESH_STATUS_PARSE, "malformed.off");
-    write_file("bad-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
-    CHECK(che_mesh_load("bad-index.off", 2, &m) != TOPOMESH_STATUS_OK);
-    CHECK(m == NULL);
+    /* A missing file, a malformed one (the detail names the file and the line), an index
+       out of range. */
+    const bad_files bad = {"does-not-exist.off", "malformed.off",
+                           "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1\n3 0 1 2\n", "bad-index.off",
+                           "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"};
+    check_load_file_errors(&LOADER, &bad);
 
     /* Strict mode on a file with a non-manifold vertex. */
     write_file("bowtie.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n"

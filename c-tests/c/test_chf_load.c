@@ -3,19 +3,19 @@
    `test_chf_load readers`: needs the Medit, TetGen and OFF readers (src/io). */
 #include "chf_fixtures.h"
 
+static topomesh_status load(const char *path, uint32_t level, void **m) {
+    return chf_mesh_load(path, level, (chf_mesh **)m);
+}
+static topomesh_status load_ex(const char *path, const void *options, void **m) {
+    return chf_mesh_load_ex(path, options, (chf_mesh **)m);
+}
+static const any_loader LOADER = {load, load_ex, ".mesh"};
+
 static void test_args(void) {
-    chf_mesh *m = (chf_mesh *)&m;
-    CHECK_LOAD_FAILS(m, chf_mesh_load(NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT, "path");
-    CHECK_STATUS(chf_mesh_load("x.mesh", 2, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_load("x.mesh", 4, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_STATUS(chf_mesh_load_ex(NULL, NULL, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(chf_mesh_load_ex("x.mesh", NULL, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    check_load_args(&LOADER, "chf-not-a-volume.xyz");
+    chf_mesh *m = NULL;
     chf_build_options o = {9, false, 0};
     CHECK_STATUS(chf_mesh_load_ex("x.mesh", &o, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
-    /* An unknown extension is not a mesh format. */
-    write_file("chf-not-a-volume.xyz", "hello\n");
-    CHECK_LOAD_FAILS(m, chf_mesh_load("chf-not-a-volume.xyz", 2, &m),
-                     TOPOMESH_STATUS_INVALID_INPUT, "chf-not-a-volume.xyz");
 }
 
 /* PAIR in Medit (1-based), with its boundary triangles too (ignored by chf_mesh_load). */
@@ -73,21 +73,16 @@ static void test_readers(void) {
     CHECK(m != NULL && chf_mesh_num_boundary_faces(m) == 6);
     chf_mesh_free(m);
 
-    /* A missing file. */
-    CHECK_LOAD_FAILS(m, chf_mesh_load("chf-does-not-exist.mesh", 2, &m),
-                     TOPOMESH_STATUS_IO, "chf-does-not-exist.mesh");
-
-    /* A malformed file: the detail names the file. */
-    write_file("chf-malformed.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
-                                 "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
-                                 "Tetrahedra\n1\n1 2 x 4 0\nEnd\n");
-    CHECK_LOAD_FAILS(m, chf_mesh_load("chf-malformed.mesh", 2, &m),
-                     TOPOMESH_STATUS_PARSE, "chf-malformed.mesh");
-    write_file("chf-bad-index.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
-                                 "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
-                                 "Tetrahedra\n1\n1 2 3 9 0\nEnd\n");
-    CHECK(chf_mesh_load("chf-bad-index.mesh", 2, &m) != TOPOMESH_STATUS_OK);
-    CHECK(m == NULL);
+    /* A missing file, a malformed one (the detail names the file), an index out of range. */
+    const bad_files bad = {"chf-does-not-exist.mesh", "chf-malformed.mesh",
+                           "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
+                           "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+                           "Tetrahedra\n1\n1 2 x 4 0\nEnd\n",
+                           "chf-bad-index.mesh",
+                           "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
+                           "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+                           "Tetrahedra\n1\n1 2 3 9 0\nEnd\n"};
+    check_load_file_errors(&LOADER, &bad);
 
     /* A surface file is not a volume. */
     write_file("chf-tetra.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"

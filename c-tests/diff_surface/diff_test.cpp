@@ -43,29 +43,25 @@ std::vector<uint32_t> view(const uint32_t *(*f)(const che_mesh *, size_t *), con
 }
 
 void check_summary(const che_summary &s, const Facts &f, Checker &chk) {
-  const struct {
-    const char *name;
-    long long got, want;
-  } fields[] = {
-      {"vertices", s.vertices, f.vertices},
-      {"edges", s.edges, f.edges},
-      {"triangles", s.triangles, f.triangles},
-      {"boundary_edges", s.boundary_edges, f.boundary_edges},
-      {"boundary_curves", s.boundary_curves, f.boundary_curves},
-      {"components", s.components, f.components},
-      {"isolated_vertices", s.isolated_vertices, f.isolated_vertices},
-      {"euler_characteristic", s.euler_characteristic, f.euler},
-      {"genus", s.genus, f.genus},
-      {"dropped_degenerate", s.dropped_degenerate, f.degenerate},
-      {"non_manifold_edges", s.non_manifold_edges, f.non_manifold_edges},
-      {"split_vertices", s.split_vertices, f.non_manifold_vertices},
-      {"non_orientable_components", s.non_orientable_components, f.non_orientable_components},
-      {"orientable", s.orientable, f.non_orientable_components == 0},
-      {"manifold", s.manifold, f.non_manifold_edges == 0 && f.non_manifold_vertices == 0},
+  auto eq = [&](const char *name, long long got, long long want) {
+    DIFF_CHECK(chk, got == want, std::string("summary ") + name,
+              "topomesh " + std::to_string(got) + ", brute force " + std::to_string(want));
   };
-  for (const auto &x : fields)
-    DIFF_CHECK(chk, x.got == x.want, std::string("summary ") + x.name,
-               "topomesh " + std::to_string(x.got) + ", brute force " + std::to_string(x.want));
+  eq("vertices", s.vertices, f.vertices);
+  eq("edges", s.edges, f.edges);
+  eq("triangles", s.triangles, f.triangles);
+  eq("boundary_edges", s.boundary_edges, f.boundary_edges);
+  eq("boundary_curves", s.boundary_curves, f.boundary_curves);
+  eq("components", s.components, f.components);
+  eq("isolated_vertices", s.isolated_vertices, f.isolated_vertices);
+  eq("euler_characteristic", s.euler_characteristic, f.euler);
+  eq("genus", s.genus, f.genus);
+  eq("dropped_degenerate", s.dropped_degenerate, f.degenerate);
+  eq("non_manifold_edges", s.non_manifold_edges, f.non_manifold_edges);
+  eq("split_vertices", s.split_vertices, f.non_manifold_vertices);
+  eq("non_orientable_components", s.non_orientable_components, f.non_orientable_components);
+  eq("orientable", s.orientable, f.non_orientable_components == 0);
+  eq("manifold", s.manifold, f.non_manifold_edges == 0 && f.non_manifold_vertices == 0);
 }
 
 // Level 1 answers vertex and edge queries by scanning all half-edges: sample so that a test

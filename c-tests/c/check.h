@@ -187,6 +187,17 @@ static inline void check_load_file_errors(const any_loader *l, const bad_files *
     CHECK(m == NULL);
 }
 
+/* A loaded mesh holds the arrays of its file: positions p[0..lp) (3 a vertex) and the
+   corners v[0..lv) of its cells, against the expected ones (zero-copy views each). */
+#define CHECK_LOADED_ARRAYS(p, lp, want_p, v, lv, want_v)                                 \
+    do {                                                                                   \
+        const size_t np_ = sizeof(want_p) / sizeof(want_p)[0];                             \
+        CHECK((p) != NULL && (lp) == np_);                                                 \
+        if ((p) && (lp) == np_) CHECK(memcmp((p), (want_p), sizeof(want_p)) == 0);         \
+        CHECK((lv) == sizeof(want_v) / sizeof(want_v)[0] &&                                \
+              memcmp((v), (want_v), sizeof(want_v)) == 0);                                 \
+    } while (0)
+
 /* ---- Queries of either library ------------------------------------------------------ */
 
 /* An id query of CHE or CHF on a mesh given as const void *: a relation (ids into a buffer),

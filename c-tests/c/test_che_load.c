@@ -28,12 +28,10 @@ static void test_readers(void) {
         CHECK(che_mesh_level(m) == 3);
         CHECK(che_mesh_num_vertices(m) == 4 && che_mesh_num_triangles(m) == 4);
         CHECK(che_mesh_num_edges(m) == 6);
-        size_t len = 0;
-        const double *p = che_mesh_positions(m, &len);
-        CHECK(p != NULL && len == 12);
-        if (p && len == 12) CHECK(memcmp(p, TETRA_POS, sizeof TETRA_POS) == 0);
-        const uint32_t *V = che_mesh_half_edge_vertices(m, &len);
-        CHECK(len == 12 && memcmp(V, TETRA, sizeof TETRA) == 0);
+        size_t lp = 0, lv = 0;
+        const double *p = che_mesh_positions(m, &lp);
+        const uint32_t *V = che_mesh_half_edge_vertices(m, &lv);
+        CHECK_LOADED_ARRAYS(p, lp, TETRA_POS, V, lv, TETRA);
         che_summary s;
         CHECK_OK(che_mesh_summary(m, &s));
         CHECK(s.genus == 0 && s.euler_characteristic == 2 && s.manifold && s.orientable);

@@ -39,12 +39,10 @@ static void test_readers(void) {
         CHECK(chf_mesh_level(m) == level);
         CHECK(chf_mesh_num_vertices(m) == 5 && chf_mesh_num_tetrahedra(m) == 2);
         CHECK(chf_mesh_num_faces(m) == 7 && chf_mesh_num_edges(m) == 9);
-        size_t len = 0;
-        const double *p = chf_mesh_positions(m, &len);
-        CHECK(p != NULL && len == 15);
-        if (p && len == 15) CHECK(memcmp(p, PAIR_POS, sizeof PAIR_POS) == 0);
-        const uint32_t *V = chf_mesh_half_face_vertices(m, &len);
-        CHECK(len == 8 && memcmp(V, PAIR, sizeof PAIR) == 0);
+        size_t lp = 0, lv = 0;
+        const double *p = chf_mesh_positions(m, &lp);
+        const uint32_t *V = chf_mesh_half_face_vertices(m, &lv);
+        CHECK_LOADED_ARRAYS(p, lp, PAIR_POS, V, lv, PAIR);
         chf_summary s;
         CHECK_OK(chf_mesh_summary(m, &s));
         CHECK(s.euler_characteristic == 1 && s.boundary_faces == 6 && s.manifold);

@@ -189,28 +189,29 @@ private:
     return r;
   }
 
+  // A sweep of every vertex's star with the C star iterator: visit(step, v, checksum, n) at
+  // every step.
+  template <class Visit> Sweep star_sweep(const char *name, Visit visit) {
+    if (vslow(2)) return skipped_sweep(name, slow_);
+    return sweep(name, [this, visit](uint64_t &n) {
+      uint64_t cs = 0;
+      che_star_iter it;
+      che_star_step step;
+      for (uint32_t v = 0; v < nv_; ++v) {
+        che_star_begin(m_, v, &it);
+        while (che_star_next(&it, &step)) visit(step, v, cs, n);
+      }
+      return cs;
+    });
+  }
+
   LibBench star() {
     LibBench r = row("star iterator");
-    r.sweeps.push_back(vslow(2) ? skipped_sweep("VV", slow_) : sweep("VV", [this](uint64_t &n) {
-      uint64_t cs = 0;
-      che_star_iter it;
-      che_star_step step;
-      for (uint32_t v = 0; v < nv_; ++v) {
-        che_star_begin(m_, v, &it);
-        while (che_star_next(&it, &step)) cs += uint64_t(step.vertex) * (v + 1), ++n;
-      }
-      return cs;
+    r.sweeps.push_back(star_sweep("VV", [](const che_star_step &s, uint64_t v, uint64_t &cs, uint64_t &n) {
+      cs += uint64_t(s.vertex) * (v + 1), ++n;
     }));
-    r.sweeps.push_back(vslow(2) ? skipped_sweep("VF", slow_) : sweep("VF", [this](uint64_t &n) {
-      uint64_t cs = 0;
-      che_star_iter it;
-      che_star_step step;
-      for (uint32_t v = 0; v < nv_; ++v) {
-        che_star_begin(m_, v, &it);
-        while (che_star_next(&it, &step))
-          if (step.triangle != TOPOMESH_NONE) cs += uint64_t(step.triangle + 1) * (v + 1), ++n;
-      }
-      return cs;
+    r.sweeps.push_back(star_sweep("VF", [](const che_star_step &s, uint64_t v, uint64_t &cs, uint64_t &n) {
+      if (s.triangle != TOPOMESH_NONE) cs += uint64_t(s.triangle + 1) * (v + 1), ++n;
     }));
     return r;
   }

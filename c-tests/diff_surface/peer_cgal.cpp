@@ -42,6 +42,29 @@ struct Peer {
   static bool border(const Mesh &m, HI h) { return m.is_border(h); }
   static uint32_t source(const Mesh &m, HI h) { return id(m.source(h)); }
   static HI next(const Mesh &m, HI h) { return m.next(h); }
+  static size_t n_halfedges(const Mesh &m) { return m.number_of_halfedges(); }
+  template <class F> static void each_vv(const Mesh &m, F f) {
+    for (VI v : m.vertices())
+      for (VI w : CGAL::vertices_around_target(m.halfedge(v), m)) f(size_t(v), size_t(w));
+  }
+  template <class F> static void each_vf(const Mesh &m, F f) {
+    for (VI v : m.vertices())
+      for (FI g : CGAL::faces_around_target(m.halfedge(v), m))
+        if (g != Mesh::null_face()) f(size_t(v), size_t(g));
+  }
+  template <class F> static void each_ff(const Mesh &m, F f) {
+    for (FI e : m.faces())
+      for (FI g : CGAL::faces_around_face(m.halfedge(e), m))
+        if (g != Mesh::null_face()) f(size_t(e), size_t(g));
+  }
+  template <class F> static void each_ef(const Mesh &m, F f) {
+    for (auto e : m.edges()) {
+      HI h = m.halfedge(e);
+      FI f0 = m.face(h), f1 = m.face(m.opposite(h));
+      if (f0 != Mesh::null_face()) f(size_t(f0));
+      if (f1 != Mesh::null_face()) f(size_t(f1));
+    }
+  }
 };
 
 } // namespace
@@ -123,50 +146,7 @@ public:
                            m.number_of_faces() * idx +
                            (m.number_of_vertices() + m.number_of_edges() + m.number_of_faces()) / 8;
   }
-  std::vector<LibBench> rows() override {
-    LibBench r;
-    r.lib = "CGAL";
-    r.owns_build = true;
-    r.sweeps.push_back(sweep("VV", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      for (VI v : m.vertices())
-        for (VI w : CGAL::vertices_around_target(m.halfedge(v), m))
-          cs += uint64_t(size_t(w)) * uint64_t(size_t(v) + 1), ++n;
-      return cs;
-    }));
-    r.sweeps.push_back(sweep("VF", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      for (VI v : m.vertices())
-        for (FI f : CGAL::faces_around_target(m.halfedge(v), m))
-          if (f != Mesh::null_face()) cs += uint64_t(size_t(f) + 1) * uint64_t(size_t(v) + 1), ++n;
-      return cs;
-    }));
-    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      for (FI f : m.faces())
-        for (FI g : CGAL::faces_around_face(m.halfedge(f), m))
-          if (g != Mesh::null_face()) cs += uint64_t(size_t(g) + 1) * uint64_t(size_t(f) + 1), ++n;
-      return cs;
-    }));
-    r.sweeps.push_back(sweep("EF", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      for (auto e : m.edges()) {
-        HI h = m.halfedge(e);
-        FI f0 = m.face(h), f1 = m.face(m.opposite(h));
-        if (f0 != Mesh::null_face()) cs += uint64_t(size_t(f0) + 1), ++n;
-        if (f1 != Mesh::null_face()) cs += uint64_t(size_t(f1) + 1), ++n;
-      }
-      return cs;
-    }));
-    r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
-      return curve_sweep<Peer>(*m_, m_->number_of_halfedges(), n);
-    }));
-    return {r};
-  }
+  std::vector<LibBench> rows() override { return {peer_row<Peer>("CGAL", m_)}; }
 
 };
 } // namespace

@@ -47,6 +47,27 @@ struct Peer {
   static OpenMesh::HalfedgeHandle next(const Mesh &m, OpenMesh::HalfedgeHandle h) {
     return m.next_halfedge_handle(h);
   }
+  static size_t n_halfedges(const Mesh &m) { return m.n_halfedges(); }
+  template <class F> static void each_vv(const Mesh &m, F f) {
+    for (auto v : m.vertices())
+      for (auto it = m.cvv_iter(v); it.is_valid(); ++it) f(v.idx(), it->idx());
+  }
+  template <class F> static void each_vf(const Mesh &m, F f) {
+    for (auto v : m.vertices())
+      for (auto it = m.cvf_iter(v); it.is_valid(); ++it) f(v.idx(), it->idx());
+  }
+  template <class F> static void each_ff(const Mesh &m, F f) {
+    for (auto g : m.faces())
+      for (auto it = m.cff_iter(g); it.is_valid(); ++it) f(g.idx(), it->idx());
+  }
+  template <class F> static void each_ef(const Mesh &m, F f) {
+    for (auto e : m.edges()) {
+      auto f0 = m.face_handle(m.halfedge_handle(e, 0));
+      auto f1 = m.face_handle(m.halfedge_handle(e, 1));
+      if (f0.is_valid()) f(f0.idx());
+      if (f1.is_valid()) f(f1.idx());
+    }
+  }
 };
 
 } // namespace
@@ -120,49 +141,7 @@ public:
     r.connectivity_bytes = m_->n_vertices() * sizeof(Mesh::Vertex) + m_->n_edges() * sizeof(Mesh::Edge) +
                            m_->n_faces() * sizeof(Mesh::Face);
   }
-  std::vector<LibBench> rows() override {
-    LibBench r;
-    r.lib = "OpenMesh";
-    r.owns_build = true;
-    r.sweeps.push_back(sweep("VV", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      for (auto v : m.vertices())
-        for (auto it = m.cvv_iter(v); it.is_valid(); ++it, ++n) cs += uint64_t(it->idx()) * uint64_t(v.idx() + 1);
-      return cs;
-    }));
-    r.sweeps.push_back(sweep("VF", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      for (auto v : m.vertices())
-        for (auto it = m.cvf_iter(v); it.is_valid(); ++it, ++n)
-          cs += uint64_t(it->idx() + 1) * uint64_t(v.idx() + 1);
-      return cs;
-    }));
-    r.sweeps.push_back(sweep("FF", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      for (auto f : m.faces())
-        for (auto it = m.cff_iter(f); it.is_valid(); ++it, ++n)
-          cs += uint64_t(it->idx() + 1) * uint64_t(f.idx() + 1);
-      return cs;
-    }));
-    r.sweeps.push_back(sweep("EF", [this](uint64_t &n) {
-      const Mesh &m = *m_;
-      uint64_t cs = 0;
-      for (auto e : m.edges()) {
-        auto f0 = m.face_handle(m.halfedge_handle(e, 0));
-        auto f1 = m.face_handle(m.halfedge_handle(e, 1));
-        if (f0.is_valid()) cs += uint64_t(f0.idx() + 1), ++n;
-        if (f1.is_valid()) cs += uint64_t(f1.idx() + 1), ++n;
-      }
-      return cs;
-    }));
-    r.sweeps.push_back(sweep("curves", [this](uint64_t &n) {
-      return curve_sweep<Peer>(*m_, m_->n_halfedges(), n);
-    }));
-    return {r};
-  }
+  std::vector<LibBench> rows() override { return {peer_row<Peer>("OpenMesh", m_)}; }
 
 };
 } // namespace

@@ -34,7 +34,8 @@ std::unique_ptr<Subject> cgal_subject(const PeerInput &in);
 // What both peers do the same way, over a small adapter per library. An adapter P gives,
 // for its mesh type P::Mesh and half-edge handle P::H: P::build(in, m, b, face_input)
 // (see add_triangles), P::halfedges(m) (a range), P::index(h), P::border(m, h) (no face),
-// P::source(m, h) (a vertex id) and P::next(m, h).
+// P::source(m, h) (a vertex id), P::next(m, h) and P::n_halfedges(m); for the benchmark,
+// the circulations of peer_row.
 
 // Offers the triangles of `in` to a peer: degenerate ones are skipped and counted, refused
 // ones counted (with a few examples). `add(c)` adds the triangle with corners c[0..2] and
@@ -93,6 +94,39 @@ template <class P> uint64_t curve_sweep(const typename P::Mesh &m, size_t n_half
     } while (g != h);
   }
   return cs;
+}
+
+// The benchmark row of a peer: the VV, VF, FF and EF sweeps over its adapter's circulations
+// (P::each_vv, P::each_vf, P::each_ff call f(element id, neighbour id) at every step that
+// meets a vertex or a face; P::each_ef calls f(face id) for each face of each edge), with
+// checksums of the ids met, and the curves sweep. `m` holds the subject's current mesh.
+template <class P> LibBench peer_row(const char *lib, const std::unique_ptr<typename P::Mesh> &m) {
+  LibBench r;
+  r.lib = lib;
+  r.owns_build = true;
+  r.sweeps.push_back(sweep("VV", [&m](uint64_t &n) {
+    uint64_t cs = 0;
+    P::each_vv(*m, [&](uint64_t v, uint64_t w) { cs += w * (v + 1), ++n; });
+    return cs;
+  }));
+  r.sweeps.push_back(sweep("VF", [&m](uint64_t &n) {
+    uint64_t cs = 0;
+    P::each_vf(*m, [&](uint64_t v, uint64_t f) { cs += (f + 1) * (v + 1), ++n; });
+    return cs;
+  }));
+  r.sweeps.push_back(sweep("FF", [&m](uint64_t &n) {
+    uint64_t cs = 0;
+    P::each_ff(*m, [&](uint64_t f, uint64_t g) { cs += (g + 1) * (f + 1), ++n; });
+    return cs;
+  }));
+  r.sweeps.push_back(sweep("EF", [&m](uint64_t &n) {
+    uint64_t cs = 0;
+    P::each_ef(*m, [&](uint64_t f) { cs += f + 1, ++n; });
+    return cs;
+  }));
+  r.sweeps.push_back(
+      sweep("curves", [&m](uint64_t &n) { return curve_sweep<P>(*m, P::n_halfedges(*m), n); }));
+  return r;
 }
 
 // What the benchmark subjects of both peers share: the input, the current build and its

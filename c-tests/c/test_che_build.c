@@ -1,6 +1,27 @@
 /* Building, levels, counts, summary, report, memory, origins, strict mode. */
 #include "check.h"
 
+/* The counts of a mesh, in the order the tests give their expected values. */
+static const struct {
+    const char *name;
+    size_t (*fn)(const che_mesh *);
+} COUNTS[] = {
+    {"vertices", che_mesh_num_vertices},   {"input vertices", che_mesh_num_input_vertices},
+    {"triangles", che_mesh_num_triangles}, {"edges", che_mesh_num_edges},
+    {"half-edges", che_mesh_num_half_edges}, {"boundary curves", che_mesh_num_boundary_curves},
+};
+#define N_COUNTS (sizeof COUNTS / sizeof COUNTS[0])
+
+/* Every count of m (of mesh `name`) is the one expected. */
+static void check_counts(const char *name, const che_mesh *m, const size_t want[N_COUNTS]) {
+    for (size_t i = 0; i < N_COUNTS; i++) {
+        const size_t got = COUNTS[i].fn(m);
+        CHECK(got == want[i]);
+        if (got != want[i])
+            fprintf(stderr, "  %s of %s: %zu, expected %zu\n", COUNTS[i].name, name, got, want[i]);
+    }
+}
+
 static void test_argument_errors(void) {
     che_mesh *m = (che_mesh *)&m; /* must be reset to NULL on failure */
     CHECK_STATUS(che_mesh_from_triangles(NULL, 2, 4, NULL, 2, &m), TOPOMESH_STATUS_NULL_ARGUMENT);
@@ -55,12 +76,7 @@ static void test_argument_errors(void) {
     /* NULL handles: counts are 0, free is a no-op, calls that fail say so. */
     che_mesh_free(NULL);
     CHECK(che_mesh_level(NULL) == 0);
-    CHECK(che_mesh_num_vertices(NULL) == 0);
-    CHECK(che_mesh_num_input_vertices(NULL) == 0);
-    CHECK(che_mesh_num_triangles(NULL) == 0);
-    CHECK(che_mesh_num_edges(NULL) == 0);
-    CHECK(che_mesh_num_half_edges(NULL) == 0);
-    CHECK(che_mesh_num_boundary_curves(NULL) == 0);
+    check_counts("NULL", NULL, (const size_t[N_COUNTS]){0});
     CHECK_STATUS(che_mesh_build_level(NULL, 2), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(che_mesh_summary(NULL, &s), TOPOMESH_STATUS_NULL_ARGUMENT);
     che_build_report r;
@@ -72,12 +88,7 @@ static void test_argument_errors(void) {
 static void test_tetrahedron(void) {
     che_mesh *m = make(TETRA, 4, 4, TETRA_POS, 2);
     CHECK(che_mesh_level(m) == 2);
-    CHECK(che_mesh_num_vertices(m) == 4);
-    CHECK(che_mesh_num_input_vertices(m) == 4);
-    CHECK(che_mesh_num_triangles(m) == 4);
-    CHECK(che_mesh_num_edges(m) == 6);
-    CHECK(che_mesh_num_half_edges(m) == 12);
-    CHECK(che_mesh_num_boundary_curves(m) == 0);
+    check_counts("tetrahedron", m, (const size_t[N_COUNTS]){4, 4, 4, 6, 12, 0});
     che_summary s;
     CHECK_STATUS(che_mesh_summary(m, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_OK(che_mesh_summary(m, &s));

@@ -208,6 +208,20 @@ size_t CgalVol::vertex_star_size(uint32_t v) const {
   return cs.size();
 }
 
+// Over every finite vertex in a cell: the number of handles `collect(v, out)` writes.
+template <class Handle, class Collect>
+uint64_t count_around_vertices(const Tr &tr, Collect collect) {
+  uint64_t n = 0;
+  std::vector<Handle> buf;
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    if (v->cell() == Ch()) continue;
+    buf.clear();
+    collect(v, std::back_inserter(buf));
+    n += buf.size();
+  }
+  return n;
+}
+
 uint64_t CgalVol::sweep_tt() const {
   const Tr &tr = p_->tr;
   uint64_t n = 0;
@@ -218,15 +232,7 @@ uint64_t CgalVol::sweep_tt() const {
 
 uint64_t CgalVol::sweep_vt() const {
   const Tr &tr = p_->tr;
-  uint64_t n = 0;
-  std::vector<Ch> cs;
-  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-    if (v->cell() == Ch()) continue;
-    cs.clear();
-    tr.finite_incident_cells(v, std::back_inserter(cs));
-    n += cs.size();
-  }
-  return n;
+  return count_around_vertices<Ch>(tr, [&](Vh v, auto out) { tr.finite_incident_cells(v, out); });
 }
 
 uint64_t CgalVol::sweep_et() const {
@@ -241,15 +247,8 @@ uint64_t CgalVol::sweep_et() const {
 
 uint64_t CgalVol::sweep_vv() const {
   const Tr &tr = p_->tr;
-  uint64_t n = 0;
-  std::vector<Vh> vs;
-  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-    if (v->cell() == Ch()) continue;
-    vs.clear();
-    tr.finite_adjacent_vertices(v, std::back_inserter(vs));
-    n += vs.size();
-  }
-  return n;
+  return count_around_vertices<Vh>(tr,
+                                   [&](Vh v, auto out) { tr.finite_adjacent_vertices(v, out); });
 }
 
 } // namespace diffvol

@@ -44,6 +44,28 @@ template <class T> static std::vector<std::uint32_t> raw(const T &range) {
     return out;
 }
 
+// The ownership rules of a wrapper mesh type (Surface, Volume), on two built meshes `a` and
+// `other`: a move hands the handle over and leaves an empty mesh whose calls throw, a move
+// assignment frees the target's own mesh, release() hands the handle out and the
+// constructor adopts it again. `cells(m)` counts a's triangles or tetrahedra.
+template <class Mesh, class Cells>
+static void check_moves(Mesh a, Mesh other, Cells cells, std::size_t want_cells,
+                        std::size_t want_edges) {
+    const auto *h = a.handle();
+    Mesh b = std::move(a);
+    CHECK(b.handle() == h && a.handle() == nullptr);
+    CHECK(a.num_vertices() == 0); // a moved-from mesh is empty
+    CHECK_THROWS(a.summary(), TOPOMESH_STATUS_NULL_ARGUMENT, "'m'");
+    CHECK_THROWS(a.vertex_vertices(topomesh::VertexId{0}), TOPOMESH_STATUS_NULL_ARGUMENT, "'m'");
+    Mesh c = std::move(other);
+    c = std::move(b); // frees other's mesh
+    CHECK(c.handle() == h && cells(c) == want_cells);
+    auto *released = c.release();
+    CHECK(released == h && c.handle() == nullptr);
+    Mesh d(released); // adopt again
+    CHECK(d.num_edges() == want_edges);
+}
+
 // The end of a test's main: runs `body`, reports an unexpected exception or the failures.
 template <class F> static int run_tests(const char *name, F body) {
     try {

@@ -50,19 +50,8 @@ static void test_build_and_counts() {
 }
 
 static void test_moves() {
-    Surface a = Surface::from_triangles(STRIP, 4);
-    const che_mesh *h = a.handle();
-    Surface b = std::move(a);
-    CHECK(b.handle() == h && a.handle() == nullptr);
-    CHECK(a.num_vertices() == 0); // a moved-from surface is empty
-    CHECK_THROWS(a.summary(), TOPOMESH_STATUS_NULL_ARGUMENT, "'m'");
-    Surface c = Surface::from_triangles(TETRA, 4);
-    c = std::move(b); // frees c's tetrahedron
-    CHECK(c.handle() == h && c.num_triangles() == 2);
-    che_mesh *released = c.release();
-    CHECK(released == h && c.handle() == nullptr);
-    Surface d(released); // adopt again
-    CHECK(d.num_edges() == 5);
+    check_moves(Surface::from_triangles(STRIP, 4), Surface::from_triangles(TETRA, 4),
+                [](const Surface &m) { return m.num_triangles(); }, 2, 5);
 }
 
 static void test_relations_and_ranges() {

@@ -73,20 +73,8 @@ static void test_build_and_counts() {
 }
 
 static void test_moves() {
-    Volume a = Volume::from_tetrahedra(PAIR, 5);
-    const chf_mesh *h = a.handle();
-    Volume b = std::move(a);
-    CHECK(b.handle() == h && a.handle() == nullptr);
-    CHECK(a.num_vertices() == 0); // a moved-from volume is empty
-    CHECK_THROWS(a.summary(), TOPOMESH_STATUS_NULL_ARGUMENT, "'m'");
-    CHECK_THROWS(a.vertex_vertices(VertexId{0}), TOPOMESH_STATUS_NULL_ARGUMENT, "'m'");
-    Volume c = Volume::from_tetrahedra(CUBE, 8);
-    c = std::move(b); // frees the cube
-    CHECK(c.handle() == h && c.num_tetrahedra() == 2);
-    chf_mesh *released = c.release();
-    CHECK(released == h && c.handle() == nullptr);
-    Volume d(released); // adopt again
-    CHECK(d.num_edges() == 9);
+    check_moves(Volume::from_tetrahedra(PAIR, 5), Volume::from_tetrahedra(CUBE, 8),
+                [](const Volume &m) { return m.num_tetrahedra(); }, 2, 9);
 }
 
 static void test_relations() {

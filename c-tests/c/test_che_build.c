@@ -307,8 +307,22 @@ static void test_orientation_repair(void) {
     che_mesh_free(m);
 }
 
+/* Every fixture is a valid structure at every level; NULL is refused by name. */
+static void test_validate(void) {
+    for (size_t f = 0; f < N_CHE_FIXTURES; f++)
+        for (uint32_t level = 0; level <= 3; level++) {
+            che_mesh *m = make(CHE_FIXTURES[f].tris, CHE_FIXTURES[f].n_tris,
+                               CHE_FIXTURES[f].n_verts, NULL, level);
+            CHECK_OK(che_mesh_validate(m));
+            che_mesh_free(m);
+        }
+    CHECK_STATUS(che_mesh_validate(NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("m");
+}
+
 int main(void) {
     test_argument_errors();
+    test_validate();
     test_tetrahedron();
     test_strip();
     test_non_manifold_vertex();

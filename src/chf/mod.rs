@@ -6,7 +6,10 @@
 //!   and a boundary-component id per boundary vertex.
 //!
 //! The arithmetic (half-faces, edge slots, the half-edge encoding, mate and radial) is in
-//! [`ids`]. Every query works at every level; a higher level only answers faster. The build
+//! [`ids`], the edge fans in `edges.rs`. `build/` is the pipeline from a tetrahedron list
+//! (`build/mod.rs` names its steps), `query/` answers the relations on a view of the level's
+//! tables, and `star_pass/` is the one pass over every vertex star that both use: the build
+//! for `O`, `VH` and the edge ids, a query below level 2 for the ranks it lacks. Every query works at every level; a higher level only answers faster. The build
 //! always canonicalises the input (degenerate tetrahedra dropped, components oriented,
 //! non-manifold vertices split) so that half-face, edge and face ids are the same at every
 //! level, and so are the answers, in the same order.
@@ -34,40 +37,23 @@
 //! per-slot edge array would make it O(1) for 24 bytes per tetrahedron (see `edges.rs`).
 
 mod build;
-mod bulk;
 mod edges;
-mod fan;
 pub mod ids;
-mod level2;
-mod level3;
-mod link;
-mod memory;
-mod orient;
-mod pairs;
-mod queries;
-mod report;
-mod soup;
-mod split;
-mod star;
-mod stars;
-mod strict;
-mod summary;
-mod view;
+mod query;
+mod star_pass;
 
 pub use crate::Ids;
-pub use build::{ChfBuildOptions, MAX_TETRAHEDRA};
-pub use bulk::ChfCsr;
-pub use fan::EdgeIds;
+pub use build::{ChfBuildOptions, ChfBuildReport, MAX_TETRAHEDRA};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
-pub use memory::ChfMemory;
-pub use report::ChfBuildReport;
-pub use star::{INLINE as STAR_INLINE, VertexIds};
-pub use summary::ChfSummary;
+pub use query::{ChfCsr, ChfMemory, ChfSummary, EdgeIds, STAR_INLINE, VertexIds};
 
 use crate::error::{Error, Result};
 use crate::util::rank::RankBits;
+use build::level2;
+use build::level3;
 use edges::MultiFan;
 use glam::DVec3;
+use star_pass as stars;
 
 /// A tetrahedral mesh in the Compact Half-Face structure.
 #[derive(Clone, Debug)]
@@ -179,7 +165,7 @@ impl Chf {
             self.level = 1;
         }
         if self.level < 2 && level >= 2 {
-            let flagged = build::merged(&self.non_manifold, &self.seams);
+            let flagged = stars::merged(&self.non_manifold, &self.seams);
             let stars = stars::stars(
                 &self.v,
                 self.n_vertices,

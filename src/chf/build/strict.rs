@@ -1,8 +1,8 @@
 //! Strict mode: the first offending ids of each kind of non-manifold input, as an error
 //! (faces and duplicates before orienting, edges and vertices once the split is known).
 
-use super::ids::{first, sorted_triple, tet};
-use super::report::ChfBuildReport;
+use crate::chf::build::report::ChfBuildReport;
+use crate::chf::ids::{first, sorted_triple, tet};
 use crate::error::{Error, Result};
 
 pub(crate) fn strict_faces(

@@ -7,7 +7,7 @@
 //! far away in memory, so every step of a walk through `O` misses the cache (and a random
 //! write misses it too). One sequential scan of `V` writes a record per occurrence
 //! (tetrahedron, vertex) to its vertex's bucket with a two-pass radix: the first pass
-//! streams records to at most 512 coarse buckets (few enough write streams for the cache
+//! streams records to at most 256 coarse buckets (few enough write streams for the cache
 //! and the TLB), the second sorts one coarse bucket at a time, in cache, by the low bits of
 //! the vertex. The records of a vertex are then in tetrahedron order, hence half-face
 //! order. Large meshes run in rounds over ranges of coarse buckets (each round rescans
@@ -15,16 +15,19 @@
 //! The pairs found and the canonical slots are written in place the same way, through
 //! windows (`pairs.rs`, [`bits_from_slots`]).
 
-use super::edges::EdgeCensus;
-use super::edges::MultiFan;
-use super::link::{FaceCensus, Link, Record, Sums};
-use super::pairs::{Opposites, Writer};
+pub(crate) mod link;
+pub(crate) mod pairs;
+
+use self::link::{FaceCensus, Link, Record, Sums};
+use self::pairs::{Opposites, Writer};
 use crate::NONE;
+use crate::chf::edges::EdgeCensus;
+use crate::chf::edges::MultiFan;
 use crate::util::extend_examples;
 use crate::util::rank::RankBits;
 
 /// 256 coarse buckets: the scatter's 256 write heads (a cache line each) stay in the L1
-/// cache (512 took about 4% longer on the 1M-tetrahedron build; 128 no better).
+/// cache (512 heads do not; 128 gain nothing).
 const COARSE_BITS: u32 = 8;
 
 /// What the pass found.
@@ -332,7 +335,7 @@ fn scatter(
             let c = (x >> shift).wrapping_sub(first);
             let inside = c < span;
             let bucket = if inside { c } else { span } as usize;
-            let [a, b, c] = super::link::OTHERS[i as usize].map(|j| q[j as usize]);
+            let [a, b, c] = crate::chf::star_pass::link::OTHERS[i as usize].map(|j| q[j as usize]);
             let at = 5 * fill[bucket] as usize;
             records[at..at + 5].copy_from_slice(&[4 * t + i, x, a, b, c]);
             fill[bucket] += inside as u32;
@@ -540,6 +543,15 @@ pub(crate) fn bits_from_slots(slots: &[Vec<u64>], n: usize, scratch: Vec<u64>) -
     RankBits::from_words(words, n)
 }
 
+/// The sorted union of two sorted lists: the half-faces the pass never pairs (non-manifold
+/// faces and seams) are both lists of the structure.
+pub(crate) fn merged(a: &[u32], b: &[u32]) -> Vec<u32> {
+    let mut out: Vec<u32> = a.iter().chain(b).copied().collect();
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -591,7 +603,7 @@ mod against_walks {
                 .map(|_| [0; 4].map(|_| rnd(n)))
                 .collect();
             let chf = Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(1)).unwrap();
-            let flagged = crate::chf::build::merged(&chf.non_manifold, &chf.seams);
+            let flagged = merged(&chf.non_manifold, &chf.seams);
             let stars = stars(&chf.v, chf.n_vertices, &flagged, Pairs::Opposites, true, 1);
             assert!(!stars.split_needed);
             let walked = edges::canonical_slots(&chf.v, &chf.o);

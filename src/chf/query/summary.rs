@@ -2,10 +2,10 @@
 //! faces, kept tetrahedra), whatever the build split or left unpaired, plus what the build
 //! did.
 
-use super::Chf;
-use super::ids::face_cycle;
-use super::view::Need;
 use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::face_cycle;
+use crate::chf::query::view::Need;
 
 /// Field names match `chf_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]

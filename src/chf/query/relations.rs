@@ -2,11 +2,11 @@
 //! half-face and half-edge accessors. Vertex-centred relations are in `star.rs`, the
 //! rotation around an edge in `fan.rs`. Ids out of range panic; `check_*` first.
 
-use super::Chf;
-use super::ids::{
+use crate::chf::Chf;
+use crate::chf::ids::{
     self, HalfEdge, first, half_edge, he_face, he_origin, he_target, slot_half_edges, tet,
 };
-use super::view::Need;
+use crate::chf::query::view::Need;
 use crate::{Ids, NONE};
 
 impl Chf {
@@ -48,7 +48,7 @@ impl Chf {
     }
 
     /// The radial of half-edge `he`: the same edge on the twin half-face, or
-    /// [`super::NO_HALF_EDGE`] on the boundary. O(1) from level 1.
+    /// [`crate::chf::NO_HALF_EDGE`] on the boundary. O(1) from level 1.
     pub fn radial(&self, he: HalfEdge) -> HalfEdge {
         if self.level >= 1 {
             ids::radial(&self.v, &self.o, he)

@@ -20,10 +20,10 @@
 mod general;
 mod small;
 
-use super::edges::MultiFan;
-use super::ids::{FACE, edge_index};
-use super::report::push_example;
 use crate::NONE;
+use crate::chf::build::report::push_example;
+use crate::chf::edges::MultiFan;
+use crate::chf::ids::{FACE, edge_index};
 use small::Small;
 
 /// `[occurrence 4t + i, vertex x, the three other vertices of t in local order]`.
@@ -83,7 +83,10 @@ pub(crate) struct Sums<'a, 'o> {
     pub flagged: &'a [u32],
     /// Record the faces and their pairs (only right on the build's first pass, before any
     /// split).
-    pub faces: Option<(&'a mut FaceCensus, &'a mut super::pairs::Writer<'o>)>,
+    pub faces: Option<(
+        &'a mut FaceCensus,
+        &'a mut crate::chf::star_pass::pairs::Writer<'o>,
+    )>,
     /// Collect the pairs (else count the faces only), and all pairs of two half-faces
     /// (else only the mates).
     pub collect: bool,

@@ -1,6 +1,6 @@
 //! Exact memory of each container, so the cost of every level is visible.
 
-use super::Chf;
+use crate::chf::Chf;
 
 /// Bytes held by each container (lengths, not capacities).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]

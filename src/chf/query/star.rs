@@ -19,10 +19,10 @@
 //! tetrahedron of it is read once at the same time (the misses overlap) and then visited
 //! from the cache.
 
-use super::Chf;
-use super::ids::{edge_index, first, tet};
-use super::view::{Need, View};
 use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::{edge_index, first, tet};
+use crate::chf::query::view::{Need, View};
 
 /// Stars up to this many tetrahedra are walked without allocation.
 pub const INLINE: usize = 64;
@@ -279,7 +279,7 @@ enum Kind {
 
 /// The vertices, edges, faces or tetrahedra around a vertex, each once, in increasing id
 /// order (there is no rotation order around a vertex in 3D). Allocation-free for stars of
-/// up to [`super::STAR_INLINE`] tetrahedra (and answers of up to as many ids).
+/// up to [`crate::chf::STAR_INLINE`] tetrahedra (and answers of up to as many ids).
 #[derive(Clone, Debug)]
 pub struct VertexIds<'a> {
     ids: Ids,

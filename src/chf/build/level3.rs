@@ -15,11 +15,11 @@
 //! triangles joined through shared vertices, numbered in order of their first triangle.
 //! Below level 3 every map is computed for the call (O(T)).
 
-use super::Chf;
-use super::ids::face_cycle;
-use super::view::Need;
 use crate::NONE;
 use crate::che::{BuildOptions, Che};
+use crate::chf::Chf;
+use crate::chf::ids::face_cycle;
+use crate::chf::query::view::Need;
 use crate::error::Result;
 use crate::util::dsu::Dsu;
 use crate::util::rank::RankBits;
@@ -109,7 +109,7 @@ pub(crate) fn build(chf: &Chf, threads: usize) -> Result<Boundary> {
 
 /// Flagged half-faces (non-manifold or seam), all unpaired.
 fn flagged_count(chf: &Chf) -> usize {
-    super::build::merged(&chf.non_manifold, &chf.seams).len()
+    crate::chf::star_pass::merged(&chf.non_manifold, &chf.seams).len()
 }
 
 fn surface(chf: &Chf, p: &Parts, level: u8, threads: usize) -> Result<Che> {

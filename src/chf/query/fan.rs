@@ -3,10 +3,10 @@
 //! face of the same tetrahedron) and `radial` (the twin face, into the next tetrahedron).
 //! No allocation; O(k) for k tetrahedra, plus, for EE, the walk that names each edge.
 
-use super::Chf;
-use super::ids::{HalfEdge, NO_HALF_EDGE, he_face, he_next, mate, radial, tet};
-use super::view::{Need, View};
 use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::{HalfEdge, NO_HALF_EDGE, he_face, he_next, mate, radial, tet};
+use crate::chf::query::view::{Need, View};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {

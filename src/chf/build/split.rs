@@ -9,9 +9,9 @@
 //! through other tetrahedra (the link of an end vertex is then a pinched surface); the
 //! structure keeps one edge id per fan there (see `edges.rs`).
 
-use super::ids::{first, tet};
-use super::report::push_example;
 use crate::NONE;
+use crate::chf::build::report::push_example;
+use crate::chf::ids::{first, tet};
 
 pub(crate) struct Split {
     /// Origins of the appended copies (input ids), in order of creation.

@@ -9,11 +9,11 @@
 //! repeats. Every pass reads `V` in order (sequential memory). Around the edges (ET, EF) the rows are the rotations,
 //! walked on one view shared by all of them.
 
-use super::Chf;
-use super::fan::EdgeIds;
-use super::ids::{EDGE, face_cycle};
-use super::view::{Need, View};
 use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::{EDGE, face_cycle};
+use crate::chf::query::fan::EdgeIds;
+use crate::chf::query::view::{Need, View};
 
 /// Rows `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]

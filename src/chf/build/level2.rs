@@ -4,8 +4,8 @@
 //! over canonical half-faces plus `FH`) and edge ids (rank over canonical edge slots plus
 //! the tetrahedron of each).
 
-use super::Chf;
-use super::view::face_bits;
+use crate::chf::Chf;
+use crate::chf::query::view::face_bits;
 use crate::util::rank::RankBits;
 
 /// `edge_bits` (the canonical slots) and `vh` come from the star pass (`stars.rs`), run

@@ -10,9 +10,9 @@
 //! on a valid mesh both rules give the same result. Where a component cannot be oriented at
 //! all (a solid Klein bottle) the conflicting pairs become seams, left unpaired.
 
-use super::ids::{first, same_direction, tet};
-use super::report::push_example;
 use crate::NONE;
+use crate::chf::build::report::push_example;
+use crate::chf::ids::{first, same_direction, tet};
 
 pub(crate) struct Oriented {
     /// Opposites in the flipped numbering (seams left unpaired).

@@ -6,8 +6,8 @@ use super::{
     hf_of, slot_of_corner,
 };
 use crate::NONE;
+use crate::chf::build::report::push_example;
 use crate::chf::edges::MultiFan;
-use crate::chf::report::push_example;
 
 /// Per local of `x` and the order of the three other vertices (bit 0: `y0 < y1`, bit 1:
 /// `y0 < y2`, bit 2: `y1 < y2`), the direction bits of the three faces.

@@ -2,14 +2,22 @@
 //! half-faces, orient, split non-manifold vertices, name the edges, then build the
 //! requested level. Everything changed or left unpaired is counted in the report.
 
-use super::edges::{self, EdgeCensus};
-use super::ids::tet;
-use super::orient::{self, flipped_id};
-use super::report::ChfBuildReport;
-use super::stars::{self, Pairs};
-use super::strict::{strict_after_split, strict_faces};
-use super::{Chf, level2, level3, soup, split};
+pub(crate) mod level2;
+pub(crate) mod level3;
+mod orient;
+pub(crate) mod report;
+mod soup;
+mod split;
+mod strict;
+
+use self::orient::flipped_id;
+pub use self::report::ChfBuildReport;
+use self::strict::{strict_after_split, strict_faces};
 use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::edges::{self, EdgeCensus};
+use crate::chf::ids::tet;
+use crate::chf::star_pass::{self as stars, Pairs, merged};
 use crate::error::{Error, Result};
 use crate::util::rank::RankBits;
 use glam::DVec3;
@@ -296,14 +304,6 @@ fn record_edges(report: &mut ChfBuildReport, census: &EdgeCensus) {
     report.non_manifold_edge_examples = census.non_manifold_examples.clone();
     report.kept_non_manifold_edges = census.kept;
     report.kept_non_manifold_edge_examples = census.kept_examples.clone();
-}
-
-/// The sorted union of two sorted lists.
-pub(crate) fn merged(a: &[u32], b: &[u32]) -> Vec<u32> {
-    let mut out: Vec<u32> = a.iter().chain(b).copied().collect();
-    out.sort_unstable();
-    out.dedup();
-    out
 }
 
 #[cfg(test)]

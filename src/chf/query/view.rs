@@ -3,10 +3,11 @@
 //! level 1 stores), face and edge ranks at levels 0 and 1 (O(T)). Every query runs one code
 //! path on a view, so the answers are identical, in the same order, at every level.
 
-use super::edges::{self, MultiFan};
-use super::ids::{HalfEdge, first, he_face, local, sorted_triple, tet};
-use super::{Chf, stars};
 use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::edges::{self, MultiFan};
+use crate::chf::ids::{HalfEdge, first, he_face, local, sorted_triple, tet};
+use crate::chf::star_pass as stars;
 use crate::util::rank::RankBits;
 use std::borrow::Cow;
 
@@ -63,7 +64,7 @@ impl Chf {
         let edges = match (stored, need.edges) {
             (true, _) => Cow::Borrowed(&self.edge_bits),
             (false, true) => {
-                let flagged = super::build::merged(&self.non_manifold, &self.seams);
+                let flagged = stars::merged(&self.non_manifold, &self.seams);
                 Cow::Owned(
                     stars::stars(
                         &self.v,
@@ -94,7 +95,7 @@ impl Chf {
     /// only two on their vertex triple, run opposite ways, and are flagged neither
     /// non-manifold nor seam. Level 1 stores it; level 0 queries compute it.
     pub(crate) fn opposites_by_rule(&self) -> Vec<u32> {
-        let flagged = super::build::merged(&self.non_manifold, &self.seams);
+        let flagged = stars::merged(&self.non_manifold, &self.seams);
         let faces = stars::stars(
             &self.v,
             self.n_vertices,
@@ -123,7 +124,7 @@ impl Chf {
                 found = g;
             }
         }
-        if found != NONE && super::ids::same_direction(&self.v, hf, found) {
+        if found != NONE && crate::chf::ids::same_direction(&self.v, hf, found) {
             return NONE;
         }
         found

@@ -9,7 +9,7 @@
 //! some pair still runs the same way the build undoes the flip ([`Soup::unflip`]) and
 //! orients by propagation from the input as given.
 
-use super::report::{ChfBuildReport, push_example};
+use crate::chf::build::report::{ChfBuildReport, push_example};
 use crate::error::{Error, Result};
 use glam::DVec3;
 

@@ -97,6 +97,32 @@ pub struct Chf {
 }
 
 impl Chf {
+    /// No tetrahedron, no vertex: what the build fills in.
+    fn empty() -> Chf {
+        Chf {
+            level: 0,
+            n_input_vertices: 0,
+            n_vertices: 0,
+            v: Vec::new(),
+            o: Vec::new(),
+            vh: Vec::new(),
+            face_bits: RankBits::default(),
+            fh: Vec::new(),
+            edge_bits: RankBits::default(),
+            eh: Vec::new(),
+            boundary: None,
+            num_edges: 0,
+            num_faces: 0,
+            positions: Vec::new(),
+            vertex_origin: Vec::new(),
+            tet_origin: Vec::new(),
+            non_manifold: Vec::new(),
+            seams: Vec::new(),
+            multi_fan: Vec::new(),
+            report: ChfBuildReport::default(),
+        }
+    }
+
     /// Builds from tetrahedra over vertices `0..n_vertices`; `positions` is empty or holds
     /// `n_vertices` points.
     pub fn from_tetrahedra(
@@ -166,14 +192,16 @@ impl Chf {
         }
         if self.level < 2 && level >= 2 {
             let flagged = stars::merged(&self.non_manifold, &self.seams);
-            let stars = stars::stars(
-                &self.v,
-                self.n_vertices,
-                &flagged,
-                stars::Pairs::No,
-                true,
-                stars::threads_for(self.v.len() / 4, self.n_vertices, self.build_threads()),
-            );
+            let pass = stars::StarPass {
+                pairs: stars::Pairs::No,
+                tables: true,
+                threads: stars::threads_for(
+                    self.v.len() / 4,
+                    self.n_vertices,
+                    self.build_threads(),
+                ),
+            };
+            let stars = stars::stars(&self.v, self.n_vertices, &flagged, pass);
             debug_assert!(!stars.split_needed, "the build split every vertex");
             level2::build(self, stars.edge_bits, stars.vh);
             self.level = 2;

@@ -70,9 +70,11 @@ impl Chf {
                         &self.v,
                         self.n_vertices,
                         &flagged,
-                        stars::Pairs::No,
-                        true,
-                        1,
+                        stars::StarPass {
+                            pairs: stars::Pairs::No,
+                            tables: true,
+                            threads: 1,
+                        },
                     )
                     .edge_bits,
                 )
@@ -96,15 +98,12 @@ impl Chf {
     /// non-manifold nor seam. Level 1 stores it; level 0 queries compute it.
     pub(crate) fn opposites_by_rule(&self) -> Vec<u32> {
         let flagged = stars::merged(&self.non_manifold, &self.seams);
-        let faces = stars::stars(
-            &self.v,
-            self.n_vertices,
-            &flagged,
-            stars::Pairs::Opposites,
-            false,
-            1,
-        )
-        .faces;
+        let pass = stars::StarPass {
+            pairs: stars::Pairs::Opposites,
+            tables: false,
+            threads: 1,
+        };
+        let faces = stars::stars(&self.v, self.n_vertices, &flagged, pass).faces;
         faces.expect("faces were asked for").1
     }
 

@@ -70,61 +70,90 @@ pub(crate) fn threads_for(n_tets: usize, n_vertices: usize, threads: usize) -> u
     threads.clamp(1, (n_tets / (2 * n_vertices.max(1))).max(2))
 }
 
-/// The pass over `V` on up to `threads` threads (see [`threads_for`]). `flagged` (sorted) are half-faces never to pair: the build's
-/// non-manifold faces and seams once `V` is split or oriented. With `tables`, also `VH` and
-/// the edge bits (level 2); without, the build keeps less memory at levels 0 and 1. The
-/// stars of each round are shared among up to `threads` threads (contiguous ranges of
+/// What the pass collects besides the stars themselves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct StarPass {
+    /// Which pairs of half-faces to collect, with the face counts.
+    pub pairs: Pairs,
+    /// Also `VH` and the edge bits (level 2); without, the build keeps less memory at
+    /// levels 0 and 1.
+    pub tables: bool,
+    /// Threads to share each round among (see [`threads_for`]).
+    pub threads: usize,
+}
+
+/// The pass over `V` (see [`StarPass`]). `flagged` (sorted) are half-faces never to pair:
+/// the build's non-manifold faces and seams once `V` is split or oriented. The stars of
+/// each round are shared among up to `options.threads` threads (contiguous ranges of
 /// vertices), and what they find is added up in vertex order: the answer does not depend
 /// on the number of threads.
-pub(crate) fn stars(
-    v: &[u32],
-    n_vertices: usize,
-    flagged: &[u32],
-    pairs: Pairs,
-    tables: bool,
-    threads: usize,
-) -> Stars {
+pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], options: StarPass) -> Stars {
+    let StarPass {
+        pairs,
+        tables,
+        threads,
+    } = options;
     let faces = pairs != Pairs::No;
     let collect = matches!(pairs, Pairs::Partners | Pairs::Opposites);
-    let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
-    // At most 2^16 vertices per coarse bucket, so that the second pass's counts stay small
-    // (past 2^24 vertices there are more than 256 coarse buckets).
-    let shift = bits.saturating_sub(COARSE_BITS).min(16);
-    let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
-    let threads = threads.clamp(1, n_coarse);
-    // Each thread scatters the occurrences of a part of the tetrahedra (contiguous, so that
-    // the parts one after the other keep the tetrahedron order) to records of its own.
-    let part_len = (v.len() / 4).div_ceil(threads) * 4;
-    let mut parts: Vec<&[u32]> = v.chunks(part_len.max(4)).collect();
-    if parts.is_empty() {
-        parts.push(v);
-    }
-    let part_counts = crate::util::par::run_all(parts.clone(), |part| {
-        let mut count = vec![0u32; n_coarse];
-        for &x in part {
-            count[(x >> shift) as usize] += 1;
-        }
-        count
-    });
-    let count: Vec<u32> = (0..n_coarse)
-        .map(|c| part_counts.iter().map(|p| p[c]).sum())
-        .collect();
+    let plan = Plan::new(v, n_vertices, threads, tables);
     let opposites = Opposites::new(if collect { v.len() } else { 0 });
     let mut vh = if tables {
         crate::util::pages::filled(n_vertices, NONE)
     } else {
         Vec::new()
     };
+    let mut workers = workers(v.len(), n_vertices, plan.threads, &opposites, tables);
+    let mode = &Mode {
+        flagged,
+        faces,
+        collect,
+        partners: pairs == Pairs::Partners,
+        tables,
+        shift: plan.shift,
+    };
+    let mut records = plan.records(v.len());
+    let mut total = Tally::default();
+    for &round in &plan.rounds {
+        let vh = if tables { &mut vh[..] } else { &mut [] };
+        plan.round(round, &mut records, &mut workers, vh, mode, &mut total);
+    }
+    let mut edge_slots = Vec::with_capacity(workers.len());
+    for w in workers {
+        w.pairs.flush();
+        edge_slots.push(w.edge_slots);
+    }
+    // The pairs' memory then serves the edge bits.
+    let (o, scratch) = if collect {
+        opposites.finish(records)
+    } else {
+        (Vec::new(), Vec::new())
+    };
+    let edge_bits = if tables {
+        bits_from_slots(&edge_slots, 6 * (v.len() / 4), scratch)
+    } else {
+        RankBits::default()
+    };
+    total.into_stars(vh, edge_bits, faces.then_some(o))
+}
+
+/// A thread's scratch per part of the tetrahedra.
+fn workers<'o>(
+    len: usize,
+    n_vertices: usize,
+    threads: usize,
+    opposites: &'o Opposites,
+    tables: bool,
+) -> Vec<Worker<'o>> {
     // About one edge per vertex and per tetrahedron, plus one per boundary face pair
     // (Euler): reserved at once, so that growing by doubling copies nothing at the peak
     // (with a margin per thread, whose share of the edges is not known in advance).
-    let edge_estimate = n_vertices + v.len() / 4 + v.len() / 16;
+    let edge_estimate = n_vertices + len / 4 + len / 16;
     let share = if threads == 1 {
         edge_estimate
     } else {
         edge_estimate / threads + edge_estimate / 8
     };
-    let mut workers: Vec<Worker> = (0..threads)
+    (0..threads)
         .map(|_| {
             Worker::new(
                 n_vertices,
@@ -132,108 +161,135 @@ pub(crate) fn stars(
                 if tables { share } else { 0 },
             )
         })
-        .collect();
-    let mode = &Mode {
-        flagged,
-        faces,
-        collect,
-        partners: pairs == Pairs::Partners,
-        tables,
-        shift,
-    };
-    let mut total = Tally::default();
-    // Rounds of coarse buckets, so that the records stay under 16 bytes per tetrahedron
-    // (all of them would take 80): as many `u32` as `O` has entries, so that `O` can then
-    // take over the buffer (fresh memory costs a page fault per 4 KB).
-    // With the level-2 tables the final structure is larger, so the records may take 20
-    // bytes per tetrahedron at the same peak ratio: four rounds instead of five, each a
-    // pass over `V` (about 4% of the build; three rounds would take 27 bytes and lift the
-    // level-2 peak to about twice the final size).
-    let budget = (v.len() / if tables { 4 } else { 5 }).max(1 << 16);
-    // Each part's records of a round fit in its share of the budget, so that the regions
-    // of all parts (each as large as its part's largest round) add up to the budget.
-    let share = budget.div_ceil(parts.len());
-    let mut rounds = Vec::new();
-    let mut first = 0;
-    while first < n_coarse {
-        let mut in_round: Vec<usize> = part_counts.iter().map(|p| p[first] as usize).collect();
-        let mut last = first + 1;
-        while last < n_coarse
-            && part_counts
-                .iter()
-                .zip(&in_round)
-                .all(|(p, &n)| n + p[last] as usize <= share)
-        {
-            for (n, p) in in_round.iter_mut().zip(&part_counts) {
-                *n += p[last] as usize;
-            }
-            last += 1;
+        .collect()
+}
+
+/// How the pass cuts its work: the parts of `V` that threads scatter, the coarse buckets,
+/// the rounds over ranges of them and each part's region of the records buffer.
+struct Plan<'v> {
+    /// Threads asked for, at most one per coarse bucket: one worker each.
+    threads: usize,
+    /// The coarse bucket of vertex `x` is `x >> shift`.
+    shift: u32,
+    n_vertices: usize,
+    /// Contiguous parts of `V`, `part_len` ids each (the last one shorter).
+    parts: Vec<&'v [u32]>,
+    part_len: usize,
+    /// Occurrences per part and coarse bucket, and per coarse bucket in all.
+    part_counts: Vec<Vec<u32>>,
+    count: Vec<u32>,
+    /// Ranges of coarse buckets, one per round.
+    rounds: Vec<(usize, usize)>,
+    /// Each part's region of the records buffer: its length and where it starts.
+    sizes: Vec<usize>,
+    regions: Vec<usize>,
+}
+
+impl<'v> Plan<'v> {
+    fn new(v: &'v [u32], n_vertices: usize, threads: usize, tables: bool) -> Self {
+        let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
+        // At most 2^16 vertices per coarse bucket, so that the second pass's counts stay
+        // small (past 2^24 vertices there are more than 256 coarse buckets).
+        let shift = bits.saturating_sub(COARSE_BITS).min(16);
+        let n_coarse = (n_vertices.saturating_sub(1) >> shift) + 1;
+        let threads = threads.clamp(1, n_coarse);
+        // Each thread scatters the occurrences of a part of the tetrahedra (contiguous, so
+        // that the parts one after the other keep the tetrahedron order) to records of its
+        // own.
+        let part_len = (v.len() / 4).div_ceil(threads) * 4;
+        let mut parts: Vec<&[u32]> = v.chunks(part_len.max(4)).collect();
+        if parts.is_empty() {
+            parts.push(v);
         }
-        rounds.push((first, last));
-        first = last;
+        let part_counts = crate::util::par::run_all(parts.clone(), |part| {
+            let mut count = vec![0u32; n_coarse];
+            for &x in part {
+                count[(x >> shift) as usize] += 1;
+            }
+            count
+        });
+        let count: Vec<u32> = (0..n_coarse)
+            .map(|c| part_counts.iter().map(|p| p[c]).sum())
+            .collect();
+        // Rounds of coarse buckets, so that the records stay under 16 bytes per tetrahedron
+        // (all of them would take 80): as many `u32` as `O` has entries, so that `O` can
+        // then take over the buffer (fresh memory costs a page fault per 4 KB).
+        // With the level-2 tables the final structure is larger, so the records may take
+        // 20 bytes per tetrahedron at the same peak ratio: four rounds instead of five, each
+        // a pass over `V` (three rounds would take 27 bytes and lift the level-2 peak to
+        // about twice the final size).
+        let budget = (v.len() / if tables { 4 } else { 5 }).max(1 << 16);
+        // Each part's records of a round fit in its share of the budget, so that the
+        // regions of all parts (each as large as its part's largest round) add up to the
+        // budget.
+        let rounds = rounds(&part_counts, budget.div_ceil(parts.len()));
+        let sizes = region_sizes(&part_counts, &rounds);
+        // Never cleared: every record a round reads, it wrote. Where each region starts:
+        let regions: Vec<usize> = sizes
+            .iter()
+            .scan(0, |at, &n| {
+                *at += n;
+                Some(*at - n)
+            })
+            .collect();
+        Plan {
+            threads,
+            shift,
+            n_vertices,
+            parts,
+            part_len,
+            part_counts,
+            count,
+            rounds,
+            sizes,
+            regions,
+        }
     }
-    // Flat records, five `u32` each, in one buffer cut in a region per part (each as large
-    // as the part's largest round needs, plus a spare record at its end that takes the
-    // writes of the occurrences outside the round, so that the scatter has no branch).
-    // One buffer, at least as large as `O`, so that `O` can then take it over.
-    let sizes: Vec<usize> = part_counts
-        .iter()
-        .map(|pc| {
-            let most = rounds
-                .iter()
-                .map(|&(a, b)| pc[a..b].iter().map(|&c| c as usize).sum::<usize>())
-                .max()
-                .unwrap_or(0);
-            5 * (most + 1)
-        })
-        .collect();
-    let mut records: Vec<u32> =
-        crate::util::pages::with_capacity(v.len().max(sizes.iter().sum::<usize>()));
-    records.resize(sizes.iter().sum(), 0);
-    // Never cleared: every record a round reads, it wrote. Where each region starts:
-    let regions: Vec<usize> = sizes
-        .iter()
-        .scan(0, |at, &n| {
-            *at += n;
-            Some(*at - n)
-        })
-        .collect();
-    for &(first, last) in &rounds {
+
+    /// One buffer for every region, at least as large as `O` (`len` ids), so that `O` can
+    /// then take it over.
+    fn records(&self, len: usize) -> Vec<u32> {
+        let total = self.sizes.iter().sum::<usize>();
+        let mut records: Vec<u32> = crate::util::pages::with_capacity(len.max(total));
+        records.resize(total, 0);
+        records
+    }
+
+    /// One round over coarse buckets `first..last`: every part scatters its occurrences to
+    /// its region, then each worker takes the stars of a run of the buckets.
+    fn round(
+        &self,
+        (first, last): (usize, usize),
+        records: &mut [u32],
+        workers: &mut [Worker],
+        vh: &mut [u32],
+        mode: &Mode,
+        total: &mut Tally,
+    ) {
+        let shift = self.shift;
         let mut rest = &mut records[..];
-        let mut jobs = Vec::with_capacity(parts.len());
-        for (j, (&part, pc)) in parts.iter().zip(&part_counts).enumerate() {
-            let (mine, r) = std::mem::take(&mut rest).split_at_mut(sizes[j]);
+        let mut jobs = Vec::with_capacity(self.parts.len());
+        for (j, (&part, pc)) in self.parts.iter().zip(&self.part_counts).enumerate() {
+            let (mine, r) = std::mem::take(&mut rest).split_at_mut(self.sizes[j]);
             rest = r;
-            jobs.push((j * part_len / 4, part, &pc[first..last], mine));
+            jobs.push((j * self.part_len / 4, part, &pc[first..last], mine));
         }
         let starts = crate::util::par::run_all(jobs, |(t0, part, pc, rec)| {
             scatter(part, t0 as u32, pc, first as u32, shift, rec)
         });
         let records = &records[..];
-        // Each thread takes a run of coarse buckets with about its share of the records.
-        let in_round: usize = count[first..last].iter().map(|&c| c as usize).sum();
-        let mut cuts = vec![first];
-        let mut acc = 0;
-        for (c, &n) in count.iter().enumerate().take(last).skip(first) {
-            acc += n as usize;
-            if cuts.len() < workers.len() && acc * workers.len() >= in_round * cuts.len() {
-                cuts.push(c + 1);
-            }
-        }
-        while cuts.len() <= workers.len() {
-            cuts.push(last);
-        }
+        let cuts = self.cuts(first, last, workers.len());
+        let n_vertices = self.n_vertices;
         let mut jobs = Vec::with_capacity(workers.len());
-        let mut vh_rest = if tables {
-            let from = (first << shift).min(n_vertices);
-            &mut vh[from..]
+        let mut vh_rest = if mode.tables {
+            &mut vh[(first << shift).min(n_vertices)..]
         } else {
             &mut []
         };
         for (k, worker) in workers.iter_mut().enumerate() {
             let (a, b) = (cuts[k] - first, cuts[k + 1] - first);
             let vh_base = ((first + a) << shift).min(n_vertices);
-            let vh_len = if tables {
+            let vh_len = if mode.tables {
                 ((first + b) << shift).min(n_vertices) - vh_base
             } else {
                 0
@@ -243,7 +299,7 @@ pub(crate) fn stars(
             // Bucket `c` of this run, from every part in turn.
             let buckets: Vec<Vec<&[u32]>> = (a..b)
                 .map(|c| {
-                    regions
+                    self.regions
                         .iter()
                         .zip(&starts)
                         .map(|(&lo, st)| {
@@ -261,49 +317,68 @@ pub(crate) fn stars(
             total.add(t);
         }
     }
-    let mut edge_slots = Vec::with_capacity(workers.len());
-    for w in workers {
-        w.pairs.flush();
-        edge_slots.push(w.edge_slots);
+
+    /// Where each of `n_workers` runs of coarse buckets starts (and, last, `last`): runs
+    /// of about an equal share of the round's records.
+    fn cuts(&self, first: usize, last: usize, n_workers: usize) -> Vec<usize> {
+        let count = &self.count;
+        let in_round: usize = count[first..last].iter().map(|&c| c as usize).sum();
+        let mut cuts = vec![first];
+        let mut acc = 0;
+        for (c, &n) in count.iter().enumerate().take(last).skip(first) {
+            acc += n as usize;
+            if cuts.len() < n_workers && acc * n_workers >= in_round * cuts.len() {
+                cuts.push(c + 1);
+            }
+        }
+        while cuts.len() <= n_workers {
+            cuts.push(last);
+        }
+        cuts
     }
-    let Tally {
-        split_needed,
-        num_edges,
-        input_edges,
-        non_manifold_edges,
-        non_manifold_edge_examples,
-        mut multi_fan,
-        census,
-    } = total;
-    // The pairs' memory then serves the edge bits.
-    let (o, scratch) = if collect {
-        opposites.finish(records)
-    } else {
-        (Vec::new(), Vec::new())
-    };
-    let edge_bits = if tables {
-        bits_from_slots(&edge_slots, 6 * (v.len() / 4), scratch)
-    } else {
-        RankBits::default()
-    };
-    multi_fan.sort_unstable();
-    let edge_census = EdgeCensus {
-        input_edges,
-        non_manifold: non_manifold_edges,
-        non_manifold_examples: non_manifold_edge_examples.clone(),
-        // Without a split the structure pairs are the input pairs.
-        kept: non_manifold_edges,
-        kept_examples: non_manifold_edge_examples,
-        multi_fan,
-    };
-    Stars {
-        split_needed,
-        num_edges,
-        vh,
-        edge_bits,
-        census: edge_census,
-        faces: faces.then_some((census, o)),
+}
+
+/// Ranges of coarse buckets such that each part's occurrences in a range fit in `share`
+/// records (a range holds at least one bucket).
+fn rounds(part_counts: &[Vec<u32>], share: usize) -> Vec<(usize, usize)> {
+    let n_coarse = part_counts.first().map_or(0, Vec::len);
+    let mut rounds = Vec::new();
+    let mut first = 0;
+    while first < n_coarse {
+        let mut in_round: Vec<usize> = part_counts.iter().map(|p| p[first] as usize).collect();
+        let mut last = first + 1;
+        while last < n_coarse
+            && part_counts
+                .iter()
+                .zip(&in_round)
+                .all(|(p, &n)| n + p[last] as usize <= share)
+        {
+            for (n, p) in in_round.iter_mut().zip(part_counts) {
+                *n += p[last] as usize;
+            }
+            last += 1;
+        }
+        rounds.push((first, last));
+        first = last;
     }
+    rounds
+}
+
+/// Flat records, five `u32` each, in one buffer cut in a region per part: each as large as
+/// the part's largest round needs, plus a spare record at its end that takes the writes of
+/// the occurrences outside the round, so that the scatter has no branch.
+fn region_sizes(part_counts: &[Vec<u32>], rounds: &[(usize, usize)]) -> Vec<usize> {
+    part_counts
+        .iter()
+        .map(|pc| {
+            let most = rounds
+                .iter()
+                .map(|&(a, b)| pc[a..b].iter().map(|&c| c as usize).sum::<usize>())
+                .max()
+                .unwrap_or(0);
+            5 * (most + 1)
+        })
+        .collect()
 }
 
 /// Scatters the occurrences in `part` (tetrahedra from `t0` on) of the vertices of the
@@ -368,6 +443,37 @@ struct Tally {
 }
 
 impl Tally {
+    /// What the pass found, with the tables it wrote and, with pairs asked for, the pairs.
+    fn into_stars(self, vh: Vec<u32>, edge_bits: RankBits, o: Option<Vec<u32>>) -> Stars {
+        let Tally {
+            split_needed,
+            num_edges,
+            input_edges,
+            non_manifold_edges,
+            non_manifold_edge_examples,
+            mut multi_fan,
+            census,
+        } = self;
+        multi_fan.sort_unstable();
+        let edge_census = EdgeCensus {
+            input_edges,
+            non_manifold: non_manifold_edges,
+            non_manifold_examples: non_manifold_edge_examples.clone(),
+            // Without a split the structure pairs are the input pairs.
+            kept: non_manifold_edges,
+            kept_examples: non_manifold_edge_examples,
+            multi_fan,
+        };
+        Stars {
+            split_needed,
+            num_edges,
+            vh,
+            edge_bits,
+            census: edge_census,
+            faces: o.map(|o| (census, o)),
+        }
+    }
+
     /// Adds `t`, which covers vertices after all those of `self`.
     fn add(&mut self, t: Tally) {
         self.split_needed |= t.split_needed;
@@ -399,6 +505,13 @@ struct Worker<'o> {
     link: Link,
     pairs: Writer<'o>,
     edge_slots: Vec<u64>,
+    sorter: Sorter,
+}
+
+/// A coarse bucket's records sorted by vertex: `local[fine_start[i]..fine_start[i + 1]]`
+/// holds the records of the bucket's `i`-th vertex.
+#[derive(Default)]
+struct Sorter {
     local: Vec<Record>,
     fine_start: Vec<u32>,
     cursor: Vec<u32>,
@@ -414,9 +527,7 @@ impl<'o> Worker<'o> {
             } else {
                 crate::util::pages::with_capacity(edge_slots)
             },
-            local: Vec::new(),
-            fine_start: Vec::new(),
-            cursor: Vec::new(),
+            sorter: Sorter::default(),
         }
     }
 
@@ -448,44 +559,68 @@ impl<'o> Worker<'o> {
             multi_fan: Vec::new(),
         };
         let n_fine = 1usize << mode.shift;
-        let mask = (n_fine - 1) as u32;
-        self.fine_start.resize(n_fine + 1, 0);
-        self.cursor.resize(n_fine, 0);
+        let sorter = &mut self.sorter;
+        sorter.fine_start.resize(n_fine + 1, 0);
+        sorter.cursor.resize(n_fine, 0);
         for parts in buckets {
-            let bucket = || {
-                parts
-                    .iter()
-                    .flat_map(|p| p.chunks_exact(5))
-                    .map(|r| [r[0], r[1], r[2], r[3], r[4]])
-            };
-            let fine_start = &mut self.fine_start;
-            fine_start.fill(0);
-            for r in bucket() {
-                fine_start[(r[1] & mask) as usize + 1] += 1;
-            }
-            for i in 0..n_fine {
-                fine_start[i + 1] += fine_start[i];
-            }
-            let size = fine_start[n_fine] as usize;
-            if size == 0 {
+            if sorter.sort_bucket(parts, n_fine) == 0 {
                 continue;
             }
-            if self.local.len() < size {
-                self.local.resize(size, [0; 5]);
-            }
-            self.cursor.copy_from_slice(&fine_start[..n_fine]);
-            for r in bucket() {
-                let slot = &mut self.cursor[(r[1] & mask) as usize];
-                self.local[*slot as usize] = r;
-                *slot += 1;
-            }
+            let fine_start = &sorter.fine_start;
             for i in 0..n_fine {
-                let star = &self.local[fine_start[i] as usize..fine_start[i + 1] as usize];
+                let star = &sorter.local[fine_start[i] as usize..fine_start[i + 1] as usize];
                 if !star.is_empty() {
                     self.link.star(star, &mut sums);
                 }
             }
         }
+        let mut tally = Tally::from_sums(sums);
+        tally.census = census;
+        tally
+    }
+}
+
+impl Sorter {
+    /// Sorts the records of one coarse bucket (from every part in turn) into `local` by the
+    /// low bits of the vertex, `fine_start` marking where each vertex's records start;
+    /// returns how many records.
+    #[inline(always)]
+    fn sort_bucket(&mut self, parts: &[&[u32]], n_fine: usize) -> usize {
+        let mask = (n_fine - 1) as u32;
+        let bucket = || {
+            parts
+                .iter()
+                .flat_map(|p| p.chunks_exact(5))
+                .map(|r| [r[0], r[1], r[2], r[3], r[4]])
+        };
+        let fine_start = &mut self.fine_start;
+        fine_start.fill(0);
+        for r in bucket() {
+            fine_start[(r[1] & mask) as usize + 1] += 1;
+        }
+        for i in 0..n_fine {
+            fine_start[i + 1] += fine_start[i];
+        }
+        let size = fine_start[n_fine] as usize;
+        if size == 0 {
+            return 0;
+        }
+        if self.local.len() < size {
+            self.local.resize(size, [0; 5]);
+        }
+        self.cursor.copy_from_slice(&fine_start[..n_fine]);
+        for r in bucket() {
+            let slot = &mut self.cursor[(r[1] & mask) as usize];
+            self.local[*slot as usize] = r;
+            *slot += 1;
+        }
+        size
+    }
+}
+
+impl Tally {
+    /// What a worker's sums of one round add up to (the face census aside).
+    fn from_sums(sums: Sums) -> Tally {
         let Sums {
             split_needed,
             num_edges,
@@ -502,13 +637,13 @@ impl<'o> Worker<'o> {
             non_manifold_edges,
             non_manifold_edge_examples,
             multi_fan,
-            census,
+            census: FaceCensus::default(),
         }
     }
 }
 
 /// The rank bits of `n` slots with `slots` set: the slots are bucketed by window of bits
-/// first (at most 512 windows), then each window's bits are set in cache. `scratch` is
+/// first (at most 256 windows), then each window's bits are set in cache. `scratch` is
 /// memory to reuse.
 pub(crate) fn bits_from_slots(slots: &[Vec<u64>], n: usize, scratch: Vec<u64>) -> RankBits {
     let n_slots: usize = slots.iter().map(Vec::len).sum();
@@ -604,7 +739,16 @@ mod against_walks {
                 .collect();
             let chf = Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(1)).unwrap();
             let flagged = merged(&chf.non_manifold, &chf.seams);
-            let stars = stars(&chf.v, chf.n_vertices, &flagged, Pairs::Opposites, true, 1);
+            let stars = stars(
+                &chf.v,
+                chf.n_vertices,
+                &flagged,
+                StarPass {
+                    pairs: Pairs::Opposites,
+                    tables: true,
+                    threads: 1,
+                },
+            );
             assert!(!stars.split_needed);
             let walked = edges::canonical_slots(&chf.v, &chf.o);
             let n_slots = 6 * chf.num_tetrahedra();
@@ -641,9 +785,33 @@ mod against_walks {
                 .collect();
             for pairs in [Pairs::No, Pairs::Census, Pairs::Partners, Pairs::Opposites] {
                 for tables in [false, true] {
-                    let one = format!("{:?}", stars(&v, n, &[], pairs, tables, 1));
+                    let one = format!(
+                        "{:?}",
+                        stars(
+                            &v,
+                            n,
+                            &[],
+                            StarPass {
+                                pairs,
+                                tables,
+                                threads: 1
+                            }
+                        )
+                    );
                     for threads in [2, 3, 7] {
-                        let many = format!("{:?}", stars(&v, n, &[], pairs, tables, threads));
+                        let many = format!(
+                            "{:?}",
+                            stars(
+                                &v,
+                                n,
+                                &[],
+                                StarPass {
+                                    pairs,
+                                    tables,
+                                    threads
+                                }
+                            )
+                        );
                         assert!(
                             one == many,
                             "n {n}, {pairs:?}, tables {tables}, {threads} threads"

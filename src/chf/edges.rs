@@ -13,9 +13,8 @@
 //! `e`-th canonical slot. Level 2 stores one bit per slot (a rank: 1.5 bits per slot) and
 //! finding the canonical slot of any half-edge walks around the edge until a marked slot,
 //! O(k) for k tetrahedra around it; a per-slot id array would make that O(1) for 24 bytes
-//! per tetrahedron, 3/4 of level 1, which we judged too much. Measured (release, a 40^3
-//! box of 384k tetrahedra, k about 5): naming an edge from a half-edge about 60 ns, TE
-//! 380 ns per tetrahedron, EE 930 ns per edge, against 26 ns for TT and 67 ns for TF.
+//! per tetrahedron, 3/4 of level 1, which we judged too much: TE and EE, which name edges
+//! from half-edges, are the relations that pay for it.
 
 use crate::chf::build::report::push_example;
 use crate::chf::ids::{HalfEdge, NO_HALF_EDGE, mate, radial, slot_half_edges, slot_of};

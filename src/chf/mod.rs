@@ -9,8 +9,10 @@
 //! [`ids`], the edge fans in `edges.rs`. `build/` is the pipeline from a tetrahedron list
 //! (`build/mod.rs` names its steps), `query/` answers the relations on a view of the level's
 //! tables, and `star_pass/` is the one pass over every vertex star that both use: the build
-//! for `O`, `VH` and the edge ids, a query below level 2 for the ranks it lacks. Every query works at every level; a higher level only answers faster. The build
-//! always canonicalises the input (degenerate tetrahedra dropped, components oriented,
+//! for `O`, `VH` and the edge ids, a query below level 2 for the ranks it lacks.
+//!
+//! Every query works at every level; a higher level only answers faster. The build always
+//! canonicalises the input (degenerate tetrahedra dropped, components oriented,
 //! non-manifold vertices split) so that half-face, edge and face ids are the same at every
 //! level, and so are the answers, in the same order.
 //!

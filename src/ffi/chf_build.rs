@@ -175,6 +175,15 @@ pub unsafe extern "C" fn chf_mesh_build_level(m: *mut ChfMesh, level: u32) -> St
     })
 }
 
+/// Checks every invariant of the mesh at its level: `TOPOMESH_STATUS_OK`, or
+/// `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (the element and what is
+/// wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_validate(m: *const ChfMesh) -> Status {
+    // SAFETY: caller contract: NULL or a live handle.
+    guard(|| unsafe { handle(m, "m")? }.chf.validate())
+}
+
 /// Runs a count on a handle; NULL gives 0.
 ///
 /// # Safety

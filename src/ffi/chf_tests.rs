@@ -150,3 +150,18 @@ fn relations_and_bulk_rows_agree_at_every_level() {
         chf_mesh_free(null_mut());
     }
 }
+
+#[test]
+fn validate_passes_on_a_build_and_rejects_null() {
+    for level in 0..=3 {
+        let m = build(&PAIR, 5, level);
+        // SAFETY: a live handle, freed once.
+        unsafe {
+            assert_eq!(chf_mesh_validate(m), Status::Ok);
+            chf_mesh_free(m);
+        }
+    }
+    // SAFETY: NULL is allowed and reported.
+    assert_eq!(unsafe { chf_mesh_validate(null()) }, Status::NullArgument);
+    with_last_error(|e| assert!(e.contains('m'), "{e}"));
+}

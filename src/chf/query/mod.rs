@@ -7,6 +7,7 @@ pub(crate) mod memory;
 pub(crate) mod relations;
 pub(crate) mod star;
 pub(crate) mod summary;
+mod validate;
 pub(crate) mod view;
 
 pub use bulk::ChfCsr;

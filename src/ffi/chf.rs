@@ -1,7 +1,9 @@
 //! The `chf_mesh` handle: a boxed [`Chf`] plus the identity origin maps, materialised on
 //! the first request for a zero-copy view (the core stores none when they are the identity).
 
+use super::boundary::{Sink, guard, guard_or, handle, value_answer};
 use super::che::level_arg;
+use super::status::Status;
 use crate::chf::{Chf, ChfBuildOptions as CoreOptions};
 use crate::error::Result;
 use std::sync::OnceLock;
@@ -84,4 +86,63 @@ impl ChfBuildOptions {
 #[unsafe(no_mangle)]
 pub extern "C" fn chf_build_options_default() -> ChfBuildOptions {
     ChfBuildOptions::default()
+}
+
+/// The shapes of the per-element exports: the guard, the range check of the element, one
+/// call into the core.
+///
+/// A count or other plain value of the mesh; the default (0, false) for NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+pub(super) unsafe fn count<T: Default>(m: *const ChfMesh, f: impl FnOnce(&Chf) -> T) -> T {
+    // SAFETY: forwarded contract.
+    guard_or(T::default(), || Ok(f(&unsafe { handle(m, "m")? }.chf)))
+}
+
+/// The range check of an element id.
+pub(super) type Check = fn(&Chf, u32) -> Result<()>;
+
+/// One value about element `id` into `*out`, after `check`.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `out` NULL or valid for one write.
+#[inline(always)]
+pub(super) unsafe fn value<T>(
+    m: *const ChfMesh,
+    out: *mut T,
+    check: Check,
+    id: u32,
+    f: impl FnOnce(&Chf) -> T,
+) -> Status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        value_answer(m, out, |m: &ChfMesh| {
+            check(&m.chf, id)?;
+            Ok(f(&m.chf))
+        })
+    }
+}
+
+/// The answer about element `id` into the caller buffer `out = (buf, cap, out_len)`,
+/// after `check`.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `buf` NULL or valid for `cap` writes; `out_len` NULL or
+/// valid for one write.
+#[inline(always)]
+pub(super) unsafe fn ids<'a, I: IntoIterator<Item = u32>>(
+    m: *const ChfMesh,
+    (buf, cap, out_len): (*mut u32, usize, *mut usize),
+    check: Check,
+    id: u32,
+    f: impl FnOnce(&'a Chf) -> I,
+) -> Status {
+    guard(|| {
+        // SAFETY: forwarded contract.
+        let (m, mut sink) = unsafe { (handle(m, "m")?, Sink::new(buf, cap, out_len, "buf")?) };
+        check(&m.chf, id)?;
+        sink.extend(f(&m.chf));
+        sink.finish()
+    })
 }

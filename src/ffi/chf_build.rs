@@ -1,14 +1,12 @@
 //! Making, freeing and re-levelling `chf_mesh` handles, and their counts.
 
-use super::boundary::{
-    cstr_arg, free_handle, guard, guard_or, handle, handle_mut, handle_out, new_handle,
-};
+use super::boundary::{cstr_arg, free_handle, guard, handle, handle_mut, handle_out, new_handle};
 use super::che::level_arg;
-use super::chf::{ChfBuildOptions, ChfMesh};
+use super::chf::{ChfBuildOptions, ChfMesh, count};
 use super::mesh_arrays::{Cells, mesh_arrays};
 use super::status::Status;
 use crate::chf::{Chf, ChfBuildOptions as CoreOptions, MAX_TETRAHEDRA};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use std::ffi::c_char;
 
 /// Builds from C arrays (sizes checked before any slice is made).
@@ -130,26 +128,22 @@ pub unsafe extern "C" fn chf_mesh_load_ex(
                 cstr_arg(path, "path")?,
             )
         };
-        let path = std::path::Path::new(
-            <std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(path.to_bytes()),
-        );
-        let data = crate::io::read(path)?;
-        if !data.is_volume() {
-            return Err(Error::invalid(format!(
-                "{}: holds no tetrahedra ({} triangles: a surface, not a volume mesh)",
-                path.display(),
-                data.triangles.len()
-            )));
-        }
-        let chf = Chf::from_tetrahedra(
-            &data.tetrahedra,
-            data.num_vertices(),
-            &data.positions,
-            options,
-        )?;
+        let chf = Chf::load(path_of(path)?, options)?;
         new_handle(ChfMesh::new(chf), &out);
         Ok(())
     })
+}
+
+/// A C path as a `Path`: its bytes on Unix, UTF-8 elsewhere.
+fn path_of(path: &std::ffi::CStr) -> Result<&std::path::Path> {
+    #[cfg(unix)]
+    let os = <std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(path.to_bytes());
+    #[cfg(not(unix))]
+    let os = std::ffi::OsStr::new(
+        path.to_str()
+            .map_err(|_| crate::error::Error::invalid("path is not UTF-8"))?,
+    );
+    Ok(std::path::Path::new(os))
 }
 
 /// Frees a mesh; NULL is a no-op. Needs exclusive access.
@@ -182,18 +176,6 @@ pub unsafe extern "C" fn chf_mesh_build_level(m: *mut ChfMesh, level: u32) -> St
 pub unsafe extern "C" fn chf_mesh_validate(m: *const ChfMesh) -> Status {
     // SAFETY: caller contract: NULL or a live handle.
     guard(|| unsafe { handle(m, "m")? }.chf.validate())
-}
-
-/// Runs a count on a handle; NULL gives 0.
-///
-/// # Safety
-/// `m` is NULL or a live handle.
-unsafe fn count(m: *const ChfMesh, f: impl FnOnce(&Chf) -> usize) -> usize {
-    guard_or(0, || {
-        // SAFETY: forwarded contract.
-        let m = unsafe { handle(m, "m")? };
-        Ok(f(&m.chf))
-    })
 }
 
 /// The current level (0..3); 0 for NULL.

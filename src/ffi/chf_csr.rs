@@ -15,9 +15,7 @@
 use super::boundary::{CsrSink, csr_answer};
 use super::chf::ChfMesh;
 use super::status::Status;
-use crate::NONE;
 use crate::chf::{Chf, ChfCsr};
-use crate::error::Result;
 
 /// Copies the rows of a CSR computed in full.
 fn copy(s: &mut CsrSink<'_>, c: &ChfCsr) {
@@ -37,20 +35,21 @@ fn stream(s: &mut CsrSink<'_>, row: impl IntoIterator<Item = u32>) {
     }
 }
 
-/// The CSR calls' shared body on a `ChfMesh` (see `boundary::csr_answer`).
+/// The caller's buffers of a CSR call, `(offsets, offsets_cap, indices, indices_cap)`, and
+/// where the lengths go, `(n_offsets, n_indices)`.
+type Buffers = (*mut u32, usize, *mut u32, usize);
+type Lengths = (*mut usize, *mut usize);
+
+/// The CSR calls' shared body on a `ChfMesh` (see `boundary::csr_answer`): `fill` writes
+/// the rows.
 ///
 /// # Safety
 /// As `boundary::csr_answer`.
-#[allow(clippy::too_many_arguments)]
 unsafe fn csr(
     m: *const ChfMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
-    fill: impl FnOnce(&Chf, &mut CsrSink<'_>) -> Result<()>,
+    (offsets, offsets_cap, indices, indices_cap): Buffers,
+    (n_offsets, n_indices): Lengths,
+    fill: impl FnOnce(&Chf, &mut CsrSink<'_>),
 ) -> Status {
     // SAFETY: forwarded contract.
     unsafe {
@@ -62,7 +61,10 @@ unsafe fn csr(
             indices_cap,
             n_offsets,
             n_indices,
-            |m: &ChfMesh, s| fill(&m.chf, s),
+            |m: &ChfMesh, s| {
+                fill(&m.chf, s);
+                Ok(())
+            },
         )
     }
 }
@@ -78,22 +80,10 @@ pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        csr(
-            m,
-            offsets,
-            offsets_cap,
-            indices,
-            indices_cap,
-            n_offsets,
-            n_indices,
-            |chf, s| {
-                copy(s, &chf.all_vertex_vertices());
-                Ok(())
-            },
-        )
-    }
+    let bufs = (offsets, offsets_cap, indices, indices_cap);
+    let lens = (n_offsets, n_indices);
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe { csr(m, bufs, lens, |c, s| copy(s, &c.all_vertex_vertices())) }
 }
 
 /// VE for every vertex (rows as `chf_vertex_edges`).
@@ -107,22 +97,10 @@ pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        csr(
-            m,
-            offsets,
-            offsets_cap,
-            indices,
-            indices_cap,
-            n_offsets,
-            n_indices,
-            |chf, s| {
-                copy(s, &chf.all_vertex_edges());
-                Ok(())
-            },
-        )
-    }
+    let bufs = (offsets, offsets_cap, indices, indices_cap);
+    let lens = (n_offsets, n_indices);
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe { csr(m, bufs, lens, |c, s| copy(s, &c.all_vertex_edges())) }
 }
 
 /// VF for every vertex (rows as `chf_vertex_faces`).
@@ -136,22 +114,10 @@ pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        csr(
-            m,
-            offsets,
-            offsets_cap,
-            indices,
-            indices_cap,
-            n_offsets,
-            n_indices,
-            |chf, s| {
-                copy(s, &chf.all_vertex_faces());
-                Ok(())
-            },
-        )
-    }
+    let bufs = (offsets, offsets_cap, indices, indices_cap);
+    let lens = (n_offsets, n_indices);
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe { csr(m, bufs, lens, |c, s| copy(s, &c.all_vertex_faces())) }
 }
 
 /// VT for every vertex (rows as `chf_vertex_tetrahedra`).
@@ -165,22 +131,10 @@ pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        csr(
-            m,
-            offsets,
-            offsets_cap,
-            indices,
-            indices_cap,
-            n_offsets,
-            n_indices,
-            |chf, s| {
-                copy(s, &chf.all_vertex_tetrahedra());
-                Ok(())
-            },
-        )
-    }
+    let bufs = (offsets, offsets_cap, indices, indices_cap);
+    let lens = (n_offsets, n_indices);
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
+    unsafe { csr(m, bufs, lens, |c, s| copy(s, &c.all_vertex_tetrahedra())) }
 }
 
 /// EF for every edge (rows as `chf_edge_faces`, in rotation order).
@@ -194,21 +148,13 @@ pub unsafe extern "C" fn chf_mesh_edge_faces_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
+    let bufs = (offsets, offsets_cap, indices, indices_cap);
+    let lens = (n_offsets, n_indices);
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
     unsafe {
-        csr(
-            m,
-            offsets,
-            offsets_cap,
-            indices,
-            indices_cap,
-            n_offsets,
-            n_indices,
-            |chf, s| {
-                chf.for_each_edge_faces(|_, row| stream(s, row));
-                Ok(())
-            },
-        )
+        csr(m, bufs, lens, |c, s| {
+            c.for_each_edge_faces(|_, row| stream(s, row))
+        })
     }
 }
 
@@ -223,21 +169,13 @@ pub unsafe extern "C" fn chf_mesh_edge_tetrahedra_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
+    let bufs = (offsets, offsets_cap, indices, indices_cap);
+    let lens = (n_offsets, n_indices);
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
     unsafe {
-        csr(
-            m,
-            offsets,
-            offsets_cap,
-            indices,
-            indices_cap,
-            n_offsets,
-            n_indices,
-            |chf, s| {
-                chf.for_each_edge_tetrahedra(|_, row| stream(s, row));
-                Ok(())
-            },
-        )
+        csr(m, bufs, lens, |c, s| {
+            c.for_each_edge_tetrahedra(|_, row| stream(s, row))
+        })
     }
 }
 
@@ -254,30 +192,12 @@ pub unsafe extern "C" fn chf_mesh_tetrahedron_tetrahedra_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract.
+    let bufs = (offsets, offsets_cap, indices, indices_cap);
+    let lens = (n_offsets, n_indices);
+    // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
     unsafe {
-        csr(
-            m,
-            offsets,
-            offsets_cap,
-            indices,
-            indices_cap,
-            n_offsets,
-            n_indices,
-            |chf, s| {
-                let computed;
-                let o = match chf.opposites() {
-                    Some(o) => o,
-                    None => {
-                        computed = chf.all_opposites();
-                        &computed[..]
-                    }
-                };
-                for q in o.chunks_exact(4) {
-                    stream(s, q.iter().map(|&g| if g == NONE { NONE } else { g >> 2 }));
-                }
-                Ok(())
-            },
-        )
+        csr(m, bufs, lens, |c, s| {
+            c.for_each_tetrahedron_tetrahedra(|row| stream(s, row))
+        })
     }
 }

@@ -12,9 +12,9 @@
 //! around a vertex (VV, VE, VF, VT) and an edge (EE, EF, ET): size them with a query or
 //! use the bulk calls (`chf_mesh_*_csr`).
 
-use super::boundary::ids_answer;
-use super::chf::ChfMesh;
+use super::chf::{ChfMesh, ids};
 use super::status::Status;
+use crate::chf::Chf;
 
 /// VV: the vertices sharing an edge with `v`, each once, in increasing order (found by a
 /// walk over its star, the tetrahedra reached across the faces holding `v`; there is no
@@ -28,14 +28,9 @@ pub unsafe extern "C" fn chf_vertex_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_vertex(v)?;
-            s.extend(m.chf.vertex_vertices(v));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_vertex, v, |c| c.vertex_vertices(v)) }
 }
 
 /// VE: the edges holding `v`, each once, in increasing order. O(star) from level 2.
@@ -47,14 +42,9 @@ pub unsafe extern "C" fn chf_vertex_edges(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_vertex(v)?;
-            s.extend(m.chf.vertex_edges(v));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_vertex, v, |c| c.vertex_edges(v)) }
 }
 
 /// VF: the faces holding `v`, each once, in increasing order. O(star) from level 2.
@@ -66,14 +56,9 @@ pub unsafe extern "C" fn chf_vertex_faces(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_vertex(v)?;
-            s.extend(m.chf.vertex_faces(v));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_vertex, v, |c| c.vertex_faces(v)) }
 }
 
 /// VT: the tetrahedra holding `v`, each once, in increasing order (a walk over its star
@@ -86,14 +71,9 @@ pub unsafe extern "C" fn chf_vertex_tetrahedra(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_vertex(v)?;
-            s.extend(m.chf.vertex_tetrahedra(v));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_vertex, v, |c| c.vertex_tetrahedra(v)) }
 }
 
 /// EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (where its
@@ -106,14 +86,9 @@ pub unsafe extern "C" fn chf_edge_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_edge(e)?;
-            s.extend(m.chf.edge_vertices(e));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_edge, e, |c| c.edge_vertices(e)) }
 }
 
 /// EE: the edges sharing a face with `e`, each once: for each face of `chf_edge_faces`, in
@@ -127,14 +102,9 @@ pub unsafe extern "C" fn chf_edge_edges(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_edge(e)?;
-            s.extend(m.chf.edge_edges(e));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_edge, e, |c| c.edge_edges(e)) }
 }
 
 /// EF: the faces around edge `e` in rotation order; on a boundary edge from one boundary
@@ -147,14 +117,9 @@ pub unsafe extern "C" fn chf_edge_faces(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_edge(e)?;
-            s.extend(m.chf.edge_faces(e));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_edge, e, |c| c.edge_faces(e)) }
 }
 
 /// ET: the tetrahedra around edge `e` in rotation order, from the boundary on a boundary
@@ -167,14 +132,9 @@ pub unsafe extern "C" fn chf_edge_tetrahedra(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_edge(e)?;
-            s.extend(m.chf.edge_tetrahedra(e));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_edge, e, |c| c.edge_tetrahedra(e)) }
 }
 
 /// FV: the 3 vertices of face `f` in the order of its canonical half-face (the boundary
@@ -188,14 +148,9 @@ pub unsafe extern "C" fn chf_face_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_face(f)?;
-            s.extend(m.chf.face_vertices(f));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_face, f, |c| c.face_vertices(f)) }
 }
 
 /// FE: the 3 edges of face `f`; edge `j` runs from vertex `j` to vertex `j + 1` of
@@ -208,14 +163,9 @@ pub unsafe extern "C" fn chf_face_edges(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_face(f)?;
-            s.extend(m.chf.face_edges(f));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_face, f, |c| c.face_edges(f)) }
 }
 
 /// FF: the faces sharing a tetrahedron with `f` (hence an edge), each once: the other three
@@ -229,14 +179,9 @@ pub unsafe extern "C" fn chf_face_faces(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_face(f)?;
-            s.extend(m.chf.face_faces(f));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_face, f, |c| c.face_faces(f)) }
 }
 
 /// FT: the tetrahedra of face `f` (2 entries, 1 on a boundary face), the canonical
@@ -249,14 +194,9 @@ pub unsafe extern "C" fn chf_face_tetrahedra(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
-    unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_face(f)?;
-            s.extend(m.chf.face_tetrahedra(f));
-            Ok(())
-        })
-    }
+    unsafe { ids(m, out, Chf::check_face, f, |c| c.face_tetrahedra(f)) }
 }
 
 /// TV: the 4 vertices of tetrahedron `t` (`V[4t .. 4t + 4]`, positively oriented when
@@ -269,12 +209,11 @@ pub unsafe extern "C" fn chf_tetrahedron_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
     unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_tetrahedron(t)?;
-            s.extend(m.chf.tetrahedron_vertices(t));
-            Ok(())
+        ids(m, out, Chf::check_tetrahedron, t, |c| {
+            c.tetrahedron_vertices(t)
         })
     }
 }
@@ -289,12 +228,11 @@ pub unsafe extern "C" fn chf_tetrahedron_edges(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
     unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_tetrahedron(t)?;
-            s.extend(m.chf.tetrahedron_edges(t));
-            Ok(())
+        ids(m, out, Chf::check_tetrahedron, t, |c| {
+            c.tetrahedron_edges(t)
         })
     }
 }
@@ -309,12 +247,11 @@ pub unsafe extern "C" fn chf_tetrahedron_faces(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
     unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_tetrahedron(t)?;
-            s.extend(m.chf.tetrahedron_faces(t));
-            Ok(())
+        ids(m, out, Chf::check_tetrahedron, t, |c| {
+            c.tetrahedron_faces(t)
         })
     }
 }
@@ -330,12 +267,11 @@ pub unsafe extern "C" fn chf_tetrahedron_tetrahedra(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
+    let out = (buf, cap, out_len);
     // SAFETY: caller contract (NULL or valid pointers of the stated sizes).
     unsafe {
-        ids_answer(m, buf, cap, out_len, |m: &ChfMesh, s| {
-            m.chf.check_tetrahedron(t)?;
-            s.extend(m.chf.tetrahedron_tetrahedra(t));
-            Ok(())
+        ids(m, out, Chf::check_tetrahedron, t, |c| {
+            c.tetrahedron_tetrahedra(t)
         })
     }
 }

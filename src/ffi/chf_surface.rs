@@ -12,12 +12,11 @@
 //! volume. Every call works at every level: O(1) per element at level 3, which stores the
 //! surface and the maps; O(T) per call below.
 
-use super::boundary::{guard, guard_or, handle, handle_out, new_handle, value_answer};
+use super::boundary::{guard, handle, handle_out, new_handle, value_answer};
 use super::che::CheMesh;
-use super::chf::ChfMesh;
+use super::chf::{ChfMesh, count, value};
 use super::status::Status;
-use crate::NONE;
-use crate::error::Error;
+use crate::chf::Chf;
 
 /// The boundary surface as a new CHE at level 3 into `*out`, which the caller frees with
 /// `che_mesh_free` (it does not borrow the volume mesh). A copy of the stored surface at
@@ -43,11 +42,8 @@ pub unsafe extern "C" fn chf_mesh_boundary(m: *const ChfMesh, out: *mut *mut Che
 /// (`chf_mesh_num_boundary_triangles`). O(1) at level 3, O(T) below; 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_faces(m: *const ChfMesh) -> usize {
-    guard_or(0, || {
-        // SAFETY: caller contract: NULL or a live handle.
-        let m = unsafe { handle(m, "m")? };
-        Ok(m.chf.num_boundary_faces())
-    })
+    // SAFETY: caller contract (NULL or a live handle).
+    unsafe { count(m, |c| c.num_boundary_faces()) }
 }
 
 /// Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface, that is
@@ -55,33 +51,24 @@ pub unsafe extern "C" fn chf_mesh_num_boundary_faces(m: *const ChfMesh) -> usize
 /// chf_mesh_num_seam_half_faces`. O(1) at level 3, O(T) below; 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_triangles(m: *const ChfMesh) -> usize {
-    guard_or(0, || {
-        // SAFETY: caller contract: NULL or a live handle.
-        let m = unsafe { handle(m, "m")? };
-        Ok(m.chf.num_boundary_triangles())
-    })
+    // SAFETY: caller contract (NULL or a live handle).
+    unsafe { count(m, |c| c.num_boundary_triangles()) }
 }
 
 /// Half-faces of non-manifold faces (faces shared by 3+ tetrahedra: one per tetrahedron,
 /// each unpaired). O(1); 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_non_manifold_half_faces(m: *const ChfMesh) -> usize {
-    guard_or(0, || {
-        // SAFETY: caller contract: NULL or a live handle.
-        let m = unsafe { handle(m, "m")? };
-        Ok(m.chf.num_non_manifold_half_faces())
-    })
+    // SAFETY: caller contract (NULL or a live handle).
+    unsafe { count(m, |c| c.num_non_manifold_half_faces()) }
 }
 
 /// Half-faces on orientation seams (a face of two tetrahedra whose orientations disagree,
 /// in a non-orientable component: both unpaired). O(1); 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_seam_half_faces(m: *const ChfMesh) -> usize {
-    guard_or(0, || {
-        // SAFETY: caller contract: NULL or a live handle.
-        let m = unsafe { handle(m, "m")? };
-        Ok(m.chf.num_seam_half_faces())
-    })
+    // SAFETY: caller contract (NULL or a live handle).
+    unsafe { count(m, |c| c.num_seam_half_faces()) }
 }
 
 /// Boundary vertices: the vertices of the unpaired half-faces, the vertices of
@@ -89,11 +76,8 @@ pub unsafe extern "C" fn chf_mesh_num_seam_half_faces(m: *const ChfMesh) -> usiz
 /// NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_vertices(m: *const ChfMesh) -> usize {
-    guard_or(0, || {
-        // SAFETY: caller contract: NULL or a live handle.
-        let m = unsafe { handle(m, "m")? };
-        Ok(m.chf.num_boundary_vertices())
-    })
+    // SAFETY: caller contract (NULL or a live handle).
+    unsafe { count(m, |c| c.num_boundary_vertices()) }
 }
 
 /// The boundary-surface vertex of volume vertex `v` into `*out`, `TOPOMESH_NONE` off the
@@ -104,13 +88,8 @@ pub unsafe extern "C" fn chf_vertex_boundary_vertex(
     v: u32,
     out: *mut u32,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &ChfMesh| {
-            m.chf.check_vertex(v)?;
-            Ok(m.chf.boundary_vertex(v))
-        })
-    }
+    // SAFETY: caller contract (NULL or valid pointers).
+    unsafe { value(m, out, Chf::check_vertex, v, |c| c.boundary_vertex(v)) }
 }
 
 /// The volume vertex of vertex `b` of `chf_mesh_boundary`'s surface into `*out` (copies
@@ -122,20 +101,10 @@ pub unsafe extern "C" fn chf_boundary_vertex_vertex(
     b: u32,
     out: *mut u32,
 ) -> Status {
-    // SAFETY: caller contract.
+    // SAFETY: caller contract (NULL or valid pointers).
     unsafe {
         value_answer(m, out, |m: &ChfMesh| {
-            let v = m.chf.boundary_vertex_volume_vertex(b);
-            if v == NONE {
-                return Err(Error::out_of_range(format!(
-                    "boundary vertex {b} out of range (the boundary surface has {} vertices)",
-                    match m.chf.boundary() {
-                        Some(che) => che.num_vertices(),
-                        None => m.chf.boundary_surface()?.num_vertices(),
-                    }
-                )));
-            }
-            Ok(v)
+            m.chf.checked_boundary_vertex_volume_vertex(b)
         })
     }
 }
@@ -144,11 +113,8 @@ pub unsafe extern "C" fn chf_boundary_vertex_vertex(
 /// boundary faces joined through shared vertices. O(1) at level 3, O(T) below; 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_components(m: *const ChfMesh) -> usize {
-    guard_or(0, || {
-        // SAFETY: caller contract: NULL or a live handle.
-        let m = unsafe { handle(m, "m")? };
-        Ok(m.chf.num_boundary_components())
-    })
+    // SAFETY: caller contract (NULL or a live handle).
+    unsafe { count(m, |c| c.num_boundary_components()) }
 }
 
 /// The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is
@@ -159,11 +125,10 @@ pub unsafe extern "C" fn chf_half_face_boundary_triangle(
     hf: u32,
     out: *mut u32,
 ) -> Status {
-    // SAFETY: caller contract.
+    // SAFETY: caller contract (NULL or valid pointers).
     unsafe {
-        value_answer(m, out, |m: &ChfMesh| {
-            m.chf.check_half_face(hf)?;
-            Ok(m.chf.boundary_triangle(hf))
+        value(m, out, Chf::check_half_face, hf, |c| {
+            c.boundary_triangle(hf)
         })
     }
 }
@@ -176,16 +141,10 @@ pub unsafe extern "C" fn chf_boundary_triangle_half_face(
     k: u32,
     out: *mut u32,
 ) -> Status {
-    // SAFETY: caller contract.
+    // SAFETY: caller contract (NULL or valid pointers).
     unsafe {
         value_answer(m, out, |m: &ChfMesh| {
-            let list = m.chf.boundary_half_faces();
-            list.get(k as usize).copied().ok_or_else(|| {
-                Error::out_of_range(format!(
-                    "boundary triangle {k} out of range (the boundary has {} triangles)",
-                    list.len()
-                ))
-            })
+            m.chf.checked_boundary_triangle_half_face(k)
         })
     }
 }
@@ -197,19 +156,8 @@ pub unsafe extern "C" fn chf_face_boundary_triangle(
     f: u32,
     out: *mut u32,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &ChfMesh| {
-            m.chf.check_face(f)?;
-            let hf = m.chf.face_half_face(f);
-            // An unpaired half-face names its face alone; a paired face is interior.
-            Ok(if m.chf.opposite(hf) == NONE {
-                m.chf.boundary_triangle(hf)
-            } else {
-                NONE
-            })
-        })
-    }
+    // SAFETY: caller contract (NULL or valid pointers).
+    unsafe { value(m, out, Chf::check_face, f, |c| c.face_boundary_triangle(f)) }
 }
 
 /// The face of boundary triangle `k` into `*out`; `k` out of range gives OUT_OF_RANGE.
@@ -219,17 +167,10 @@ pub unsafe extern "C" fn chf_boundary_triangle_face(
     k: u32,
     out: *mut u32,
 ) -> Status {
-    // SAFETY: caller contract.
+    // SAFETY: caller contract (NULL or valid pointers).
     unsafe {
         value_answer(m, out, |m: &ChfMesh| {
-            let list = m.chf.boundary_half_faces();
-            let &hf = list.get(k as usize).ok_or_else(|| {
-                Error::out_of_range(format!(
-                    "boundary triangle {k} out of range (the boundary has {} triangles)",
-                    list.len()
-                ))
-            })?;
-            Ok(m.chf.face_of(hf))
+            m.chf.checked_boundary_triangle_face(k)
         })
     }
 }
@@ -242,11 +183,6 @@ pub unsafe extern "C" fn chf_vertex_boundary_component(
     v: u32,
     out: *mut u32,
 ) -> Status {
-    // SAFETY: caller contract.
-    unsafe {
-        value_answer(m, out, |m: &ChfMesh| {
-            m.chf.check_vertex(v)?;
-            Ok(m.chf.boundary_component(v))
-        })
-    }
+    // SAFETY: caller contract (NULL or valid pointers).
+    unsafe { value(m, out, Chf::check_vertex, v, |c| c.boundary_component(v)) }
 }

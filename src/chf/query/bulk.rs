@@ -150,6 +150,16 @@ impl Chf {
         c
     }
 
+    /// TT for every tetrahedron: calls `row(t)` for each tetrahedron in order with
+    /// [`Chf::tetrahedron_tetrahedra`]`(t)`. O(T) at every level (`O` computed once below
+    /// level 1).
+    pub fn for_each_tetrahedron_tetrahedra(&self, mut row: impl FnMut([u32; 4])) {
+        let view = self.view(Need::NOTHING);
+        for q in view.o.chunks_exact(4) {
+            row([0, 1, 2, 3].map(|i| if q[i] == NONE { NONE } else { q[i] >> 2 }));
+        }
+    }
+
     /// ET for every edge: calls `row(e, tetrahedra)` for each edge in order, with the
     /// answer of [`Chf::edge_tetrahedra`]. O(T) in all at every level.
     pub fn for_each_edge_tetrahedra(&self, row: impl FnMut(u32, EdgeIds<'_>)) {

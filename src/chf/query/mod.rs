@@ -1,6 +1,7 @@
 //! The queries: every relation, per element and in bulk, on a [`View`](view::View) of the
 //! tables the level stores (or computes them for the one query below it).
 
+mod boundary;
 pub(crate) mod bulk;
 pub(crate) mod fan;
 pub(crate) mod memory;

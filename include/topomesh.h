@@ -899,6 +899,15 @@ topomesh_status che_star_begin(const struct che_mesh *m, uint32_t v, struct che_
 bool che_star_advance(struct che_star_iter *it, struct che_star_step *step);
 
 /**
+ * Checks every invariant of the mesh at its level (ids in range, `O` an involution on
+ * matching vertex pairs, the rules of `VH`, the edge directory and `EH`, the boundary
+ * curves). `TOPOMESH_STATUS_OK` when they all hold; otherwise
+ * `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (element and what is wrong) in
+ * `topomesh_last_error`. O(T).
+ */
+topomesh_status che_mesh_validate(const struct che_mesh *m);
+
+/**
  * `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
  * `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.
  */

@@ -1,8 +1,8 @@
 //! Pathological inputs, each with its exact summary and build report.
 
-mod common;
+mod che_common;
 
-use common::check_all;
+use che_common::check_all;
 use topomesh::{BuildOptions, Che, ErrorKind, Summary};
 
 fn build(tris: &[[u32; 3]], n: usize) -> Che {
@@ -379,7 +379,7 @@ fn build_is_the_same_on_any_number_of_threads() {
     // triangle flipped (orientation). The report's examples must come in the same order.
     let s = topomesh::generate::torus(320, 160);
     let n = s.positions.len();
-    let mut rng = common::Rng(99);
+    let mut rng = che_common::Rng(99);
     let mut tris: Vec<[u32; 3]> = s
         .triangles
         .iter()

@@ -1,8 +1,8 @@
 //! Every relation at every level against brute force, on generated and perturbed meshes.
 
-mod common;
+mod che_common;
 
-use common::{Rng, check_all, perturb};
+use che_common::{Rng, check_all, perturb};
 use proptest::prelude::*;
 use topomesh::generate::{grid, sphere, torus};
 

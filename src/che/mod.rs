@@ -9,37 +9,24 @@
 //! vertices split) so that the half-edge and edge ids are the same at every level.
 
 mod build;
-mod bulk;
-mod curves;
 pub mod ids;
-mod level2;
-mod level3;
-mod matching;
-mod memory;
-mod orient;
-mod queries;
-mod report;
-mod soup;
-mod split;
-mod star;
-mod summary;
+mod pairs;
+mod query;
+mod tables;
 
 pub use crate::Ids;
-pub use build::{BuildOptions, MAX_TRIANGLES};
-pub use bulk::Csr;
-pub use curves::BoundaryWalk;
+pub use build::{BuildOptions, BuildReport, MAX_TRIANGLES};
 pub use ids::{first, next, prev, tri};
-pub(crate) use level2::edge_directory;
-pub use memory::Memory;
-pub use report::BuildReport;
-pub use star::{Rotation, StarStep};
-pub use summary::Summary;
+pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
+pub(crate) use query::{Push, Rows};
+pub(crate) use tables::edge_directory;
 
 use crate::NONE;
 use crate::error::{Error, Result};
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
+use std::sync::OnceLock;
 
 /// A triangle surface in the Compact Half-Edge structure.
 #[derive(Clone, Debug)]
@@ -58,6 +45,9 @@ pub struct Che {
     edge_bits: RankDirectory,
     /// Level 2: the canonical half-edge of each edge.
     eh: Vec<u32>,
+    /// Level 1 only: the edge-id directory computed from `O` on first request (see
+    /// [`Che::edge_ranks`]); emptied when the level changes.
+    lazy_edge_bits: OnceLock<RankDirectory>,
     /// Level 3: one boundary half-edge per boundary curve.
     ch: Vec<u32>,
     /// Level 3: bit `h` set when `O[h] == NONE`; rank indexes `curve_of`.
@@ -113,41 +103,7 @@ impl Che {
 
     /// Raises (or lowers) the level in place. Ids do not change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
-        if level > 3 {
-            return Err(Error::out_of_range(format!(
-                "level {level} is not in 0..=3"
-            )));
-        }
-        if level < self.level {
-            if level < 3 {
-                self.ch = Vec::new();
-                self.boundary_bits = RankBits::default();
-                self.curve_of = Vec::new();
-            }
-            if level < 2 {
-                self.vh = Vec::new();
-                self.edge_bits = RankDirectory::default();
-                self.eh = Vec::new();
-            }
-            if level < 1 {
-                self.o = Vec::new();
-            }
-            self.level = level;
-            return Ok(());
-        }
-        if self.level < 1 && level >= 1 {
-            self.o = matching::opposites_by_rule(&self.v, self.n_vertices, &self.non_manifold);
-            self.level = 1;
-        }
-        if self.level < 2 && level >= 2 {
-            level2::build(self);
-            self.level = 2;
-        }
-        if self.level < 3 && level >= 3 {
-            level3::build(self);
-            self.level = 3;
-        }
-        Ok(())
+        build::change_level(self, level)
     }
 
     /// Vertices of the structure: the input vertices, then copies made by splitting.
@@ -184,6 +140,20 @@ impl Che {
     /// (the edge of a canonical half-edge `c` is its rank; see `rank_directory.rs`).
     pub fn edge_rank_directory(&self) -> Option<&[u64]> {
         (self.level >= 2).then_some(self.edge_bits.entries())
+    }
+    /// The edge-id directory from level 1: the structure's own from level 2 (as
+    /// [`Che::edge_rank_directory`]); at level 1 computed from `O` on the first request and
+    /// kept until the level changes. `None` at level 0.
+    pub fn edge_ranks(&self) -> Option<&[u64]> {
+        match self.level {
+            0 => None,
+            1 => Some(
+                self.lazy_edge_bits
+                    .get_or_init(|| edge_directory(&self.o))
+                    .entries(),
+            ),
+            _ => Some(self.edge_bits.entries()),
+        }
     }
     /// `EH`: the canonical half-edge of every edge, from level 2.
     pub fn edge_half_edges(&self) -> Option<&[u32]> {
@@ -236,46 +206,39 @@ impl Che {
         &self.seams
     }
 
+    #[inline]
     pub fn check_vertex(&self, v: u32) -> Result<()> {
-        if (v as usize) < self.n_vertices {
-            Ok(())
-        } else {
-            Err(Error::out_of_range(format!(
-                "vertex {v} out of range (the mesh has {} vertices)",
-                self.n_vertices
-            )))
-        }
+        check_id(v, self.n_vertices, "vertex", "vertices")
     }
+    #[inline]
     pub fn check_triangle(&self, t: u32) -> Result<()> {
-        if (t as usize) < self.num_triangles() {
-            Ok(())
-        } else {
-            Err(Error::out_of_range(format!(
-                "triangle {t} out of range (the mesh has {} triangles)",
-                self.num_triangles()
-            )))
-        }
+        check_id(t, self.num_triangles(), "triangle", "triangles")
     }
+    #[inline]
     pub fn check_half_edge(&self, h: u32) -> Result<()> {
-        if (h as usize) < self.v.len() {
-            Ok(())
-        } else {
-            Err(Error::out_of_range(format!(
-                "half-edge {h} out of range (the mesh has {} half-edges)",
-                self.v.len()
-            )))
-        }
+        check_id(h, self.v.len(), "half-edge", "half-edges")
     }
+    #[inline]
     pub fn check_edge(&self, e: u32) -> Result<()> {
-        if (e as usize) < self.num_edges {
-            Ok(())
-        } else {
-            Err(Error::out_of_range(format!(
-                "edge {e} out of range (the mesh has {} edges)",
-                self.num_edges
-            )))
-        }
+        check_id(e, self.num_edges, "edge", "edges")
     }
+}
+
+/// `id` below `count`, or an out-of-range error naming the element.
+#[inline]
+fn check_id(id: u32, count: usize, one: &str, many: &str) -> Result<()> {
+    if (id as usize) < count {
+        Ok(())
+    } else {
+        Err(out_of_range(id, count, one, many))
+    }
+}
+
+#[cold]
+fn out_of_range(id: u32, count: usize, one: &str, many: &str) -> Error {
+    Error::out_of_range(format!(
+        "{one} {id} out of range (the mesh has {count} {many})"
+    ))
 }
 
 /// Views a flat id array as triples without copying (the caller checked the length).

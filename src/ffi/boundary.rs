@@ -1,6 +1,7 @@
 //! The one boundary every export runs behind, and the helpers it is made of.
 //!
-//! The pattern (CHE today, CHF next) is:
+//! The pattern of every export, CHE and CHF (the uniform shapes come as macros from
+//! `shapes`), is:
 //!
 //! ```ignore
 //! #[unsafe(no_mangle)]
@@ -21,7 +22,9 @@
 //!   naming the argument in the detail;
 //! - `Sink` writes a variable-size answer into a caller buffer (size query, too small),
 //!   `CsrSink` a bulk offsets + indices answer;
-//! - `new_handle` / `free_handle` box and unbox opaque handles.
+//! - `new_handle` / `free_handle` box and unbox opaque handles; `Handle` gives the core
+//!   structure a handle wraps;
+//! - `options_arg` and `path_arg` convert an options struct and a path.
 
 use super::status::Status;
 use crate::error::{Error, ErrorKind, Result};
@@ -213,6 +216,46 @@ pub(crate) unsafe fn free_handle<T>(p: *mut T) {
     }
 }
 
+/// An opaque handle over a core structure (`Che`, `Chf`): the macros of `shapes` call the
+/// core through it.
+pub(crate) trait Handle {
+    type Core;
+    fn core(&self) -> &Self::Core;
+}
+
+/// An options struct, or its default when `p` is NULL.
+///
+/// # Safety
+/// `p` is NULL or valid for one read.
+pub(crate) unsafe fn options_arg<T: Copy + Default>(p: *const T) -> T {
+    // SAFETY: forwarded contract.
+    unsafe { p.as_ref() }.copied().unwrap_or_default()
+}
+
+/// A NUL-terminated path as an `OsStr`: its bytes as they are on Unix, UTF-8 elsewhere.
+pub(crate) fn os_str(path: &CStr) -> Result<&std::ffi::OsStr> {
+    #[cfg(unix)]
+    {
+        Ok(<std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(path.to_bytes()))
+    }
+    #[cfg(not(unix))]
+    {
+        path.to_str()
+            .map(std::ffi::OsStr::new)
+            .map_err(|e| Error::invalid(format!("path is not UTF-8: {e}")))
+    }
+}
+
+/// A path argument (see [`os_str`]).
+///
+/// # Safety
+/// `p` is NULL or points to a NUL-terminated string alive during `'a`.
+pub(crate) unsafe fn path_arg<'a>(p: *const c_char, name: &str) -> Result<&'a std::path::Path> {
+    // SAFETY: forwarded contract.
+    let path = unsafe { cstr_arg(p, name)? };
+    Ok(std::path::Path::new(os_str(path)?))
+}
+
 /// A caller buffer for a variable-size answer. `buf == NULL` with `cap == 0` is a size
 /// query; otherwise the first `cap` entries are written, the rest only counted, and
 /// `finish` reports the full length in `*out_len` and BUFFER_TOO_SMALL when it did not fit.
@@ -369,7 +412,7 @@ pub(crate) unsafe fn view_answer<M, T>(
 }
 
 /// Shared body of the CSR calls of both meshes: the handle and the buffers checked, the
-/// rows filled, the lengths written (see `che_csr.rs` for the contract).
+/// rows filled, the lengths written (see `che/csr.rs` for the contract).
 ///
 /// # Safety
 /// `m` NULL or a live handle; each buffer NULL or valid for its capacity; each length

@@ -7,11 +7,13 @@
 //! - `mesh_arrays`: the checked ids and positions of both build calls;
 //! - `status`: `topomesh_status`, `topomesh_status_str`, `topomesh_last_error`,
 //!   `topomesh_version`;
-//! - `che`: the `che_mesh` handle and build options; `che_build` (create, load, free,
-//!   level, counts), `che_relations` (one element at a time), `che_star` (stack
-//!   iterator; its step is inline in `topomesh_inline.h` from level 2), `che_csr` (bulk),
-//!   `che_views` (zero-copy), `che_info` (summary, report, memory); `che_walk` (the
-//!   array walks the per-element and bulk calls share).
+//! - `shapes`: the uniform bodies of the exports (count, value, ids into a caller buffer,
+//!   CSR, zero-copy view, new handle, free) as macros, for CHE and CHF alike;
+//! - `che/`: the `che_mesh` handle and build options (`mod.rs`); `build` (create, load,
+//!   free, level, counts), `relations` (one element at a time), `star` (stack iterator;
+//!   its step is inline in `topomesh_inline.h` from level 2), `csr` (bulk), `views`
+//!   (zero-copy), `info` (summary, report, memory), `validate`. Each export is the guard,
+//!   a conversion and one call into the core.
 //! - `chf`: the `chf_mesh` handle and build options, the same shape: `chf_build`,
 //!   `chf_relations` (the 16 relations), `chf_half_faces` (boundary tests, half-face
 //!   helpers), `chf_csr`, `chf_views`, `chf_info`, `chf_surface` (the boundary surface as
@@ -34,32 +36,13 @@ pub mod status;
 
 pub(crate) mod boundary;
 pub mod che;
-pub mod che_build;
-pub mod che_csr;
-pub mod che_info;
-pub mod che_relations;
-pub mod che_star;
-pub mod che_views;
-mod che_walk;
 pub mod chf;
-pub mod chf_build;
-pub mod chf_csr;
-pub mod chf_half_faces;
-pub mod chf_info;
-pub mod chf_relations;
-pub mod chf_surface;
-#[cfg(test)]
-mod chf_tests;
-pub mod chf_views;
 mod mesh_arrays;
-#[cfg(test)]
-mod tests;
+mod shapes;
 
 pub use che::{CheBuildOptions, CheMesh};
-pub use che_info::{CheBuildReport, CheMemory, CheReportKind, CheSummary};
-pub use che_star::{CheStarIter, CheStarStep};
-pub use chf::{ChfBuildOptions, ChfMesh};
-pub use chf_info::{ChfBuildReport, ChfMemory, ChfReportKind, ChfSummary};
+pub use che::{CheBuildReport, CheMemory, CheReportKind, CheStarIter, CheStarStep, CheSummary};
+pub use chf::{ChfBuildOptions, ChfBuildReport, ChfMemory, ChfMesh, ChfReportKind, ChfSummary};
 pub use status::Status;
 
 /// `TOPOMESH_NONE` in C: no element (boundary, none, invalid).

@@ -2,6 +2,7 @@
 //! A parse error names the file and the line (or byte offset); no reader panics.
 
 mod gmsh;
+pub mod load;
 mod medit;
 mod obj;
 mod off;

@@ -1,7 +1,7 @@
 //! A volume file to a CHF: the reader by extension, then the build of its tetrahedra.
 
 use crate::chf::{Chf, ChfBuildOptions};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use std::path::Path;
 
 impl Chf {
@@ -9,14 +9,7 @@ impl Chf {
     /// and builds its tetrahedra; triangles the file also holds are ignored. A file without
     /// tetrahedra (a surface) is an [`ErrorKind::InvalidInput`](crate::ErrorKind) error.
     pub fn load(path: &Path, options: ChfBuildOptions) -> Result<Chf> {
-        let data = crate::io::read(path)?;
-        if !data.is_volume() {
-            return Err(Error::invalid(format!(
-                "{}: holds no tetrahedra ({} triangles: a surface, not a volume mesh)",
-                path.display(),
-                data.triangles.len()
-            )));
-        }
+        let data = crate::io::load::read_volume(path)?;
         Chf::from_tetrahedra(
             &data.tetrahedra,
             data.num_vertices(),

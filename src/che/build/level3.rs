@@ -1,0 +1,33 @@
+//! Level 3: boundary curves. `CH` holds one half-edge per curve (its smallest), and a rank
+//! over the boundary half-edges indexes the curve of each in O(1). The next boundary
+//! half-edge after `h = (v -> w)` is `VH[w]`, by the level-2 rule.
+
+use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::next;
+use crate::util::rank::RankBits;
+
+pub(crate) fn build(che: &mut Che) {
+    let (v, o, vh) = (&che.v, &che.o, &che.vh);
+    let bits = RankBits::from_fn(v.len(), |h| o[h] == NONE);
+    let mut curve_of = vec![NONE; bits.ones()];
+    let mut ch = Vec::new();
+    for h in 0..v.len() as u32 {
+        if !bits.get(h as usize) || curve_of[bits.rank(h as usize)] != NONE {
+            continue;
+        }
+        let c = ch.len() as u32;
+        ch.push(h);
+        let mut g = h;
+        loop {
+            curve_of[bits.rank(g as usize)] = c;
+            g = vh[v[next(g) as usize] as usize];
+            if g == h {
+                break;
+            }
+        }
+    }
+    che.boundary_bits = bits;
+    che.curve_of = curve_of;
+    che.ch = ch;
+}

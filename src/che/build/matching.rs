@@ -1,0 +1,168 @@
+//! Step 2 of the build, matching: the half-edges on each unordered vertex pair (grouped by
+//! `crate::che::pairs`); a pair of exactly two is a partner pair, three or more a
+//! non-manifold edge whose half-edges stay unpaired and are flagged.
+
+use super::report::{BuildReport, push_example};
+use crate::NONE;
+use crate::che::ids::{next, prev};
+use crate::che::pairs::{for_each_group_par, half_edge};
+use crate::error::{Error, Result};
+use crate::util::extend_examples;
+use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
+
+/// What the matching found, over the whole soup.
+pub(crate) struct Matching {
+    /// The other half-edge on `h`'s vertex pair when there are exactly two, else `NONE`.
+    pub partner: Vec<u32>,
+    /// Half-edges of non-manifold edges (unsorted).
+    pub non_manifold: Vec<u32>,
+    /// Triangle pairs with the same three vertices seen on non-manifold edges.
+    pub duplicates: Vec<[u32; 2]>,
+    /// Does some partner pair run the same way (so the soup needs orienting)?
+    pub same_direction: bool,
+}
+
+/// What one thread's range of vertex pairs found.
+#[derive(Default)]
+struct Matched {
+    input_edges: usize,
+    boundary_edges: usize,
+    non_manifold_edges: usize,
+    examples: Vec<[u32; 2]>,
+    non_manifold: Vec<u32>,
+    duplicates: Vec<[u32; 2]>,
+    same_direction: bool,
+}
+
+/// Matches on unordered vertex pairs; the counts go into `report`. Threads take ranges of
+/// pairs and write the partners at random (relaxed atomic stores, plain ones on x86-64; the
+/// conversions in and out are in place and free); the rest is added up in pair order.
+pub(crate) fn match_pairs(
+    v: &[u32],
+    n_vertices: usize,
+    threads: usize,
+    report: &mut BuildReport,
+) -> Matching {
+    let partner: Vec<u32> = crate::util::pages::filled(v.len(), NONE);
+    let partner: Vec<AtomicU32> = partner.into_iter().map(AtomicU32::new).collect();
+    // Direction bits (`V[h] < V[next(h)]`): 1 bit per half-edge stays in cache, where
+    // reading `V` at both half-edges of every pair would miss it.
+    let forward = direction_bits(v);
+    let is_forward = |h: u32| (forward[(h >> 6) as usize] >> (h & 63)) & 1 == 1;
+    let found = for_each_group_par(
+        v,
+        n_vertices,
+        threads,
+        Matched::default,
+        |m, a, b, group| {
+            m.input_edges += 1;
+            match group.len() {
+                1 => m.boundary_edges += 1,
+                2 => {
+                    let (h, g) = (half_edge(group[0]), half_edge(group[1]));
+                    partner[h as usize].store(g, Relaxed);
+                    partner[g as usize].store(h, Relaxed);
+                    m.same_direction |= is_forward(h) == is_forward(g);
+                }
+                _ => {
+                    m.non_manifold_edges += 1;
+                    push_example(&mut m.examples, [a, b]);
+                    m.non_manifold.extend(group.iter().map(|&k| half_edge(k)));
+                    // Duplicates on a non-manifold edge; paired ones are found on `O` later.
+                    duplicates_on_edge(v, group, &mut m.duplicates);
+                }
+            }
+        },
+    );
+    let mut out = Matching {
+        partner: partner.into_iter().map(AtomicU32::into_inner).collect(),
+        non_manifold: Vec::new(),
+        duplicates: Vec::new(),
+        same_direction: false,
+    };
+    for m in found {
+        report.input_edges += m.input_edges;
+        report.boundary_edges += m.boundary_edges;
+        report.non_manifold_edges += m.non_manifold_edges;
+        extend_examples(&mut report.non_manifold_edge_examples, m.examples);
+        out.non_manifold.extend(m.non_manifold);
+        out.duplicates.extend(m.duplicates);
+        out.same_direction |= m.same_direction;
+    }
+    out
+}
+
+fn direction_bits(v: &[u32]) -> Vec<u64> {
+    let mut bits = vec![0u64; v.len().div_ceil(64)];
+    for (t, tri) in v.chunks_exact(3).enumerate() {
+        let h = 3 * t;
+        for (i, (a, b)) in [(tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])]
+            .into_iter()
+            .enumerate()
+        {
+            bits[(h + i) >> 6] |= ((a < b) as u64) << ((h + i) & 63);
+        }
+    }
+    bits
+}
+
+/// Pairs of triangles with the same three vertices among the half-edges of one
+/// non-manifold vertex pair (such a pair is seen on each of its non-manifold pairs:
+/// deduplicated by the caller).
+fn duplicates_on_edge(v: &[u32], group: &[u64], out: &mut Vec<[u32; 2]>) {
+    let third = |k: u64| v[prev(half_edge(k)) as usize];
+    let mut by_third: Vec<(u32, u32)> = group
+        .iter()
+        .map(|&k| (third(k), half_edge(k) / 3))
+        .collect();
+    by_third.sort_unstable();
+    for run in by_third.chunk_by(|x, y| x.0 == y.0) {
+        for (i, &(_, s)) in run.iter().enumerate() {
+            for &(_, t) in &run[i + 1..] {
+                out.push([s.min(t), s.max(t)]);
+            }
+        }
+    }
+}
+
+/// Two triangles with the same three vertices whose edges are all paired to each other
+/// (a closed "pillow"): found with one sequential pass over `O`.
+pub(crate) fn count_pillows(o: &[u32], out: &mut Vec<[u32; 2]>) {
+    for (t, opp) in o.chunks_exact(3).enumerate() {
+        let other = opp[0] / 3;
+        if opp[0] != NONE
+            && opp[1] != NONE
+            && opp[2] != NONE
+            && opp[1] / 3 == other
+            && opp[2] / 3 == other
+            && other > t as u32
+        {
+            out.push([t as u32, other]);
+        }
+    }
+}
+
+/// Strict mode: the first non-manifold edge, with the input triangles on it, as an error.
+pub(crate) fn reject_non_manifold_edges(
+    report: &BuildReport,
+    v: &[u32],
+    non_manifold: &[u32],
+    origin_of: impl Fn(u32) -> u32,
+) -> Result<()> {
+    if let Some(&[a, b]) = report.non_manifold_edge_examples.first() {
+        let tris: Vec<String> = non_manifold
+            .iter()
+            .filter(|&&h| {
+                let (x, y) = (v[h as usize], v[next(h) as usize]);
+                (x.min(y), x.max(y)) == (a, b)
+            })
+            .map(|&h| origin_of(h / 3).to_string())
+            .collect();
+        return Err(Error::non_manifold(format!(
+            "non-manifold edge ({a}, {b}) is shared by triangles {}; {} such edges",
+            tris.join(", "),
+            report.non_manifold_edges
+        )));
+    }
+    Ok(())
+}

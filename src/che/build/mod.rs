@@ -1,0 +1,283 @@
+//! From a triangle list to a CHE, as the named steps of the pipeline: check the sizes,
+//! (1) the soup, (2) matching, (3) orientation (and duplicate triangles), (4) vertex
+//! split, then (5) the requested level. Every step but the last works on flat arrays; the
+//! `Che` is assembled at level 1 and raised or lowered to the level asked for.
+
+mod level2;
+mod level3;
+mod matching;
+mod options;
+mod orient;
+mod report;
+mod soup;
+mod split;
+
+pub use options::{BuildOptions, MAX_TRIANGLES};
+pub use report::BuildReport;
+
+use super::Che;
+use crate::NONE;
+use crate::error::{Error, Result};
+use crate::util::rank::RankBits;
+use crate::util::rank_directory::RankDirectory;
+use glam::DVec3;
+use report::push_example;
+
+pub(crate) fn build(
+    triangles: &[[u32; 3]],
+    n_vertices: usize,
+    positions: &[DVec3],
+    options: BuildOptions,
+) -> Result<Che> {
+    check_sizes(triangles.len(), n_vertices, positions.len(), options.level)?;
+    let mut report = BuildReport {
+        input_triangles: triangles.len(),
+        input_vertices: n_vertices,
+        ..BuildReport::default()
+    };
+    let threads = crate::util::par::build_threads(options.threads, triangles.len());
+    let (mut v, triangle_origin) = soup::soup(triangles, n_vertices, &mut report, threads)?;
+    let origin_of = |t: u32| {
+        if triangle_origin.is_empty() {
+            t
+        } else {
+            triangle_origin[t as usize]
+        }
+    };
+    let mut matching = matching::match_pairs(&v, n_vertices, threads, &mut report);
+    if options.strict {
+        matching::reject_non_manifold_edges(&report, &v, &matching.non_manifold, origin_of)?;
+    }
+    let (o, seams) = orient_step(&mut v, &mut matching, &mut report, origin_of);
+    let mut non_manifold = std::mem::take(&mut matching.non_manifold);
+    non_manifold.sort_unstable();
+    duplicates_step(&o, matching.duplicates, &mut report, origin_of);
+    reject_if_strict(&report, options.strict)?;
+    let mut split = split::split(&mut v, &o, n_vertices, &seams, threads);
+    split_step(&mut split, &mut report, options.strict)?;
+    let vh = std::mem::take(&mut split.vh);
+    let canonical = Canonical {
+        v,
+        o,
+        seams,
+        non_manifold,
+        triangle_origin,
+    };
+    let mut che = assemble(canonical, &split.copies, n_vertices, positions, report);
+    finish_level(&mut che, options.level, vh);
+    Ok(che)
+}
+
+/// Ids must fit below `NONE`; positions are none or one per vertex.
+fn check_sizes(n_triangles: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
+    if level > 3 {
+        return Err(Error::out_of_range(format!(
+            "level {level} is not in 0..=3"
+        )));
+    }
+    if n_vertices >= NONE as usize {
+        return Err(Error::too_large(format!(
+            "{n_vertices} vertices: ids must fit below 2^32 - 1"
+        )));
+    }
+    if n_triangles > MAX_TRIANGLES {
+        return Err(Error::too_large(format!(
+            "{n_triangles} triangles: half-edge ids must fit below 2^32 - 1 (at most {MAX_TRIANGLES} triangles)"
+        )));
+    }
+    if n_positions != 0 && n_positions != n_vertices {
+        return Err(Error::invalid(format!(
+            "{n_positions} positions given for {n_vertices} vertices"
+        )));
+    }
+    Ok(())
+}
+
+/// Step 3: orients only when some pair runs the same way (otherwise the partners are the
+/// opposites). Returns `O` and the seam half-edges; renumbers the non-manifold half-edges
+/// of flipped triangles.
+fn orient_step(
+    v: &mut [u32],
+    matching: &mut matching::Matching,
+    report: &mut BuildReport,
+    origin_of: impl Fn(u32) -> u32,
+) -> (Vec<u32>, Vec<u32>) {
+    let partner = std::mem::take(&mut matching.partner);
+    if !matching.same_direction {
+        return (partner, Vec::new());
+    }
+    let oriented = orient::orient(v, &partner);
+    drop(partner);
+    report.flipped_triangles = oriented.flipped_count;
+    report.non_orientable_components = oriented.non_orientable_components;
+    report.non_orientable_examples = oriented
+        .non_orientable_examples
+        .iter()
+        .map(|&t| origin_of(t))
+        .collect();
+    report.seam_edges = oriented.seams.len() / 2;
+    for h in matching.non_manifold.iter_mut() {
+        if oriented.flipped[(*h / 3) as usize] {
+            *h = orient::flipped_id(*h);
+        }
+    }
+    (oriented.o, oriented.seams)
+}
+
+/// Duplicate triangles: those seen on non-manifold edges plus the closed pillows on `O`,
+/// counted and listed (input ids) in the report.
+fn duplicates_step(
+    o: &[u32],
+    mut duplicates: Vec<[u32; 2]>,
+    report: &mut BuildReport,
+    origin_of: impl Fn(u32) -> u32,
+) {
+    matching::count_pillows(o, &mut duplicates);
+    duplicates.sort_unstable();
+    duplicates.dedup();
+    report.duplicate_triangles = duplicates.len();
+    for &[s, t] in &duplicates {
+        push_example(&mut report.duplicate_examples, [origin_of(s), origin_of(t)]);
+    }
+}
+
+/// Strict mode: duplicate triangles are an error.
+fn reject_if_strict(report: &BuildReport, strict: bool) -> Result<()> {
+    if let (true, Some(&[s, t])) = (strict, report.duplicate_examples.first()) {
+        return Err(Error::non_manifold(format!(
+            "triangles {s} and {t} have the same vertices; {} duplicate pairs",
+            report.duplicate_triangles
+        )));
+    }
+    Ok(())
+}
+
+/// Step 4's report (and, in strict mode, its error).
+fn split_step(split: &mut split::Split, report: &mut BuildReport, strict: bool) -> Result<()> {
+    report.split_vertices = split.split_vertices;
+    report.split_vertex_examples = std::mem::take(&mut split.split_examples);
+    report.seam_split_vertices = split.seam_split_vertices;
+    report.added_vertices = split.copies.len();
+    if strict && report.split_vertices > 0 {
+        return Err(Error::non_manifold(format!(
+            "non-manifold vertex {} (its star is several fans); {} such vertices",
+            report.split_vertex_examples[0], report.split_vertices
+        )));
+    }
+    Ok(())
+}
+
+/// The arrays of the canonical soup, as steps 1 to 3 leave them.
+struct Canonical {
+    v: Vec<u32>,
+    o: Vec<u32>,
+    seams: Vec<u32>,
+    non_manifold: Vec<u32>,
+    triangle_origin: Vec<u32>,
+}
+
+/// The structure at level 1, with the vertex copies of the split appended.
+fn assemble(
+    c: Canonical,
+    copies: &[u32],
+    n_vertices: usize,
+    positions: &[DVec3],
+    report: BuildReport,
+) -> Che {
+    let vertex_origin: Vec<u32> = if copies.is_empty() {
+        Vec::new()
+    } else {
+        (0..n_vertices as u32)
+            .chain(copies.iter().copied())
+            .collect()
+    };
+    let mut positions = positions.to_vec();
+    if !positions.is_empty() {
+        for &x in copies {
+            positions.push(positions[x as usize]);
+        }
+    }
+    let num_edges =
+        c.o.iter()
+            .enumerate()
+            .filter(|&(h, &g)| g == NONE || (h as u32) < g)
+            .count();
+    Che {
+        level: 1,
+        n_input_vertices: n_vertices,
+        n_vertices: n_vertices + copies.len(),
+        v: c.v,
+        o: c.o,
+        vh: Vec::new(),
+        edge_bits: RankDirectory::default(),
+        eh: Vec::new(),
+        lazy_edge_bits: Default::default(),
+        ch: Vec::new(),
+        boundary_bits: RankBits::default(),
+        curve_of: Vec::new(),
+        num_edges,
+        positions,
+        vertex_origin,
+        triangle_origin: c.triangle_origin,
+        non_manifold: c.non_manifold,
+        seams: c.seams,
+        report,
+    }
+}
+
+/// Step 5 on a fresh build: `vh` is the split's (the same `VH` level 2 would compute).
+fn finish_level(che: &mut Che, level: u8, vh: Vec<u32>) {
+    if level == 0 {
+        che.o = Vec::new();
+        che.level = 0;
+    }
+    if level >= 2 {
+        che.vh = vh;
+        level2::build_edges(che);
+        che.level = 2;
+    }
+    if level >= 3 {
+        level3::build(che);
+        che.level = 3;
+    }
+}
+
+/// Raises or lowers the level of a built structure in place (ids do not change).
+pub(crate) fn change_level(che: &mut Che, level: u8) -> Result<()> {
+    if level > 3 {
+        return Err(Error::out_of_range(format!(
+            "level {level} is not in 0..=3"
+        )));
+    }
+    che.lazy_edge_bits = Default::default();
+    if level < che.level {
+        if level < 3 {
+            che.ch = Vec::new();
+            che.boundary_bits = RankBits::default();
+            che.curve_of = Vec::new();
+        }
+        if level < 2 {
+            che.vh = Vec::new();
+            che.edge_bits = RankDirectory::default();
+            che.eh = Vec::new();
+        }
+        if level < 1 {
+            che.o = Vec::new();
+        }
+        che.level = level;
+        return Ok(());
+    }
+    if che.level < 1 && level >= 1 {
+        che.o = super::pairs::opposites_by_rule(&che.v, che.n_vertices, &che.non_manifold);
+        che.level = 1;
+    }
+    if che.level < 2 && level >= 2 {
+        level2::build(che);
+        che.level = 2;
+    }
+    if che.level < 3 && level >= 3 {
+        level3::build(che);
+        che.level = 3;
+    }
+    Ok(())
+}

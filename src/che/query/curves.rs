@@ -1,0 +1,117 @@
+//! Boundary curves at every level: stored at level 3, walked from `VH` at level 2, found
+//! by scanning below. A curve is the cycle of boundary half-edges `h -> VH[target(h)]`.
+
+use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::next;
+use crate::error::{Error, Result};
+use std::borrow::Cow;
+
+/// The half-edges of one boundary curve, in order (the interior on the left).
+#[derive(Clone, Debug)]
+pub struct BoundaryWalk<'a> {
+    che: &'a Che,
+    start: u32,
+    cur: u32,
+}
+
+impl Iterator for BoundaryWalk<'_> {
+    type Item = u32;
+    fn next(&mut self) -> Option<u32> {
+        let h = self.cur;
+        if h == NONE {
+            return None;
+        }
+        let g = self.che.vertex_half_edge(self.che.target(h));
+        self.cur = if g == self.start { NONE } else { g };
+        Some(h)
+    }
+}
+
+impl Che {
+    /// The first half-edge of every boundary curve, in increasing order. Borrowed at
+    /// level 3; O(T) below.
+    pub fn boundary_curve_starts(&self) -> Cow<'_, [u32]> {
+        if self.level >= 3 {
+            return Cow::Borrowed(&self.ch);
+        }
+        let o = self.opposites_or_computed();
+        let mut seen = vec![false; self.v.len()];
+        let mut starts = Vec::new();
+        for h in 0..self.v.len() as u32 {
+            if o[h as usize] != NONE || seen[h as usize] {
+                continue;
+            }
+            starts.push(h);
+            let mut g = h;
+            loop {
+                seen[g as usize] = true;
+                g = self.next_boundary(&o, g);
+                if g == h {
+                    break;
+                }
+            }
+        }
+        Cow::Owned(starts)
+    }
+
+    /// The boundary half-edge after `h`, with opposites at hand (any level).
+    fn next_boundary(&self, o: &[u32], h: u32) -> u32 {
+        if self.level >= 2 {
+            return self.vh[self.v[next(h) as usize] as usize];
+        }
+        // Rotate clockwise around the target until the boundary.
+        let mut g = next(h);
+        while o[g as usize] != NONE {
+            g = next(o[g as usize]);
+        }
+        g
+    }
+
+    /// Number of boundary curves of the structure.
+    pub fn num_boundary_curves(&self) -> usize {
+        self.boundary_curve_starts().len()
+    }
+
+    /// The curve of boundary half-edge `h` (`NONE` when `h` is interior). O(1) at level 3.
+    pub fn curve_of(&self, h: u32) -> u32 {
+        if self.level >= 3 {
+            if self.o[h as usize] != NONE {
+                return NONE;
+            }
+            return self.curve_of[self.boundary_bits.rank(h as usize)];
+        }
+        if self.opposite(h) != NONE {
+            return NONE;
+        }
+        let starts = self.boundary_curve_starts();
+        for (c, &s) in starts.iter().enumerate() {
+            if self.boundary_curve(s).any(|g| g == h) {
+                return c as u32;
+            }
+        }
+        NONE
+    }
+
+    /// The half-edges of the curve through boundary half-edge `start`, in order.
+    pub fn boundary_curve(&self, start: u32) -> BoundaryWalk<'_> {
+        BoundaryWalk {
+            che: self,
+            start,
+            cur: start,
+        }
+    }
+
+    /// The vertices of curve `c` (an index into [`Che::boundary_curve_starts`]), in order;
+    /// an out-of-range error when there is no curve `c`.
+    pub fn boundary_curve_vertices(&self, c: u32) -> Result<Vec<u32>> {
+        let starts = self.boundary_curve_starts();
+        let &s = starts.get(c as usize).ok_or_else(|| {
+            Error::out_of_range(format!(
+                "boundary curve {c} out of range (the mesh has {} curves)",
+                starts.len()
+            ))
+        })?;
+        Ok(self.boundary_curve(s).map(|h| self.v[h as usize]).collect())
+    }
+}

@@ -1,0 +1,49 @@
+//! Exact memory of each container, so the cost of every level is visible.
+
+use crate::che::Che;
+
+/// Bytes held by each container (lengths, not capacities).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Memory {
+    /// `V`, level 0.
+    pub half_edge_vertices: usize,
+    /// `O`, level 1.
+    pub opposites: usize,
+    /// `VH`, level 2.
+    pub vertex_half_edges: usize,
+    /// `EH` and the canonical-half-edge rank bits, level 2.
+    pub edges: usize,
+    /// `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3.
+    pub curves: usize,
+    /// The sum of the above: the topology.
+    pub topology: usize,
+    /// Positions (not topology).
+    pub positions: usize,
+    /// Origin maps and the non-manifold and seam flags (not topology).
+    pub maps: usize,
+}
+
+impl Che {
+    pub fn memory_bytes(&self) -> Memory {
+        let ints = |n: usize| 4 * n;
+        let mut m = Memory {
+            half_edge_vertices: ints(self.v.len()),
+            opposites: ints(self.o.len()),
+            vertex_half_edges: ints(self.vh.len()),
+            edges: ints(self.eh.len()) + self.edge_bits.memory_bytes(),
+            curves: ints(self.ch.len())
+                + ints(self.curve_of.len())
+                + self.boundary_bits.memory_bytes(),
+            positions: std::mem::size_of_val(&self.positions[..]),
+            maps: ints(
+                self.vertex_origin.len()
+                    + self.triangle_origin.len()
+                    + self.non_manifold.len()
+                    + self.seams.len(),
+            ),
+            topology: 0,
+        };
+        m.topology = m.half_edge_vertices + m.opposites + m.vertex_half_edges + m.edges + m.curves;
+        m
+    }
+}

@@ -1,0 +1,18 @@
+//! Queries at every level: the rotation around a vertex (the one walk every star query,
+//! the bulk sweeps and the C API step), the relations one element at a time, boundary
+//! curves, whole relations as CSR, the summary and the memory used.
+
+mod bulk;
+mod curves;
+mod memory;
+mod relations;
+mod star;
+mod summary;
+mod validate;
+
+pub use bulk::Csr;
+pub(crate) use bulk::{Push, Rows};
+pub use curves::BoundaryWalk;
+pub use memory::Memory;
+pub use star::{Rotation, StarCursor, StarStep};
+pub use summary::Summary;

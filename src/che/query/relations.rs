@@ -1,0 +1,231 @@
+//! Queries at every level. Level 0 answers by scanning `V`; level 1 reads `O`; level 2
+//! reads `VH` and the edge ranks; level 3 the curves. Ids are the same at every level.
+
+use super::star::{Rotation, vf_item, vv_item};
+use crate::che::ids::{first, next, prev, tri};
+use crate::che::{Che, pairs};
+use crate::{Ids, NONE};
+use std::borrow::Cow;
+
+impl Che {
+    /// Origin of half-edge `h`.
+    #[inline]
+    pub fn origin(&self, h: u32) -> u32 {
+        self.v[h as usize]
+    }
+
+    /// Target of half-edge `h`.
+    #[inline]
+    pub fn target(&self, h: u32) -> u32 {
+        self.v[next(h) as usize]
+    }
+
+    /// The opposite half-edge, `NONE` on the boundary. O(1) from level 1, a scan at level 0.
+    #[inline]
+    pub fn opposite(&self, h: u32) -> u32 {
+        if self.level >= 1 {
+            self.o[h as usize]
+        } else {
+            self.opposite_by_scan(h)
+        }
+    }
+
+    /// The level-0 rule (the same that level 1 stores): `h` and `g` are opposite when they
+    /// are the only two half-edges on their vertex pair, run opposite ways, and are not on
+    /// a non-manifold edge.
+    fn opposite_by_scan(&self, h: u32) -> u32 {
+        if self.non_manifold.binary_search(&h).is_ok() {
+            return NONE;
+        }
+        let (a, b) = (self.v[h as usize], self.v[next(h) as usize]);
+        let mut found = NONE;
+        let mut others = 0;
+        for t in 0..self.num_triangles() as u32 {
+            let [x, y, z] = [0, 1, 2].map(|i| self.v[(3 * t + i) as usize]);
+            for (g, (p, q)) in [(x, y), (y, z), (z, x)].into_iter().enumerate() {
+                let g = 3 * t + g as u32;
+                if g == h {
+                    continue;
+                }
+                if p == b && q == a {
+                    found = g;
+                    others += 1;
+                } else if p == a && q == b {
+                    others += 1;
+                }
+            }
+        }
+        if others == 1 { found } else { NONE }
+    }
+
+    /// Opposites: borrowed from level 1 on, computed (O(T) time and memory) at level 0.
+    pub(crate) fn opposites_or_computed(&self) -> Cow<'_, [u32]> {
+        if self.level >= 1 {
+            Cow::Borrowed(&self.o)
+        } else {
+            Cow::Owned(pairs::opposites_by_rule(
+                &self.v,
+                self.n_vertices,
+                &self.non_manifold,
+            ))
+        }
+    }
+
+    /// Is `h` on the boundary (no opposite)?
+    pub fn is_boundary_half_edge(&self, h: u32) -> bool {
+        self.opposite(h) == NONE
+    }
+
+    /// The outgoing half-edge a rotation around `v` starts at: the boundary one on a
+    /// boundary vertex, `NONE` for an isolated vertex. O(1) at level 2, a scan below.
+    #[inline]
+    pub fn vertex_half_edge(&self, v: u32) -> u32 {
+        if self.level >= 2 {
+            self.vh[v as usize]
+        } else {
+            self.vertex_half_edge_by_scan(v)
+        }
+    }
+
+    /// [`Che::vertex_half_edge`] below level 2: the first boundary half-edge from `v`, else
+    /// the first.
+    #[cold]
+    fn vertex_half_edge_by_scan(&self, v: u32) -> u32 {
+        let mut any = NONE;
+        for (h, &x) in self.v.iter().enumerate() {
+            if x == v {
+                if self.opposite(h as u32) == NONE {
+                    return h as u32;
+                }
+                if any == NONE {
+                    any = h as u32;
+                }
+            }
+        }
+        any
+    }
+
+    /// Is `v` on the boundary? O(1) at level 2. An isolated vertex is not.
+    pub fn is_boundary_vertex(&self, v: u32) -> bool {
+        let h = self.vertex_half_edge(v);
+        h != NONE && self.opposite(h) == NONE
+    }
+
+    /// Is `v` referenced by no triangle?
+    pub fn is_isolated_vertex(&self, v: u32) -> bool {
+        self.vertex_half_edge(v) == NONE
+    }
+
+    /// The star of `v` in rotation order; see [`StarStep`].
+    pub fn vertex_star(&self, v: u32) -> Rotation<'_> {
+        let start = self.vertex_half_edge(v);
+        let mut r = Rotation::new(self, start);
+        if start == NONE {
+            r.by_ref().for_each(drop);
+        }
+        r
+    }
+
+    /// VV: the vertices around `v`, counter-clockwise, from the boundary on a boundary vertex.
+    pub fn vertex_vertices(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
+        self.vertex_star(v).map(|s| vv_item(&self.v, s))
+    }
+
+    /// VE: the edges around `v`, in the order of [`Che::vertex_vertices`].
+    pub fn vertex_edges(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
+        self.vertex_star(v).map(|s| self.ve_item(s))
+    }
+
+    /// VF: the triangles around `v`, counter-clockwise.
+    pub fn vertex_triangles(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
+        self.vertex_star(v).filter_map(vf_item)
+    }
+
+    /// The canonical half-edge of `h`'s edge: `h` itself when unpaired or smaller.
+    #[inline]
+    fn canonical(o: &[u32], h: u32) -> u32 {
+        let g = o[h as usize];
+        if g != NONE && g < h { g } else { h }
+    }
+
+    /// The edge id of half-edge `h`. O(1) at level 2; O(T) at level 1; O(T) time and
+    /// memory at level 0.
+    pub fn edge_of(&self, h: u32) -> u32 {
+        if self.level >= 2 {
+            return self.edge_bits.rank(Self::canonical(&self.o, h) as usize) as u32;
+        }
+        let o = self.opposites_or_computed();
+        let c = Self::canonical(&o, h);
+        (0..c).filter(|&g| Self::canonical(&o, g) == g).count() as u32
+    }
+
+    /// The canonical half-edge of edge `e` (the boundary one on a boundary edge).
+    /// O(1) at level 2; a scan below.
+    pub fn edge_half_edge(&self, e: u32) -> u32 {
+        if self.level >= 2 {
+            return self.eh[e as usize];
+        }
+        let o = self.opposites_or_computed();
+        (0..self.v.len() as u32)
+            .filter(|&g| Self::canonical(&o, g) == g)
+            .nth(e as usize)
+            .unwrap_or(NONE)
+    }
+
+    /// EV: the two ends of edge `e`, in the direction of its canonical half-edge.
+    pub fn edge_vertices(&self, e: u32) -> [u32; 2] {
+        let h = self.edge_half_edge(e);
+        [self.v[h as usize], self.v[next(h) as usize]]
+    }
+
+    /// Is edge `e` on the boundary (one triangle)?
+    pub fn is_boundary_edge(&self, e: u32) -> bool {
+        self.opposite(self.edge_half_edge(e)) == NONE
+    }
+
+    /// EF: the one or two triangles of edge `e`, the canonical half-edge's first.
+    pub fn edge_triangles(&self, e: u32) -> Ids<2> {
+        let h = self.edge_half_edge(e);
+        let mut out = Ids::new();
+        out.push(tri(h));
+        let o = self.opposite(h);
+        if o != NONE {
+            out.push(tri(o));
+        }
+        out
+    }
+
+    /// EE: the wings of edge `e`, the other edges of its triangles: next and previous in the
+    /// canonical half-edge's triangle, then in the opposite one.
+    pub fn edge_edges(&self, e: u32) -> Ids<4> {
+        let h = self.edge_half_edge(e);
+        let mut out = Ids::new();
+        out.push(self.edge_of(next(h)));
+        out.push(self.edge_of(prev(h)));
+        let o = self.opposite(h);
+        if o != NONE {
+            out.push(self.edge_of(next(o)));
+            out.push(self.edge_of(prev(o)));
+        }
+        out
+    }
+
+    /// FV: the corners of triangle `t`, counter-clockwise.
+    pub fn triangle_vertices(&self, t: u32) -> [u32; 3] {
+        let h = first(t) as usize;
+        [self.v[h], self.v[h + 1], self.v[h + 2]]
+    }
+
+    /// FE: the edges of triangle `t`; edge `i` runs from corner `i` to corner `i + 1`.
+    pub fn triangle_edges(&self, t: u32) -> [u32; 3] {
+        [0, 1, 2].map(|i| self.edge_of(first(t) + i))
+    }
+
+    /// FF: the triangle across each edge of `t` (`NONE` on the boundary).
+    pub fn triangle_triangles(&self, t: u32) -> [u32; 3] {
+        [0, 1, 2].map(|i| {
+            let o = self.opposite(first(t) + i);
+            if o == NONE { NONE } else { tri(o) }
+        })
+    }
+}

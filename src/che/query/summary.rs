@@ -1,0 +1,105 @@
+//! The topology of the input complex as given (input vertices, unique input edges, kept
+//! triangles), whatever the build split or left unpaired, plus what the build did.
+
+use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::next;
+use crate::util::dsu::Dsu;
+
+/// Field names match `che_summary` in the C API and the CLI's JSON.
+#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Summary {
+    pub vertices: u64,
+    pub edges: u64,
+    pub triangles: u64,
+    /// Edges with exactly one triangle.
+    pub boundary_edges: u64,
+    /// Connected components of the boundary edges (for a manifold, the boundary loops).
+    pub boundary_curves: u64,
+    /// Connected components of the triangles (joined through shared vertices).
+    pub components: u64,
+    pub isolated_vertices: u64,
+    /// V - E + F of the input complex (isolated vertices count).
+    pub euler_characteristic: i64,
+    /// Sum of the component genera; -1 where undefined (non-manifold or non-orientable).
+    pub genus: i64,
+    pub orientable: bool,
+    pub manifold: bool,
+    pub dropped_degenerate: u64,
+    pub non_manifold_edges: u64,
+    pub split_vertices: u64,
+    pub flipped_triangles: u64,
+    pub non_orientable_components: u64,
+}
+
+impl Che {
+    /// The summary; O(T) at every level.
+    pub fn summary(&self) -> Summary {
+        let r = &self.report;
+        let n = self.n_input_vertices;
+        let mut used = vec![false; n];
+        let mut dsu = Dsu::new(n);
+        for t in self.v.chunks_exact(3) {
+            let [a, b, c] = [t[0], t[1], t[2]].map(|x| self.vertex_origin(x));
+            used[a as usize] = true;
+            used[b as usize] = true;
+            used[c as usize] = true;
+            dsu.union(a, b);
+            dsu.union(a, c);
+        }
+        let components = dsu.roots_among(&used);
+        let isolated = used.iter().filter(|&&u| !u).count() as u64;
+
+        // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
+        let o = self.opposites_or_computed();
+        let mut on_boundary = vec![false; n];
+        let mut dsu = Dsu::new(n);
+        for h in 0..self.v.len() as u32 {
+            if o[h as usize] != NONE
+                || self.non_manifold.binary_search(&h).is_ok()
+                || self.seams.binary_search(&h).is_ok()
+            {
+                continue;
+            }
+            let a = self.vertex_origin(self.v[h as usize]);
+            let b = self.vertex_origin(self.v[next(h) as usize]);
+            on_boundary[a as usize] = true;
+            on_boundary[b as usize] = true;
+            dsu.union(a, b);
+        }
+        let boundary_curves = dsu.roots_among(&on_boundary);
+
+        let euler = n as i64 - r.input_edges as i64 + self.num_triangles() as i64;
+        let orientable = r.non_orientable_components == 0;
+        let manifold = r.non_manifold_edges == 0 && r.split_vertices == 0;
+        let genus = if orientable && manifold {
+            // Each component: chi = 2 - 2g - b; isolated vertices add 1 each to chi.
+            let twice = 2 * components as i64 - (euler - isolated as i64) - boundary_curves as i64;
+            if twice >= 0 && twice % 2 == 0 {
+                twice / 2
+            } else {
+                -1
+            }
+        } else {
+            -1
+        };
+        Summary {
+            vertices: n as u64,
+            edges: r.input_edges as u64,
+            triangles: self.num_triangles() as u64,
+            boundary_edges: r.boundary_edges as u64,
+            boundary_curves,
+            components,
+            isolated_vertices: isolated,
+            euler_characteristic: euler,
+            genus,
+            orientable,
+            manifold,
+            dropped_degenerate: r.dropped_degenerate as u64,
+            non_manifold_edges: r.non_manifold_edges as u64,
+            split_vertices: r.split_vertices as u64,
+            flipped_triangles: r.flipped_triangles as u64,
+            non_orientable_components: r.non_orientable_components as u64,
+        }
+    }
+}

@@ -1,0 +1,283 @@
+//! The invariants of every level, checked: [`Che::validate`] returns the first violation
+//! with the element and what is wrong. O(T) time and memory.
+
+use super::star::for_each_step;
+use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::{next, tri};
+use crate::che::tables::is_canonical;
+use crate::error::{Error, Result};
+
+/// A violation: an invalid-input error naming the element.
+fn broken(what: String) -> Result<()> {
+    Err(Error::invalid(format!("invalid CHE: {what}")))
+}
+
+impl Che {
+    /// Checks every invariant of the current level: `V` (ids in range, no degenerate
+    /// triangle), `O` (an involution pairing half-edges on the same vertex pair run the
+    /// other way, none on a non-manifold or seam half-edge), `VH` (one outgoing half-edge
+    /// per vertex, the boundary one on a boundary vertex, whose rotation reaches all of
+    /// them), the edge directory and `EH`, and the boundary curves. The first violation
+    /// is an `InvalidInput` error naming the element.
+    pub fn validate(&self) -> Result<()> {
+        self.validate_v()?;
+        if self.level >= 1 {
+            self.validate_o()?;
+        }
+        if self.level >= 2 {
+            self.validate_vh()?;
+            self.validate_edges()?;
+        }
+        if self.level >= 3 {
+            self.validate_curves()?;
+        }
+        Ok(())
+    }
+
+    fn validate_v(&self) -> Result<()> {
+        if !self.v.len().is_multiple_of(3) {
+            return broken(format!(
+                "V has {} entries, not 3 per triangle",
+                self.v.len()
+            ));
+        }
+        if let Some((h, &x)) = self
+            .v
+            .iter()
+            .enumerate()
+            .find(|&(_, &x)| x as usize >= self.n_vertices)
+        {
+            return broken(format!(
+                "V[{h}] = {x} is not a vertex (the mesh has {})",
+                self.n_vertices
+            ));
+        }
+        for (t, c) in self.v.chunks_exact(3).enumerate() {
+            if c[0] == c[1] || c[1] == c[2] || c[0] == c[2] {
+                return broken(format!("triangle {t} is degenerate ({c:?})"));
+            }
+        }
+        for (name, list) in [("non-manifold", &self.non_manifold), ("seam", &self.seams)] {
+            if let Some(w) = list.windows(2).find(|w| w[0] >= w[1]) {
+                return broken(format!("{name} half-edges not sorted at {}", w[1]));
+            }
+            if let Some(&h) = list.iter().find(|&&h| h as usize >= self.v.len()) {
+                return broken(format!("{name} half-edge {h} out of range"));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_o(&self) -> Result<()> {
+        let (v, o) = (&self.v, &self.o);
+        if o.len() != v.len() {
+            return broken(format!(
+                "O has {} entries for {} half-edges",
+                o.len(),
+                v.len()
+            ));
+        }
+        for (h, &g) in o.iter().enumerate() {
+            if g == NONE {
+                continue;
+            }
+            let h32 = h as u32;
+            if g as usize >= o.len() || g == h32 || o[g as usize] != h32 {
+                return broken(format!("O[{h}] = {g}: not an involution"));
+            }
+            if v[g as usize] != v[next(h32) as usize] || v[next(g) as usize] != v[h] {
+                return broken(format!(
+                    "O[{h}] = {g}: not the same vertex pair run the other way"
+                ));
+            }
+        }
+        for &h in self.non_manifold.iter().chain(&self.seams) {
+            if o[h as usize] != NONE {
+                return broken(format!(
+                    "half-edge {h} is flagged unpaired but O[{h}] = {}",
+                    o[h as usize]
+                ));
+            }
+        }
+        let edges = (0..o.len()).filter(|&h| is_canonical(o, h)).count();
+        if edges != self.num_edges {
+            return broken(format!("{edges} edges in O, {} counted", self.num_edges));
+        }
+        Ok(())
+    }
+
+    fn validate_vh(&self) -> Result<()> {
+        let (v, o, vh) = (&self.v, &self.o, &self.vh);
+        if vh.len() != self.n_vertices {
+            return broken(format!(
+                "VH has {} entries for {} vertices",
+                vh.len(),
+                self.n_vertices
+            ));
+        }
+        // Outgoing half-edges per vertex, and whether one is on the boundary.
+        let mut degree = vec![0u32; self.n_vertices];
+        let mut on_boundary = vec![false; self.n_vertices];
+        for (h, &x) in v.iter().enumerate() {
+            degree[x as usize] += 1;
+            on_boundary[x as usize] |= o[h] == NONE;
+        }
+        for (x, &h) in vh.iter().enumerate() {
+            if h == NONE {
+                if degree[x] != 0 {
+                    return broken(format!("VH[{x}] is NONE but vertex {x} has half-edges"));
+                }
+                continue;
+            }
+            if h as usize >= v.len() || v[h as usize] as usize != x {
+                return broken(format!("VH[{x}] = {h} does not start at vertex {x}"));
+            }
+            if on_boundary[x] && o[h as usize] != NONE {
+                return broken(format!(
+                    "VH[{x}] = {h} is not the boundary half-edge of a boundary vertex"
+                ));
+            }
+            let mut steps = 0u32;
+            for_each_step(o, h, |s| {
+                steps += matches!(s, super::StarStep::Out(_)) as u32
+            });
+            if steps != degree[x] {
+                return broken(format!(
+                    "the rotation of vertex {x} meets {steps} of its {} half-edges",
+                    degree[x]
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_edges(&self) -> Result<()> {
+        let o = &self.o;
+        if self.eh.len() != self.num_edges || self.edge_bits.ones() != self.num_edges {
+            return broken(format!(
+                "EH has {} entries and the directory {} edges, for {} edges",
+                self.eh.len(),
+                self.edge_bits.ones(),
+                self.num_edges
+            ));
+        }
+        if let Some(h) = (0..o.len()).find(|&h| self.edge_bits.get(h) != is_canonical(o, h)) {
+            return broken(format!("the edge directory flags half-edge {h} wrongly"));
+        }
+        for (e, &h) in self.eh.iter().enumerate() {
+            if h as usize >= o.len()
+                || !is_canonical(o, h as usize)
+                || self.edge_bits.rank(h as usize) != e
+            {
+                return broken(format!(
+                    "EH[{e}] = {h} is not the canonical half-edge of edge {e}"
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_curves(&self) -> Result<()> {
+        let o = &self.o;
+        if let Some(h) = (0..o.len()).find(|&h| self.boundary_bits.get(h) != (o[h] == NONE)) {
+            return broken(format!("the boundary bits flag half-edge {h} wrongly"));
+        }
+        let mut seen = vec![false; self.curve_of.len()];
+        for (c, &start) in self.ch.iter().enumerate() {
+            if start as usize >= o.len() || o[start as usize] != NONE {
+                return broken(format!("CH[{c}] = {start} is not a boundary half-edge"));
+            }
+            for h in self.boundary_curve(start) {
+                if h < start {
+                    return broken(format!(
+                        "CH[{c}] = {start} is not the smallest half-edge of its curve ({h} is)"
+                    ));
+                }
+                let r = self.boundary_bits.rank(h as usize);
+                if self.curve_of[r] != c as u32 || seen[r] {
+                    return broken(format!(
+                        "boundary half-edge {h} (curve {c}, triangle {}) is filed as curve {}",
+                        tri(h),
+                        self.curve_of[r]
+                    ));
+                }
+                seen[r] = true;
+            }
+        }
+        if let Some(r) = seen.iter().position(|&s| !s) {
+            return broken(format!(
+                "boundary half-edge number {r} is on no curve of CH"
+            ));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::NONE;
+    use crate::che::{BuildOptions, Che};
+
+    /// A fan of 5 triangles around vertex 0 (open), plus a closed tetrahedron.
+    fn mesh(level: u8) -> Che {
+        let tris = [
+            0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 6, 7, 9, 8, 7, 8, 10, 7, 10, 9, 8, 9, 10,
+        ];
+        Che::from_flat(&tris, 11, &[], BuildOptions::level(level)).unwrap()
+    }
+
+    fn fails(che: &Che, what: &str) {
+        let e = che.validate().unwrap_err();
+        assert!(e.message.contains(what), "{what}: {}", e.message);
+    }
+
+    #[test]
+    fn every_level_is_valid() {
+        for level in 0..=3 {
+            mesh(level).validate().unwrap();
+        }
+    }
+
+    #[test]
+    fn each_invariant_fails_when_its_array_is_corrupted() {
+        let mut c = mesh(3);
+        c.v[4] = 99;
+        fails(&c, "is not a vertex");
+        let mut c = mesh(3);
+        c.v[1] = c.v[0];
+        fails(&c, "degenerate");
+        let mut c = mesh(3);
+        c.o.swap(1, 2);
+        fails(&c, "not an involution");
+        let mut c = mesh(3);
+        let t = *c.o.iter().find(|&&g| g != NONE).unwrap() as usize / 3;
+        c.v.swap(3 * t + 1, 3 * t + 2);
+        fails(&c, "same vertex pair");
+        let mut c = mesh(3);
+        c.non_manifold = vec![c.o.iter().position(|&g| g != NONE).unwrap() as u32];
+        fails(&c, "flagged unpaired");
+        let mut c = mesh(3);
+        assert_eq!(c.vh[0], 0);
+        c.vh[0] = 3;
+        fails(&c, "not the boundary half-edge");
+        let mut c = mesh(3);
+        c.vh[0] = 1;
+        fails(&c, "does not start at vertex 0");
+        let mut c = mesh(3);
+        c.edge_bits = crate::util::rank_directory::RankDirectory::from_fn(27, |h| h < 20).unwrap();
+        fails(&c, "EH has");
+        let mut c = mesh(3);
+        c.vh[1] = NONE;
+        fails(&c, "VH[1] is NONE");
+        let mut c = mesh(3);
+        c.eh.swap(0, 1);
+        fails(&c, "EH[0]");
+        let mut c = mesh(3);
+        c.curve_of[0] = 5;
+        fails(&c, "is filed as curve");
+        let mut c = mesh(3);
+        c.ch[0] = 1;
+        fails(&c, "CH[0]");
+    }
+}

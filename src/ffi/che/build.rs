@@ -1,0 +1,172 @@
+//! Making, freeing and re-levelling `che_mesh` handles, and their counts.
+
+use super::{CheBuildOptions, CheMesh, level_arg};
+use crate::che::{BuildOptions, Che, MAX_TRIANGLES};
+use crate::error::Result;
+use crate::ffi::boundary::{guard, handle_mut, options_arg, path_arg};
+use crate::ffi::mesh_arrays::{Cells, mesh_arrays};
+use crate::ffi::shapes::{count, free, make};
+use crate::ffi::status::Status;
+use std::ffi::c_char;
+
+/// Builds from C arrays (sizes checked before any slice is made).
+///
+/// # Safety
+/// `triangles` is NULL or holds `3 * n_triangles` ids; `positions` is NULL or holds
+/// `3 * n_vertices` doubles.
+unsafe fn build(
+    triangles: *const u32,
+    n_triangles: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    options: BuildOptions,
+) -> Result<CheMesh> {
+    let kind = Cells {
+        per: 3,
+        max_cells: MAX_TRIANGLES,
+        cells: "triangles",
+        part: "half-edge",
+    };
+    // SAFETY: forwarded contract.
+    let (flat, points) =
+        unsafe { mesh_arrays(kind, triangles, n_triangles, n_vertices, positions)? };
+    Ok(CheMesh::new(Che::from_flat(
+        flat, n_vertices, points, options,
+    )?))
+}
+
+/// Builds a CHE at `level` (0..3) from `n_triangles` triangles (3 vertex ids each, over
+/// vertices `0..n_vertices`). `positions` may be NULL; otherwise it holds 3 doubles (x, y,
+/// z) per input vertex. `triangles` may be NULL when `n_triangles == 0`.
+///
+/// Input vertex ids are kept; copies made by splitting non-manifold vertices are appended
+/// after them (see `che_mesh_vertex_origins`). Input triangle order is kept; degenerate
+/// triangles (a repeated id) are dropped (see `che_mesh_triangle_origins`). Every
+/// component is oriented consistently; `che_mesh_report` says what was changed.
+/// Non-manifold input is repaired (see `che_mesh_from_triangles_ex` for strict mode).
+/// A triangle naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`; more
+/// than 2^32 - 2 vertices or 1431655765 triangles `TOPOMESH_STATUS_TOO_LARGE`. `*out` is
+/// NULL on failure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_from_triangles(
+    triangles: *const u32,
+    n_triangles: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    level: u32,
+    out: *mut *mut CheMesh,
+) -> Status {
+    let o = CheBuildOptions::at(level);
+    // SAFETY: the same contract as the `_ex` variant; `o` is a local.
+    unsafe { che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &o, out) }
+}
+
+/// `che_mesh_from_triangles` with options (NULL: `che_build_options_default()`). With
+/// `strict`, non-manifold input fails with `TOPOMESH_STATUS_NON_MANIFOLD`, the detail
+/// naming the offending edge and triangles, or vertex.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_from_triangles_ex(
+    triangles: *const u32,
+    n_triangles: usize,
+    n_vertices: usize,
+    positions: *const f64,
+    options: *const CheBuildOptions,
+    out: *mut *mut CheMesh,
+) -> Status {
+    // SAFETY: caller contract: `options` NULL or readable, the arrays NULL or of the
+    // stated sizes.
+    make!(out, unsafe {
+        let options = options_arg(options).to_core()?;
+        build(triangles, n_triangles, n_vertices, positions, options)
+    })
+}
+
+/// Reads a surface file (the format from the extension: .off .obj .ply .stl; also .mesh
+/// .msh .vtk when they hold triangles only) and builds it at `level`. A missing or
+/// unreadable file gives `TOPOMESH_STATUS_IO`, a malformed one `TOPOMESH_STATUS_PARSE`
+/// (the detail names the file and line), a file holding tetrahedra
+/// `TOPOMESH_STATUS_INVALID_INPUT`. `*out` is NULL on failure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_load(
+    path: *const c_char,
+    level: u32,
+    out: *mut *mut CheMesh,
+) -> Status {
+    // SAFETY: the same contract as the `_ex` variant; the options are a local.
+    unsafe { che_mesh_load_ex(path, &CheBuildOptions::at(level), out) }
+}
+
+/// `che_mesh_load` with options (NULL: `che_build_options_default()`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_load_ex(
+    path: *const c_char,
+    options: *const CheBuildOptions,
+    out: *mut *mut CheMesh,
+) -> Status {
+    // SAFETY: caller contract: `options` NULL or readable, `path` NULL or NUL-terminated.
+    let (options, path) = unsafe { (options_arg(options), path_arg(path, "path")) };
+    make!(out, {
+        let options = options.to_core()?;
+        crate::io::load::che(path?, options).map(CheMesh::new)
+    })
+}
+
+/// Frees a mesh; NULL is a no-op. Needs exclusive access.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_free(m: *mut CheMesh) {
+    free!(m)
+}
+
+/// Raises or lowers the level (0..3) in place. Ids never change with the level; views
+/// obtained before are invalid afterwards. Needs exclusive access.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_build_level(m: *mut CheMesh, level: u32) -> Status {
+    guard(|| {
+        // SAFETY: caller contract: NULL or a live handle, not shared during the call.
+        let m = unsafe { handle_mut(m, "m")? };
+        m.che.build_level(level_arg(level)?)
+    })
+}
+
+/// The current level (0..3); 0 for NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_level(m: *const CheMesh) -> u32 {
+    count!(m, 0, |c| c.level() as u32)
+}
+
+/// Vertices of the structure: the input vertices, then the copies made by splitting
+/// non-manifold vertices. 0 for NULL (and likewise for the other counts).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_vertices(m: *const CheMesh) -> usize {
+    count!(m, 0, |c| c.num_vertices())
+}
+
+/// Vertices given as input (ids `0..n` of the structure are the same vertices).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_input_vertices(m: *const CheMesh) -> usize {
+    count!(m, 0, |c| c.num_input_vertices())
+}
+
+/// Triangles kept (degenerate input triangles are dropped).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_triangles(m: *const CheMesh) -> usize {
+    count!(m, 0, |c| c.num_triangles())
+}
+
+/// Edges of the structure (the edges of a non-manifold edge count once per triangle).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_edges(m: *const CheMesh) -> usize {
+    count!(m, 0, |c| c.num_edges())
+}
+
+/// Half-edges: 3 per triangle.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_half_edges(m: *const CheMesh) -> usize {
+    count!(m, 0, |c| c.num_half_edges())
+}
+
+/// Boundary curves of the structure (O(1) at level 3, O(T) below).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_num_boundary_curves(m: *const CheMesh) -> usize {
+    count!(m, 0, |c| c.num_boundary_curves())
+}

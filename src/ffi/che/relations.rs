@@ -1,0 +1,201 @@
+//! The nine relations, boundary curves and the half-edge helpers, one element at a time.
+//!
+//! Every relation call has the form `(m, id, buf, cap, *out_len)`: the answer goes into
+//! `buf[0..*out_len]`. `buf == NULL` with `cap == 0` is a size query (OK, `*out_len` set).
+//! A buffer shorter than the answer receives its first `cap` entries and the call returns
+//! `TOPOMESH_STATUS_BUFFER_TOO_SMALL` with the needed length in `*out_len`. An id out of
+//! range gives `TOPOMESH_STATUS_OUT_OF_RANGE` (the detail names it) and writes nothing.
+
+use super::CheMesh;
+use crate::ffi::shapes::{ids, value};
+use crate::ffi::status::Status;
+
+/// VV: the vertices around `v`, counter-clockwise seen from outside. On a boundary vertex
+/// the list starts at the far end of its outgoing boundary edge and ends at the near end of
+/// its incoming one (d + 1 vertices for d triangles). Empty for an isolated vertex.
+/// O(d) from level 2; scans below.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_vertex_vertices(
+    m: *const CheMesh,
+    v: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_vertices_into(v, s))
+}
+
+/// VE: the edges around `v`, the edge to each vertex of `che_vertex_vertices`, in the same
+/// order. O(d) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_vertex_edges(
+    m: *const CheMesh,
+    v: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_edges_into(v, s))
+}
+
+/// VF: the triangles around `v`, counter-clockwise, from the boundary on a boundary vertex.
+/// O(d) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_vertex_triangles(
+    m: *const CheMesh,
+    v: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_triangles_into(v, s))
+}
+
+/// EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (the boundary
+/// half-edge on a boundary edge). O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_edge_vertices(
+    m: *const CheMesh,
+    e: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_vertices(e))
+}
+
+/// EE: the wings of edge `e` (4 entries, 2 on a boundary edge): the next and previous edges
+/// in the canonical half-edge's triangle, then in the opposite triangle.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_edge_edges(
+    m: *const CheMesh,
+    e: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_edges(e))
+}
+
+/// EF: the triangles of edge `e` (2 entries, 1 on a boundary edge), the canonical
+/// half-edge's first.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_edge_triangles(
+    m: *const CheMesh,
+    e: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_triangles(e))
+}
+
+/// FV: the 3 corners of triangle `t`, counter-clockwise (corner i is the origin of
+/// half-edge 3t + i).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_triangle_vertices(
+    m: *const CheMesh,
+    t: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_vertices(t))
+}
+
+/// FE: the 3 edges of triangle `t`; edge i runs from corner i to corner i + 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_triangle_edges(
+    m: *const CheMesh,
+    t: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_edges(t))
+}
+
+/// FF: always 3 entries, the triangle across edge i of `t` (see `che_triangle_edges`), or
+/// `TOPOMESH_NONE` across a boundary edge (also across non-manifold and non-orientable
+/// seam edges, which the structure keeps unpaired).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_triangle_triangles(
+    m: *const CheMesh,
+    t: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_triangles(t))
+}
+
+/// The vertices of boundary curve `curve` (0..che_mesh_num_boundary_curves), in order, the
+/// interior on the left; curves are numbered by their smallest half-edge. O(length) at
+/// level 3; O(T) (level 2) or more below.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_boundary_curve_vertices(
+    m: *const CheMesh,
+    curve: u32,
+    buf: *mut u32,
+    cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, |c, s| {
+        s.extend(c.boundary_curve_vertices(curve)?);
+        Ok(())
+    })
+}
+
+/// The opposite of half-edge `h` into `*out` (`TOPOMESH_NONE` on the boundary).
+/// O(1) from level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_half_edge_opposite(
+    m: *const CheMesh,
+    h: u32,
+    out: *mut u32,
+) -> Status {
+    value!(m, out, check_half_edge(h) => |c| c.opposite(h))
+}
+
+/// The edge of half-edge `h` into `*out`. O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_half_edge_edge(m: *const CheMesh, h: u32, out: *mut u32) -> Status {
+    value!(m, out, check_half_edge(h) => |c| c.edge_of(h))
+}
+
+/// The boundary curve of half-edge `h` into `*out` (`TOPOMESH_NONE` when `h` is not on the
+/// boundary). O(1) at level 3.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_half_edge_curve(m: *const CheMesh, h: u32, out: *mut u32) -> Status {
+    value!(m, out, check_half_edge(h) => |c| c.curve_of(h))
+}
+
+/// The outgoing half-edge of vertex `v` a rotation starts at into `*out`: the boundary one
+/// on a boundary vertex, `TOPOMESH_NONE` for an isolated vertex. O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_vertex_half_edge(m: *const CheMesh, v: u32, out: *mut u32) -> Status {
+    value!(m, out, check_vertex(v) => |c| c.vertex_half_edge(v))
+}
+
+/// The canonical half-edge of edge `e` into `*out` (the boundary one on a boundary edge,
+/// else the smaller of the two). O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_edge_half_edge(m: *const CheMesh, e: u32, out: *mut u32) -> Status {
+    value!(m, out, check_edge(e) => |c| c.edge_half_edge(e))
+}
+
+/// Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_vertex_is_boundary(
+    m: *const CheMesh,
+    v: u32,
+    out: *mut bool,
+) -> Status {
+    value!(m, out, check_vertex(v) => |c| c.is_boundary_vertex(v))
+}
+
+/// Is edge `e` on the boundary (one triangle)? O(1) from level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_edge_is_boundary(m: *const CheMesh, e: u32, out: *mut bool) -> Status {
+    value!(m, out, check_edge(e) => |c| c.is_boundary_edge(e))
+}

@@ -1,0 +1,168 @@
+//! The exports called from Rust, as a C host would (the full C and C++ suites are in
+//! `c-tests/`): the star iterator and the CSR calls agree with the core's iterators.
+
+use super::*;
+use crate::NONE;
+use crate::che::{BuildOptions, Che};
+use crate::ffi::boundary::with_last_error;
+use crate::ffi::status::Status;
+use std::ptr::{null, null_mut};
+
+const STRIP: [u32; 6] = [0, 1, 2, 1, 3, 2];
+
+fn build(tris: &[u32], n_vertices: usize, level: u32) -> *mut CheMesh {
+    let mut m = null_mut();
+    // SAFETY: a live array of `tris.len()` ids and a local out-pointer.
+    let s = unsafe {
+        che_mesh_from_triangles(
+            tris.as_ptr(),
+            tris.len() / 3,
+            n_vertices,
+            null(),
+            level,
+            &mut m,
+        )
+    };
+    assert_eq!(s, Status::Ok);
+    m
+}
+
+#[test]
+fn star_iterator_matches_the_core_rotation() {
+    let tetra = [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3];
+    for (tris, n) in [(&STRIP[..], 4), (&tetra[..], 4)] {
+        for level in 0..=3 {
+            let m = build(tris, n, level);
+            // SAFETY: `m` is live until freed below.
+            let che = unsafe { &(*m).che };
+            for v in 0..n as u32 {
+                let mut it = std::mem::MaybeUninit::<CheStarIter>::uninit();
+                let mut step = CheStarStep::default();
+                // SAFETY: live mesh, local iterator and step.
+                assert_eq!(unsafe { che_star_begin(m, v, it.as_mut_ptr()) }, Status::Ok);
+                let mut got = Vec::new();
+                // SAFETY: the iterator was begun on a live mesh; `step` is a local.
+                while unsafe { che_star_advance(it.as_mut_ptr(), &mut step) } {
+                    got.push(step.vertex);
+                }
+                assert_eq!(
+                    got,
+                    che.vertex_vertices(v).collect::<Vec<_>>(),
+                    "level {level} v {v}"
+                );
+            }
+            // SAFETY: freed once.
+            unsafe { che_mesh_free(m) };
+        }
+    }
+}
+
+#[test]
+fn buffers_views_and_csr() {
+    let m = build(&STRIP, 4, 1);
+    let (mut buf, mut len) = ([0u32; 4], 0usize);
+    // SAFETY: live mesh, local buffers of the stated sizes.
+    unsafe {
+        assert_eq!(
+            che_vertex_vertices(m, 1, null_mut(), 0, &mut len),
+            Status::Ok
+        );
+        assert_eq!(len, 3);
+        assert_eq!(
+            che_vertex_vertices(m, 1, buf.as_mut_ptr(), 2, &mut len),
+            Status::BufferTooSmall
+        );
+        assert_eq!((len, &buf[..2]), (3, &[3, 2][..]));
+        assert_eq!(
+            che_triangle_triangles(m, 0, buf.as_mut_ptr(), 4, &mut len),
+            Status::Ok
+        );
+        assert_eq!(&buf[..len], &[NONE, 1, NONE]);
+        assert_eq!(
+            che_vertex_vertices(m, 9, buf.as_mut_ptr(), 4, &mut len),
+            Status::OutOfRange
+        );
+        assert!(with_last_error(|e| e.contains("vertex 9")));
+
+        assert!(che_mesh_vertex_half_edges(m, &mut len).is_null() && len == 0);
+        let o = che_mesh_opposites(m, &mut len);
+        assert_eq!(
+            std::slice::from_raw_parts(o, len),
+            &[NONE, 5, NONE, NONE, NONE, 1]
+        );
+
+        let (mut no, mut ni) = (0usize, 0usize);
+        let (mut off, mut idx) = ([0u32; 5], [0u32; 10]);
+        let s = che_mesh_vertex_vertices_csr(m, null_mut(), 0, null_mut(), 0, &mut no, &mut ni);
+        assert_eq!((s, no, ni), (Status::Ok, 5, 10));
+        let s = che_mesh_vertex_vertices_csr(
+            m,
+            off.as_mut_ptr(),
+            5,
+            idx.as_mut_ptr(),
+            10,
+            &mut no,
+            &mut ni,
+        );
+        assert_eq!(s, Status::Ok);
+        assert_eq!(off, [0, 2, 5, 8, 10]);
+        assert_eq!(idx, [1, 2, 3, 2, 0, 0, 1, 3, 2, 1]);
+        assert_eq!(
+            che_mesh_level(m),
+            1,
+            "the bulk call builds a copy, not the mesh"
+        );
+        che_mesh_free(m);
+        che_mesh_free(null_mut());
+    }
+}
+
+/// The arithmetic of `che_edge_of` (topomesh_inline.h) on the lent directory gives the
+/// core's edge ids, at level 1 (computed here) and from level 2 (the core's own).
+#[test]
+fn edge_directory_gives_the_core_edge_ids() {
+    // A strip of 40 triangles (120 half-edges: boundary and interior edges).
+    let mut tris = Vec::new();
+    for i in 0..40u32 {
+        if i % 2 == 0 {
+            tris.extend([i, i + 1, i + 2]);
+        } else {
+            tris.extend([i, i + 2, i + 1]);
+        }
+    }
+    for level in 1..=3 {
+        let mesh =
+            CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(level)).unwrap());
+        let o = mesh.che.opposites().unwrap();
+        let d = mesh.che.edge_ranks().unwrap();
+        assert_eq!(d.len(), o.len().div_ceil(32));
+        for h in 0..o.len() as u32 {
+            let g = o[h as usize];
+            let c = if g != NONE && g < h { g } else { h } as usize;
+            let entry = d[c / 32];
+            let edge =
+                (entry >> 32) as u32 + (entry as u32 & ((1u32 << (c % 32)) - 1)).count_ones();
+            assert_eq!(edge, mesh.che.edge_of(h), "level {level} h {h}");
+        }
+    }
+    let level0 = CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(0)).unwrap());
+    assert!(level0.che.edge_ranks().is_none());
+}
+
+#[test]
+fn validate_passes_at_every_level_and_names_a_null_handle() {
+    let tetra = [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3];
+    for (tris, n) in [(&STRIP[..], 4), (&tetra[..], 4)] {
+        for level in 0..=3 {
+            let m = build(tris, n, level);
+            // SAFETY: a live mesh, freed once.
+            unsafe {
+                assert_eq!(che_mesh_validate(m), Status::Ok, "level {level}");
+                che_mesh_free(m);
+            }
+        }
+    }
+    // SAFETY: NULL is a documented argument.
+    assert_eq!(unsafe { che_mesh_validate(null()) }, Status::NullArgument);
+    assert!(with_last_error(|e| e.contains("'m'")));
+}

@@ -1,0 +1,96 @@
+//! Zero-copy views of the containers. Each returns a pointer to the first element and
+//! writes the element count to `*len` (when `len` is not NULL); NULL (and `*len = 0`) when
+//! the handle is NULL or the container does not exist at the current level. A view is
+//! valid until the mesh is freed or its level changes (`che_mesh_build_level`). An empty
+//! container may be returned as a non-NULL pointer with `*len == 0`.
+
+use super::CheMesh;
+use crate::ffi::mesh_arrays::coordinates;
+use crate::ffi::shapes::view;
+
+/// `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
+/// `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_half_edge_vertices(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    view!(m, len, |m| Some(m.che.half_edge_vertices()))
+}
+
+/// `O`: the opposite of every half-edge (`TOPOMESH_NONE` on the boundary). NULL below
+/// level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_opposites(m: *const CheMesh, len: *mut usize) -> *const u32 {
+    view!(m, len, |m| m.che.opposites())
+}
+
+/// `VH`: one outgoing half-edge per vertex, the boundary one on a boundary vertex,
+/// `TOPOMESH_NONE` for an isolated vertex. NULL below level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_vertex_half_edges(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    view!(m, len, |m| m.che.vertex_half_edges())
+}
+
+/// `EH`: the canonical half-edge of every edge (the boundary one on a boundary edge).
+/// NULL below level 2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_edge_half_edges(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    view!(m, len, |m| m.che.edge_half_edges())
+}
+
+/// `CH`: one boundary half-edge per boundary curve (its smallest). NULL below level 3.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_curve_half_edges(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    view!(m, len, |m| m.che.curve_half_edges())
+}
+
+/// Positions: x, y, z per structure vertex (copies repeat their origin's position);
+/// `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_positions(m: *const CheMesh, len: *mut usize) -> *const f64 {
+    view!(m, len, |m| {
+        let p = m.che.positions();
+        (!p.is_empty()).then(|| coordinates(p))
+    })
+}
+
+/// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
+/// vertices, then the origin of each split copy). Materialised on first use when it is the
+/// identity; then kept with the mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_vertex_origins(m: *const CheMesh, len: *mut usize) -> *const u32 {
+    view!(m, len, |m| Some(m.vertex_origins()))
+}
+
+/// Structure triangle -> input triangle (`num_triangles` entries; increasing, with gaps
+/// where degenerate triangles were dropped).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_triangle_origins(
+    m: *const CheMesh,
+    len: *mut usize,
+) -> *const u32 {
+    view!(m, len, |m| Some(m.triangle_origins()))
+}
+
+/// The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
+/// the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`
+/// (`O[h] == TOPOMESH_NONE || h < O[h]`, bit `h % 32`), the high 32 bits count the canonical
+/// half-edges before `32k`. With `O` it gives the edge of any half-edge in O(1) without a
+/// call: `che_edge_of` in `topomesh_inline.h`. From level 2 this is the structure's own
+/// directory (counted in `che_mesh_memory`'s `edges`); at level 1 it is computed from `O`
+/// on the first request (2 bits per half-edge, kept with the mesh until its level
+/// changes). NULL below level 1.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_edge_ranks(m: *const CheMesh, len: *mut usize) -> *const u64 {
+    view!(m, len, |m| m.che.edge_ranks())
+}

@@ -343,8 +343,18 @@ impl Chf {
                 format!("boundary bit of half-face {h}")
             })?;
         }
+        let vertices = self.validate_boundary_vertices(&unpaired)?;
+        self.validate_boundary_surface(&unpaired, &vertices)
+    }
+
+    /// Level 3's boundary vertices: the vertices of the unpaired half-faces (returned), in
+    /// increasing order, with their bits and a component each.
+    fn validate_boundary_vertices(&self, unpaired: &[u32]) -> Result<Vec<u32>> {
+        let Some(b) = &self.boundary else {
+            return Ok(Vec::new());
+        };
         let mut on = vec![false; self.n_vertices];
-        for &hf in &unpaired {
+        for &hf in unpaired {
             for x in face_cycle(&self.v, hf) {
                 on[x as usize] = true;
             }
@@ -371,6 +381,15 @@ impl Chf {
                 vertices.len()
             )
         })?;
+        Ok(vertices)
+    }
+
+    /// Level 3's surface: triangle `k` runs as the `k`-th unpaired half-face, over boundary
+    /// vertices of one component.
+    fn validate_boundary_surface(&self, unpaired: &[u32], vertices: &[u32]) -> Result<()> {
+        let Some(b) = &self.boundary else {
+            return Ok(());
+        };
         let che = &b.che;
         ensure(che.num_triangles() == unpaired.len(), || {
             format!(

@@ -1,7 +1,7 @@
 //! Heap use, counted with a global allocator wrapper in a test binary of its own:
 //! - at level 2 and up, queries do not allocate (stars of up to 64 tetrahedra);
 //! - the build's heap peak stays within twice the heap the finished structure holds
-//!   (issue 5: "a build peak at most twice the final size"), at every level, on a mesh
+//!   (a build peak at most twice the final size), at every level, on a mesh
 //!   numbered at random (every access a cache miss, as in tetgen's output). The benchmark
 //!   measures the same with the resident set; this catches a change that raises the peak
 //!   on any machine.

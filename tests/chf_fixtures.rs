@@ -31,7 +31,9 @@ fn build_checked(tets: &[[u32; 4]], positions: &[DVec3], given: bool) -> Chf {
     let a = answers(&chf);
     check_against_reference(&chf, &a, &reference);
     for level in 0..3 {
-        assert_eq!(answers(&mesh.build(level, given)), a, "level {level}");
+        let low = mesh.build(level, given);
+        check_invariants(&low);
+        assert_eq!(answers(&low), a, "level {level}");
     }
     chf
 }
@@ -533,6 +535,7 @@ fn chf_empty_meshes() {
     for n in [0usize, 3] {
         for level in 0..=3 {
             let chf = Chf::from_tetrahedra(&[], n, &[], ChfBuildOptions::level(level)).unwrap();
+            chf.validate().unwrap();
             assert_eq!(
                 chf.summary(),
                 ChfSummary {

@@ -13,12 +13,11 @@
 //! `e`-th canonical slot. Level 2 stores one bit per slot (a rank: 1.5 bits per slot) and
 //! finding the canonical slot of any half-edge walks around the edge until a marked slot,
 //! O(k) for k tetrahedra around it; a per-slot id array would make that O(1) for 24 bytes
-//! per tetrahedron, 3/4 of level 1, which we judged too much. Measured (release, a 40^3
-//! box of 384k tetrahedra, k about 5): naming an edge from a half-edge about 60 ns, TE
-//! 380 ns per tetrahedron, EE 930 ns per edge, against 26 ns for TT and 67 ns for TF.
+//! per tetrahedron, 3/4 of level 1, which we judged too much: TE and EE, which name edges
+//! from half-edges, are the relations that pay for it.
 
-use super::ids::{HalfEdge, NO_HALF_EDGE, mate, radial, slot_half_edges, slot_of};
-use super::report::push_example;
+use crate::chf::build::report::push_example;
+use crate::chf::ids::{HalfEdge, NO_HALF_EDGE, mate, radial, slot_half_edges, slot_of};
 use crate::util::rank::RankBits;
 
 /// How a walk around an edge ended.
@@ -123,7 +122,7 @@ pub(crate) fn canonical_slot(v: &[u32], o: &[u32], bits: &RankBits, he: HalfEdge
 #[inline]
 pub(crate) fn slot_canonical_half_edge(o: &[u32], s: u64) -> HalfEdge {
     let [a, b] = slot_half_edges(s);
-    let open = |he: HalfEdge| o[super::ids::he_face(he) as usize] == crate::NONE;
+    let open = |he: HalfEdge| o[crate::chf::ids::he_face(he) as usize] == crate::NONE;
     if open(b) && !open(a) { b } else { a }
 }
 
@@ -157,7 +156,7 @@ pub(crate) fn census(
     origin: impl Fn(u32) -> u32,
 ) -> EdgeCensus {
     let ends = |s: u64| {
-        let [p, q] = super::ids::EDGE[(s % 6) as usize];
+        let [p, q] = crate::chf::ids::EDGE[(s % 6) as usize];
         let base = 4 * (s / 6) as usize;
         let (a, b) = (v[base + p as usize], v[base + q as usize]);
         (a.min(b), a.max(b))

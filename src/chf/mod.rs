@@ -6,8 +6,13 @@
 //!   and a boundary-component id per boundary vertex.
 //!
 //! The arithmetic (half-faces, edge slots, the half-edge encoding, mate and radial) is in
-//! [`ids`]. Every query works at every level; a higher level only answers faster. The build
-//! always canonicalises the input (degenerate tetrahedra dropped, components oriented,
+//! [`ids`], the edge fans in `edges.rs`. `build/` is the pipeline from a tetrahedron list
+//! (`build/mod.rs` names its steps), `query/` answers the relations on a view of the level's
+//! tables, and `star_pass/` is the one pass over every vertex star that both use: the build
+//! for `O`, `VH` and the edge ids, a query below level 2 for the ranks it lacks.
+//!
+//! Every query works at every level; a higher level only answers faster. The build always
+//! canonicalises the input (degenerate tetrahedra dropped, components oriented,
 //! non-manifold vertices split) so that half-face, edge and face ids are the same at every
 //! level, and so are the answers, in the same order.
 //!
@@ -34,40 +39,23 @@
 //! per-slot edge array would make it O(1) for 24 bytes per tetrahedron (see `edges.rs`).
 
 mod build;
-mod bulk;
 mod edges;
-mod fan;
 pub mod ids;
-mod level2;
-mod level3;
-mod link;
-mod memory;
-mod orient;
-mod pairs;
-mod queries;
-mod report;
-mod soup;
-mod split;
-mod star;
-mod stars;
-mod strict;
-mod summary;
-mod view;
+mod query;
+mod star_pass;
 
 pub use crate::Ids;
-pub use build::{ChfBuildOptions, MAX_TETRAHEDRA};
-pub use bulk::ChfCsr;
-pub use fan::EdgeIds;
+pub use build::{ChfBuildOptions, ChfBuildReport, MAX_TETRAHEDRA};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
-pub use memory::ChfMemory;
-pub use report::ChfBuildReport;
-pub use star::{INLINE as STAR_INLINE, VertexIds};
-pub use summary::ChfSummary;
+pub use query::{ChfCsr, ChfMemory, ChfSummary, EdgeIds, STAR_INLINE, VertexIds};
 
 use crate::error::{Error, Result};
 use crate::util::rank::RankBits;
+use build::level2;
+use build::level3;
 use edges::MultiFan;
 use glam::DVec3;
+use star_pass as stars;
 
 /// A tetrahedral mesh in the Compact Half-Face structure.
 #[derive(Clone, Debug)]
@@ -111,6 +99,32 @@ pub struct Chf {
 }
 
 impl Chf {
+    /// No tetrahedron, no vertex: what the build fills in.
+    fn empty() -> Chf {
+        Chf {
+            level: 0,
+            n_input_vertices: 0,
+            n_vertices: 0,
+            v: Vec::new(),
+            o: Vec::new(),
+            vh: Vec::new(),
+            face_bits: RankBits::default(),
+            fh: Vec::new(),
+            edge_bits: RankBits::default(),
+            eh: Vec::new(),
+            boundary: None,
+            num_edges: 0,
+            num_faces: 0,
+            positions: Vec::new(),
+            vertex_origin: Vec::new(),
+            tet_origin: Vec::new(),
+            non_manifold: Vec::new(),
+            seams: Vec::new(),
+            multi_fan: Vec::new(),
+            report: ChfBuildReport::default(),
+        }
+    }
+
     /// Builds from tetrahedra over vertices `0..n_vertices`; `positions` is empty or holds
     /// `n_vertices` points.
     pub fn from_tetrahedra(
@@ -179,15 +193,17 @@ impl Chf {
             self.level = 1;
         }
         if self.level < 2 && level >= 2 {
-            let flagged = build::merged(&self.non_manifold, &self.seams);
-            let stars = stars::stars(
-                &self.v,
-                self.n_vertices,
-                &flagged,
-                stars::Pairs::No,
-                true,
-                stars::threads_for(self.v.len() / 4, self.n_vertices, self.build_threads()),
-            );
+            let flagged = stars::merged(&self.non_manifold, &self.seams);
+            let pass = stars::StarPass {
+                pairs: stars::Pairs::No,
+                tables: true,
+                threads: stars::threads_for(
+                    self.v.len() / 4,
+                    self.n_vertices,
+                    self.build_threads(),
+                ),
+            };
+            let stars = stars::stars(&self.v, self.n_vertices, &flagged, pass);
             debug_assert!(!stars.split_needed, "the build split every vertex");
             level2::build(self, stars.edge_bits, stars.vh);
             self.level = 2;

@@ -37,22 +37,12 @@ pub mod status;
 pub(crate) mod boundary;
 pub mod che;
 pub mod chf;
-pub mod chf_build;
-pub mod chf_csr;
-pub mod chf_half_faces;
-pub mod chf_info;
-pub mod chf_relations;
-pub mod chf_surface;
-#[cfg(test)]
-mod chf_tests;
-pub mod chf_views;
 mod mesh_arrays;
 mod shapes;
 
 pub use che::{CheBuildOptions, CheMesh};
 pub use che::{CheBuildReport, CheMemory, CheReportKind, CheStarIter, CheStarStep, CheSummary};
-pub use chf::{ChfBuildOptions, ChfMesh};
-pub use chf_info::{ChfBuildReport, ChfMemory, ChfReportKind, ChfSummary};
+pub use chf::{ChfBuildOptions, ChfBuildReport, ChfMemory, ChfMesh, ChfReportKind, ChfSummary};
 pub use status::Status;
 
 /// `TOPOMESH_NONE` in C: no element (boundary, none, invalid).

@@ -126,85 +126,14 @@ fn dropped_free(input: &[[u32; 4]]) -> impl Iterator<Item = [u32; 4]> + '_ {
     input.iter().copied().filter(|t| !degenerate(*t))
 }
 
-/// `O` pairs reversed faces; `VH` holds its vertex and is a boundary half-face exactly on
-/// boundary vertices; the level-3 boundary surface is the boundary half-faces.
+/// The structure's invariants (`Chf::validate`), and at level 3 the boundary maps'
+/// answers below level 3 (computed for the call) against the stored ones.
 pub fn check_invariants(chf: &Chf) {
-    if let Some(o) = chf.opposites() {
-        for (hf, &g) in o.iter().enumerate() {
-            if g == NONE {
-                continue;
-            }
-            assert_eq!(o[g as usize], hf as u32);
-            let a = chf.half_face_vertices_of(hf as u32);
-            let b = chf.half_face_vertices_of(g);
-            let k = b.iter().position(|&y| y == a[0]).expect("same triple");
-            assert_eq!(b[(k + 2) % 3], a[1], "twins run opposite ways");
-            assert_eq!(b[(k + 1) % 3], a[2], "twins run opposite ways");
-        }
-    }
-    if let Some(vh) = chf.vertex_half_faces() {
-        for (v, &hf) in vh.iter().enumerate() {
-            if hf == NONE {
-                assert_eq!(chf.vertex_tetrahedra(v as u32).count(), 0);
-                continue;
-            }
-            assert!(chf.half_face_vertices_of(hf).contains(&(v as u32)));
-            let boundary = chf.vertex_faces(v as u32).any(|f| chf.is_boundary_face(f));
-            assert_eq!(chf.opposites().unwrap()[hf as usize] == NONE, boundary);
-        }
+    if let Err(e) = chf.validate() {
+        panic!("{}", e.message);
     }
     if let Some(che) = chf.boundary() {
-        let hfs = chf.boundary_half_faces();
-        assert_eq!(che.num_triangles(), hfs.len());
-        assert_eq!(chf.num_boundary_triangles(), hfs.len());
-        assert_eq!(
-            chf.num_boundary_faces()
-                + chf.non_manifold_half_faces().len()
-                + chf.seam_half_faces().len(),
-            hfs.len()
-        );
-        // Only boundary vertices, with compact ids both ways.
         let bv = chf.boundary_vertices();
-        assert_eq!(che.num_input_vertices(), bv.len());
-        assert_eq!(che.summary().isolated_vertices, 0);
-        for (b, &v) in bv.iter().enumerate() {
-            assert_eq!(chf.boundary_vertex(v), b as u32);
-            assert_eq!(chf.boundary_vertex_volume_vertex(b as u32), v);
-            assert_eq!(
-                chf.boundary_vertex_components().unwrap()[b],
-                chf.boundary_component(v)
-            );
-        }
-        for c in 0..che.num_vertices() as u32 {
-            assert_eq!(
-                chf.boundary_vertex_volume_vertex(c),
-                bv[che.vertex_origin(c) as usize]
-            );
-        }
-        assert_eq!(
-            chf.boundary_vertex_volume_vertex(che.num_vertices() as u32),
-            NONE
-        );
-        for (k, &hf) in hfs.iter().enumerate() {
-            assert_eq!(chf.opposite(hf), NONE);
-            assert_eq!(chf.boundary_triangle(hf), k as u32);
-            assert_eq!(chf.boundary_triangle_half_face(k as u32), hf);
-            let tri = che
-                .triangle_vertices(k as u32)
-                .map(|v| chf.boundary_vertex_volume_vertex(v));
-            assert_eq!(
-                tri,
-                chf.half_face_vertices_of(hf),
-                "triangle {k} is half-face {hf}"
-            );
-            let comp = chf.boundary_component(tri[0]);
-            assert_ne!(comp, NONE);
-            assert!(tri.iter().all(|&v| chf.boundary_component(v) == comp));
-        }
-        for v in 0..chf.num_vertices() as u32 {
-            assert_eq!(chf.boundary_component(v) != NONE, chf.is_boundary_vertex(v));
-            assert_eq!(chf.boundary_vertex(v) != NONE, chf.is_boundary_vertex(v));
-        }
         // The same answers below level 3, computed for the call.
         let mut low = chf.clone();
         low.build_level(1).unwrap();

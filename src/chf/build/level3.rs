@@ -1,0 +1,327 @@
+//! Level 3: the boundary surface as a CHE (level 3, so with its curves).
+//!
+//! - Triangles: triangle `k` is the `k`-th unpaired half-face in half-face order (the
+//!   boundary faces, and also the half-faces of non-manifold faces and orientation seams,
+//!   which the structure keeps unpaired), its corners in the half-face's outward order.
+//! - Vertices: only the vertices of those half-faces, with compact ids: boundary vertex `b`
+//!   is the `b`-th such volume vertex in increasing id order (so interior vertices are not
+//!   in the surface, and its Euler characteristic is the boundary's). Vertices the CHE
+//!   itself splits (a boundary pinched at a vertex) are appended after them, with the CHE's
+//!   own origin map back to a boundary vertex.
+//!
+//! Maps: boundary half-face -> triangle (a rank over the unpaired half-faces) and back (an
+//! array); volume vertex -> boundary vertex (a rank over the boundary vertices) and back
+//! (an array); a boundary-component id per boundary vertex: components of the boundary
+//! triangles joined through shared vertices, numbered in order of their first triangle.
+//! Below level 3 every map is computed for the call (O(T)).
+
+use crate::NONE;
+use crate::che::{BuildOptions, Che};
+use crate::chf::Chf;
+use crate::chf::ids::face_cycle;
+use crate::chf::query::view::Need;
+use crate::error::Result;
+use crate::util::dsu::Dsu;
+use crate::util::rank::RankBits;
+use std::borrow::Cow;
+
+#[derive(Clone, Debug)]
+pub(crate) struct Boundary {
+    pub che: Che,
+    /// Bit `hf` set on unpaired half-faces; the triangle is the rank.
+    pub bits: RankBits,
+    /// Triangle -> half-face.
+    pub half_faces: Vec<u32>,
+    /// Bit `v` set on boundary vertices; the boundary vertex id is the rank.
+    pub vertex_bits: RankBits,
+    /// Boundary vertex -> volume vertex.
+    pub vertices: Vec<u32>,
+    /// Boundary vertex -> boundary component.
+    pub component: Vec<u32>,
+    pub components: usize,
+    /// Unpaired half-faces that are neither non-manifold nor seams: faces with one
+    /// tetrahedron.
+    pub true_faces: usize,
+}
+
+impl Boundary {
+    pub fn memory_bytes(&self) -> usize {
+        self.che.memory_bytes().topology
+            + self.bits.memory_bytes()
+            + self.vertex_bits.memory_bytes()
+            + 4 * (self.half_faces.len() + self.vertices.len() + self.component.len())
+    }
+}
+
+/// What every boundary map below level 3 derives from: the unpaired half-faces and the
+/// boundary vertices.
+struct Parts {
+    half_faces: Vec<u32>,
+    vertex_bits: RankBits,
+    vertices: Vec<u32>,
+}
+
+fn parts(chf: &Chf) -> Parts {
+    let view = chf.view(Need::NOTHING);
+    let o = &view.o;
+    let half_faces: Vec<u32> = (0..o.len() as u32)
+        .filter(|&hf| o[hf as usize] == NONE)
+        .collect();
+    let mut on = vec![0u64; chf.n_vertices.div_ceil(64)];
+    for &hf in &half_faces {
+        for x in face_cycle(&chf.v, hf) {
+            on[x as usize >> 6] |= 1 << (x & 63);
+        }
+    }
+    let vertex_bits = RankBits::from_words(on, chf.n_vertices);
+    let mut vertices = Vec::new();
+    vertex_bits.ones_map(&mut vertices, |v| v as u32);
+    Parts {
+        half_faces,
+        vertex_bits,
+        vertices,
+    }
+}
+
+/// The boundary, its CHE built on up to `threads` threads.
+pub(crate) fn build(chf: &Chf, threads: usize) -> Result<Boundary> {
+    let p = parts(chf);
+    let che = surface(chf, &p, 3, threads)?;
+    let n_hf = chf.v.len();
+    let mut words = vec![0u64; n_hf.div_ceil(64)];
+    for &hf in &p.half_faces {
+        words[hf as usize >> 6] |= 1 << (hf & 63);
+    }
+    let bits = RankBits::from_words(words, n_hf);
+    let (component, components) = components(chf, &p);
+    let true_faces = p.half_faces.len() - flagged_count(chf);
+    Ok(Boundary {
+        che,
+        bits,
+        half_faces: p.half_faces,
+        vertex_bits: p.vertex_bits,
+        vertices: p.vertices,
+        component,
+        components,
+        true_faces,
+    })
+}
+
+/// Flagged half-faces (non-manifold or seam), all unpaired.
+fn flagged_count(chf: &Chf) -> usize {
+    crate::chf::star_pass::merged(&chf.non_manifold, &chf.seams).len()
+}
+
+fn surface(chf: &Chf, p: &Parts, level: u8, threads: usize) -> Result<Che> {
+    let tris: Vec<[u32; 3]> = p
+        .half_faces
+        .iter()
+        .map(|&hf| face_cycle(&chf.v, hf).map(|x| p.vertex_bits.rank(x as usize) as u32))
+        .collect();
+    let positions: Vec<_> = if chf.positions.is_empty() {
+        Vec::new()
+    } else {
+        p.vertices
+            .iter()
+            .map(|&x| chf.positions[x as usize])
+            .collect()
+    };
+    Che::from_triangles(
+        &tris,
+        p.vertices.len(),
+        &positions,
+        BuildOptions {
+            level,
+            strict: false,
+            threads,
+        },
+    )
+}
+
+/// Boundary component of every boundary vertex, by union-find over the boundary
+/// triangles.
+fn components(chf: &Chf, p: &Parts) -> (Vec<u32>, usize) {
+    let n = p.vertices.len();
+    let mut dsu = Dsu::new(n);
+    let local = |x: u32| p.vertex_bits.rank(x as usize) as u32;
+    for &hf in &p.half_faces {
+        let [a, b, c] = face_cycle(&chf.v, hf).map(local);
+        dsu.union(a, b);
+        dsu.union(a, c);
+    }
+    let mut id_of_root = vec![NONE; n];
+    let mut component = vec![NONE; n];
+    let mut count = 0u32;
+    for &hf in &p.half_faces {
+        for x in face_cycle(&chf.v, hf).map(local) {
+            let r = dsu.find(x) as usize;
+            if id_of_root[r] == NONE {
+                id_of_root[r] = count;
+                count += 1;
+            }
+            component[x as usize] = id_of_root[r];
+        }
+    }
+    (component, count as usize)
+}
+
+impl Chf {
+    /// The boundary surface, at level 3.
+    pub fn boundary(&self) -> Option<&Che> {
+        self.boundary.as_ref().map(|b| &b.che)
+    }
+
+    /// The boundary surface as a new level-3 CHE, at any level (a copy of the stored one at
+    /// level 3). O(T).
+    pub fn boundary_surface(&self) -> Result<Che> {
+        if let Some(b) = &self.boundary {
+            return Ok(b.che.clone());
+        }
+        surface(self, &parts(self), 3, 1)
+    }
+
+    /// Unpaired half-faces in increasing order: triangle `k` of the boundary surface is the
+    /// `k`-th. Borrowed at level 3.
+    pub fn boundary_half_faces(&self) -> Cow<'_, [u32]> {
+        match &self.boundary {
+            Some(b) => Cow::Borrowed(&b.half_faces),
+            None => Cow::Owned(parts(self).half_faces),
+        }
+    }
+
+    /// The triangles of the boundary surface: every unpaired half-face (boundary faces,
+    /// and the half-faces of non-manifold faces and seams). O(1) at level 3, O(T) below.
+    pub fn num_boundary_triangles(&self) -> usize {
+        match &self.boundary {
+            Some(b) => b.half_faces.len(),
+            None => {
+                let view = self.view(Need::NOTHING);
+                view.o.iter().filter(|&&g| g == NONE).count()
+            }
+        }
+    }
+
+    /// Faces with exactly one tetrahedron: the unpaired half-faces that are neither
+    /// non-manifold ([`Chf::num_non_manifold_half_faces`]) nor seams
+    /// ([`Chf::num_seam_half_faces`]). O(1) at level 3, O(T) below.
+    pub fn num_boundary_faces(&self) -> usize {
+        match &self.boundary {
+            Some(b) => b.true_faces,
+            None => self.num_boundary_triangles() - flagged_count(self),
+        }
+    }
+
+    /// Half-faces of faces shared by 3+ tetrahedra (unpaired, one per tetrahedron). O(1).
+    pub fn num_non_manifold_half_faces(&self) -> usize {
+        self.non_manifold.len()
+    }
+
+    /// Half-faces on orientation seams (two tetrahedra whose orientations disagree across
+    /// the face; unpaired). O(1).
+    pub fn num_seam_half_faces(&self) -> usize {
+        self.seams.len()
+    }
+
+    /// The boundary triangle of half-face `hf`, `NONE` when `hf` is interior. O(1) at
+    /// level 3, O(T) below.
+    pub fn boundary_triangle(&self, hf: u32) -> u32 {
+        match &self.boundary {
+            Some(b) if b.bits.get(hf as usize) => b.bits.rank(hf as usize) as u32,
+            Some(_) => NONE,
+            None => {
+                let list = parts(self).half_faces;
+                list.binary_search(&hf).map_or(NONE, |k| k as u32)
+            }
+        }
+    }
+
+    /// The half-face of boundary triangle `k` (`NONE` out of range). O(1) at level 3, O(T)
+    /// below.
+    pub fn boundary_triangle_half_face(&self, k: u32) -> u32 {
+        self.boundary_half_faces()
+            .get(k as usize)
+            .copied()
+            .unwrap_or(NONE)
+    }
+
+    /// Boundary vertices (the vertices of the boundary surface before its own split).
+    /// O(1) at level 3, O(T) below.
+    pub fn num_boundary_vertices(&self) -> usize {
+        match &self.boundary {
+            Some(b) => b.vertices.len(),
+            None => parts(self).vertices.len(),
+        }
+    }
+
+    /// Boundary vertex -> volume vertex, in increasing order. Borrowed at level 3.
+    pub fn boundary_vertices(&self) -> Cow<'_, [u32]> {
+        match &self.boundary {
+            Some(b) => Cow::Borrowed(&b.vertices),
+            None => Cow::Owned(parts(self).vertices),
+        }
+    }
+
+    /// The boundary-surface vertex of volume vertex `v`, `NONE` off the boundary. O(1) at
+    /// level 3, O(T) below.
+    pub fn boundary_vertex(&self, v: u32) -> u32 {
+        let at = |bits: &RankBits| {
+            if bits.get(v as usize) {
+                bits.rank(v as usize) as u32
+            } else {
+                NONE
+            }
+        };
+        match &self.boundary {
+            Some(b) => at(&b.vertex_bits),
+            None => at(&parts(self).vertex_bits),
+        }
+    }
+
+    /// The volume vertex of boundary-surface vertex `b` (a vertex of
+    /// [`Chf::boundary_surface`], copies the CHE split included), `NONE` out of range.
+    /// O(1) at level 3, O(T) below.
+    pub fn boundary_vertex_volume_vertex(&self, b: u32) -> u32 {
+        let map = |che: &Che, vertices: &[u32]| {
+            if (b as usize) < che.num_vertices() {
+                vertices[che.vertex_origin(b) as usize]
+            } else {
+                NONE
+            }
+        };
+        match &self.boundary {
+            Some(s) => map(&s.che, &s.vertices),
+            None => match self.boundary_surface() {
+                Ok(che) => map(&che, &parts(self).vertices),
+                Err(_) => NONE,
+            },
+        }
+    }
+
+    /// The boundary component of volume vertex `v` (`NONE` off the boundary). O(1) at
+    /// level 3, O(T) below.
+    pub fn boundary_component(&self, v: u32) -> u32 {
+        let b = self.boundary_vertex(v);
+        if b == NONE {
+            return NONE;
+        }
+        match &self.boundary {
+            Some(s) => s.component[b as usize],
+            None => components(self, &parts(self)).0[b as usize],
+        }
+    }
+
+    /// The boundary component of every boundary vertex (indexed like
+    /// [`Chf::boundary_vertices`]), at level 3.
+    pub fn boundary_vertex_components(&self) -> Option<&[u32]> {
+        self.boundary.as_ref().map(|b| &b.component[..])
+    }
+
+    /// Number of boundary components (of the structure: after the vertex split). O(1) at
+    /// level 3, O(T) below.
+    pub fn num_boundary_components(&self) -> usize {
+        match &self.boundary {
+            Some(b) => b.components,
+            None => components(self, &parts(self)).1,
+        }
+    }
+}

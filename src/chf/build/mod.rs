@@ -1,0 +1,459 @@
+//! From a tetrahedron list to a CHF: validate, drop degenerate tetrahedra, match
+//! half-faces, orient, split non-manifold vertices, name the edges, then build the
+//! requested level. Everything changed or left unpaired is counted in the report.
+
+pub(crate) mod level2;
+pub(crate) mod level3;
+mod load;
+mod orient;
+pub(crate) mod report;
+mod soup;
+mod split;
+mod strict;
+
+use self::orient::flipped_id;
+pub use self::report::ChfBuildReport;
+use self::soup::Soup;
+use self::strict::{strict_after_split, strict_faces};
+use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::edges::{self, EdgeCensus};
+use crate::chf::ids::tet;
+use crate::chf::star_pass::link::FaceCensus;
+use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
+use crate::error::{Error, Result};
+use glam::DVec3;
+
+/// How to build: the level (0..=3) and whether non-manifold input is an error.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ChfBuildOptions {
+    pub level: u8,
+    /// Reject non-manifold faces, edges and vertices and duplicate tetrahedra instead of
+    /// keeping them.
+    pub strict: bool,
+    /// Threads for the build: 0 (the default) for as many as the machine runs at once, 1
+    /// for the calling thread alone. The structure is the same whatever the number.
+    pub threads: usize,
+}
+
+impl Default for ChfBuildOptions {
+    fn default() -> Self {
+        ChfBuildOptions {
+            level: 2,
+            strict: false,
+            threads: 0,
+        }
+    }
+}
+
+impl ChfBuildOptions {
+    pub fn level(level: u8) -> Self {
+        ChfBuildOptions {
+            level,
+            ..Self::default()
+        }
+    }
+}
+
+/// Largest tetrahedron count whose half-face ids (`4T`) fit below `NONE`.
+pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
+
+/// The pipeline: each step is a function below, in this order.
+pub(crate) fn build(
+    tets: &[[u32; 4]],
+    n_vertices: usize,
+    positions: &[DVec3],
+    options: ChfBuildOptions,
+) -> Result<Chf> {
+    check_sizes(tets.len(), n_vertices, positions.len(), options.level)?;
+    let mut report = ChfBuildReport::of_input(tets.len(), n_vertices);
+    let n_threads = crate::util::par::build_threads(options.threads, tets.len());
+    // Steps 1 to 3.
+    let Oriented {
+        mut v,
+        o,
+        seams,
+        links,
+        mut non_manifold,
+        mut stars,
+        tet_origin,
+        pairs,
+        pass,
+    } = oriented(tets, n_vertices, positions, options, &mut report)?;
+    let origin_of = |t: u32| origin(&tet_origin, t);
+    non_manifold.sort_unstable();
+    // 4. Vertex split, when some star is in several pieces.
+    let copies = if stars.split_needed {
+        split_vertices(&mut v, &o, &links, n_vertices, &mut report)?
+    } else {
+        Vec::new()
+    };
+    drop(links);
+    let n_total = n_vertices + copies.len();
+    let vertex_origin = vertex_origins(n_vertices, &copies);
+    // 5. Edges: the census by input vertex pair (after a split, one more star pass).
+    let census = if copies.is_empty() {
+        std::mem::take(&mut stars.census)
+    } else {
+        // Every star is one piece now; the census groups by input pair.
+        let flagged = merged(&non_manifold, &seams);
+        stars = stars::stars(&v, n_total, &flagged, pass.with_tables());
+        debug_assert!(!stars.split_needed);
+        edges::census(&v, &stars.edge_bits, n_vertices, |x| {
+            vertex_origin[x as usize]
+        })
+    };
+    record_edges(&mut report, &census);
+    if options.strict {
+        strict_after_split(&report, &v, &vertex_origin, &origin_of)?;
+    }
+    // 6. Level 1, then the levels above it.
+    let chf = Chf {
+        level: 1,
+        n_input_vertices: n_vertices,
+        n_vertices: n_total,
+        num_edges: stars.num_edges,
+        num_faces: count_faces(&o, &seams, v.len() - pairs),
+        positions: with_copies(positions, &copies),
+        vertex_origin,
+        tet_origin,
+        non_manifold,
+        seams,
+        multi_fan: census.multi_fan,
+        report,
+        v,
+        o,
+        ..Chf::empty()
+    };
+    raise(chf, options.level, stars, n_threads)
+}
+
+/// What steps 1 to 3 leave: an oriented `V` with its pairs, before the vertex split.
+struct Oriented {
+    v: Vec<u32>,
+    o: Vec<u32>,
+    seams: Vec<u32>,
+    /// With seams, every pair (for the split); else empty.
+    links: Vec<u32>,
+    non_manifold: Vec<u32>,
+    /// The last star pass, on this `V`.
+    stars: Stars,
+    tet_origin: Vec<u32>,
+    /// Triples of two half-faces.
+    pairs: usize,
+    /// The build's star pass, pairs aside.
+    pass: StarPass,
+}
+
+/// Steps 1 to 3: the soup, the star pass, and the orientation when some pair needs it.
+fn oriented(
+    tets: &[[u32; 4]],
+    n_vertices: usize,
+    positions: &[DVec3],
+    options: ChfBuildOptions,
+    report: &mut ChfBuildReport,
+) -> Result<Oriented> {
+    let n_threads = crate::util::par::build_threads(options.threads, tets.len());
+    // 1. Soup: range check, degenerate tetrahedra dropped, flips by the determinant.
+    let mut soup = soup::soup(tets, n_vertices, positions, report, n_threads)?;
+    let tet_origin = std::mem::take(&mut soup.tet_origin);
+    let origin_of = |t: u32| origin(&tet_origin, t);
+    // 2. The star pass: faces and their pairs, pieces, edges, `VH` and the edge bits.
+    let pass = StarPass {
+        pairs: Pairs::No,
+        tables: options.level >= 2,
+        threads: stars::threads_for(soup.v.len() / 4, n_vertices, n_threads),
+    };
+    let (mut stars, faces, partner) = first_star_pass(&soup.v, n_vertices, pass, options.level);
+    let pairs = faces.pairs();
+    let same_direction = faces.same_direction;
+    let mut non_manifold = record_faces(report, faces, &origin_of);
+    if options.strict {
+        strict_faces(report, &soup.v, &non_manifold, &origin_of)?;
+    }
+    // 3. Orientation, only when some pair still runs the same way after the soup's flips:
+    // otherwise the pairs are the opposites (see `soup.rs`) and the stars are right as found.
+    let (o, seams, links) = if !same_direction {
+        report.flipped_tetrahedra = soup.flipped;
+        (partner, Vec::new(), Vec::new())
+    } else {
+        let oriented = orient_soup(&mut soup, partner, &mut non_manifold, report, origin_of);
+        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, pass);
+        (oriented.o, oriented.seams, oriented.links)
+    };
+    Ok(Oriented {
+        v: std::mem::take(&mut soup.v),
+        o,
+        seams,
+        links,
+        non_manifold,
+        stars,
+        tet_origin,
+        pairs,
+        pass,
+    })
+}
+
+/// Structure tetrahedron `t`'s input tetrahedron (`tet_origin` empty for the identity).
+fn origin(tet_origin: &[u32], t: u32) -> u32 {
+    if tet_origin.is_empty() {
+        t
+    } else {
+        tet_origin[t as usize]
+    }
+}
+
+/// The build's first star pass, on the soup's `V`: the face census and the partners
+/// (level 0 keeps no pairs unless it must orient or split), with `VH` and the edge bits
+/// for level 2.
+fn first_star_pass(
+    v: &[u32],
+    n_vertices: usize,
+    pass: StarPass,
+    level: u8,
+) -> (Stars, FaceCensus, Vec<u32>) {
+    let pairs = if level == 0 {
+        Pairs::Census
+    } else {
+        Pairs::Partners
+    };
+    let mut stars = stars::stars(v, n_vertices, &[], StarPass { pairs, ..pass });
+    let (faces, mut partner) = stars.faces.take().expect("faces were asked for");
+    if partner.is_empty() && (faces.same_direction || stars.split_needed) {
+        let pass = StarPass {
+            pairs: Pairs::Partners,
+            tables: false,
+            ..pass
+        };
+        partner = stars::stars(v, n_vertices, &[], pass)
+            .faces
+            .expect("faces were asked for")
+            .1;
+    }
+    (stars, faces, partner)
+}
+
+/// The face counts into the report; returns the non-manifold half-faces.
+fn record_faces(
+    report: &mut ChfBuildReport,
+    faces: FaceCensus,
+    origin_of: &impl Fn(u32) -> u32,
+) -> Vec<u32> {
+    report.input_faces = faces.input_faces;
+    report.boundary_faces = faces.boundary_faces;
+    report.non_manifold_faces = faces.non_manifold_faces;
+    report.non_manifold_face_examples = faces.non_manifold_face_examples;
+    report.duplicate_tetrahedra = faces.duplicates;
+    report.duplicate_examples = faces
+        .duplicate_examples
+        .iter()
+        .map(|&[s, t]| [origin_of(s), origin_of(t)])
+        .collect();
+    faces.non_manifold
+}
+
+/// Back to the input's numbering, then orients as given: `non_manifold` follows the flips.
+fn orient_soup(
+    soup: &mut Soup,
+    partner: Vec<u32>,
+    non_manifold: &mut [u32],
+    report: &mut ChfBuildReport,
+    origin_of: impl Fn(u32) -> u32,
+) -> orient::Oriented {
+    let unflip = |hf: u32| {
+        if soup.is_flipped(tet(hf)) {
+            flipped_id(hf)
+        } else {
+            hf
+        }
+    };
+    let mut input_partner = vec![NONE; partner.len()];
+    for (h, &g) in partner.iter().enumerate() {
+        if g != NONE {
+            input_partner[unflip(h as u32) as usize] = unflip(g);
+        }
+    }
+    drop(partner);
+    for hf in non_manifold.iter_mut() {
+        *hf = unflip(*hf);
+    }
+    soup.unflip();
+    let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign);
+    drop(input_partner);
+    let origins = |ts: &[u32]| ts.iter().map(|&t| origin_of(t)).collect();
+    report.flipped_tetrahedra = oriented.flipped_count;
+    report.non_orientable_components = oriented.non_orientable_components;
+    report.non_orientable_examples = origins(&oriented.non_orientable_examples);
+    report.inverted_tetrahedra = oriented.inverted;
+    report.inverted_examples = origins(&oriented.inverted_examples);
+    report.seam_faces = oriented.seams.len() / 2;
+    for hf in non_manifold.iter_mut() {
+        if oriented.flipped[tet(*hf) as usize] {
+            *hf = flipped_id(*hf);
+        }
+    }
+    oriented
+}
+
+/// Splits the non-manifold vertices of `v`; returns the copies' origins.
+fn split_vertices(
+    v: &mut [u32],
+    o: &[u32],
+    links: &[u32],
+    n_vertices: usize,
+    report: &mut ChfBuildReport,
+) -> Result<Vec<u32>> {
+    let split = split::split(v, o, links, n_vertices);
+    report.split_vertices = split.split_vertices;
+    report.split_vertex_examples = split.split_examples;
+    report.seam_split_vertices = split.seam_split_vertices;
+    report.added_vertices = split.copies.len();
+    let n_total = n_vertices + split.copies.len();
+    if n_total >= NONE as usize {
+        return Err(Error::too_large(format!(
+            "splitting non-manifold vertices makes {n_total} vertices: ids must fit below 2^32 - 1"
+        )));
+    }
+    Ok(split.copies)
+}
+
+/// Structure vertex -> input vertex; empty when the identity (no copies).
+fn vertex_origins(n_vertices: usize, copies: &[u32]) -> Vec<u32> {
+    if copies.is_empty() {
+        Vec::new()
+    } else {
+        (0..n_vertices as u32)
+            .chain(copies.iter().copied())
+            .collect()
+    }
+}
+
+/// The positions, each copy repeating its origin's.
+fn with_copies(positions: &[DVec3], copies: &[u32]) -> Vec<DVec3> {
+    let mut positions = positions.to_vec();
+    if !positions.is_empty() {
+        for &c in copies {
+            positions.push(positions[c as usize]);
+        }
+    }
+    positions
+}
+
+/// Canonical half-faces: the unpaired ones and one per pair (`unpaired_or_pairs` when
+/// there are no seams).
+fn count_faces(o: &[u32], seams: &[u32], unpaired_or_pairs: usize) -> usize {
+    if seams.is_empty() {
+        unpaired_or_pairs
+    } else {
+        o.iter()
+            .enumerate()
+            .filter(|&(hf, &g)| g == NONE || (hf as u32) < g)
+            .count()
+    }
+}
+
+impl StarPass {
+    /// The same pass with the level-2 tables.
+    fn with_tables(self) -> StarPass {
+        StarPass {
+            tables: true,
+            ..self
+        }
+    }
+}
+
+impl FaceCensus {
+    /// Triples of two half-faces: all of them are pairs unless there are seams.
+    fn pairs(&self) -> usize {
+        self.input_faces - self.boundary_faces - self.non_manifold_faces
+    }
+}
+
+impl ChfBuildReport {
+    /// The report of a build from `tets` tetrahedra over `vertices` vertices, before any
+    /// step.
+    fn of_input(tets: usize, vertices: usize) -> Self {
+        ChfBuildReport {
+            input_tetrahedra: tets,
+            input_vertices: vertices,
+            ..ChfBuildReport::default()
+        }
+    }
+}
+
+/// From level 1 to `level`, with the tables of the last star pass.
+fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<Chf> {
+    let edge_bits = std::mem::take(&mut stars.edge_bits);
+    if level == 0 {
+        chf.o = Vec::new();
+        chf.level = 0;
+    }
+    if level >= 2 {
+        level2::build(&mut chf, edge_bits, std::mem::take(&mut stars.vh));
+        chf.level = 2;
+    }
+    if level >= 3 {
+        chf.boundary = Some(level3::build(&chf, n_threads)?);
+        chf.level = 3;
+    }
+    Ok(chf)
+}
+
+/// Level, counts and lengths, before anything is allocated.
+fn check_sizes(n_tets: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
+    if level > 3 {
+        return Err(Error::out_of_range(format!(
+            "level {level} is not in 0..=3"
+        )));
+    }
+    if n_vertices >= NONE as usize {
+        return Err(Error::too_large(format!(
+            "{n_vertices} vertices: ids must fit below 2^32 - 1"
+        )));
+    }
+    if n_tets > MAX_TETRAHEDRA {
+        return Err(Error::too_large(format!(
+            "tetrahedron {MAX_TETRAHEDRA} (of {n_tets}): half-face ids must fit below 2^32 - 1, so at most {MAX_TETRAHEDRA} tetrahedra"
+        )));
+    }
+    if n_positions != 0 && n_positions != n_vertices {
+        return Err(Error::invalid(format!(
+            "{n_positions} positions given for {n_vertices} vertices"
+        )));
+    }
+    Ok(())
+}
+
+fn record_edges(report: &mut ChfBuildReport, census: &EdgeCensus) {
+    report.input_edges = census.input_edges;
+    report.non_manifold_edges = census.non_manifold;
+    report.non_manifold_edge_examples = census.non_manifold_examples.clone();
+    report.kept_non_manifold_edges = census.kept;
+    report.kept_non_manifold_edge_examples = census.kept_examples.clone();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ErrorKind;
+
+    #[test]
+    fn sizes_are_checked_before_allocating() {
+        assert!(check_sizes(MAX_TETRAHEDRA, 10, 0, 3).is_ok());
+        let e = check_sizes(MAX_TETRAHEDRA + 1, 10, 0, 2).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::TooLarge);
+        assert!(e.message.contains(&format!("tetrahedron {MAX_TETRAHEDRA}")));
+        assert!(4 * MAX_TETRAHEDRA < NONE as usize);
+        assert!(4 * (MAX_TETRAHEDRA + 1) > NONE as usize);
+        let e = check_sizes(1, NONE as usize, 0, 2).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::TooLarge);
+        assert_eq!(
+            check_sizes(1, 4, 3, 2).unwrap_err().kind,
+            ErrorKind::InvalidInput
+        );
+        assert_eq!(
+            check_sizes(1, 4, 0, 4).unwrap_err().kind,
+            ErrorKind::OutOfRange
+        );
+    }
+}

@@ -1,0 +1,165 @@
+//! The soup: range check, degenerate tetrahedra dropped, determinant signs, and every
+//! tetrahedron with a negative determinant flipped (local vertices 1 and 2 swapped).
+//!
+//! Why flip before matching: on a valid mesh the orientation pass then has nothing to do
+//! (every matched pair already runs opposite), which the build checks from the matching
+//! alone and skips it. That is exactly what the propagation in `orient.rs` would decide:
+//! it flips a tetrahedron when its determinant disagrees with its component's majority,
+//! and with every pair opposite after this flip the majority is positive everywhere. When
+//! some pair still runs the same way the build undoes the flip ([`Soup::unflip`]) and
+//! orients by propagation from the input as given.
+
+use crate::chf::build::report::{ChfBuildReport, push_example};
+use crate::error::{Error, Result};
+use glam::DVec3;
+
+pub(crate) struct Soup {
+    /// `V`, flipped where the determinant is negative.
+    pub v: Vec<u32>,
+    /// Structure tetrahedron -> input tetrahedron; empty when the identity.
+    pub tet_origin: Vec<u32>,
+    /// Sign of each tetrahedron's determinant as given; empty without positions.
+    pub sign: Vec<i8>,
+    /// Tetrahedra flipped here.
+    pub flipped: usize,
+}
+
+/// What one run of tetrahedra found.
+#[derive(Default)]
+struct Run {
+    /// The first out-of-range id: the run stops there.
+    error: Option<Error>,
+    /// Degenerate tetrahedra (input ids, increasing): their slots in `V` hold nothing.
+    dropped: Vec<u32>,
+    zero_volume: usize,
+    zero_volume_examples: Vec<u32>,
+    flipped: usize,
+}
+
+/// Runs of tetrahedra on up to `threads` threads, each writing its own part of `V` (and
+/// of the signs); degenerate ones leave a hole, closed afterwards by one pass when there
+/// is any.
+pub(crate) fn soup(
+    tets: &[[u32; 4]],
+    n_vertices: usize,
+    positions: &[DVec3],
+    report: &mut ChfBuildReport,
+    threads: usize,
+) -> Result<Soup> {
+    let n = tets.len();
+    let chunk = n.div_ceil(threads.max(1)).max(1);
+    let mut v: Vec<u32> = crate::util::pages::zeroed(4 * n);
+    let mut sign: Vec<i8> = vec![0; if positions.is_empty() { 0 } else { n }];
+    let mut sign_parts: Vec<&mut [i8]> = if positions.is_empty() {
+        tets.chunks(chunk).map(|_| &mut [][..]).collect()
+    } else {
+        sign.chunks_mut(chunk).collect()
+    };
+    let jobs: Vec<_> = tets
+        .chunks(chunk)
+        .zip(v.chunks_mut(4 * chunk))
+        .zip(sign_parts.drain(..))
+        .enumerate()
+        .map(|(j, ((tets, v), sign))| (j * chunk, tets, v, sign))
+        .collect();
+    let runs = crate::util::par::run_all(jobs, |(t0, tets, v, sign)| {
+        run(t0, tets, v, sign, n_vertices, positions)
+    });
+    let mut dropped: Vec<u32> = Vec::new();
+    let mut flipped = 0;
+    for r in runs {
+        if let Some(e) = r.error {
+            return Err(e);
+        }
+        report.dropped_degenerate += r.dropped.len();
+        crate::util::extend_examples(&mut report.degenerate_examples, r.dropped.iter().copied());
+        dropped.extend(r.dropped);
+        report.zero_volume += r.zero_volume;
+        crate::util::extend_examples(&mut report.zero_volume_examples, r.zero_volume_examples);
+        flipped += r.flipped;
+    }
+    // Stays empty (the identity) unless a tetrahedron was dropped.
+    let tet_origin = if dropped.is_empty() {
+        Vec::new()
+    } else {
+        crate::util::holes::close_holes(&mut v, 4, &mut sign, &dropped)
+    };
+    Ok(Soup {
+        v,
+        tet_origin,
+        sign,
+        flipped,
+    })
+}
+
+/// One run: `tets` from input id `t0` on, into `v` (four per tetrahedron) and `sign`
+/// (empty without positions).
+fn run(
+    t0: usize,
+    tets: &[[u32; 4]],
+    v: &mut [u32],
+    sign: &mut [i8],
+    n_vertices: usize,
+    positions: &[DVec3],
+) -> Run {
+    let mut out = Run::default();
+    for (k, (tet, q)) in tets.iter().zip(v.chunks_exact_mut(4)).enumerate() {
+        let t = t0 + k;
+        if let Some(i) = tet.iter().position(|&x| x as usize >= n_vertices) {
+            out.error = Some(Error::out_of_range(format!(
+                "tetrahedron {t}, corner {i}: vertex {} out of range (there are {n_vertices} vertices)",
+                tet[i]
+            )));
+            return out;
+        }
+        let [a, b, c, d] = *tet;
+        if a == b || a == c || a == d || b == c || b == d || c == d {
+            out.dropped.push(t as u32);
+            continue;
+        }
+        if positions.is_empty() {
+            q.copy_from_slice(tet);
+            continue;
+        }
+        let [p0, p1, p2, p3] = tet.map(|x| positions[x as usize]);
+        let det = (p1 - p0).dot((p2 - p0).cross(p3 - p0));
+        let s = if det > 0.0 {
+            1
+        } else if det < 0.0 {
+            -1
+        } else {
+            out.zero_volume += 1;
+            push_example(&mut out.zero_volume_examples, t as u32);
+            0
+        };
+        sign[k] = s;
+        if s < 0 {
+            out.flipped += 1;
+            q.copy_from_slice(&[a, c, b, d]);
+        } else {
+            q.copy_from_slice(tet);
+        }
+    }
+    out
+}
+
+impl Soup {
+    /// Is structure tetrahedron `t` flipped here?
+    #[inline]
+    pub(crate) fn is_flipped(&self, t: u32) -> bool {
+        !self.sign.is_empty() && self.sign[t as usize] < 0
+    }
+
+    /// Back to the input's orientation.
+    pub(crate) fn unflip(&mut self) {
+        if self.flipped == 0 {
+            return;
+        }
+        for (q, &s) in self.v.chunks_exact_mut(4).zip(&self.sign) {
+            if s < 0 {
+                q.swap(1, 2);
+            }
+        }
+        self.flipped = 0;
+    }
+}

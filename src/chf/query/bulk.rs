@@ -1,0 +1,232 @@
+//! Bulk relations for every element at once, in compressed sparse rows, at every level
+//! and without raising it (no copy of the mesh).
+//!
+//! Around the vertices (VT, VF, VE, VV) the rows come from counting passes, O(T) with no
+//! walk: count the occurrences per vertex, prefix sums, then place each id in its rows in
+//! increasing id order, which is the order of the one-element calls. VT scans `V`; VF and
+//! VE scan the canonical half-faces and edge slots (ranks the view computes below level
+//! 2); VV takes both ends of every canonical edge slot, then sorts each row and drops the
+//! repeats. Every pass reads `V` in order (sequential memory). Around the edges (ET, EF) the rows are the rotations,
+//! walked on one view shared by all of them.
+
+use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::{EDGE, face_cycle};
+use crate::chf::query::fan::EdgeIds;
+use crate::chf::query::view::{Need, View};
+
+/// Rows `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ChfCsr {
+    pub offsets: Vec<u32>,
+    pub indices: Vec<u32>,
+}
+
+impl ChfCsr {
+    /// The number of rows.
+    pub fn len(&self) -> usize {
+        self.offsets.len().saturating_sub(1)
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    pub fn row(&self, i: usize) -> &[u32] {
+        &self.indices[self.offsets[i] as usize..self.offsets[i + 1] as usize]
+    }
+}
+
+/// Rows over `n` vertices from `(vertex, id)` pairs given twice by `each` (once to count,
+/// once to place), ids in increasing order per pass, so that every row is sorted.
+fn by_counting(n: usize, each: impl Fn(&mut dyn FnMut(u32, u32))) -> ChfCsr {
+    let mut offsets = vec![0u32; n + 1];
+    each(&mut |x, _| offsets[x as usize + 1] += 1);
+    for i in 0..n {
+        offsets[i + 1] += offsets[i];
+    }
+    let mut fill = offsets[..n].to_vec();
+    let mut indices = vec![0u32; offsets[n] as usize];
+    each(&mut |x, id| {
+        let f = &mut fill[x as usize];
+        indices[*f as usize] = id;
+        *f += 1;
+    });
+    ChfCsr { offsets, indices }
+}
+
+impl Chf {
+    /// `O` at every level: borrowed from level 1, computed below (O(T), the rule level 1
+    /// stores).
+    pub fn all_opposites(&self) -> Vec<u32> {
+        match self.opposites() {
+            Some(o) => o.to_vec(),
+            None => self.opposites_by_rule(),
+        }
+    }
+
+    /// VT for every vertex: row `v` is [`Chf::vertex_tetrahedra`]`(v)`. O(T) at every level.
+    pub fn all_vertex_tetrahedra(&self) -> ChfCsr {
+        let v = &self.v;
+        by_counting(self.n_vertices, |f| {
+            for (hf, &x) in v.iter().enumerate() {
+                f(x, (hf >> 2) as u32);
+            }
+        })
+    }
+
+    /// VF for every vertex: row `v` is [`Chf::vertex_faces`]`(v)`. O(T) at every level.
+    pub fn all_vertex_faces(&self) -> ChfCsr {
+        let view = self.view(Need::FACES);
+        let mut fh = Vec::new();
+        let fh: &[u32] = match self.face_half_faces() {
+            Some(fh) => fh,
+            None => {
+                view.faces.ones_map(&mut fh, |hf| hf as u32);
+                &fh
+            }
+        };
+        by_counting(self.n_vertices, |f| {
+            for (id, &hf) in fh.iter().enumerate() {
+                for x in face_cycle(&self.v, hf) {
+                    f(x, id as u32);
+                }
+            }
+        })
+    }
+
+    /// VE for every vertex: row `v` is [`Chf::vertex_edges`]`(v)`. O(T) at every level.
+    pub fn all_vertex_edges(&self) -> ChfCsr {
+        let view = self.view(Need::EDGES);
+        let mut slots = Vec::new();
+        view.edges.ones_map(&mut slots, |s| s as u64);
+        by_counting(self.n_vertices, |f| {
+            for (id, &s) in slots.iter().enumerate() {
+                let base = 4 * (s / 6) as usize;
+                let [a, b] = EDGE[(s % 6) as usize];
+                f(self.v[base + a as usize], id as u32);
+                f(self.v[base + b as usize], id as u32);
+            }
+        })
+    }
+
+    /// VV for every vertex: row `v` is [`Chf::vertex_vertices`]`(v)`. O(T) at every level
+    /// (plus sorting the rows): both ends of every canonical edge slot, read in
+    /// tetrahedron order (sequential memory), then each row sorted and its repeats (a pair
+    /// of vertices with several fans) dropped.
+    pub fn all_vertex_vertices(&self) -> ChfCsr {
+        let view = self.view(Need::EDGES);
+        let bits = &view.edges;
+        let v = &self.v;
+        let mut c = by_counting(self.n_vertices, |f| {
+            for (t, q) in v.chunks_exact(4).enumerate() {
+                for (k, [a, b]) in EDGE.iter().enumerate() {
+                    if bits.get(6 * t + k) {
+                        let (x, y) = (q[*a as usize], q[*b as usize]);
+                        f(x, y);
+                        f(y, x);
+                    }
+                }
+            }
+        });
+        // Sort each row and drop repeats, compacting in place.
+        let mut end = 0usize;
+        let mut start = 0usize;
+        for x in 0..self.n_vertices {
+            let stop = c.offsets[x + 1] as usize;
+            c.indices[start..stop].sort_unstable();
+            c.offsets[x] = end as u32;
+            let mut last = NONE;
+            for k in start..stop {
+                let w = c.indices[k];
+                if w != last {
+                    c.indices[end] = w;
+                    end += 1;
+                    last = w;
+                }
+            }
+            start = stop;
+        }
+        c.offsets[self.n_vertices] = end as u32;
+        c.indices.truncate(end);
+        c
+    }
+
+    /// TT for every tetrahedron: calls `row(t)` for each tetrahedron in order with
+    /// [`Chf::tetrahedron_tetrahedra`]`(t)`. O(T) at every level (`O` computed once below
+    /// level 1).
+    pub fn for_each_tetrahedron_tetrahedra(&self, mut row: impl FnMut([u32; 4])) {
+        let view = self.view(Need::NOTHING);
+        for q in view.o.chunks_exact(4) {
+            row([0, 1, 2, 3].map(|i| if q[i] == NONE { NONE } else { q[i] >> 2 }));
+        }
+    }
+
+    /// ET for every edge: calls `row(e, tetrahedra)` for each edge in order, with the
+    /// answer of [`Chf::edge_tetrahedra`]. O(T) in all at every level.
+    pub fn for_each_edge_tetrahedra(&self, row: impl FnMut(u32, EdgeIds<'_>)) {
+        self.edge_rows(Need::EDGES, false, row)
+    }
+
+    /// EF for every edge, as [`Chf::for_each_edge_tetrahedra`] with [`Chf::edge_faces`].
+    pub fn for_each_edge_faces(&self, row: impl FnMut(u32, EdgeIds<'_>)) {
+        let need = Need {
+            faces: true,
+            edges: true,
+        };
+        self.edge_rows(need, true, row)
+    }
+
+    fn edge_rows(&self, need: Need, faces: bool, mut row: impl FnMut(u32, EdgeIds<'_>)) {
+        let view: View<'_> = self.view(need);
+        for e in 0..self.num_edges as u32 {
+            row(e, EdgeIds::on(view.reborrow(), e, faces));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chf::ChfBuildOptions;
+
+    #[test]
+    fn bulk_rows_are_the_one_element_answers_at_every_level() {
+        let mut rnd = crate::util::test_rng(0x2545_F491_4F6C_DD1Du64);
+        for round in 0..60 {
+            let n = 6 + round % 15;
+            let tets: Vec<[u32; 4]> = (0..8 + round % 40)
+                .map(|_| [0; 4].map(|_| rnd(n)))
+                .collect();
+            for level in 0..=3 {
+                let chf =
+                    Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(level)).unwrap();
+                let nv = chf.num_vertices();
+                let (vt, vf) = (chf.all_vertex_tetrahedra(), chf.all_vertex_faces());
+                let (ve, vv) = (chf.all_vertex_edges(), chf.all_vertex_vertices());
+                for v in 0..nv as u32 {
+                    let at = format!("round {round}, level {level}, vertex {v}");
+                    let row = |c: &ChfCsr| c.row(v as usize).to_vec();
+                    assert_eq!(
+                        row(&vt),
+                        chf.vertex_tetrahedra(v).collect::<Vec<_>>(),
+                        "{at}"
+                    );
+                    assert_eq!(row(&vf), chf.vertex_faces(v).collect::<Vec<_>>(), "{at}");
+                    assert_eq!(row(&ve), chf.vertex_edges(v).collect::<Vec<_>>(), "{at}");
+                    assert_eq!(row(&vv), chf.vertex_vertices(v).collect::<Vec<_>>(), "{at}");
+                }
+                let mut rows = 0;
+                chf.for_each_edge_tetrahedra(|e, r| {
+                    assert_eq!(
+                        r.collect::<Vec<_>>(),
+                        chf.edge_tetrahedra(e).collect::<Vec<_>>()
+                    );
+                    rows += 1;
+                });
+                chf.for_each_edge_faces(|e, r| {
+                    assert_eq!(r.collect::<Vec<_>>(), chf.edge_faces(e).collect::<Vec<_>>());
+                });
+                assert_eq!(rows, chf.num_edges());
+            }
+        }
+    }
+}

@@ -1,0 +1,140 @@
+//! The topology of the input complex as given (input vertices, unique input edges and
+//! faces, kept tetrahedra), whatever the build split or left unpaired, plus what the build
+//! did.
+
+use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::face_cycle;
+use crate::chf::query::view::Need;
+
+/// Field names match `chf_summary` in the C API and the CLI's JSON.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ChfSummary {
+    pub vertices: u64,
+    pub edges: u64,
+    pub faces: u64,
+    pub tetrahedra: u64,
+    /// Faces with exactly one tetrahedron.
+    pub boundary_faces: u64,
+    /// Edges and vertices of the boundary faces.
+    pub boundary_edges: u64,
+    pub boundary_vertices: u64,
+    /// Components of the boundary faces, joined through shared vertices.
+    pub boundary_components: u64,
+    /// Components of the tetrahedra, joined through shared vertices.
+    pub components: u64,
+    pub isolated_vertices: u64,
+    /// V - E + F - T of the input complex (isolated vertices count).
+    pub euler_characteristic: i64,
+    /// No non-manifold face, edge or vertex.
+    pub manifold: bool,
+    pub orientable: bool,
+    pub dropped_degenerate: u64,
+    pub zero_volume: u64,
+    pub inverted_tetrahedra: u64,
+    pub non_manifold_faces: u64,
+    pub non_manifold_edges: u64,
+    pub split_vertices: u64,
+    pub flipped_tetrahedra: u64,
+    pub non_orientable_components: u64,
+}
+
+/// Union-find over input vertex ids.
+struct Dsu(Vec<u32>);
+
+impl Dsu {
+    fn new(n: usize) -> Self {
+        Dsu((0..n as u32).collect())
+    }
+    fn find(&mut self, mut x: u32) -> u32 {
+        while self.0[x as usize] != x {
+            let up = self.0[self.0[x as usize] as usize];
+            self.0[x as usize] = up;
+            x = up;
+        }
+        x
+    }
+    fn union(&mut self, a: u32, b: u32) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            self.0[ra.max(rb) as usize] = ra.min(rb);
+        }
+    }
+    fn roots_among(&mut self, used: &[bool]) -> u64 {
+        (0..used.len() as u32)
+            .filter(|&x| used[x as usize] && self.find(x) == x)
+            .count() as u64
+    }
+}
+
+impl Chf {
+    /// The summary; O(T log T) at every level (it sorts the boundary edges).
+    pub fn summary(&self) -> ChfSummary {
+        let r = &self.report;
+        let n = self.n_input_vertices;
+        let mut used = vec![false; n];
+        let mut dsu = Dsu::new(n);
+        for t in self.v.chunks_exact(4) {
+            let [a, b, c, d] = [t[0], t[1], t[2], t[3]].map(|x| self.vertex_origin(x));
+            for x in [a, b, c, d] {
+                used[x as usize] = true;
+            }
+            dsu.union(a, b);
+            dsu.union(a, c);
+            dsu.union(a, d);
+        }
+        let components = dsu.roots_among(&used);
+        let isolated = used.iter().filter(|&&u| !u).count() as u64;
+
+        // Input boundary faces: unpaired half-faces that are neither non-manifold nor seams.
+        let view = self.view(Need::NOTHING);
+        let mut on_boundary = vec![false; n];
+        let mut dsu = Dsu::new(n);
+        let mut pairs: Vec<u64> = Vec::new();
+        for hf in 0..self.v.len() as u32 {
+            if view.o[hf as usize] != NONE
+                || self.non_manifold.binary_search(&hf).is_ok()
+                || self.seams.binary_search(&hf).is_ok()
+            {
+                continue;
+            }
+            let [a, b, c] = face_cycle(&self.v, hf).map(|x| self.vertex_origin(x));
+            for (x, y) in [(a, b), (b, c), (c, a)] {
+                on_boundary[x as usize] = true;
+                dsu.union(x, y);
+                pairs.push(((x.min(y) as u64) << 32) | x.max(y) as u64);
+            }
+        }
+        pairs.sort_unstable();
+        pairs.dedup();
+        let boundary_components = dsu.roots_among(&on_boundary);
+
+        let t = self.num_tetrahedra() as i64;
+        let euler = n as i64 - r.input_edges as i64 + r.input_faces as i64 - t;
+        ChfSummary {
+            vertices: n as u64,
+            edges: r.input_edges as u64,
+            faces: r.input_faces as u64,
+            tetrahedra: t as u64,
+            boundary_faces: r.boundary_faces as u64,
+            boundary_edges: pairs.len() as u64,
+            boundary_vertices: on_boundary.iter().filter(|&&b| b).count() as u64,
+            boundary_components,
+            components,
+            isolated_vertices: isolated,
+            euler_characteristic: euler,
+            manifold: r.non_manifold_faces == 0
+                && r.non_manifold_edges == 0
+                && r.split_vertices == 0,
+            orientable: r.non_orientable_components == 0,
+            dropped_degenerate: r.dropped_degenerate as u64,
+            zero_volume: r.zero_volume as u64,
+            inverted_tetrahedra: r.inverted_tetrahedra as u64,
+            non_manifold_faces: r.non_manifold_faces as u64,
+            non_manifold_edges: r.non_manifold_edges as u64,
+            split_vertices: r.split_vertices as u64,
+            flipped_tetrahedra: r.flipped_tetrahedra as u64,
+            non_orientable_components: r.non_orientable_components as u64,
+        }
+    }
+}

@@ -1033,13 +1033,6 @@ void chf_mesh_free(struct chf_mesh *m);
 topomesh_status chf_mesh_build_level(struct chf_mesh *m, uint32_t level);
 
 /**
- * Checks every invariant of the mesh at its level: `TOPOMESH_STATUS_OK`, or
- * `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (the element and what is
- * wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
- */
-topomesh_status chf_mesh_validate(const struct chf_mesh *m);
-
-/**
  * The current level (0..3); 0 for NULL.
  */
 uint32_t chf_mesh_level(const struct chf_mesh *m);
@@ -1486,6 +1479,13 @@ topomesh_status chf_mesh_tetrahedron_tetrahedra_csr(const struct chf_mesh *m,
                                                     size_t *n_indices);
 
 /* ---- CHF: summary, build report, memory and validation ---- */
+
+/**
+ * Checks every invariant of the mesh at its level: `TOPOMESH_STATUS_OK`, or
+ * `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (the element and what is
+ * wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
+ */
+topomesh_status chf_mesh_validate(const struct chf_mesh *m);
 
 /**
  * The topology summary into `*out`. O(T log T) at every level.

@@ -367,8 +367,32 @@ static void test_geometry(void) {
     chf_mesh_free(m);
 }
 
+/* Every fixture is a valid structure at every level; NULL is refused by name. */
+static void test_validate(void) {
+    static const struct {
+        const uint32_t *tets;
+        size_t n_tets, n_verts;
+        const double *pos;
+    } fixtures[] = {
+        {TET, NTET(TET), 4, TET_POS},     {PAIR, NTET(PAIR), 5, PAIR_POS},
+        {SPLIT, NTET(SPLIT), 7, SPLIT_POS}, {CUBE, NTET(CUBE), 8, CUBE_POS},
+        {STAR, NTET(STAR), 5, STAR_POS},  {BOOK, NTET(BOOK), 6, NULL},
+        {TDEGEN, NTET(TDEGEN), 6, NULL},
+    };
+    for (size_t f = 0; f < sizeof fixtures / sizeof fixtures[0]; f++)
+        for (uint32_t level = 0; level <= 3; level++) {
+            chf_mesh *m = make_chf(fixtures[f].tets, fixtures[f].n_tets, fixtures[f].n_verts,
+                                   fixtures[f].pos, level);
+            CHECK_OK(chf_mesh_validate(m));
+            chf_mesh_free(m);
+        }
+    CHECK_STATUS(chf_mesh_validate(NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("m");
+}
+
 int main(void) {
     test_argument_errors();
+    test_validate();
     test_single();
     test_pair();
     test_split_vertex();

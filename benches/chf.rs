@@ -8,7 +8,7 @@ mod common;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec3;
 use std::hint::black_box;
-use topomesh::{Chf, ChfBuildOptions};
+use topomesh::{Chf, chf};
 
 struct Input {
     name: String,
@@ -74,7 +74,7 @@ fn inputs() -> Vec<Input> {
 }
 
 fn build_chf(input: &Input, level: u8, threads: usize) -> Chf {
-    let options = ChfBuildOptions {
+    let options = chf::BuildOptions {
         level,
         strict: false,
         threads,

@@ -12,7 +12,12 @@ pub mod io;
 mod util;
 
 pub use che::{BuildOptions, BuildReport, Che, Summary};
-pub use chf::{Chf, ChfBuildOptions, ChfBuildReport, ChfSummary};
+pub use chf::Chf;
+#[allow(
+    deprecated,
+    reason = "the old names stay at the crate root for one release"
+)]
+pub use chf::{ChfBuildOptions, ChfBuildReport, ChfSummary};
 pub use error::{Error, ErrorKind};
 pub use util::REPORT_EXAMPLES;
 pub use util::small_ids::Ids;

@@ -142,7 +142,7 @@ fn chf_build_peak_is_at_most_twice_the_structure() {
     for level in 0..=3u8 {
         let before = CURRENT.load(SeqCst);
         PEAK.store(before, SeqCst);
-        let options = topomesh::ChfBuildOptions::level(level);
+        let options = topomesh::chf::BuildOptions::level(level);
         let chf = topomesh::Chf::from_flat(&flat, n, &mesh.positions, options).unwrap();
         let held = CURRENT.load(SeqCst) - before;
         let peak = PEAK.load(SeqCst) - before;

@@ -6,7 +6,7 @@ mod chf_common;
 use chf_common::*;
 use glam::DVec3;
 use topomesh::REPORT_EXAMPLES;
-use topomesh::chf::{Chf, ChfBuildOptions};
+use topomesh::chf::{self, Chf};
 
 #[test]
 fn chf_nothing_disappears() {
@@ -22,7 +22,7 @@ fn chf_nothing_disappears() {
         .collect();
     assert!(degenerate.len() > REPORT_EXAMPLES);
     for level in 0..=3 {
-        let chf = Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(level)).unwrap();
+        let chf = Chf::from_tetrahedra(&tets, n, &[], chf::BuildOptions::level(level)).unwrap();
         let r = chf.report();
         assert_eq!(r.dropped_degenerate, degenerate.len());
         assert_eq!(r.degenerate_examples, degenerate[..REPORT_EXAMPLES]);
@@ -54,14 +54,14 @@ fn chf_soups_of_random_tetrahedra_match_the_reference() {
         let tets: Vec<[u32; 4]> = (0..40)
             .map(|_| [0; 4].map(|_| rng.below(n) as u32))
             .collect();
-        let chf = Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(3)).unwrap();
+        let chf = Chf::from_tetrahedra(&tets, n, &[], chf::BuildOptions::level(3)).unwrap();
         let r = chf.report();
         let reference = Reference::new(&chf, &tets);
         let a = answers(&chf);
         check_against_reference(&chf, &a, &reference);
         check_invariants(&chf);
         for level in 0..3 {
-            let low = Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(level)).unwrap();
+            let low = Chf::from_tetrahedra(&tets, n, &[], chf::BuildOptions::level(level)).unwrap();
             assert_eq!(answers(&low), a);
         }
         // Seams: pairs on one triple, running the same way (they could not be glued).
@@ -218,10 +218,10 @@ fn chf_build_is_the_same_on_any_number_of_threads() {
     assert!(tets.len() > 1 << 16);
     for level in 0..=3u8 {
         let build = |threads| {
-            let options = ChfBuildOptions {
+            let options = chf::BuildOptions {
                 level,
                 threads,
-                ..ChfBuildOptions::default()
+                ..chf::BuildOptions::default()
             };
             Chf::from_tetrahedra(&tets, n, &mesh.positions, options).unwrap()
         };
@@ -246,7 +246,7 @@ fn chf_build_is_the_same_on_any_number_of_threads() {
         }
         // Strict mode names the same first offenders.
         let strict = |threads| {
-            let options = ChfBuildOptions {
+            let options = chf::BuildOptions {
                 level,
                 threads,
                 strict: true,

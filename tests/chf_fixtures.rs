@@ -5,7 +5,7 @@ mod chf_common;
 
 use chf_common::*;
 use glam::DVec3;
-use topomesh::chf::{Chf, ChfBuildOptions, ChfBuildReport, ChfSummary};
+use topomesh::chf::{self, Chf};
 use topomesh::{ErrorKind, NONE};
 
 fn p(x: f64, y: f64, z: f64) -> DVec3 {
@@ -44,8 +44,8 @@ fn summary(
     components: u64,
     isolated: u64,
     euler: i64,
-) -> ChfSummary {
-    ChfSummary {
+) -> chf::Summary {
+    chf::Summary {
         vertices: counts[0],
         edges: counts[1],
         faces: counts[2],
@@ -59,18 +59,18 @@ fn summary(
         euler_characteristic: euler,
         manifold: true,
         orientable: true,
-        ..ChfSummary::default()
+        ..chf::Summary::default()
     }
 }
 
-fn report(tets: usize, vertices: usize, faces: [usize; 2], edges: usize) -> ChfBuildReport {
-    ChfBuildReport {
+fn report(tets: usize, vertices: usize, faces: [usize; 2], edges: usize) -> chf::BuildReport {
+    chf::BuildReport {
         input_tetrahedra: tets,
         input_vertices: vertices,
         input_faces: faces[0],
         boundary_faces: faces[1],
         input_edges: edges,
-        ..ChfBuildReport::default()
+        ..chf::BuildReport::default()
     }
 }
 
@@ -95,14 +95,14 @@ fn chf_two_tetrahedra_sharing_a_face() {
     let chf = build_checked(&[[0, 1, 2, 3], [1, 3, 2, 4]], &pts, true);
     assert_eq!(
         chf.summary(),
-        ChfSummary {
+        chf::Summary {
             flipped_tetrahedra: 1,
             ..summary([5, 9, 7, 2], [6, 9, 5, 1], 1, 0, 1)
         }
     );
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             flipped_tetrahedra: 1,
             ..report(2, 5, [7, 6], 9)
         }
@@ -118,7 +118,7 @@ fn chf_two_tetrahedra_sharing_an_edge() {
     let chf = build_checked(&[[0, 1, 2, 3], [0, 1, 4, 5]], &pts, true);
     assert_eq!(
         chf.summary(),
-        ChfSummary {
+        chf::Summary {
             manifold: false,
             non_manifold_edges: 1,
             split_vertices: 2,
@@ -127,7 +127,7 @@ fn chf_two_tetrahedra_sharing_an_edge() {
     );
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             non_manifold_edges: 1,
             non_manifold_edge_examples: vec![[0, 1]],
             split_vertices: 2,
@@ -144,10 +144,10 @@ fn chf_two_tetrahedra_sharing_an_edge() {
         &[[0, 1, 2, 3], [0, 1, 4, 5]],
         6,
         &pts,
-        ChfBuildOptions {
+        chf::BuildOptions {
             level: 2,
             strict: true,
-            ..ChfBuildOptions::default()
+            ..chf::BuildOptions::default()
         },
     )
     .unwrap_err();
@@ -162,7 +162,7 @@ fn chf_two_tetrahedra_sharing_a_vertex() {
     let chf = build_checked(&tets, &pts, true);
     assert_eq!(
         chf.summary(),
-        ChfSummary {
+        chf::Summary {
             manifold: false,
             split_vertices: 1,
             ..summary([7, 12, 8, 2], [8, 12, 7, 1], 1, 0, 1)
@@ -170,7 +170,7 @@ fn chf_two_tetrahedra_sharing_a_vertex() {
     );
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             split_vertices: 1,
             split_vertex_examples: vec![0],
             added_vertices: 1,
@@ -183,10 +183,10 @@ fn chf_two_tetrahedra_sharing_a_vertex() {
         &tets,
         7,
         &pts,
-        ChfBuildOptions {
+        chf::BuildOptions {
             level: 1,
             strict: true,
-            ..ChfBuildOptions::default()
+            ..chf::BuildOptions::default()
         },
     )
     .unwrap_err();
@@ -201,7 +201,7 @@ fn chf_three_tetrahedra_on_one_face() {
     let chf = build_checked(&tets, &pts, true);
     assert_eq!(
         chf.summary(),
-        ChfSummary {
+        chf::Summary {
             manifold: false,
             non_manifold_faces: 1,
             non_manifold_edges: 3,
@@ -211,7 +211,7 @@ fn chf_three_tetrahedra_on_one_face() {
     );
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             non_manifold_faces: 1,
             non_manifold_face_examples: vec![[0, 1, 2]],
             non_manifold_edges: 3,
@@ -251,10 +251,10 @@ fn chf_three_tetrahedra_on_one_face() {
         &tets,
         6,
         &pts,
-        ChfBuildOptions {
+        chf::BuildOptions {
             level: 0,
             strict: true,
-            ..ChfBuildOptions::default()
+            ..chf::BuildOptions::default()
         },
     )
     .unwrap_err();
@@ -367,14 +367,14 @@ fn chf_degenerate_tetrahedra_are_dropped() {
     let chf = build_checked(&tets, &corner_points(&[]), false);
     assert_eq!(
         chf.summary(),
-        ChfSummary {
+        chf::Summary {
             dropped_degenerate: 2,
             ..summary([4, 6, 4, 1], [4, 6, 4, 1], 1, 0, 1)
         }
     );
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             dropped_degenerate: 2,
             degenerate_examples: vec![0, 2],
             ..report(3, 4, [4, 4], 6)
@@ -392,7 +392,7 @@ fn chf_zero_volume_tetrahedron_is_kept_and_oriented_by_its_neighbour() {
     let chf = build_checked(&[[0, 1, 2, 3], [1, 3, 2, 4]], &pts, true);
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             zero_volume: 1,
             zero_volume_examples: vec![1],
             flipped_tetrahedra: 1,
@@ -401,7 +401,7 @@ fn chf_zero_volume_tetrahedron_is_kept_and_oriented_by_its_neighbour() {
     );
     assert_eq!(
         chf.summary(),
-        ChfSummary {
+        chf::Summary {
             zero_volume: 1,
             flipped_tetrahedra: 1,
             ..summary([5, 9, 7, 2], [6, 9, 5, 1], 1, 0, 1)
@@ -418,7 +418,7 @@ fn chf_folded_tetrahedron_is_reported_inverted() {
     let chf = build_checked(&tets, &pts, true);
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             flipped_tetrahedra: 1,
             inverted_tetrahedra: 1,
             inverted_examples: vec![1],
@@ -427,7 +427,7 @@ fn chf_folded_tetrahedron_is_reported_inverted() {
     );
     assert_eq!(
         chf.summary(),
-        ChfSummary {
+        chf::Summary {
             flipped_tetrahedra: 1,
             inverted_tetrahedra: 1,
             ..summary([6, 12, 10, 3], [8, 12, 6, 1], 1, 0, 1)
@@ -442,7 +442,7 @@ fn chf_duplicate_tetrahedra_glue_into_a_sphere() {
     let chf = build_checked(&tets, &corner_points(&[]), false);
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             duplicate_tetrahedra: 1,
             duplicate_examples: vec![[0, 1]],
             ..report(2, 4, [4, 0], 6)
@@ -456,10 +456,10 @@ fn chf_duplicate_tetrahedra_glue_into_a_sphere() {
         &tets,
         4,
         &[],
-        ChfBuildOptions {
+        chf::BuildOptions {
             level: 2,
             strict: true,
-            ..ChfBuildOptions::default()
+            ..chf::BuildOptions::default()
         },
     )
     .unwrap_err();
@@ -487,7 +487,7 @@ fn chf_edge_with_two_fans_that_the_split_keeps() {
     let chf = build_checked(&tets, &pts, false);
     assert_eq!(
         *chf.report(),
-        ChfBuildReport {
+        chf::BuildReport {
             non_manifold_edges: 1,
             non_manifold_edge_examples: vec![[0, 1]],
             kept_non_manifold_edges: 1,
@@ -497,7 +497,7 @@ fn chf_edge_with_two_fans_that_the_split_keeps() {
     );
     assert_eq!(
         chf.summary(),
-        ChfSummary {
+        chf::Summary {
             manifold: false,
             non_manifold_edges: 1,
             ..summary([6, 14, 16, 6], [8, 11, 6, 1], 1, 0, 2)
@@ -516,10 +516,10 @@ fn chf_edge_with_two_fans_that_the_split_keeps() {
         &tets,
         6,
         &[],
-        ChfBuildOptions {
+        chf::BuildOptions {
             level: 2,
             strict: true,
-            ..ChfBuildOptions::default()
+            ..chf::BuildOptions::default()
         },
     )
     .unwrap_err();
@@ -534,11 +534,11 @@ fn chf_edge_with_two_fans_that_the_split_keeps() {
 fn chf_empty_meshes() {
     for n in [0usize, 3] {
         for level in 0..=3 {
-            let chf = Chf::from_tetrahedra(&[], n, &[], ChfBuildOptions::level(level)).unwrap();
+            let chf = Chf::from_tetrahedra(&[], n, &[], chf::BuildOptions::level(level)).unwrap();
             chf.validate().unwrap();
             assert_eq!(
                 chf.summary(),
-                ChfSummary {
+                chf::Summary {
                     isolated_vertices: n as u64,
                     euler_characteristic: n as i64,
                     ..summary([n as u64, 0, 0, 0], [0; 4], 0, n as u64, n as i64)
@@ -578,7 +578,7 @@ fn chf_bad_input_is_an_error_naming_the_tetrahedron() {
         &[[0, 1, 2, 3], [0, 1, 2, 9]],
         4,
         &[],
-        ChfBuildOptions::default(),
+        chf::BuildOptions::default(),
     )
     .unwrap_err();
     assert_eq!(e.kind, ErrorKind::OutOfRange);
@@ -588,13 +588,14 @@ fn chf_bad_input_is_an_error_naming_the_tetrahedron() {
         e.message
     );
     let pts = corner_points(&[]);
-    let e = Chf::from_tetrahedra(&[[0, 1, 2, 3]], 5, &pts, ChfBuildOptions::default()).unwrap_err();
+    let e =
+        Chf::from_tetrahedra(&[[0, 1, 2, 3]], 5, &pts, chf::BuildOptions::default()).unwrap_err();
     assert_eq!(e.kind, ErrorKind::InvalidInput);
-    let e = Chf::from_tetrahedra(&[[0, 1, 2, 3]], 4, &[], ChfBuildOptions::level(4)).unwrap_err();
+    let e = Chf::from_tetrahedra(&[[0, 1, 2, 3]], 4, &[], chf::BuildOptions::level(4)).unwrap_err();
     assert_eq!(e.kind, ErrorKind::OutOfRange);
-    let e = Chf::from_flat(&[0, 1, 2], 4, &[], ChfBuildOptions::default()).unwrap_err();
+    let e = Chf::from_flat(&[0, 1, 2], 4, &[], chf::BuildOptions::default()).unwrap_err();
     assert_eq!(e.kind, ErrorKind::InvalidInput);
-    let mut chf = Chf::from_flat(&[0, 1, 2, 3], 4, &[], ChfBuildOptions::default()).unwrap();
+    let mut chf = Chf::from_flat(&[0, 1, 2, 3], 4, &[], chf::BuildOptions::default()).unwrap();
     assert_eq!(chf.build_level(4).unwrap_err().kind, ErrorKind::OutOfRange);
     assert_eq!(chf.check_vertex(4).unwrap_err().kind, ErrorKind::OutOfRange);
     assert!(chf.check_vertex(3).is_ok());

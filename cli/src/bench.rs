@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use topomesh::io::MeshData;
-use topomesh::{BuildOptions, Che, ChfBuildOptions, Error};
+use topomesh::{BuildOptions, Che, Error, chf};
 
 #[derive(clap::Args)]
 pub struct BenchOptions {
@@ -64,7 +64,7 @@ fn bench_volume(name: &str, data: &MeshData, options: &BenchOptions) -> Result<(
     let n = data.tetrahedra.len();
     println!("{name}: {n} tetrahedra, median of {repeat}");
     for level in 0..=3u8 {
-        let build = ChfBuildOptions {
+        let build = chf::BuildOptions {
             level,
             strict: false,
             threads: options.threads,

@@ -8,7 +8,7 @@ use std::fmt::Debug;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use topomesh::io::MeshData;
-use topomesh::{BuildOptions, ChfBuildOptions, Error};
+use topomesh::{BuildOptions, Error, chf};
 
 #[derive(clap::Args)]
 pub struct CheckOptions {
@@ -96,9 +96,9 @@ fn check_surface(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
 fn check_volume(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
     let chf = build_volume(
         data,
-        ChfBuildOptions {
+        chf::BuildOptions {
             level: 1,
-            ..ChfBuildOptions::default()
+            ..chf::BuildOptions::default()
         },
     )?;
     let r = chf.report();

@@ -12,7 +12,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use topomesh::io::MeshData;
-use topomesh::{BuildOptions, Che, Chf, ChfBuildOptions, Error};
+use topomesh::{BuildOptions, Che, Chf, Error, chf};
 
 #[derive(clap::Args)]
 pub struct InfoOptions {
@@ -65,8 +65,8 @@ impl InfoOptions {
         }
     }
 
-    fn volume(&self) -> ChfBuildOptions {
-        ChfBuildOptions {
+    fn volume(&self) -> chf::BuildOptions {
+        chf::BuildOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
@@ -330,7 +330,7 @@ fn print_volume(i: &VolumeInfo) {
     line("time", format!("build {:.3} s", i.build_seconds));
 }
 
-fn print_volume_report(r: &topomesh::ChfBuildReport) {
+fn print_volume_report(r: &topomesh::chf::BuildReport) {
     println!("build report");
     report_line(
         "dropped degenerate",

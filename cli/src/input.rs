@@ -4,7 +4,7 @@
 use crate::progress::Progress;
 use std::path::Path;
 use topomesh::io::{self, MeshData};
-use topomesh::{BuildOptions, Che, Chf, ChfBuildOptions, Error};
+use topomesh::{BuildOptions, Che, Chf, Error, chf};
 
 /// The mesh `topomesh info` describes when no file is given: a 24 x 12 torus.
 const DEFAULT_MESH: &str = include_str!("../../data/default.off");
@@ -34,7 +34,7 @@ pub fn build_surface(data: &MeshData, options: BuildOptions) -> Result<Che, Erro
     )
 }
 
-pub fn build_volume(data: &MeshData, options: ChfBuildOptions) -> Result<Chf, Error> {
+pub fn build_volume(data: &MeshData, options: chf::BuildOptions) -> Result<Chf, Error> {
     Chf::from_tetrahedra(
         &data.tetrahedra,
         data.num_vertices(),

@@ -42,14 +42,14 @@ json_fields!(SurfaceMemory(che::Memory) {
     half_edge_vertices, opposites, vertex_half_edges, edges, curves, topology, positions, maps,
 });
 
-json_fields!(VolumeSummary(chf::ChfSummary) {
+json_fields!(VolumeSummary(chf::Summary) {
     vertices, edges, faces, tetrahedra, boundary_faces, boundary_edges, boundary_vertices,
     boundary_components, components, isolated_vertices, euler_characteristic, manifold,
     orientable, dropped_degenerate, zero_volume, inverted_tetrahedra, non_manifold_faces,
     non_manifold_edges, split_vertices, flipped_tetrahedra, non_orientable_components,
 });
 
-json_fields!(VolumeReport(chf::ChfBuildReport) {
+json_fields!(VolumeReport(chf::BuildReport) {
     input_tetrahedra, input_vertices, dropped_degenerate, degenerate_examples, zero_volume,
     zero_volume_examples, inverted_tetrahedra, inverted_examples, duplicate_tetrahedra,
     duplicate_examples, input_faces, boundary_faces, non_manifold_faces,
@@ -59,7 +59,7 @@ json_fields!(VolumeReport(chf::ChfBuildReport) {
     non_orientable_components, non_orientable_examples, seam_faces,
 });
 
-json_fields!(VolumeMemory(chf::ChfMemory) {
+json_fields!(VolumeMemory(chf::Memory) {
     half_face_vertices, opposites, vertex_half_faces, edges, faces, boundary, topology,
     positions, maps,
 });

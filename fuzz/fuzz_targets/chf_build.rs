@@ -3,7 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use topomesh::{Chf, ChfBuildOptions};
+use topomesh::{Chf, chf};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&head, rest)) = data.split_first() else {
@@ -18,9 +18,9 @@ fuzz_target!(|data: &[u8]| {
     let ids = &ids[..ids.len() / 4 * 4];
     let mut answers = Vec::new();
     for level in 0..=3 {
-        let options = ChfBuildOptions {
+        let options = chf::BuildOptions {
             strict,
-            ..ChfBuildOptions::level(level)
+            ..chf::BuildOptions::level(level)
         };
         let chf = match Chf::from_flat(ids, n_vertices, &[], options) {
             Ok(chf) => chf,

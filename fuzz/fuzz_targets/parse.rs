@@ -4,7 +4,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use topomesh::io::{Format, parse};
-use topomesh::{BuildOptions, Che, Chf, ChfBuildOptions};
+use topomesh::{BuildOptions, Che, Chf, chf};
 
 const FORMATS: [Format; 7] = [
     Format::Off,
@@ -42,7 +42,7 @@ fuzz_target!(|data: &[u8]| {
             &mesh.tetrahedra,
             mesh.num_vertices(),
             &mesh.positions,
-            ChfBuildOptions::level(3),
+            chf::BuildOptions::level(3),
         ) {
             let _ = chf.summary();
         }

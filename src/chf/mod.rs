@@ -45,9 +45,25 @@ mod query;
 mod star_pass;
 
 pub use crate::Ids;
-pub use build::{ChfBuildOptions, ChfBuildReport, MAX_TETRAHEDRA};
+pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
-pub use query::{ChfCsr, ChfMemory, ChfSummary, EdgeIds, STAR_INLINE, VertexIds};
+pub use query::{Csr, EdgeIds, Memory, STAR_INLINE, Summary, VertexIds};
+
+/// The name before the types took their module's name (`chf::BuildOptions`).
+#[deprecated(since = "0.2.0", note = "use chf::BuildOptions")]
+pub type ChfBuildOptions = BuildOptions;
+/// The name before the types took their module's name (`chf::BuildReport`).
+#[deprecated(since = "0.2.0", note = "use chf::BuildReport")]
+pub type ChfBuildReport = BuildReport;
+/// The name before the types took their module's name (`chf::Csr`).
+#[deprecated(since = "0.2.0", note = "use chf::Csr")]
+pub type ChfCsr = Csr;
+/// The name before the types took their module's name (`chf::Memory`).
+#[deprecated(since = "0.2.0", note = "use chf::Memory")]
+pub type ChfMemory = Memory;
+/// The name before the types took their module's name (`chf::Summary`).
+#[deprecated(since = "0.2.0", note = "use chf::Summary")]
+pub type ChfSummary = Summary;
 
 use crate::error::{Error, Result};
 use crate::util::rank::RankBits;
@@ -95,7 +111,7 @@ pub struct Chf {
     seams: Vec<u32>,
     /// Structure vertex pairs carrying several fans (several edge ids), sorted.
     multi_fan: Vec<MultiFan>,
-    report: ChfBuildReport,
+    report: BuildReport,
 }
 
 impl Chf {
@@ -121,7 +137,7 @@ impl Chf {
             non_manifold: Vec::new(),
             seams: Vec::new(),
             multi_fan: Vec::new(),
-            report: ChfBuildReport::default(),
+            report: BuildReport::default(),
         }
     }
 
@@ -131,7 +147,7 @@ impl Chf {
         tets: &[[u32; 4]],
         n_vertices: usize,
         positions: &[DVec3],
-        options: ChfBuildOptions,
+        options: BuildOptions,
     ) -> Result<Chf> {
         build::build(tets, n_vertices, positions, options)
     }
@@ -141,7 +157,7 @@ impl Chf {
         tets: &[u32],
         n_vertices: usize,
         positions: &[DVec3],
-        options: ChfBuildOptions,
+        options: BuildOptions,
     ) -> Result<Chf> {
         if !tets.len().is_multiple_of(4) {
             return Err(Error::invalid(format!(
@@ -285,7 +301,7 @@ impl Chf {
         (!self.tet_origin.is_empty()).then_some(&self.tet_origin[..])
     }
 
-    pub fn report(&self) -> &ChfBuildReport {
+    pub fn report(&self) -> &BuildReport {
         &self.report
     }
 

@@ -1,7 +1,7 @@
 //! Mesh generators: subdivided boxes, and a scrambler (subset, relabelling, shuffles).
 
 use glam::DVec3;
-use topomesh::chf::{Chf, ChfBuildOptions};
+use topomesh::chf::{self, Chf};
 
 /// A tetrahedral mesh as arrays.
 #[derive(Clone, Debug)]
@@ -16,7 +16,7 @@ impl Mesh {
     }
     pub fn build(&self, level: u8, with_positions: bool) -> Chf {
         let pos: &[DVec3] = if with_positions { &self.positions } else { &[] };
-        Chf::from_tetrahedra(&self.tets, self.n(), pos, ChfBuildOptions::level(level))
+        Chf::from_tetrahedra(&self.tets, self.n(), pos, chf::BuildOptions::level(level))
             .expect("build")
     }
 }

@@ -12,7 +12,7 @@ mod split;
 mod strict;
 
 use self::orient::flipped_id;
-pub use self::report::ChfBuildReport;
+pub use self::report::BuildReport;
 use self::soup::Soup;
 use self::strict::{strict_after_split, strict_faces};
 use crate::NONE;
@@ -26,7 +26,7 @@ use glam::DVec3;
 
 /// How to build: the level (0..=3) and whether non-manifold input is an error.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ChfBuildOptions {
+pub struct BuildOptions {
     pub level: u8,
     /// Reject non-manifold faces, edges and vertices and duplicate tetrahedra instead of
     /// keeping them.
@@ -36,9 +36,9 @@ pub struct ChfBuildOptions {
     pub threads: usize,
 }
 
-impl Default for ChfBuildOptions {
+impl Default for BuildOptions {
     fn default() -> Self {
-        ChfBuildOptions {
+        BuildOptions {
             level: 2,
             strict: false,
             threads: 0,
@@ -46,9 +46,9 @@ impl Default for ChfBuildOptions {
     }
 }
 
-impl ChfBuildOptions {
+impl BuildOptions {
     pub fn level(level: u8) -> Self {
-        ChfBuildOptions {
+        BuildOptions {
             level,
             ..Self::default()
         }
@@ -63,10 +63,10 @@ pub(crate) fn build(
     tets: &[[u32; 4]],
     n_vertices: usize,
     positions: &[DVec3],
-    options: ChfBuildOptions,
+    options: BuildOptions,
 ) -> Result<Chf> {
     check_sizes(tets.len(), n_vertices, positions.len(), options.level)?;
-    let mut report = ChfBuildReport::of_input(tets.len(), n_vertices);
+    let mut report = BuildReport::of_input(tets.len(), n_vertices);
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
     let Oriented {
@@ -150,8 +150,8 @@ fn oriented(
     tets: &[[u32; 4]],
     n_vertices: usize,
     positions: &[DVec3],
-    options: ChfBuildOptions,
-    report: &mut ChfBuildReport,
+    options: BuildOptions,
+    report: &mut BuildReport,
 ) -> Result<Oriented> {
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // 1. Soup: range check, degenerate tetrahedra dropped, flips by the determinant.
@@ -235,7 +235,7 @@ fn first_star_pass(
 
 /// The face counts into the report; returns the non-manifold half-faces.
 fn record_faces(
-    report: &mut ChfBuildReport,
+    report: &mut BuildReport,
     faces: FaceCensus,
     origin_of: &impl Fn(u32) -> u32,
 ) -> Vec<u32> {
@@ -257,7 +257,7 @@ fn orient_soup(
     soup: &mut Soup,
     partner: Vec<u32>,
     non_manifold: &mut [u32],
-    report: &mut ChfBuildReport,
+    report: &mut BuildReport,
     origin_of: impl Fn(u32) -> u32,
 ) -> orient::Oriented {
     let unflip = |hf: u32| {
@@ -301,7 +301,7 @@ fn split_vertices(
     o: &[u32],
     links: &[u32],
     n_vertices: usize,
-    report: &mut ChfBuildReport,
+    report: &mut BuildReport,
 ) -> Result<Vec<u32>> {
     let split = split::split(v, o, links, n_vertices);
     report.split_vertices = split.split_vertices;
@@ -369,14 +369,14 @@ impl FaceCensus {
     }
 }
 
-impl ChfBuildReport {
+impl BuildReport {
     /// The report of a build from `tets` tetrahedra over `vertices` vertices, before any
     /// step.
     fn of_input(tets: usize, vertices: usize) -> Self {
-        ChfBuildReport {
+        BuildReport {
             input_tetrahedra: tets,
             input_vertices: vertices,
-            ..ChfBuildReport::default()
+            ..BuildReport::default()
         }
     }
 }
@@ -424,7 +424,7 @@ fn check_sizes(n_tets: usize, n_vertices: usize, n_positions: usize, level: u8) 
     Ok(())
 }
 
-fn record_edges(report: &mut ChfBuildReport, census: &EdgeCensus) {
+fn record_edges(report: &mut BuildReport, census: &EdgeCensus) {
     report.input_edges = census.input_edges;
     report.non_manifold_edges = census.non_manifold;
     report.non_manifold_edge_examples = census.non_manifold_examples.clone();

@@ -3,7 +3,7 @@
 /// Counts, plus the first [`REPORT_EXAMPLES`] offending ids of each kind (input ids:
 /// input tetrahedra, input vertices).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct ChfBuildReport {
+pub struct BuildReport {
     /// Tetrahedra given.
     pub input_tetrahedra: usize,
     /// Vertices given (the structure may hold more after splitting).
@@ -57,7 +57,7 @@ pub struct ChfBuildReport {
     pub seam_faces: usize,
 }
 
-impl ChfBuildReport {
+impl BuildReport {
     /// True when the build changed nothing but orientation.
     pub fn is_clean(&self) -> bool {
         self.dropped_degenerate == 0

@@ -9,7 +9,7 @@
 //! some pair still runs the same way the build undoes the flip ([`Soup::unflip`]) and
 //! orients by propagation from the input as given.
 
-use crate::chf::build::report::{ChfBuildReport, push_example};
+use crate::chf::build::report::{BuildReport, push_example};
 use crate::error::{Error, Result};
 use glam::DVec3;
 
@@ -43,7 +43,7 @@ pub(crate) fn soup(
     tets: &[[u32; 4]],
     n_vertices: usize,
     positions: &[DVec3],
-    report: &mut ChfBuildReport,
+    report: &mut BuildReport,
     threads: usize,
 ) -> Result<Soup> {
     let n = tets.len();

@@ -1,12 +1,12 @@
 //! Strict mode: the first offending ids of each kind of non-manifold input, as an error
 //! (faces and duplicates before orienting, edges and vertices once the split is known).
 
-use crate::chf::build::report::ChfBuildReport;
+use crate::chf::build::report::BuildReport;
 use crate::chf::ids::{first, sorted_triple, tet};
 use crate::error::{Error, Result};
 
 pub(crate) fn strict_faces(
-    report: &ChfBuildReport,
+    report: &BuildReport,
     v: &[u32],
     non_manifold: &[u32],
     origin_of: &impl Fn(u32) -> u32,
@@ -36,7 +36,7 @@ pub(crate) fn strict_faces(
 }
 
 pub(crate) fn strict_after_split(
-    report: &ChfBuildReport,
+    report: &BuildReport,
     v: &[u32],
     vertex_origin: &[u32],
     origin_of: &impl Fn(u32) -> u32,

@@ -17,12 +17,12 @@ use crate::chf::query::view::{Need, View};
 
 /// Rows `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct ChfCsr {
+pub struct Csr {
     pub offsets: Vec<u32>,
     pub indices: Vec<u32>,
 }
 
-impl ChfCsr {
+impl Csr {
     /// The number of rows.
     pub fn len(&self) -> usize {
         self.offsets.len().saturating_sub(1)
@@ -37,7 +37,7 @@ impl ChfCsr {
 
 /// Rows over `n` vertices from `(vertex, id)` pairs given twice by `each` (once to count,
 /// once to place), ids in increasing order per pass, so that every row is sorted.
-fn by_counting(n: usize, each: impl Fn(&mut dyn FnMut(u32, u32))) -> ChfCsr {
+fn by_counting(n: usize, each: impl Fn(&mut dyn FnMut(u32, u32))) -> Csr {
     let mut offsets = vec![0u32; n + 1];
     each(&mut |x, _| offsets[x as usize + 1] += 1);
     for i in 0..n {
@@ -50,7 +50,7 @@ fn by_counting(n: usize, each: impl Fn(&mut dyn FnMut(u32, u32))) -> ChfCsr {
         indices[*f as usize] = id;
         *f += 1;
     });
-    ChfCsr { offsets, indices }
+    Csr { offsets, indices }
 }
 
 impl Chf {
@@ -64,7 +64,7 @@ impl Chf {
     }
 
     /// VT for every vertex: row `v` is [`Chf::vertex_tetrahedra`]`(v)`. O(T) at every level.
-    pub fn all_vertex_tetrahedra(&self) -> ChfCsr {
+    pub fn all_vertex_tetrahedra(&self) -> Csr {
         let v = &self.v;
         by_counting(self.n_vertices, |f| {
             for (hf, &x) in v.iter().enumerate() {
@@ -74,7 +74,7 @@ impl Chf {
     }
 
     /// VF for every vertex: row `v` is [`Chf::vertex_faces`]`(v)`. O(T) at every level.
-    pub fn all_vertex_faces(&self) -> ChfCsr {
+    pub fn all_vertex_faces(&self) -> Csr {
         let view = self.view(Need::FACES);
         let mut fh = Vec::new();
         let fh: &[u32] = match self.face_half_faces() {
@@ -94,7 +94,7 @@ impl Chf {
     }
 
     /// VE for every vertex: row `v` is [`Chf::vertex_edges`]`(v)`. O(T) at every level.
-    pub fn all_vertex_edges(&self) -> ChfCsr {
+    pub fn all_vertex_edges(&self) -> Csr {
         let view = self.view(Need::EDGES);
         let mut slots = Vec::new();
         view.edges.ones_map(&mut slots, |s| s as u64);
@@ -112,7 +112,7 @@ impl Chf {
     /// (plus sorting the rows): both ends of every canonical edge slot, read in
     /// tetrahedron order (sequential memory), then each row sorted and its repeats (a pair
     /// of vertices with several fans) dropped.
-    pub fn all_vertex_vertices(&self) -> ChfCsr {
+    pub fn all_vertex_vertices(&self) -> Csr {
         let view = self.view(Need::EDGES);
         let bits = &view.edges;
         let v = &self.v;
@@ -186,7 +186,7 @@ impl Chf {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chf::ChfBuildOptions;
+    use crate::chf::BuildOptions;
 
     #[test]
     fn bulk_rows_are_the_one_element_answers_at_every_level() {
@@ -197,14 +197,13 @@ mod tests {
                 .map(|_| [0; 4].map(|_| rnd(n)))
                 .collect();
             for level in 0..=3 {
-                let chf =
-                    Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(level)).unwrap();
+                let chf = Chf::from_tetrahedra(&tets, n, &[], BuildOptions::level(level)).unwrap();
                 let nv = chf.num_vertices();
                 let (vt, vf) = (chf.all_vertex_tetrahedra(), chf.all_vertex_faces());
                 let (ve, vv) = (chf.all_vertex_edges(), chf.all_vertex_vertices());
                 for v in 0..nv as u32 {
                     let at = format!("round {round}, level {level}, vertex {v}");
-                    let row = |c: &ChfCsr| c.row(v as usize).to_vec();
+                    let row = |c: &Csr| c.row(v as usize).to_vec();
                     assert_eq!(
                         row(&vt),
                         chf.vertex_tetrahedra(v).collect::<Vec<_>>(),

@@ -4,7 +4,7 @@ use crate::chf::Chf;
 
 /// Bytes held by each container (lengths, not capacities).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ChfMemory {
+pub struct Memory {
     /// `V`, level 0.
     pub half_face_vertices: usize,
     /// `O`, level 1.
@@ -27,9 +27,9 @@ pub struct ChfMemory {
 }
 
 impl Chf {
-    pub fn memory_bytes(&self) -> ChfMemory {
+    pub fn memory_bytes(&self) -> Memory {
         let ints = |n: usize| 4 * n;
-        let mut m = ChfMemory {
+        let mut m = Memory {
             half_face_vertices: ints(self.v.len()),
             opposites: ints(self.o.len()),
             vertex_half_faces: ints(self.vh.len()),

@@ -11,8 +11,8 @@ pub(crate) mod summary;
 mod validate;
 pub(crate) mod view;
 
-pub use bulk::ChfCsr;
+pub use bulk::Csr;
 pub use fan::EdgeIds;
-pub use memory::ChfMemory;
-pub use star::{INLINE as STAR_INLINE, VertexIds};
-pub use summary::ChfSummary;
+pub use memory::Memory;
+pub use star::{STAR_INLINE, VertexIds};
+pub use summary::Summary;

@@ -2,7 +2,7 @@
 //! crossing the three half-faces of each that hold the vertex. Every tetrahedron is met
 //! three times or so, so the walk keeps a visited set inline in the iterator: the
 //! tetrahedra met so far, checked by a branch-free scan of the used part (eight at a time)
-//! while there are at most [`INLINE`] (no allocation, no hash), then a hash set on the
+//! while there are at most [`STAR_INLINE`] (no allocation, no hash), then a hash set on the
 //! heap, doubling as it grows: the one allocation a vertex query may make. (A star cannot
 //! be enumerated without marks in general: its dual is the link of the vertex, an
 //! arbitrary surface.)
@@ -25,12 +25,12 @@ use crate::chf::ids::{edge_index, first, tet};
 use crate::chf::query::view::{Need, View};
 
 /// Stars up to this many tetrahedra are walked without allocation.
-pub const INLINE: usize = 64;
+pub const STAR_INLINE: usize = 64;
 
-/// Ids in the order they came, [`INLINE`] of them inline, then all of them on the heap.
+/// Ids in the order they came, [`STAR_INLINE`] of them inline, then all of them on the heap.
 #[derive(Clone, Debug)]
 struct Ids {
-    items: [u32; INLINE],
+    items: [u32; STAR_INLINE],
     len: usize,
     heap: Vec<u32>,
 }
@@ -38,7 +38,7 @@ struct Ids {
 impl Ids {
     fn new() -> Self {
         Ids {
-            items: [NONE; INLINE],
+            items: [NONE; STAR_INLINE],
             len: 0,
             heap: Vec::new(),
         }
@@ -55,11 +55,11 @@ impl Ids {
 
     #[inline]
     fn push(&mut self, x: u32) {
-        if self.len < INLINE {
+        if self.len < STAR_INLINE {
             self.items[self.len] = x;
         } else {
             if self.heap.is_empty() {
-                self.heap.reserve(4 * INLINE);
+                self.heap.reserve(4 * STAR_INLINE);
                 self.heap.extend_from_slice(&self.items);
             }
             self.heap.push(x);
@@ -97,12 +97,12 @@ impl Ids {
     }
 }
 
-/// Slots of the inline hash table: twice [`INLINE`], so at most half full.
-const TABLE: usize = 2 * INLINE;
+/// Slots of the inline hash table: twice [`STAR_INLINE`], so at most half full.
+const TABLE: usize = 2 * STAR_INLINE;
 
 /// A set of ids with their order of arrival: an open-addressing hash table of
 /// [`TABLE`] inline slots (scalar loads and stores: no vector scan over entries just
-/// written, which would wait on store forwarding), then, past [`INLINE`] ids, a table on
+/// written, which would wait on store forwarding), then, past [`STAR_INLINE`] ids, a table on
 /// the heap that doubles as it grows.
 #[derive(Clone, Debug)]
 struct Visited {
@@ -160,7 +160,7 @@ impl Visited {
     /// end is never read), and the length grows by the answer.
     #[inline(always)]
     fn add(&mut self, x: u32) -> bool {
-        if self.ids.len < INLINE - 1 && self.heap_table.is_empty() {
+        if self.ids.len < STAR_INLINE - 1 && self.heap_table.is_empty() {
             let h = probe_start(x, TABLE);
             let y = self.table[h];
             let new = y == NONE;
@@ -184,7 +184,7 @@ impl Visited {
         };
         if new {
             self.ids.push(x);
-            if self.ids.len == INLINE || 2 * self.ids.len > self.heap_table.len().max(TABLE) {
+            if self.ids.len == STAR_INLINE || 2 * self.ids.len > self.heap_table.len().max(TABLE) {
                 self.grow();
             }
         }

@@ -9,7 +9,7 @@ use crate::chf::query::view::Need;
 
 /// Field names match `chf_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct ChfSummary {
+pub struct Summary {
     pub vertices: u64,
     pub edges: u64,
     pub faces: u64,
@@ -69,7 +69,7 @@ impl Dsu {
 
 impl Chf {
     /// The summary; O(T log T) at every level (it sorts the boundary edges).
-    pub fn summary(&self) -> ChfSummary {
+    pub fn summary(&self) -> Summary {
         let r = &self.report;
         let n = self.n_input_vertices;
         let mut used = vec![false; n];
@@ -111,7 +111,7 @@ impl Chf {
 
         let t = self.num_tetrahedra() as i64;
         let euler = n as i64 - r.input_edges as i64 + r.input_faces as i64 - t;
-        ChfSummary {
+        Summary {
             vertices: n as u64,
             edges: r.input_edges as u64,
             faces: r.input_faces as u64,

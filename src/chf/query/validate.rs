@@ -426,7 +426,7 @@ impl Chf {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chf::ChfBuildOptions;
+    use crate::chf::BuildOptions;
 
     /// Two boxes of six tetrahedra sharing a vertex (so a split), level 3.
     fn mesh() -> Chf {
@@ -446,7 +446,7 @@ mod tests {
         for t in &mut tets {
             t.swap(2, 3);
         }
-        Chf::from_tetrahedra(&tets, 15, &[], ChfBuildOptions::level(3)).unwrap()
+        Chf::from_tetrahedra(&tets, 15, &[], BuildOptions::level(3)).unwrap()
     }
 
     fn fails(chf: &Chf, needle: &str) {

@@ -711,7 +711,7 @@ mod tests {
 mod against_walks {
     use super::*;
     use crate::chf::ids::{FACE, first, local, tet};
-    use crate::chf::{Chf, ChfBuildOptions, edges};
+    use crate::chf::{BuildOptions, Chf, edges};
 
     /// The first boundary half-face holding each vertex, else the first half-face.
     fn vh_by_scan(v: &[u32], o: &[u32], n: usize) -> Vec<u32> {
@@ -737,7 +737,7 @@ mod against_walks {
             let tets: Vec<[u32; 4]> = (0..10 + round % 60)
                 .map(|_| [0; 4].map(|_| rnd(n)))
                 .collect();
-            let chf = Chf::from_tetrahedra(&tets, n, &[], ChfBuildOptions::level(1)).unwrap();
+            let chf = Chf::from_tetrahedra(&tets, n, &[], BuildOptions::level(1)).unwrap();
             let flagged = merged(&chf.non_manifold, &chf.seams);
             let stars = stars(
                 &chf.v,

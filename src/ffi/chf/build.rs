@@ -1,7 +1,7 @@
 //! Making, freeing and re-levelling `chf_mesh` handles, and their counts.
 
 use super::{ChfBuildOptions, ChfMesh};
-use crate::chf::{Chf, ChfBuildOptions as CoreOptions, MAX_TETRAHEDRA};
+use crate::chf::{BuildOptions as CoreOptions, Chf, MAX_TETRAHEDRA};
 use crate::error::Result;
 use crate::ffi::boundary::{guard, handle, handle_mut, options_arg, path_arg};
 use crate::ffi::che::level_arg;

@@ -13,13 +13,13 @@
 //! temporary memory. A size query followed by the call does the work twice.
 
 use super::ChfMesh;
-use crate::chf::ChfCsr;
+use crate::chf;
 use crate::ffi::boundary::CsrSink;
 use crate::ffi::shapes::csr;
 use crate::ffi::status::Status;
 
 /// Copies the rows of a CSR computed in full.
-fn copy(s: &mut CsrSink<'_>, c: &ChfCsr) {
+fn copy(s: &mut CsrSink<'_>, c: &chf::Csr) {
     for i in 0..c.len() {
         s.row();
         for &x in c.row(i) {

@@ -2,7 +2,7 @@
 //! costs (memory per container).
 
 use super::ChfMesh;
-use crate::chf::{ChfBuildReport as Report, ChfMemory as Memory, ChfSummary as Summary};
+use crate::chf::{BuildReport as Report, Memory, Summary};
 use crate::error::{Error, Result};
 use crate::ffi::shapes::{ids, mirror, value};
 use crate::ffi::status::Status;

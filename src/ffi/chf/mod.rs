@@ -20,7 +20,7 @@ pub use surface::*;
 pub use views::*;
 
 use super::boundary::Handle;
-use crate::chf::{Chf, ChfBuildOptions as CoreOptions};
+use crate::chf::{BuildOptions as CoreOptions, Chf};
 use crate::error::Result;
 use crate::ffi::che::level_arg;
 use std::sync::OnceLock;

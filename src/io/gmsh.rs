@@ -81,66 +81,69 @@ impl TagMap {
 
 /// Reads a `$Nodes` section body (after the keyword, up to `$EndNodes` excluded).
 fn read_nodes(lx: &mut Lexer, version: Version) -> Result<(Vec<DVec3>, Vec<u64>)> {
-    let read_xyz = |lx: &mut Lexer| -> Result<DVec3> {
-        let x = lx.f64("a coordinate")?;
-        let y = lx.f64("a coordinate")?;
-        let z = lx.f64("a coordinate")?;
-        Ok(DVec3::new(x, y, z))
-    };
-    match version {
-        Version::V2 => {
-            let n = lx.usize("the number of nodes")?;
-            lx.check_point_count(n)?;
-            let cap = lx.capacity(n, 4);
-            let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
-            for _ in 0..n {
-                tags.push(lx.u64("a node tag")?);
-                pos.push(read_xyz(lx)?);
-            }
-            Ok((pos, tags))
-        }
+    let (blocks, n) = match version {
+        Version::V2 => (None, lx.point_count("the number of nodes")?),
         Version::V41 => {
             let blocks = lx.usize("the number of entity blocks")?;
-            let n = lx.usize("the number of nodes")?;
-            lx.check_point_count(n)?;
-            lx.u64("the smallest node tag")?;
-            lx.u64("the largest node tag")?;
-            let cap = lx.capacity(n, 4);
-            let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
-            for _ in 0..blocks {
-                let dim = lx.u64("an entity dimension")?;
-                if dim > 3 {
-                    return Err(lx.error(format!("entity dimension {dim}")));
-                }
-                lx.expect("an entity tag")?;
-                let parametric = lx.u64("the parametric flag (0 or 1)")?;
-                if parametric > 1 {
-                    return Err(lx.error(format!("parametric flag {parametric} (0 or 1)")));
-                }
-                let count = lx.usize("the number of nodes in the block")?;
-                if count > n - tags.len() {
-                    return Err(
-                        lx.error(format!("the blocks hold more than the {n} nodes declared"))
-                    );
-                }
-                for _ in 0..count {
-                    tags.push(lx.u64("a node tag")?);
-                }
-                let extra = (parametric * dim) as usize;
-                for _ in 0..count {
-                    pos.push(read_xyz(lx)?);
-                    lx.skip(extra, "a parametric coordinate")?;
-                }
-            }
-            if tags.len() != n {
-                return Err(lx.error(format!(
-                    "the blocks hold {} nodes, {n} declared",
-                    tags.len()
-                )));
-            }
-            Ok((pos, tags))
+            let n = lx.point_count("the number of nodes")?;
+            skip_tag_range(lx, "node")?;
+            (Some(blocks), n)
+        }
+    };
+    let cap = lx.capacity(n, 4);
+    let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
+    let Some(blocks) = blocks else {
+        // 2.x: one list of `tag x y z`.
+        for _ in 0..n {
+            tags.push(lx.u64("a node tag")?);
+            pos.push(lx.point()?);
+        }
+        return Ok((pos, tags));
+    };
+    // 4.1: blocks of `count` tags, then their `count` points.
+    for _ in 0..blocks {
+        let dim = entity_dimension(lx)?;
+        let parametric = lx.u64("the parametric flag (0 or 1)")?;
+        if parametric > 1 {
+            return Err(lx.error(format!("parametric flag {parametric} (0 or 1)")));
+        }
+        let count = lx.usize("the number of nodes in the block")?;
+        if count > n - tags.len() {
+            return Err(lx.error(format!("the blocks hold more than the {n} nodes declared")));
+        }
+        for _ in 0..count {
+            tags.push(lx.u64("a node tag")?);
+        }
+        let extra = (parametric * dim) as usize;
+        for _ in 0..count {
+            pos.push(lx.point()?);
+            lx.skip(extra, "a parametric coordinate")?;
         }
     }
+    if tags.len() != n {
+        return Err(lx.error(format!(
+            "the blocks hold {} nodes, {n} declared",
+            tags.len()
+        )));
+    }
+    Ok((pos, tags))
+}
+
+/// Skips the smallest and the largest tag of a 4.1 section (`kind`: node or element).
+fn skip_tag_range(lx: &mut Lexer, kind: &str) -> Result<()> {
+    lx.u64(&format!("the smallest {kind} tag"))?;
+    lx.u64(&format!("the largest {kind} tag"))?;
+    Ok(())
+}
+
+/// The header of a 4.1 entity block up to its tag: the entity's dimension (0 to 3).
+fn entity_dimension(lx: &mut Lexer) -> Result<u64> {
+    let dim = lx.u64("an entity dimension")?;
+    if dim > 3 {
+        return Err(lx.error(format!("entity dimension {dim}")));
+    }
+    lx.expect("an entity tag")?;
+    Ok(dim)
 }
 
 /// Reads the nodes of one element of type `ty`, keeping its corners if it is a triangle or
@@ -189,14 +192,9 @@ fn read_elements(
         Version::V41 => {
             let blocks = lx.usize("the number of entity blocks")?;
             lx.usize("the number of elements")?;
-            lx.u64("the smallest element tag")?;
-            lx.u64("the largest element tag")?;
+            skip_tag_range(lx, "element")?;
             for _ in 0..blocks {
-                let dim = lx.u64("an entity dimension")?;
-                if dim > 3 {
-                    return Err(lx.error(format!("entity dimension {dim}")));
-                }
-                lx.expect("an entity tag")?;
+                entity_dimension(lx)?;
                 let ty = lx.u64("an element type")?;
                 let count = lx.usize("the number of elements in the block")?;
                 for _ in 0..count {

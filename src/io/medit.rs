@@ -102,19 +102,11 @@ impl Elements {
             return Err(lx.error(format!("{keyword} before (or without) Vertices")));
         }
         out.reserve(lx.capacity(n, self.tokens));
+        let out_of_range =
+            |id| format!("vertex id {id} out of range 1..={num_vertices} in {keyword}");
         for _ in 0..n {
-            let mut e = [0u32; K];
-            for v in &mut e {
-                let id = lx.u64("a vertex id")?;
-                if id == 0 || id > num_vertices as u64 {
-                    return Err(lx.error(format!(
-                        "vertex id {id} out of range 1..={num_vertices} in {keyword}"
-                    )));
-                }
-                *v = (id - 1) as u32;
-            }
+            out.push(lx.ids("a vertex id", (1, num_vertices), out_of_range)?);
             lx.skip(self.tokens - K, "the rest of an element")?;
-            out.push(e);
         }
         Ok(())
     }
@@ -178,20 +170,16 @@ impl Sections {
             return Err(lx.error("a second Vertices section"));
         }
         self.have_vertices = true;
-        let n = lx.usize("the number of vertices")?;
-        lx.check_point_count(n)?;
+        let n = lx.point_count("the number of vertices")?;
         let positions = &mut self.data.positions;
         positions.reserve(lx.capacity(n, self.dim + 1));
         for _ in 0..n {
-            let x = lx.f64("a coordinate")?;
-            let y = lx.f64("a coordinate")?;
-            let z = if self.dim == 3 {
-                lx.f64("a coordinate")?
+            positions.push(if self.dim == 3 {
+                lx.point()?
             } else {
-                0.0
-            };
+                DVec3::new(lx.f64("a coordinate")?, lx.f64("a coordinate")?, 0.0)
+            });
             lx.expect("a vertex reference")?;
-            positions.push(DVec3::new(x, y, z));
         }
         Ok(())
     }

@@ -10,8 +10,7 @@ use std::path::{Path, PathBuf};
 /// Parses a `.node` file: the points, and the id base (the first point's id, 0 or 1).
 pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64)> {
     let mut lx = Lexer::new(text, name, true);
-    let n = lx.usize("the number of points")?;
-    lx.check_point_count(n)?;
+    let n = lx.point_count("the number of points")?;
     let dim = lx.u64("the dimension")?;
     if dim != 3 {
         return Err(lx.error(format!("dimension {dim} (only 3 is read)")));
@@ -34,11 +33,8 @@ pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64)> {
         } else if id != base + i {
             return Err(lx.error(format!("point id {id}, expected {}", base + i)));
         }
-        let x = lx.f64("a coordinate")?;
-        let y = lx.f64("a coordinate")?;
-        let z = lx.f64("a coordinate")?;
+        positions.push(lx.point()?);
         lx.skip(extra, "a point attribute or marker")?;
-        positions.push(DVec3::new(x, y, z));
     }
     Ok((positions, base))
 }
@@ -59,22 +55,12 @@ pub(crate) fn parse_ele(
     let nattr = lx.usize("the number of attributes")?;
     let extra = (per - 4).saturating_add(nattr);
     let mut tets = Vec::with_capacity(lx.capacity(n, extra.saturating_add(5)));
-    let last = base + num_points as u64;
+    let out_of_range =
+        |id| format!("node id {id} out of range ({num_points} points numbered from {base})");
     for _ in 0..n {
         lx.expect("a tetrahedron id")?;
-        let mut t = [0u32; 4];
-        for v in &mut t {
-            let id = lx.u64("a node id")?;
-            if id < base || id >= last {
-                return Err(lx.error(format!(
-                    "node id {id} out of range ({} points numbered from {base})",
-                    num_points
-                )));
-            }
-            *v = (id - base) as u32;
-        }
+        tets.push(lx.ids("a node id", (base, num_points), out_of_range)?);
         lx.skip(extra, "a node id or attribute")?;
-        tets.push(t);
     }
     Ok(tets)
 }

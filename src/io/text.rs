@@ -3,6 +3,7 @@
 
 use super::MeshData;
 use crate::error::{Error, Result};
+use glam::DVec3;
 use std::fmt::Display;
 use std::io::Write;
 use std::path::Path;
@@ -192,18 +193,58 @@ impl<'a> Lexer<'a> {
         count.min(left / tokens.max(1).saturating_mul(2))
     }
 
-    /// Errors unless `count` points can be numbered with `u32` ids.
-    pub(in crate::io) fn check_point_count(&self, count: usize) -> Result<()> {
+    /// A count of points (`what` names it in errors) that `u32` ids can number.
+    pub(in crate::io) fn point_count(&mut self, what: &str) -> Result<usize> {
+        let count = self.usize(what)?;
         if count > u32::MAX as usize {
-            Err(Error::too_large(format!(
+            return Err(Error::too_large(format!(
                 "{}:{}: {count} points is more than the {} that u32 ids can number",
                 self.name,
                 self.tok_line,
                 u32::MAX
-            )))
-        } else {
-            Ok(())
+            )));
         }
+        Ok(count)
+    }
+
+    /// A point: three coordinates `x y z`.
+    #[inline]
+    pub(in crate::io) fn point(&mut self) -> Result<DVec3> {
+        let x = self.f64("a coordinate")?;
+        let y = self.f64("a coordinate")?;
+        let z = self.f64("a coordinate")?;
+        Ok(DVec3::new(x, y, z))
+    }
+
+    /// An id of one of `count` points numbered from `base`, returned numbered from 0;
+    /// `out_of_range` words the error for any other id.
+    #[inline]
+    pub(in crate::io) fn id(
+        &mut self,
+        what: &str,
+        (base, count): (u64, usize),
+        out_of_range: impl Fn(u64) -> String,
+    ) -> Result<u32> {
+        let id = self.u64(what)?;
+        if id < base || id - base >= count as u64 {
+            return Err(self.error(out_of_range(id)));
+        }
+        Ok((id - base) as u32)
+    }
+
+    /// The `K` ids that start an element, read as [`Lexer::id`] reads one.
+    #[inline]
+    pub(in crate::io) fn ids<const K: usize>(
+        &mut self,
+        what: &str,
+        range: (u64, usize),
+        out_of_range: impl Fn(u64) -> String,
+    ) -> Result<[u32; K]> {
+        let mut ids = [0u32; K];
+        for v in &mut ids {
+            *v = self.id(what, range, &out_of_range)?;
+        }
+        Ok(ids)
     }
 }
 

@@ -6,7 +6,6 @@
 use super::MeshData;
 use super::text::{self, Lexer};
 use crate::error::Result;
-use glam::DVec3;
 use std::io::Write;
 use std::path::Path;
 
@@ -30,11 +29,9 @@ impl Cells {
 
 #[inline]
 fn point_id(lx: &mut Lexer, num_points: usize) -> Result<u32> {
-    let id = lx.u64("a point id")?;
-    if id >= num_points as u64 {
-        return Err(lx.error(format!("point id {id} out of range ({num_points} points)")));
-    }
-    Ok(id as u32)
+    lx.id("a point id", (0, num_points), |id| {
+        format!("point id {id} out of range ({num_points} points)")
+    })
 }
 
 /// Reads a cell array after its keyword (`CELLS`, `POLYGONS`, ...), in either form.
@@ -270,16 +267,12 @@ impl Sections {
             return Err(lx.error("a second POINTS section"));
         }
         self.have_points = true;
-        let n = lx.usize("the number of points")?;
-        lx.check_point_count(n)?;
+        let n = lx.point_count("the number of points")?;
         lx.expect("the points' data type")?;
         let positions = &mut self.data.positions;
         positions.reserve(lx.capacity(n, 3));
         for _ in 0..n {
-            let x = lx.f64("a coordinate")?;
-            let y = lx.f64("a coordinate")?;
-            let z = lx.f64("a coordinate")?;
-            positions.push(DVec3::new(x, y, z));
+            positions.push(lx.point()?);
         }
         Ok(())
     }
@@ -376,6 +369,7 @@ pub fn write(path: &Path, data: &MeshData) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec3;
 
     /// A tet, a triangle, a quadratic tet and triangle, and a vertex, a line and a hex to skip;
     /// point coordinates wrap lines anyhow.

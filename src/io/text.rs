@@ -315,6 +315,59 @@ pub(in crate::io) fn temp_path(tag: &str, ext: &str) -> std::path::PathBuf {
     ))
 }
 
+/// Writes `bytes` to a temporary `.ext` file and reads it back with [`crate::io::read`].
+#[cfg(test)]
+pub(in crate::io) fn read_temp(ext: &str, bytes: impl AsRef<[u8]>) -> Result<MeshData> {
+    let path = temp_path("read", ext);
+    std::fs::write(&path, bytes).unwrap();
+    let read = crate::io::read(&path);
+    let _ = std::fs::remove_file(&path);
+    read
+}
+
+/// Writes `data` to a temporary `.ext` file and reads it back: the same mesh.
+#[cfg(test)]
+pub(in crate::io) fn assert_round_trip(ext: &str, data: &MeshData) {
+    let path = temp_path("round-trip", ext);
+    let written = crate::io::write(&path, data);
+    let back = crate::io::read(&path);
+    let _ = std::fs::remove_file(&path);
+    written.unwrap();
+    assert_eq!(&back.unwrap(), data);
+}
+
+/// The error `parse` gives for `input`; panics if it parses.
+#[cfg(test)]
+pub(in crate::io) fn parse_error(
+    parse: impl Fn(&[u8]) -> Result<MeshData>,
+    input: impl AsRef<[u8]>,
+) -> Error {
+    let input = input.as_ref();
+    match parse(input) {
+        Ok(m) => panic!(
+            "expected an error for {:?}, got {m:?}",
+            String::from_utf8_lossy(input)
+        ),
+        Err(e) => e,
+    }
+}
+
+/// Parses each input and checks its error: the kind, and the words the message starts with.
+#[cfg(test)]
+pub(in crate::io) fn assert_errors<I: AsRef<[u8]>>(
+    parse: impl Fn(&[u8]) -> Result<MeshData>,
+    cases: impl IntoIterator<Item = (I, crate::error::ErrorKind, &'static str)>,
+) {
+    let mut wrong = String::new();
+    for (input, kind, start) in cases {
+        let e = parse_error(&parse, input);
+        if e.kind != kind || !e.message.starts_with(start) {
+            wrong += &format!("\nexpected a {kind:?} error starting {start:?}, got {e:?}");
+        }
+    }
+    assert!(wrong.is_empty(), "{wrong}");
+}
+
 /// Parses every prefix of `src`, and `src` with each token in turn replaced by hostile
 /// ones: no panic, and every error starts with `prefix` (the file name and a colon).
 #[cfg(test)]

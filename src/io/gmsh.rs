@@ -295,6 +295,8 @@ pub fn read(path: &Path) -> Result<MeshData> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::ErrorKind::Parse;
+    use crate::io::text::assert_errors;
 
     /// Two tets and a boundary triangle over sparse tags, plus a point, a line, a quad, a
     /// 10-node tet and a 6-node triangle, and sections to skip.
@@ -374,8 +376,8 @@ $Elements
 $EndElements
 ";
 
-    fn err(text: &str) -> String {
-        parse(text, "g.msh").unwrap_err().message
+    fn p(bytes: &[u8]) -> Result<MeshData> {
+        parse(std::str::from_utf8(bytes).unwrap(), "g.msh")
     }
 
     #[test]
@@ -401,63 +403,33 @@ $EndElements
 
     #[test]
     fn reads_v2_from_file() {
-        let path = text::temp_path("gmsh", "msh");
-        std::fs::write(&path, V22.replace('\n', "\r\n")).unwrap();
-        let d = super::super::read(&path);
-        std::fs::remove_file(&path).unwrap();
+        let d = text::read_temp("msh", V22.replace('\n', "\r\n"));
         assert_eq!(d.unwrap().tetrahedra.len(), 2);
     }
 
     #[test]
-    fn unknown_node_tag_names_line() {
-        let e = err(&V22.replace("5 4 2 2 1 10 20 30 40", "5 4 2 2 1 10 20 31 40"));
-        assert_eq!(e, "g.msh:24: unknown node tag 31");
-        let e = err(&V41.replace("4 6 9 10 800", "4 6 9 10 801"));
-        assert_eq!(e, "g.msh:35: unknown node tag 801");
-        let e = err(&V22.replace("7 0.5 0.5 0.5", "40 0.5 0.5 0.5"));
-        assert!(e.starts_with("g.msh:9: node tag 40 appears twice"), "{e}");
-    }
-
-    #[test]
-    fn binary_and_bad_versions_are_errors() {
-        let e = err("$MeshFormat\n4.1 1 8\n\u{1}\u{0}\u{0}\u{0}\n$EndMeshFormat\n");
-        assert_eq!(e, "g.msh:2: binary .msh not supported (save as ASCII)");
-        let e = err("$MeshFormat\n4 0 8\n$EndMeshFormat\n");
-        assert!(e.starts_with("g.msh:2: unsupported .msh version 4"), "{e}");
-        let e = err("hello");
-        assert_eq!(e, "g.msh:1: expected $MeshFormat, found 'hello'");
-        let e = err("\n\n");
-        assert!(e.starts_with("g.msh:3: no $MeshFormat"), "{e}");
-    }
-
-    #[test]
-    fn truncated_and_bad_tokens_name_line() {
-        let e = err(&V22[..V22.find("$EndElements").unwrap()]);
-        assert!(
-            e.starts_with("g.msh:27: unexpected end of file, expected $EndElements"),
-            "{e}"
-        );
-        let e = err(&V22[..V22.find("40 0 0 1").unwrap() + 6]);
-        assert!(e.starts_with("g.msh:14: unexpected end of file"), "{e}");
-        let e = err(&V22.replace("$EndNodeData\n", ""));
-        assert!(
-            e.starts_with("g.msh:28: section $NodeData has no $EndNodeData"),
-            "{e}"
-        );
-        let e = err(&V41.replace("0.5 0.5 0.5", "0.5 0.5 half"));
-        assert_eq!(e, "g.msh:25: expected a coordinate, found 'half'");
-        let e = err(&V41.replace("3 6 5 900", "3 7 5 900"));
-        assert!(
-            e.starts_with("g.msh:25: the blocks hold 6 nodes, 7 declared"),
-            "{e}"
-        );
-        let e = err(&V22.replace("\n6\n10 0 0 0", "\n4000000000\n10 0 0 0"));
-        assert!(
-            e.starts_with("g.msh:17: expected a node tag, found '$EndNodes'"),
-            "{e}"
-        );
-        let e = err(&V22.replace("\n7\n1 15", "\n99999999999999\n1 15"));
-        assert!(e.starts_with("g.msh:27: expected an element tag"), "{e}");
+    fn bad_input_names_the_line() {
+        let v22 = |from: &str, to: &str| V22.replace(from, to);
+        let v41 = |from: &str, to: &str| V41.replace(from, to);
+        let cut = |end: &str, more: usize| V22[..V22.find(end).unwrap() + more].to_string();
+        #[rustfmt::skip]
+        let cases = [
+            (v22("5 4 2 2 1 10 20 30 40", "5 4 2 2 1 10 20 31 40"), "g.msh:24: unknown node tag 31"),
+            (v41("4 6 9 10 800", "4 6 9 10 801"), "g.msh:35: unknown node tag 801"),
+            (v22("7 0.5 0.5 0.5", "40 0.5 0.5 0.5"), "g.msh:9: node tag 40 appears twice"),
+            ("$MeshFormat\n4.1 1 8\n\u{1}\u{0}\u{0}\u{0}\n$EndMeshFormat\n".into(), "g.msh:2: binary .msh not supported (save as ASCII)"),
+            ("$MeshFormat\n4 0 8\n$EndMeshFormat\n".into(), "g.msh:2: unsupported .msh version 4"),
+            ("hello".into(), "g.msh:1: expected $MeshFormat, found 'hello'"),
+            ("\n\n".into(), "g.msh:3: no $MeshFormat"),
+            (cut("$EndElements", 0), "g.msh:27: unexpected end of file, expected $EndElements"),
+            (cut("40 0 0 1", 6), "g.msh:14: unexpected end of file"),
+            (v22("$EndNodeData\n", ""), "g.msh:28: section $NodeData has no $EndNodeData"),
+            (v41("0.5 0.5 0.5", "0.5 0.5 half"), "g.msh:25: expected a coordinate, found 'half'"),
+            (v41("3 6 5 900", "3 7 5 900"), "g.msh:25: the blocks hold 6 nodes, 7 declared"),
+            (v22("\n6\n10 0 0 0", "\n4000000000\n10 0 0 0"), "g.msh:17: expected a node tag, found '$EndNodes'"),
+            (v22("\n7\n1 15", "\n99999999999999\n1 15"), "g.msh:27: expected an element tag"),
+        ];
+        assert_errors(p, cases.map(|(input, start)| (input, Parse, start)));
     }
 
     #[test]

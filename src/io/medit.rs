@@ -243,6 +243,8 @@ pub fn write(path: &Path, data: &MeshData) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::ErrorKind::Parse;
+    use crate::io::text::{assert_errors, assert_round_trip, assert_write_refused, awkward_mesh};
 
     const CUBE_CORNER: &str = "\
 MeshVersionFormatted 2
@@ -281,8 +283,8 @@ Hexahedra 1
 End
 ";
 
-    fn err(text: &str) -> String {
-        parse(text, "m.mesh").unwrap_err().message
+    fn p(bytes: &[u8]) -> Result<MeshData> {
+        parse(std::str::from_utf8(bytes).unwrap(), "m.mesh")
     }
 
     #[test]
@@ -305,42 +307,9 @@ End
     }
 
     #[test]
-    fn out_of_range_id_names_line() {
+    fn bad_vertex_id_names_the_line() {
         let t = CUBE_CORNER.replace("2 3 4 5 1", "2 3 4 6 1");
-        let e = err(&t);
-        assert!(e.starts_with("m.mesh:31:"), "{e}");
-        assert!(e.contains("vertex id 6 out of range 1..=5"), "{e}");
-        let e = err("Dimension 3 Vertices 1 0 0 0 0 Triangles 1\n1 1 0 0");
-        assert!(e.starts_with("m.mesh:2:") && e.contains("id 0"), "{e}");
-    }
-
-    #[test]
-    fn truncated_and_bad_tokens_name_line() {
-        let e = err("Dimension 3\nVertices 2\n0 0 0 0\n1 0");
-        assert!(e.starts_with("m.mesh:4: unexpected end of file"), "{e}");
-        let e = err("Dimension 3\nVertices 1\n0 0 zero 0\n");
-        assert_eq!(e, "m.mesh:3: expected a coordinate, found 'zero'");
-        let e = err("Dimension 3\nVertices 1\n0 0 0 0\nFoo 3\n");
-        assert!(e.starts_with("m.mesh:4: unknown keyword 'Foo'"), "{e}");
-        let e = err("Dimension 3\nTriangles 1\n1 2 3 0\n");
-        assert!(e.starts_with("m.mesh:2: Triangles before"), "{e}");
-        let e = err("Dimension 4\n");
-        assert!(e.starts_with("m.mesh:1: dimension 4"), "{e}");
-    }
-
-    #[test]
-    fn huge_counts_do_not_allocate() {
-        let e = err("Dimension 3\nVertices 4000000000\n0 0 0 0\n");
-        assert!(e.starts_with("m.mesh:4: unexpected end"), "{e}");
-        let e = err("Dimension 3\nVertices 99999999999\n");
-        assert!(e.contains("m.mesh:2:") && e.contains("more than"), "{e}");
-        let e = err("Corners 18446744073709551615 1 2");
-        assert!(e.starts_with("m.mesh:1: unexpected end"), "{e}");
-        let e = err("Corners 18446744073709551616");
-        assert!(
-            e.starts_with("m.mesh:1: expected the number of Corners"),
-            "{e}"
-        );
+        assert_errors(p, [(t, Parse, "m.mesh:31: vertex id 6 out of range 1..=5")]);
     }
 
     #[test]
@@ -350,25 +319,11 @@ End
 
     #[test]
     fn round_trip() {
-        let data = MeshData {
-            positions: vec![
-                DVec3::new(0.1, -2.5e-7, 1.0 / 3.0),
-                DVec3::new(1e15, 0.0, -0.0),
-                DVec3::new(std::f64::consts::PI, 2.0, 3.0),
-                DVec3::new(-1.0, 7.0, f64::MIN_POSITIVE),
-            ],
-            triangles: vec![[0, 1, 2], [3, 2, 1]],
-            tetrahedra: vec![[0, 1, 2, 3]],
-        };
-        let path = text::temp_path("medit-rt", "mesh");
-        write(&path, &data).unwrap();
-        let back = super::super::read(&path);
-        std::fs::remove_file(&path).unwrap();
-        assert_eq!(back.unwrap(), data);
-
+        let data = awkward_mesh();
+        assert_round_trip("mesh", &data);
         let surface = MeshData {
             tetrahedra: vec![],
-            ..data.clone()
+            ..data
         };
         let mut buf = Vec::new();
         write_to(&mut buf, &surface).unwrap();
@@ -384,13 +339,6 @@ End
             triangles: vec![[0, 1, 3]],
             tetrahedra: vec![],
         };
-        let path = text::temp_path("medit-bad", "mesh");
-        let e = write(&path, &data).unwrap_err();
-        assert!(!path.exists());
-        assert!(
-            e.message.contains("triangle 0 names vertex 3"),
-            "{}",
-            e.message
-        );
+        assert_write_refused("mesh", &data, "triangle 0 names vertex 3");
     }
 }

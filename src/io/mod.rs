@@ -8,6 +8,8 @@ mod obj;
 mod off;
 mod ply;
 mod stl;
+#[cfg(test)]
+mod tests;
 mod tetgen;
 mod text;
 mod vtk;

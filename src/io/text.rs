@@ -336,6 +336,31 @@ pub(in crate::io) fn assert_round_trip(ext: &str, data: &MeshData) {
     assert_eq!(&back.unwrap(), data);
 }
 
+/// A mesh whose coordinates are hard to print exactly (thirds, sums that round, -0.0, tiny and
+/// huge magnitudes): writers must read back to the same `f64`s.
+#[cfg(test)]
+pub(in crate::io) fn awkward_mesh() -> MeshData {
+    MeshData {
+        positions: vec![
+            DVec3::new(0.1, -2.5e-300, 1.0 / 3.0),
+            DVec3::new(1e20, 0.0, -0.0),
+            DVec3::new(f64::MIN_POSITIVE, 7.0, 0.1 + 0.2),
+            DVec3::new(std::f64::consts::PI, 12345.678901234567, -2.5e-7),
+        ],
+        triangles: vec![[0, 1, 2], [3, 2, 1]],
+        tetrahedra: vec![[0, 1, 2, 3], [3, 2, 1, 0]],
+    }
+}
+
+/// Writing `data` as a `.ext` file fails with a message holding `words`, and leaves no file.
+#[cfg(test)]
+pub(in crate::io) fn assert_write_refused(ext: &str, data: &MeshData, words: &str) {
+    let path = temp_path("refused", ext);
+    let e = crate::io::write(&path, data).unwrap_err();
+    assert!(!path.exists());
+    assert!(e.message.contains(words), "{}", e.message);
+}
+
 /// The error `parse` gives for `input`; panics if it parses.
 #[cfg(test)]
 pub(in crate::io) fn parse_error(

@@ -369,6 +369,8 @@ pub fn write(path: &Path, data: &MeshData) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::ErrorKind::Parse;
+    use crate::io::text::{assert_errors, assert_round_trip, assert_write_refused, awkward_mesh};
     use glam::DVec3;
 
     /// A tet, a triangle, a quadratic tet and triangle, and a vertex, a line and a hex to skip;
@@ -456,8 +458,8 @@ TRIANGLE_STRIPS 1 5
 4 0 1 3 2
 ";
 
-    fn err(text: &str) -> String {
-        parse(text, "v.vtk").unwrap_err().message
+    fn p(bytes: &[u8]) -> Result<MeshData> {
+        parse(std::str::from_utf8(bytes).unwrap(), "v.vtk")
     }
 
     #[test]
@@ -493,22 +495,7 @@ TRIANGLE_STRIPS 1 5
 
     #[test]
     fn round_trip() {
-        let data = MeshData {
-            positions: vec![
-                DVec3::new(0.1, -2.5e-7, 1.0 / 3.0),
-                DVec3::new(1e15, 0.0, 12345.678901234567),
-                DVec3::new(std::f64::consts::E, 2.0, 3.0),
-                DVec3::new(-1.0, 7.0, 1e-12),
-            ],
-            triangles: vec![[0, 1, 2], [3, 2, 1]],
-            tetrahedra: vec![[0, 1, 2, 3], [3, 2, 1, 0]],
-        };
-        let path = text::temp_path("vtk-rt", "vtk");
-        write(&path, &data).unwrap();
-        let back = super::super::read(&path);
-        std::fs::remove_file(&path).unwrap();
-        assert_eq!(back.unwrap(), data);
-
+        assert_round_trip("vtk", &awkward_mesh());
         let empty = MeshData::default();
         let mut buf = Vec::new();
         write_to(&mut buf, &empty).unwrap();
@@ -525,86 +512,37 @@ TRIANGLE_STRIPS 1 5
             triangles: vec![],
             tetrahedra: vec![[0, 1, 2, 4]],
         };
-        let path = text::temp_path("vtk-bad", "vtk");
-        let e = write(&path, &data).unwrap_err();
-        assert!(!path.exists());
-        assert!(
-            e.message.contains("tetrahedron 0 names vertex 4"),
-            "{}",
-            e.message
-        );
+        assert_write_refused("vtk", &data, "tetrahedron 0 names vertex 4");
     }
 
     #[test]
-    fn binary_and_foreign_files_are_errors() {
-        let e = err("# vtk DataFile Version 3.0\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\n");
-        assert_eq!(e, "v.vtk:3: binary .vtk not supported (save as ASCII)");
-        let e = err("ply\nformat ascii 1.0\n");
-        assert!(e.starts_with("v.vtk:1: not a legacy VTK file"), "{e}");
-        let e = err("# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\n");
-        assert!(
-            e.starts_with("v.vtk:4: dataset STRUCTURED_POINTS not supported"),
-            "{e}"
-        );
-        let e = err("# vtk DataFile Version 3.0");
-        assert!(e.starts_with("v.vtk:1: unexpected end of file"), "{e}");
-        let e = err("# vtk DataFile Version 3.0\ntitle\n");
-        assert!(
-            e.starts_with("v.vtk:3: unexpected end of file, expected ASCII"),
-            "{e}"
-        );
-    }
-
-    #[test]
-    fn out_of_range_ids_name_line() {
-        let e = err(&LEGACY.replace("6 0 1 2 5 6 7", "6 0 1 2 5 6 10"));
-        assert_eq!(e, "v.vtk:16: point id 10 out of range (10 points)");
-        let e = err(&V51.replace("0 1 2\nCELL_TYPES", "0 1 5\nCELL_TYPES"));
-        assert_eq!(e, "v.vtk:21: point id 5 out of range (5 points)");
-    }
-
-    #[test]
-    fn inconsistent_cells_name_line() {
-        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 7 42"));
-        assert!(
-            e.starts_with("v.vtk:19: the cells hold 41 numbers, 42 declared"),
-            "{e}"
-        );
-        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 7 30"));
-        assert!(
-            e.starts_with("v.vtk:18: the cells hold more than the 30"),
-            "{e}"
-        );
-        let e = err(&LEGACY.replace("CELL_TYPES 7\n10\n5", "CELL_TYPES 7\n5\n10"));
-        assert_eq!(e, "v.vtk:21: cell 0 of type 5 has 4 points, expected 3");
-        let e = err(&LEGACY.replace("CELL_TYPES 7", "CELL_TYPES 6"));
-        assert!(e.starts_with("v.vtk:20: 6 cell types for 7 cells"), "{e}");
-        let e = err(&V51.replace("0 4 8 11", "0 8 4 11"));
-        assert!(e.starts_with("v.vtk:18: offset 4"), "{e}");
-        let e = err(&V51.replace("0 4 8 11", "0 4 8 10"));
-        assert!(
-            e.starts_with("v.vtk:18: last offset 10, connectivity size 11"),
-            "{e}"
-        );
-        let e = err(&V51.replace("CELL_TYPES 3\n10\n10\n5\n", ""));
-        assert!(e.starts_with("v.vtk:16: CELLS without CELL_TYPES"), "{e}");
-    }
-
-    #[test]
-    fn truncated_and_bad_tokens_name_line() {
-        let e = err(&LEGACY[..LEGACY.find("5 6\n6 6").unwrap()]);
-        assert!(e.starts_with("v.vtk:10: unexpected end of file"), "{e}");
-        let e = err(&LEGACY.replace("0 0 1\n", "0 0 one\n"));
-        assert_eq!(e, "v.vtk:8: expected a coordinate, found 'one'");
-        let e = err(&POLY.replace("VERTICES", "VERTEXES"));
-        assert_eq!(e, "v.vtk:7: unexpected keyword 'VERTEXES'");
-        let e = err(&LEGACY.replace("POINTS 10 float", "POINTS 3000000000 float"));
-        assert!(
-            e.starts_with("v.vtk:12: expected a coordinate, found 'CELLS'"),
-            "{e}"
-        );
-        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 18446744073709551615 41"));
-        assert_eq!(e, "v.vtk:20: expected a cell size, found 'CELL_TYPES'");
+    fn bad_input_names_the_line() {
+        let legacy = |from: &str, to: &str| LEGACY.replace(from, to);
+        let v51 = |from: &str, to: &str| V51.replace(from, to);
+        let head = "# vtk DataFile Version 3.0";
+        #[rustfmt::skip]
+        let cases = [
+            (format!("{head}\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\n"), "v.vtk:3: binary .vtk not supported (save as ASCII)"),
+            ("ply\nformat ascii 1.0\n".into(), "v.vtk:1: not a legacy VTK file"),
+            (format!("{head}\nt\nASCII\nDATASET STRUCTURED_POINTS\n"), "v.vtk:4: dataset STRUCTURED_POINTS not supported"),
+            (head.into(), "v.vtk:1: unexpected end of file"),
+            (format!("{head}\ntitle\n"), "v.vtk:3: unexpected end of file, expected ASCII"),
+            (legacy("6 0 1 2 5 6 7", "6 0 1 2 5 6 10"), "v.vtk:16: point id 10 out of range (10 points)"),
+            (v51("0 1 2\nCELL_TYPES", "0 1 5\nCELL_TYPES"), "v.vtk:21: point id 5 out of range (5 points)"),
+            (legacy("CELLS 7 41", "CELLS 7 42"), "v.vtk:19: the cells hold 41 numbers, 42 declared"),
+            (legacy("CELLS 7 41", "CELLS 7 30"), "v.vtk:18: the cells hold more than the 30"),
+            (legacy("CELL_TYPES 7\n10\n5", "CELL_TYPES 7\n5\n10"), "v.vtk:21: cell 0 of type 5 has 4 points, expected 3"),
+            (legacy("CELL_TYPES 7", "CELL_TYPES 6"), "v.vtk:20: 6 cell types for 7 cells"),
+            (v51("0 4 8 11", "0 8 4 11"), "v.vtk:18: offset 4"),
+            (v51("0 4 8 11", "0 4 8 10"), "v.vtk:18: last offset 10, connectivity size 11"),
+            (v51("CELL_TYPES 3\n10\n10\n5\n", ""), "v.vtk:16: CELLS without CELL_TYPES"),
+            (LEGACY[..LEGACY.find("5 6\n6 6").unwrap()].into(), "v.vtk:10: unexpected end of file"),
+            (legacy("0 0 1\n", "0 0 one\n"), "v.vtk:8: expected a coordinate, found 'one'"),
+            (POLY.replace("VERTICES", "VERTEXES"), "v.vtk:7: unexpected keyword 'VERTEXES'"),
+            (legacy("POINTS 10 float", "POINTS 3000000000 float"), "v.vtk:12: expected a coordinate, found 'CELLS'"),
+            (legacy("CELLS 7 41", "CELLS 18446744073709551615 41"), "v.vtk:20: expected a cell size, found 'CELL_TYPES'"),
+        ];
+        assert_errors(p, cases.map(|(input, start)| (input, Parse, start)));
     }
 
     #[test]

@@ -216,22 +216,23 @@ pub fn read(path: &Path) -> Result<MeshData> {
 pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()> {
     writeln!(w, "MeshVersionFormatted 2\n\nDimension 3\n")?;
     writeln!(w, "Vertices\n{}", data.positions.len())?;
-    for p in &data.positions {
-        writeln!(w, "{} {} {} 0", p.x, p.y, p.z)?;
-    }
-    if !data.triangles.is_empty() {
-        writeln!(w, "\nTriangles\n{}", data.triangles.len())?;
-        for t in &data.triangles {
-            writeln!(w, "{} {} {} 0", t[0] + 1, t[1] + 1, t[2] + 1)?;
-        }
-    }
-    if !data.tetrahedra.is_empty() {
-        writeln!(w, "\nTetrahedra\n{}", data.tetrahedra.len())?;
-        for t in &data.tetrahedra {
-            writeln!(w, "{} {} {} {} 0", t[0] + 1, t[1] + 1, t[2] + 1, t[3] + 1)?;
-        }
-    }
+    text::write_points(w, &data.positions, " 0")?;
+    write_section(w, "Triangles", &data.triangles)?;
+    write_section(w, "Tetrahedra", &data.tetrahedra)?;
     writeln!(w, "\nEnd")
+}
+
+/// A section of elements (1-based ids, ref 0), if there are any.
+fn write_section<const K: usize>(
+    w: &mut dyn Write,
+    keyword: &str,
+    elements: &[[u32; K]],
+) -> std::io::Result<()> {
+    if elements.is_empty() {
+        return Ok(());
+    }
+    writeln!(w, "\n{keyword}\n{}", elements.len())?;
+    text::write_elements(w, elements, ("", 1, " 0"))
 }
 
 /// Writes a Medit `.mesh` file.

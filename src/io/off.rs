@@ -50,13 +50,8 @@ pub(crate) fn write_to<W: Write>(out: &mut W, data: &MeshData, name: &str) -> Re
         data.triangles.len()
     )
     .map_err(io_err)?;
-    for p in &data.positions {
-        writeln!(out, "{} {} {}", p.x, p.y, p.z).map_err(io_err)?;
-    }
-    for t in &data.triangles {
-        writeln!(out, "3 {} {} {}", t[0], t[1], t[2]).map_err(io_err)?;
-    }
-    Ok(())
+    super::text::write_points(out, &data.positions, "").map_err(io_err)?;
+    super::text::write_elements(out, &data.triangles, ("3 ", 0, "")).map_err(io_err)
 }
 
 fn check_writable(data: &MeshData, name: &str) -> Result<()> {

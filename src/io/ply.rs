@@ -367,33 +367,28 @@ impl Vertex {
     }
 }
 
+/// Setters that hand any scalar type to `Vertex::set` as `f64`.
+macro_rules! scalar_setter {
+    ($($method:ident: $t:ty),* $(,)?) => {$(
+        fn $method(&mut self, name: &str, value: $t) -> PropertyAccessResult {
+            self.set(name, value.into())
+        }
+    )*};
+}
+
 impl PropertyAccess for Vertex {
     fn new() -> Self {
         Vertex([0.0; 3])
     }
-    fn set_char(&mut self, name: &str, value: i8) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_uchar(&mut self, name: &str, value: u8) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_short(&mut self, name: &str, value: i16) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_ushort(&mut self, name: &str, value: u16) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_int(&mut self, name: &str, value: i32) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_uint(&mut self, name: &str, value: u32) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_float(&mut self, name: &str, value: f32) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_double(&mut self, name: &str, value: f64) -> PropertyAccessResult {
-        self.set(name, value)
+    scalar_setter! {
+        set_char: i8,
+        set_uchar: u8,
+        set_short: i16,
+        set_ushort: u16,
+        set_int: i32,
+        set_uint: u32,
+        set_float: f32,
+        set_double: f64,
     }
 }
 

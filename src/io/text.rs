@@ -291,6 +291,37 @@ pub(in crate::io) fn check_ids(path: &Path, data: &MeshData) -> Result<()> {
     Ok(())
 }
 
+/// Writes one line per point, `x y z` and then `suffix`, in the shortest text that reads back
+/// to the same `f64`s.
+pub(in crate::io) fn write_points(
+    w: &mut dyn Write,
+    points: &[DVec3],
+    suffix: &str,
+) -> std::io::Result<()> {
+    for p in points {
+        writeln!(w, "{} {} {}{suffix}", p.x, p.y, p.z)?;
+    }
+    Ok(())
+}
+
+/// Writes one line per element: `prefix`, its ids plus `add` (1 for 1-based formats), then
+/// `suffix`.
+pub(in crate::io) fn write_elements<const K: usize>(
+    w: &mut dyn Write,
+    elements: &[[u32; K]],
+    (prefix, add, suffix): (&str, u32, &str),
+) -> std::io::Result<()> {
+    for e in elements {
+        w.write_all(prefix.as_bytes())?;
+        for (i, id) in e.iter().enumerate() {
+            let sep = if i == 0 { "" } else { " " };
+            write!(w, "{sep}{}", id + add)?;
+        }
+        writeln!(w, "{suffix}")?;
+    }
+    Ok(())
+}
+
 /// Creates `path` and writes it through a buffer with `body`, naming the file in errors.
 pub(in crate::io) fn write_file(
     path: &Path,

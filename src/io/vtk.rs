@@ -337,18 +337,12 @@ pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()
         "# vtk DataFile Version 3.0\ntopomesh\nASCII\nDATASET UNSTRUCTURED_GRID"
     )?;
     writeln!(w, "POINTS {} double", data.positions.len())?;
-    for p in &data.positions {
-        writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
-    }
+    text::write_points(w, &data.positions, "")?;
     let (nt, nk) = (data.triangles.len(), data.tetrahedra.len());
     if nt + nk > 0 {
         writeln!(w, "CELLS {} {}", nt + nk, 4 * nt + 5 * nk)?;
-        for t in &data.triangles {
-            writeln!(w, "3 {} {} {}", t[0], t[1], t[2])?;
-        }
-        for t in &data.tetrahedra {
-            writeln!(w, "4 {} {} {} {}", t[0], t[1], t[2], t[3])?;
-        }
+        text::write_elements(w, &data.triangles, ("3 ", 0, ""))?;
+        text::write_elements(w, &data.tetrahedra, ("4 ", 0, ""))?;
         writeln!(w, "CELL_TYPES {}", nt + nk)?;
         for _ in 0..nt {
             writeln!(w, "5")?;

@@ -296,7 +296,7 @@ pub fn read(path: &Path) -> Result<MeshData> {
 mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::assert_errors;
+    use crate::io::text::{assert_errors, utf8};
 
     /// Two tets and a boundary triangle over sparse tags, plus a point, a line, a quad, a
     /// 10-node tet and a 6-node triangle, and sections to skip.
@@ -376,29 +376,19 @@ $Elements
 $EndElements
 ";
 
-    fn p(bytes: &[u8]) -> Result<MeshData> {
-        parse(std::str::from_utf8(bytes).unwrap(), "g.msh")
-    }
-
     #[test]
-    fn reads_v22_mixed_elements_sparse_tags() {
-        let d = parse(V22, "g.msh").unwrap();
-        assert_eq!(d.positions.len(), 6);
-        assert_eq!(d.positions[4], DVec3::new(1.0, 1.0, 1.0));
-        assert_eq!(d.positions[5], DVec3::splat(0.5));
-        assert_eq!(d.triangles, vec![[0, 1, 2], [0, 2, 3]]);
-        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
-    }
-
-    #[test]
-    fn reads_v41_blocks_parametric_and_skipped_types() {
-        let d = parse(V41, "g.msh").unwrap();
-        assert_eq!(d.positions.len(), 6);
-        assert_eq!(d.positions[1], DVec3::new(1.0, 0.0, 0.0));
-        assert_eq!(d.positions[5], DVec3::splat(0.5));
-        assert_eq!(d.triangles, vec![[0, 1, 2]]);
-        // Type 7 (pyramid) is skipped.
-        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+    fn reads_v22_and_v41_sparse_tags_blocks_and_skipped_types() {
+        let (v22, v41) = (parse(V22, "g.msh").unwrap(), parse(V41, "g.msh").unwrap());
+        for d in [&v22, &v41] {
+            assert_eq!(d.positions.len(), 6);
+            assert_eq!(d.positions[5], DVec3::splat(0.5));
+            // In 4.1, type 7 (pyramid) is skipped.
+            assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+        }
+        assert_eq!(v22.positions[4], DVec3::new(1.0, 1.0, 1.0));
+        assert_eq!(v22.triangles, vec![[0, 1, 2], [0, 2, 3]]);
+        assert_eq!(v41.positions[1], DVec3::new(1.0, 0.0, 0.0));
+        assert_eq!(v41.triangles, vec![[0, 1, 2]]);
     }
 
     #[test]
@@ -429,7 +419,10 @@ $EndElements
             (v22("\n6\n10 0 0 0", "\n4000000000\n10 0 0 0"), "g.msh:17: expected a node tag, found '$EndNodes'"),
             (v22("\n7\n1 15", "\n99999999999999\n1 15"), "g.msh:27: expected an element tag"),
         ];
-        assert_errors(p, cases.map(|(input, start)| (input, Parse, start)));
+        assert_errors(
+            |b| parse(utf8(b), "g.msh"),
+            cases.map(|(input, start)| (input, Parse, start)),
+        );
     }
 
     #[test]

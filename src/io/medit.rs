@@ -235,17 +235,13 @@ fn write_section<const K: usize>(
     text::write_elements(w, elements, ("", 1, " 0"))
 }
 
-/// Writes a Medit `.mesh` file.
-pub fn write(path: &Path, data: &MeshData) -> Result<()> {
-    text::check_ids(path, data)?;
-    text::write_file(path, |w| write_to(w, data))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::{assert_errors, assert_round_trip, assert_write_refused, awkward_mesh};
+    use crate::io::text::{
+        assert_errors, assert_round_trip, assert_write_refused, awkward_mesh, utf8,
+    };
 
     const CUBE_CORNER: &str = "\
 MeshVersionFormatted 2
@@ -284,10 +280,6 @@ Hexahedra 1
 End
 ";
 
-    fn p(bytes: &[u8]) -> Result<MeshData> {
-        parse(std::str::from_utf8(bytes).unwrap(), "m.mesh")
-    }
-
     #[test]
     fn reads_with_skipped_sections() {
         let d = parse(CUBE_CORNER, "m.mesh").unwrap();
@@ -310,7 +302,10 @@ End
     #[test]
     fn bad_vertex_id_names_the_line() {
         let t = CUBE_CORNER.replace("2 3 4 5 1", "2 3 4 6 1");
-        assert_errors(p, [(t, Parse, "m.mesh:31: vertex id 6 out of range 1..=5")]);
+        assert_errors(
+            |b| parse(utf8(b), "m.mesh"),
+            [(t, Parse, "m.mesh:31: vertex id 6 out of range 1..=5")],
+        );
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! Every reader's errors on small bad inputs, one table: each names the file and the line,
 //! and says what was wrong or missing.
 
-use super::text::assert_errors;
+use super::text::{assert_errors, utf8};
 use super::{Format, MeshData, parse, tetgen};
 use crate::error::ErrorKind::{self, OutOfRange, Parse, TooLarge};
 use crate::error::Result;
@@ -21,19 +21,15 @@ fn medit(bytes: &[u8]) -> Result<MeshData> {
     parse(bytes, Format::Medit, "t.mesh")
 }
 
-fn text(bytes: &[u8]) -> &str {
-    std::str::from_utf8(bytes).unwrap()
-}
-
 /// A TetGen `.node` file, read with a valid `.ele` file of no elements.
 fn tetgen_node(bytes: &[u8]) -> Result<MeshData> {
-    tetgen::parse(text(bytes), "a.node", "", "a.ele")
+    tetgen::parse(utf8(bytes), "a.node", "", "a.ele")
 }
 
 /// A TetGen `.ele` file over 5 points numbered from 1.
 fn tetgen_ele(bytes: &[u8]) -> Result<MeshData> {
     const NODE: &str = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
-    tetgen::parse(NODE, "a.node", text(bytes), "a.ele")
+    tetgen::parse(NODE, "a.node", utf8(bytes), "a.ele")
 }
 
 #[test]

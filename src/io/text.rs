@@ -270,7 +270,7 @@ pub(in crate::io) fn read_text(path: &Path) -> Result<String> {
 }
 
 /// Errors if a triangle or tetrahedron names a point that does not exist.
-pub(in crate::io) fn check_ids(path: &Path, data: &MeshData) -> Result<()> {
+fn check_ids(path: &Path, data: &MeshData) -> Result<()> {
     let n = data.positions.len();
     let bad = |kind: &str, i: usize, id: u32| {
         Error::out_of_range(format!(
@@ -322,11 +322,19 @@ pub(in crate::io) fn write_elements<const K: usize>(
     Ok(())
 }
 
-/// Creates `path` and writes it through a buffer with `body`, naming the file in errors.
-pub(in crate::io) fn write_file(
+/// Writes `data` to `path` with a format's `write_to`, once every element is checked to name
+/// an existing point.
+pub(in crate::io) fn write_checked(
     path: &Path,
-    body: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    data: &MeshData,
+    write_to: fn(&mut dyn Write, &MeshData) -> std::io::Result<()>,
 ) -> Result<()> {
+    check_ids(path, data)?;
+    write_file(path, |w| write_to(w, data))
+}
+
+/// Creates `path` and writes it through a buffer with `body`, naming the file in errors.
+fn write_file(path: &Path, body: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<()> {
     let io = |e: std::io::Error| Error::io(format!("{}: {e}", path.display()));
     let file = std::fs::File::create(path).map_err(io)?;
     let mut w = std::io::BufWriter::new(file);
@@ -390,6 +398,12 @@ pub(in crate::io) fn assert_write_refused(ext: &str, data: &MeshData, words: &st
     let e = crate::io::write(&path, data).unwrap_err();
     assert!(!path.exists());
     assert!(e.message.contains(words), "{}", e.message);
+}
+
+/// Test input as text.
+#[cfg(test)]
+pub(in crate::io) fn utf8(bytes: &[u8]) -> &str {
+    std::str::from_utf8(bytes).unwrap()
 }
 
 /// The error `parse` gives for `input`; panics if it parses.

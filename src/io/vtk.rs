@@ -354,17 +354,13 @@ pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()
     Ok(())
 }
 
-/// Writes a legacy ASCII `.vtk` file.
-pub fn write(path: &Path, data: &MeshData) -> Result<()> {
-    text::check_ids(path, data)?;
-    text::write_file(path, |w| write_to(w, data))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::{assert_errors, assert_round_trip, assert_write_refused, awkward_mesh};
+    use crate::io::text::{
+        assert_errors, assert_round_trip, assert_write_refused, awkward_mesh, utf8,
+    };
     use glam::DVec3;
 
     /// A tet, a triangle, a quadratic tet and triangle, and a vertex, a line and a hex to skip;
@@ -452,10 +448,6 @@ TRIANGLE_STRIPS 1 5
 4 0 1 3 2
 ";
 
-    fn p(bytes: &[u8]) -> Result<MeshData> {
-        parse(std::str::from_utf8(bytes).unwrap(), "v.vtk")
-    }
-
     #[test]
     fn reads_legacy_mixed_cells() {
         let d = parse(LEGACY, "v.vtk").unwrap();
@@ -536,7 +528,10 @@ TRIANGLE_STRIPS 1 5
             (legacy("POINTS 10 float", "POINTS 3000000000 float"), "v.vtk:12: expected a coordinate, found 'CELLS'"),
             (legacy("CELLS 7 41", "CELLS 18446744073709551615 41"), "v.vtk:20: expected a cell size, found 'CELL_TYPES'"),
         ];
-        assert_errors(p, cases.map(|(input, start)| (input, Parse, start)));
+        assert_errors(
+            |b| parse(utf8(b), "v.vtk"),
+            cases.map(|(input, start)| (input, Parse, start)),
+        );
     }
 
     #[test]

@@ -339,7 +339,7 @@ impl<'a> Tokens<'a> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind;
     use crate::io::text::{assert_round_trip, awkward_mesh, parse_error};
@@ -348,7 +348,7 @@ mod tests {
         parse(bytes, "t.off")
     }
 
-    const TETRA: &str =
+    pub(in crate::io) const TETRA: &str =
         "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
 
     #[test]

@@ -1,8 +1,8 @@
 //! Every reader's errors on small bad inputs, one table: each names the file and the line,
 //! and says what was wrong or missing.
 
-use super::text::{assert_errors, utf8};
-use super::{Format, MeshData, parse, tetgen};
+use super::text::{assert_errors, assert_robust, utf8};
+use super::{Format, MeshData, gmsh, medit, obj, off, parse, tetgen, vtk};
 use crate::error::ErrorKind::{self, OutOfRange, Parse, TooLarge};
 use crate::error::Result;
 
@@ -89,5 +89,26 @@ fn bad_input_names_the_file_and_line() {
     ];
     for &(reader, input, kind, start) in cases {
         assert_errors(reader, [(input, kind, start)]);
+    }
+}
+
+/// Every prefix of each reader's fixtures, and each fixture with every token replaced by
+/// hostile ones: no reader panics, and every error names the file.
+#[test]
+fn prefixes_and_hostile_tokens_never_panic() {
+    let fixtures = [
+        (Format::Off, off::tests::TETRA, "t.off"),
+        (Format::Obj, obj::tests::CUBE, "t.obj"),
+        (Format::Medit, medit::tests::CUBE_CORNER, "t.mesh"),
+        (Format::Gmsh, gmsh::tests::V22, "t.msh"),
+        (Format::Gmsh, gmsh::tests::V41, "t.msh"),
+        (Format::Vtk, vtk::tests::LEGACY, "t.vtk"),
+        (Format::Vtk, vtk::tests::V51, "t.vtk"),
+        (Format::Vtk, vtk::tests::POLY, "t.vtk"),
+    ];
+    for (format, src, name) in fixtures {
+        assert_robust(src, &format!("{name}:"), |t| {
+            parse(t.as_bytes(), format, name)
+        });
     }
 }

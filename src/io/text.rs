@@ -1,5 +1,6 @@
 //! Shared by the ASCII readers and writers of tetgen, medit, gmsh and vtk: a zero-copy token
-//! reader that knows its line, and helpers for the writers.
+//! reader that knows its line and reads counts, points and ids; the lines every writer (OFF's
+//! too) writes; and the readers' test helpers (error tables, round trips, robustness).
 
 use super::MeshData;
 use crate::error::{Error, Result};

@@ -81,66 +81,69 @@ impl TagMap {
 
 /// Reads a `$Nodes` section body (after the keyword, up to `$EndNodes` excluded).
 fn read_nodes(lx: &mut Lexer, version: Version) -> Result<(Vec<DVec3>, Vec<u64>)> {
-    let read_xyz = |lx: &mut Lexer| -> Result<DVec3> {
-        let x = lx.f64("a coordinate")?;
-        let y = lx.f64("a coordinate")?;
-        let z = lx.f64("a coordinate")?;
-        Ok(DVec3::new(x, y, z))
-    };
-    match version {
-        Version::V2 => {
-            let n = lx.usize("the number of nodes")?;
-            lx.check_point_count(n)?;
-            let cap = lx.capacity(n, 4);
-            let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
-            for _ in 0..n {
-                tags.push(lx.u64("a node tag")?);
-                pos.push(read_xyz(lx)?);
-            }
-            Ok((pos, tags))
-        }
+    let (blocks, n) = match version {
+        Version::V2 => (None, lx.point_count("the number of nodes")?),
         Version::V41 => {
             let blocks = lx.usize("the number of entity blocks")?;
-            let n = lx.usize("the number of nodes")?;
-            lx.check_point_count(n)?;
-            lx.u64("the smallest node tag")?;
-            lx.u64("the largest node tag")?;
-            let cap = lx.capacity(n, 4);
-            let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
-            for _ in 0..blocks {
-                let dim = lx.u64("an entity dimension")?;
-                if dim > 3 {
-                    return Err(lx.error(format!("entity dimension {dim}")));
-                }
-                lx.expect("an entity tag")?;
-                let parametric = lx.u64("the parametric flag (0 or 1)")?;
-                if parametric > 1 {
-                    return Err(lx.error(format!("parametric flag {parametric} (0 or 1)")));
-                }
-                let count = lx.usize("the number of nodes in the block")?;
-                if count > n - tags.len() {
-                    return Err(
-                        lx.error(format!("the blocks hold more than the {n} nodes declared"))
-                    );
-                }
-                for _ in 0..count {
-                    tags.push(lx.u64("a node tag")?);
-                }
-                let extra = (parametric * dim) as usize;
-                for _ in 0..count {
-                    pos.push(read_xyz(lx)?);
-                    lx.skip(extra, "a parametric coordinate")?;
-                }
-            }
-            if tags.len() != n {
-                return Err(lx.error(format!(
-                    "the blocks hold {} nodes, {n} declared",
-                    tags.len()
-                )));
-            }
-            Ok((pos, tags))
+            let n = lx.point_count("the number of nodes")?;
+            skip_tag_range(lx, "node")?;
+            (Some(blocks), n)
+        }
+    };
+    let cap = lx.capacity(n, 4);
+    let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
+    let Some(blocks) = blocks else {
+        // 2.x: one list of `tag x y z`.
+        for _ in 0..n {
+            tags.push(lx.u64("a node tag")?);
+            pos.push(lx.point()?);
+        }
+        return Ok((pos, tags));
+    };
+    // 4.1: blocks of `count` tags, then their `count` points.
+    for _ in 0..blocks {
+        let dim = entity_dimension(lx)?;
+        let parametric = lx.u64("the parametric flag (0 or 1)")?;
+        if parametric > 1 {
+            return Err(lx.error(format!("parametric flag {parametric} (0 or 1)")));
+        }
+        let count = lx.usize("the number of nodes in the block")?;
+        if count > n - tags.len() {
+            return Err(lx.error(format!("the blocks hold more than the {n} nodes declared")));
+        }
+        for _ in 0..count {
+            tags.push(lx.u64("a node tag")?);
+        }
+        let extra = (parametric * dim) as usize;
+        for _ in 0..count {
+            pos.push(lx.point()?);
+            lx.skip(extra, "a parametric coordinate")?;
         }
     }
+    if tags.len() != n {
+        return Err(lx.error(format!(
+            "the blocks hold {} nodes, {n} declared",
+            tags.len()
+        )));
+    }
+    Ok((pos, tags))
+}
+
+/// Skips the smallest and the largest tag of a 4.1 section (`kind`: node or element).
+fn skip_tag_range(lx: &mut Lexer, kind: &str) -> Result<()> {
+    lx.u64(&format!("the smallest {kind} tag"))?;
+    lx.u64(&format!("the largest {kind} tag"))?;
+    Ok(())
+}
+
+/// The header of a 4.1 entity block up to its tag: the entity's dimension (0 to 3).
+fn entity_dimension(lx: &mut Lexer) -> Result<u64> {
+    let dim = lx.u64("an entity dimension")?;
+    if dim > 3 {
+        return Err(lx.error(format!("entity dimension {dim}")));
+    }
+    lx.expect("an entity tag")?;
+    Ok(dim)
 }
 
 /// Reads the nodes of one element of type `ty`, keeping its corners if it is a triangle or
@@ -189,14 +192,9 @@ fn read_elements(
         Version::V41 => {
             let blocks = lx.usize("the number of entity blocks")?;
             lx.usize("the number of elements")?;
-            lx.u64("the smallest element tag")?;
-            lx.u64("the largest element tag")?;
+            skip_tag_range(lx, "element")?;
             for _ in 0..blocks {
-                let dim = lx.u64("an entity dimension")?;
-                if dim > 3 {
-                    return Err(lx.error(format!("entity dimension {dim}")));
-                }
-                lx.expect("an entity tag")?;
+                entity_dimension(lx)?;
                 let ty = lx.u64("an element type")?;
                 let count = lx.usize("the number of elements in the block")?;
                 for _ in 0..count {
@@ -295,12 +293,14 @@ pub fn read(path: &Path) -> Result<MeshData> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
+    use crate::error::ErrorKind::Parse;
+    use crate::io::text::{assert_errors, utf8};
 
     /// Two tets and a boundary triangle over sparse tags, plus a point, a line, a quad, a
     /// 10-node tet and a 6-node triangle, and sections to skip.
-    const V22: &str = "\
+    pub(in crate::io) const V22: &str = "\
 $MeshFormat
 2.2 0 8
 $EndMeshFormat
@@ -335,7 +335,7 @@ $NodeData
 $EndNodeData
 ";
 
-    const V41: &str = "\
+    pub(in crate::io) const V41: &str = "\
 $MeshFormat
 4.1 0 8
 $EndMeshFormat
@@ -376,97 +376,53 @@ $Elements
 $EndElements
 ";
 
-    fn err(text: &str) -> String {
-        parse(text, "g.msh").unwrap_err().message
-    }
-
     #[test]
-    fn reads_v22_mixed_elements_sparse_tags() {
-        let d = parse(V22, "g.msh").unwrap();
-        assert_eq!(d.positions.len(), 6);
-        assert_eq!(d.positions[4], DVec3::new(1.0, 1.0, 1.0));
-        assert_eq!(d.positions[5], DVec3::splat(0.5));
-        assert_eq!(d.triangles, vec![[0, 1, 2], [0, 2, 3]]);
-        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
-    }
-
-    #[test]
-    fn reads_v41_blocks_parametric_and_skipped_types() {
-        let d = parse(V41, "g.msh").unwrap();
-        assert_eq!(d.positions.len(), 6);
-        assert_eq!(d.positions[1], DVec3::new(1.0, 0.0, 0.0));
-        assert_eq!(d.positions[5], DVec3::splat(0.5));
-        assert_eq!(d.triangles, vec![[0, 1, 2]]);
-        // Type 7 (pyramid) is skipped.
-        assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+    fn reads_v22_and_v41_sparse_tags_blocks_and_skipped_types() {
+        let (v22, v41) = (parse(V22, "g.msh").unwrap(), parse(V41, "g.msh").unwrap());
+        for d in [&v22, &v41] {
+            assert_eq!(d.positions.len(), 6);
+            assert_eq!(d.positions[5], DVec3::splat(0.5));
+            // In 4.1, type 7 (pyramid) is skipped.
+            assert_eq!(d.tetrahedra, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+        }
+        assert_eq!(v22.positions[4], DVec3::new(1.0, 1.0, 1.0));
+        assert_eq!(v22.triangles, vec![[0, 1, 2], [0, 2, 3]]);
+        assert_eq!(v41.positions[1], DVec3::new(1.0, 0.0, 0.0));
+        assert_eq!(v41.triangles, vec![[0, 1, 2]]);
     }
 
     #[test]
     fn reads_v2_from_file() {
-        let path = text::temp_path("gmsh", "msh");
-        std::fs::write(&path, V22.replace('\n', "\r\n")).unwrap();
-        let d = super::super::read(&path);
-        std::fs::remove_file(&path).unwrap();
+        let d = text::read_temp("msh", V22.replace('\n', "\r\n"));
         assert_eq!(d.unwrap().tetrahedra.len(), 2);
     }
 
     #[test]
-    fn unknown_node_tag_names_line() {
-        let e = err(&V22.replace("5 4 2 2 1 10 20 30 40", "5 4 2 2 1 10 20 31 40"));
-        assert_eq!(e, "g.msh:24: unknown node tag 31");
-        let e = err(&V41.replace("4 6 9 10 800", "4 6 9 10 801"));
-        assert_eq!(e, "g.msh:35: unknown node tag 801");
-        let e = err(&V22.replace("7 0.5 0.5 0.5", "40 0.5 0.5 0.5"));
-        assert!(e.starts_with("g.msh:9: node tag 40 appears twice"), "{e}");
-    }
-
-    #[test]
-    fn binary_and_bad_versions_are_errors() {
-        let e = err("$MeshFormat\n4.1 1 8\n\u{1}\u{0}\u{0}\u{0}\n$EndMeshFormat\n");
-        assert_eq!(e, "g.msh:2: binary .msh not supported (save as ASCII)");
-        let e = err("$MeshFormat\n4 0 8\n$EndMeshFormat\n");
-        assert!(e.starts_with("g.msh:2: unsupported .msh version 4"), "{e}");
-        let e = err("hello");
-        assert_eq!(e, "g.msh:1: expected $MeshFormat, found 'hello'");
-        let e = err("\n\n");
-        assert!(e.starts_with("g.msh:3: no $MeshFormat"), "{e}");
-    }
-
-    #[test]
-    fn truncated_and_bad_tokens_name_line() {
-        let e = err(&V22[..V22.find("$EndElements").unwrap()]);
-        assert!(
-            e.starts_with("g.msh:27: unexpected end of file, expected $EndElements"),
-            "{e}"
+    fn bad_input_names_the_line() {
+        let v22 = |from: &str, to: &str| V22.replace(from, to);
+        let v41 = |from: &str, to: &str| V41.replace(from, to);
+        let cut = |end: &str, more: usize| V22[..V22.find(end).unwrap() + more].to_string();
+        #[rustfmt::skip]
+        let cases = [
+            (v22("5 4 2 2 1 10 20 30 40", "5 4 2 2 1 10 20 31 40"), "g.msh:24: unknown node tag 31"),
+            (v41("4 6 9 10 800", "4 6 9 10 801"), "g.msh:35: unknown node tag 801"),
+            (v22("7 0.5 0.5 0.5", "40 0.5 0.5 0.5"), "g.msh:9: node tag 40 appears twice"),
+            ("$MeshFormat\n4.1 1 8\n\u{1}\u{0}\u{0}\u{0}\n$EndMeshFormat\n".into(), "g.msh:2: binary .msh not supported (save as ASCII)"),
+            ("$MeshFormat\n4 0 8\n$EndMeshFormat\n".into(), "g.msh:2: unsupported .msh version 4"),
+            ("hello".into(), "g.msh:1: expected $MeshFormat, found 'hello'"),
+            ("\n\n".into(), "g.msh:3: no $MeshFormat"),
+            (cut("$EndElements", 0), "g.msh:27: unexpected end of file, expected $EndElements"),
+            (cut("40 0 0 1", 6), "g.msh:14: unexpected end of file"),
+            (v22("$EndNodeData\n", ""), "g.msh:28: section $NodeData has no $EndNodeData"),
+            (v41("0.5 0.5 0.5", "0.5 0.5 half"), "g.msh:25: expected a coordinate, found 'half'"),
+            (v41("3 6 5 900", "3 7 5 900"), "g.msh:25: the blocks hold 6 nodes, 7 declared"),
+            (v22("\n6\n10 0 0 0", "\n4000000000\n10 0 0 0"), "g.msh:17: expected a node tag, found '$EndNodes'"),
+            (v22("\n7\n1 15", "\n99999999999999\n1 15"), "g.msh:27: expected an element tag"),
+        ];
+        assert_errors(
+            |b| parse(utf8(b), "g.msh"),
+            cases.map(|(input, start)| (input, Parse, start)),
         );
-        let e = err(&V22[..V22.find("40 0 0 1").unwrap() + 6]);
-        assert!(e.starts_with("g.msh:14: unexpected end of file"), "{e}");
-        let e = err(&V22.replace("$EndNodeData\n", ""));
-        assert!(
-            e.starts_with("g.msh:28: section $NodeData has no $EndNodeData"),
-            "{e}"
-        );
-        let e = err(&V41.replace("0.5 0.5 0.5", "0.5 0.5 half"));
-        assert_eq!(e, "g.msh:25: expected a coordinate, found 'half'");
-        let e = err(&V41.replace("3 6 5 900", "3 7 5 900"));
-        assert!(
-            e.starts_with("g.msh:25: the blocks hold 6 nodes, 7 declared"),
-            "{e}"
-        );
-        let e = err(&V22.replace("\n6\n10 0 0 0", "\n4000000000\n10 0 0 0"));
-        assert!(
-            e.starts_with("g.msh:17: expected a node tag, found '$EndNodes'"),
-            "{e}"
-        );
-        let e = err(&V22.replace("\n7\n1 15", "\n99999999999999\n1 15"));
-        assert!(e.starts_with("g.msh:27: expected an element tag"), "{e}");
-    }
-
-    #[test]
-    fn prefixes_and_mutations_never_panic() {
-        for src in [V22, V41] {
-            text::assert_robust(src, "g.msh:", |t| parse(t, "g.msh"));
-        }
     }
 
     #[test]

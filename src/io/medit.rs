@@ -102,19 +102,11 @@ impl Elements {
             return Err(lx.error(format!("{keyword} before (or without) Vertices")));
         }
         out.reserve(lx.capacity(n, self.tokens));
+        let out_of_range =
+            |id| format!("vertex id {id} out of range 1..={num_vertices} in {keyword}");
         for _ in 0..n {
-            let mut e = [0u32; K];
-            for v in &mut e {
-                let id = lx.u64("a vertex id")?;
-                if id == 0 || id > num_vertices as u64 {
-                    return Err(lx.error(format!(
-                        "vertex id {id} out of range 1..={num_vertices} in {keyword}"
-                    )));
-                }
-                *v = (id - 1) as u32;
-            }
+            out.push(lx.ids("a vertex id", (1, num_vertices), out_of_range)?);
             lx.skip(self.tokens - K, "the rest of an element")?;
-            out.push(e);
         }
         Ok(())
     }
@@ -178,20 +170,16 @@ impl Sections {
             return Err(lx.error("a second Vertices section"));
         }
         self.have_vertices = true;
-        let n = lx.usize("the number of vertices")?;
-        lx.check_point_count(n)?;
+        let n = lx.point_count("the number of vertices")?;
         let positions = &mut self.data.positions;
         positions.reserve(lx.capacity(n, self.dim + 1));
         for _ in 0..n {
-            let x = lx.f64("a coordinate")?;
-            let y = lx.f64("a coordinate")?;
-            let z = if self.dim == 3 {
-                lx.f64("a coordinate")?
+            positions.push(if self.dim == 3 {
+                lx.point()?
             } else {
-                0.0
-            };
+                DVec3::new(lx.f64("a coordinate")?, lx.f64("a coordinate")?, 0.0)
+            });
             lx.expect("a vertex reference")?;
-            positions.push(DVec3::new(x, y, z));
         }
         Ok(())
     }
@@ -228,35 +216,34 @@ pub fn read(path: &Path) -> Result<MeshData> {
 pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()> {
     writeln!(w, "MeshVersionFormatted 2\n\nDimension 3\n")?;
     writeln!(w, "Vertices\n{}", data.positions.len())?;
-    for p in &data.positions {
-        writeln!(w, "{} {} {} 0", p.x, p.y, p.z)?;
-    }
-    if !data.triangles.is_empty() {
-        writeln!(w, "\nTriangles\n{}", data.triangles.len())?;
-        for t in &data.triangles {
-            writeln!(w, "{} {} {} 0", t[0] + 1, t[1] + 1, t[2] + 1)?;
-        }
-    }
-    if !data.tetrahedra.is_empty() {
-        writeln!(w, "\nTetrahedra\n{}", data.tetrahedra.len())?;
-        for t in &data.tetrahedra {
-            writeln!(w, "{} {} {} {} 0", t[0] + 1, t[1] + 1, t[2] + 1, t[3] + 1)?;
-        }
-    }
+    text::write_points(w, &data.positions, " 0")?;
+    write_section(w, "Triangles", &data.triangles)?;
+    write_section(w, "Tetrahedra", &data.tetrahedra)?;
     writeln!(w, "\nEnd")
 }
 
-/// Writes a Medit `.mesh` file.
-pub fn write(path: &Path, data: &MeshData) -> Result<()> {
-    text::check_ids(path, data)?;
-    text::write_file(path, |w| write_to(w, data))
+/// A section of elements (1-based ids, ref 0), if there are any.
+fn write_section<const K: usize>(
+    w: &mut dyn Write,
+    keyword: &str,
+    elements: &[[u32; K]],
+) -> std::io::Result<()> {
+    if elements.is_empty() {
+        return Ok(());
+    }
+    writeln!(w, "\n{keyword}\n{}", elements.len())?;
+    text::write_elements(w, elements, ("", 1, " 0"))
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
+    use crate::error::ErrorKind::Parse;
+    use crate::io::text::{
+        assert_errors, assert_round_trip, assert_write_refused, awkward_mesh, utf8,
+    };
 
-    const CUBE_CORNER: &str = "\
+    pub(in crate::io) const CUBE_CORNER: &str = "\
 MeshVersionFormatted 2
 # a comment line
 Dimension
@@ -293,10 +280,6 @@ Hexahedra 1
 End
 ";
 
-    fn err(text: &str) -> String {
-        parse(text, "m.mesh").unwrap_err().message
-    }
-
     #[test]
     fn reads_with_skipped_sections() {
         let d = parse(CUBE_CORNER, "m.mesh").unwrap();
@@ -317,70 +300,21 @@ End
     }
 
     #[test]
-    fn out_of_range_id_names_line() {
+    fn bad_vertex_id_names_the_line() {
         let t = CUBE_CORNER.replace("2 3 4 5 1", "2 3 4 6 1");
-        let e = err(&t);
-        assert!(e.starts_with("m.mesh:31:"), "{e}");
-        assert!(e.contains("vertex id 6 out of range 1..=5"), "{e}");
-        let e = err("Dimension 3 Vertices 1 0 0 0 0 Triangles 1\n1 1 0 0");
-        assert!(e.starts_with("m.mesh:2:") && e.contains("id 0"), "{e}");
-    }
-
-    #[test]
-    fn truncated_and_bad_tokens_name_line() {
-        let e = err("Dimension 3\nVertices 2\n0 0 0 0\n1 0");
-        assert!(e.starts_with("m.mesh:4: unexpected end of file"), "{e}");
-        let e = err("Dimension 3\nVertices 1\n0 0 zero 0\n");
-        assert_eq!(e, "m.mesh:3: expected a coordinate, found 'zero'");
-        let e = err("Dimension 3\nVertices 1\n0 0 0 0\nFoo 3\n");
-        assert!(e.starts_with("m.mesh:4: unknown keyword 'Foo'"), "{e}");
-        let e = err("Dimension 3\nTriangles 1\n1 2 3 0\n");
-        assert!(e.starts_with("m.mesh:2: Triangles before"), "{e}");
-        let e = err("Dimension 4\n");
-        assert!(e.starts_with("m.mesh:1: dimension 4"), "{e}");
-    }
-
-    #[test]
-    fn huge_counts_do_not_allocate() {
-        let e = err("Dimension 3\nVertices 4000000000\n0 0 0 0\n");
-        assert!(e.starts_with("m.mesh:4: unexpected end"), "{e}");
-        let e = err("Dimension 3\nVertices 99999999999\n");
-        assert!(e.contains("m.mesh:2:") && e.contains("more than"), "{e}");
-        let e = err("Corners 18446744073709551615 1 2");
-        assert!(e.starts_with("m.mesh:1: unexpected end"), "{e}");
-        let e = err("Corners 18446744073709551616");
-        assert!(
-            e.starts_with("m.mesh:1: expected the number of Corners"),
-            "{e}"
+        assert_errors(
+            |b| parse(utf8(b), "m.mesh"),
+            [(t, Parse, "m.mesh:31: vertex id 6 out of range 1..=5")],
         );
     }
 
     #[test]
-    fn prefixes_and_mutations_never_panic() {
-        text::assert_robust(CUBE_CORNER, "m.mesh:", |t| parse(t, "m.mesh"));
-    }
-
-    #[test]
     fn round_trip() {
-        let data = MeshData {
-            positions: vec![
-                DVec3::new(0.1, -2.5e-7, 1.0 / 3.0),
-                DVec3::new(1e15, 0.0, -0.0),
-                DVec3::new(std::f64::consts::PI, 2.0, 3.0),
-                DVec3::new(-1.0, 7.0, f64::MIN_POSITIVE),
-            ],
-            triangles: vec![[0, 1, 2], [3, 2, 1]],
-            tetrahedra: vec![[0, 1, 2, 3]],
-        };
-        let path = text::temp_path("medit-rt", "mesh");
-        write(&path, &data).unwrap();
-        let back = super::super::read(&path);
-        std::fs::remove_file(&path).unwrap();
-        assert_eq!(back.unwrap(), data);
-
+        let data = awkward_mesh();
+        assert_round_trip("mesh", &data);
         let surface = MeshData {
             tetrahedra: vec![],
-            ..data.clone()
+            ..data
         };
         let mut buf = Vec::new();
         write_to(&mut buf, &surface).unwrap();
@@ -396,13 +330,6 @@ End
             triangles: vec![[0, 1, 3]],
             tetrahedra: vec![],
         };
-        let path = text::temp_path("medit-bad", "mesh");
-        let e = write(&path, &data).unwrap_err();
-        assert!(!path.exists());
-        assert!(
-            e.message.contains("triangle 0 names vertex 3"),
-            "{}",
-            e.message
-        );
+        assert_write_refused("mesh", &data, "triangle 0 names vertex 3");
     }
 }

@@ -8,6 +8,8 @@ mod obj;
 mod off;
 mod ply;
 mod stl;
+#[cfg(test)]
+mod tests;
 mod tetgen;
 mod text;
 mod vtk;
@@ -94,8 +96,8 @@ pub fn read(path: &Path) -> Result<MeshData> {
 pub fn write(path: &Path, data: &MeshData) -> Result<()> {
     match Format::from_path(path)? {
         Format::Off => off::write(path, data),
-        Format::Medit => medit::write(path, data),
-        Format::Vtk => vtk::write(path, data),
+        Format::Medit => text::write_checked(path, data, medit::write_to),
+        Format::Vtk => text::write_checked(path, data, vtk::write_to),
         other => Err(Error::invalid(format!(
             "{}: writing {other:?} is not supported (write .off, .mesh or .vtk)",
             path.display()

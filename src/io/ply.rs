@@ -367,33 +367,28 @@ impl Vertex {
     }
 }
 
+/// Setters that hand any scalar type to `Vertex::set` as `f64`.
+macro_rules! scalar_setter {
+    ($($method:ident: $t:ty),* $(,)?) => {$(
+        fn $method(&mut self, name: &str, value: $t) -> PropertyAccessResult {
+            self.set(name, value.into())
+        }
+    )*};
+}
+
 impl PropertyAccess for Vertex {
     fn new() -> Self {
         Vertex([0.0; 3])
     }
-    fn set_char(&mut self, name: &str, value: i8) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_uchar(&mut self, name: &str, value: u8) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_short(&mut self, name: &str, value: i16) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_ushort(&mut self, name: &str, value: u16) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_int(&mut self, name: &str, value: i32) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_uint(&mut self, name: &str, value: u32) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_float(&mut self, name: &str, value: f32) -> PropertyAccessResult {
-        self.set(name, value.into())
-    }
-    fn set_double(&mut self, name: &str, value: f64) -> PropertyAccessResult {
-        self.set(name, value)
+    scalar_setter! {
+        set_char: i8,
+        set_uchar: u8,
+        set_short: i16,
+        set_ushort: u16,
+        set_int: i32,
+        set_uint: u32,
+        set_float: f32,
+        set_double: f64,
     }
 }
 
@@ -466,13 +461,11 @@ impl PropertyAccess for Face {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::ErrorKind;
+    use crate::error::ErrorKind::{OutOfRange, Parse};
+    use crate::io::text::{self, assert_errors, parse_error};
 
-    fn err(bytes: &[u8]) -> Error {
-        match parse(bytes, "t.ply") {
-            Ok(m) => panic!("expected an error, got {m:?}"),
-            Err(e) => e,
-        }
+    fn p(bytes: &[u8]) -> Result<MeshData> {
+        parse(bytes, "t.ply")
     }
 
     const ASCII: &str = "ply\nformat ascii 1.0\ncomment a square and a triangle\n\
@@ -482,7 +475,7 @@ mod tests {
 
     #[test]
     fn ascii_square_and_triangle() {
-        let m = parse(ASCII.as_bytes(), "t.ply").unwrap();
+        let m = p(ASCII.as_bytes()).unwrap();
         assert_eq!(m.positions.len(), 5);
         assert_eq!(m.positions[3], DVec3::new(0.0, 1.0, 0.5));
         assert_eq!(m.positions[4], DVec3::new(2.0, 2.0, -2.0));
@@ -495,7 +488,7 @@ mod tests {
         let text = "\u{feff}ply\r\nformat ascii 1.0\r\nelement vertex 4\r\nproperty int x\r\nproperty short y\r\n\
             property uint z\r\nelement face 1\r\nproperty list uint uint vertex_index\r\nend_header\r\n\
             0 0 0\r\n3 0 0\r\n0 -3 0\r\n0 0 3\r\n5 0 1 2 3 1\r\n";
-        let m = parse(text.as_bytes(), "t.ply").unwrap();
+        let m = p(text.as_bytes()).unwrap();
         assert_eq!(m.positions[2], DVec3::new(0.0, -3.0, 0.0));
         assert_eq!(m.triangles, vec![[0, 1, 2], [0, 2, 3], [0, 3, 1]]);
     }
@@ -550,11 +543,7 @@ mod tests {
 
     #[test]
     fn binary_little_endian_file() {
-        let path = std::env::temp_dir().join(format!("topomesh-ply-{}-le.ply", std::process::id()));
-        std::fs::write(&path, binary(false)).unwrap();
-        let m = read(&path);
-        let _ = std::fs::remove_file(&path);
-        let m = m.unwrap();
+        let m = text::read_temp("ply", binary(false)).unwrap();
         assert_eq!(m.positions.len(), 5);
         assert_eq!(m.positions[2], DVec3::new(1.0, 1.0, 0.0));
         assert_eq!(m.positions[4].x, 2.0);
@@ -564,7 +553,7 @@ mod tests {
 
     #[test]
     fn binary_big_endian() {
-        let m = parse(&binary(true), "t.ply").unwrap();
+        let m = p(&binary(true)).unwrap();
         assert_eq!(m.positions[1], DVec3::new(1.0, 0.0, 0.0));
         assert_eq!(m.positions[4].y, 0.5);
         assert_eq!(m.triangles, vec![[0, 1, 2], [0, 2, 3], [1, 4, 2]]);
@@ -574,7 +563,7 @@ mod tests {
     fn point_set_without_faces() {
         let text = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n\
             property float z\nend_header\n1 2 3\n4 5 6\n";
-        let m = parse(text.as_bytes(), "t.ply").unwrap();
+        let m = p(text.as_bytes()).unwrap();
         assert_eq!(
             m.positions,
             vec![DVec3::new(1.0, 2.0, 3.0), DVec3::new(4.0, 5.0, 6.0)]
@@ -583,157 +572,73 @@ mod tests {
     }
 
     #[test]
-    fn out_of_range_index_ascii_names_line_and_face() {
-        let text = ASCII.replace("3 1 4 2", "3 1 5 2");
-        let e = err(text.as_bytes());
-        assert_eq!(e.kind, ErrorKind::OutOfRange);
-        assert!(
-            e.message.starts_with("t.ply:20: face 1: vertex index 5"),
-            "{}",
-            e.message
+    fn bad_ascii_input_names_the_line() {
+        let cut = |end: &str, more: usize| ASCII[..ASCII.find(end).unwrap() + more].to_string();
+        let edit = |from: &str, to: &str| ASCII.replace(from, to);
+        #[rustfmt::skip]
+        let cases = [
+            (edit("3 1 4 2", "3 1 5 2"), OutOfRange, "t.ply:20: face 1: vertex index 5"),
+            (edit("3 1 4 2", "3 1 -1 2"), OutOfRange, "t.ply:20: face 1: vertex index -1"),
+            (edit("3 1 4 2", "2 1 4"), Parse, "t.ply:20: face 1: has 2 vertices"),
+            (cut("4 0 1 2 3", 0), Parse, "t.ply:19: unexpected end of file (truncated?): face 0 of 2 is missing"),
+            (cut("0 1 0.5", 3), Parse, "t.ply:16: vertex 3"),
+            (edit("1 1 0 0", "1 x 0 0"), Parse, "t.ply:15: vertex 2"),
+            (edit("property float y", "property flaot y"), Parse, "t.ply:6: "),
+            (edit("vertex_indices", "corners"), Parse, "t.ply: the 'face' element has no list property 'vertex_indices'"),
+            (edit("uchar int vertex_indices", "uchar float vertex_indices"), Parse, "t.ply: face property 'vertex_indices' has type"),
+            ("".into(), Parse, "t.ply: empty file"),
+            ("OFF\n3 1 0\n".into(), Parse, "t.ply:1: not a PLY file"),
+            ("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n".into(), Parse, "t.ply:5: "),
+            ("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n".into(), Parse, "t.ply: the 'vertex' element has no property 'z'"),
+            ("ply\nformat ascii 1.0\nelement point 1\nproperty float x\nend_header\n0\n".into(), Parse, "t.ply: the header declares no 'vertex' element"),
+            // Faces first, so that their (huge) reservation comes before anything fails.
+            ("ply\nformat ascii 1.0\nelement face 18446744073709551615\n\
+              property list uchar int vertex_indices\nelement vertex 3\nproperty float x\n\
+              property float y\nproperty float z\nend_header\n3 0 1 2\n".into(), Parse, "t.ply:11: unexpected end of file (truncated?): face 1 of 18446744073709551615"),
+            ("ply\nformat ascii 1.0\nelement vertex 4294967296\nproperty float x\n\
+              property float y\nproperty float z\nend_header\n".into(), OutOfRange, "t.ply: 4294967296 vertices declared"),
+        ];
+        assert_errors(p, cases);
+        let e = parse_error(
+            p,
+            edit("uchar int vertex_indices", "uchar float vertex_indices"),
         );
-        let text = ASCII.replace("3 1 4 2", "3 1 -1 2");
-        let e = err(text.as_bytes());
         assert!(
-            e.message.starts_with("t.ply:20: face 1: vertex index -1"),
-            "{}",
-            e.message
-        );
-    }
-
-    #[test]
-    fn out_of_range_index_binary_names_byte_and_face() {
-        let mut b = binary(false);
-        let n = b.len();
-        b[n - 8..n - 4].copy_from_slice(&9i32.to_le_bytes());
-        let e = err(&b);
-        assert_eq!(e.kind, ErrorKind::OutOfRange);
-        assert!(
-            e.message
-                .contains(&format!("at byte {}: face 1: vertex index 9", n - 13)),
-            "{}",
-            e.message
-        );
-    }
-
-    #[test]
-    fn small_face_is_an_error() {
-        let e = err(ASCII.replace("3 1 4 2", "2 1 4").as_bytes());
-        assert!(
-            e.message.starts_with("t.ply:20: face 1: has 2 vertices"),
+            e.message.ends_with("a list of integers is expected"),
             "{}",
             e.message
         );
     }
 
     #[test]
-    fn truncated_files_are_errors() {
-        let cut = &ASCII[..ASCII.find("4 0 1 2 3").unwrap()];
-        let e = err(cut.as_bytes());
-        assert!(
-            e.message.starts_with("t.ply:19: unexpected end of file"),
-            "{}",
-            e.message
-        );
-        assert!(e.message.contains("face 0 of 2"), "{}", e.message);
-        let cut = &ASCII[..ASCII.find("0 1 0.5").unwrap() + 3];
-        let e = err(cut.as_bytes());
-        assert!(e.message.starts_with("t.ply:16: vertex 3"), "{}", e.message);
-
+    fn bad_binary_input_names_the_byte() {
         let b = binary(false);
-        let e = err(&b[..b.len() - 3]);
-        assert!(
-            e.message
-                .contains("unexpected end of file (truncated?) in face 1 of 2"),
-            "{}",
-            e.message
-        );
-        assert!(
-            e.message.contains(&format!("at byte {}", b.len() - 13)),
-            "{}",
-            e.message
-        );
+        let n = b.len();
+        let mut bad_index = b.clone();
+        bad_index[n - 8..n - 4].copy_from_slice(&9i32.to_le_bytes());
         let header_end = b.windows(11).position(|w| w == b"end_header\n").unwrap() + 11;
-        let e = err(&b[..header_end + 20]);
-        assert!(e.message.contains("in vertex 1 of 5"), "{}", e.message);
-    }
-
-    #[test]
-    fn bad_token_is_an_error_with_line() {
-        let e = err(ASCII.replace("1 1 0 0", "1 x 0 0").as_bytes());
-        assert_eq!(e.kind, ErrorKind::Parse);
-        assert!(e.message.starts_with("t.ply:15: vertex 2"), "{}", e.message);
-        let e = err(ASCII
-            .replace("property float y", "property flaot y")
-            .as_bytes());
-        assert!(e.message.starts_with("t.ply:6: "), "{}", e.message);
-    }
-
-    #[test]
-    fn missing_or_broken_header() {
-        let e = err(b"");
-        assert!(e.message.contains("empty file"), "{}", e.message);
-        let e = err(b"OFF\n3 1 0\n");
-        assert!(
-            e.message.starts_with("t.ply:1: not a PLY file"),
-            "{}",
-            e.message
-        );
-        let e = err(b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n");
-        assert!(e.message.starts_with("t.ply:5: "), "{}", e.message);
-        let e = err(b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n");
-        assert!(e.message.contains("no property 'z'"), "{}", e.message);
-        let e = err(b"ply\nformat ascii 1.0\nelement point 1\nproperty float x\nend_header\n0\n");
-        assert!(e.message.contains("no 'vertex' element"), "{}", e.message);
-        let text = ASCII.replace("vertex_indices", "corners");
-        let e = err(text.as_bytes());
-        assert!(
-            e.message.contains("no list property 'vertex_indices'"),
-            "{}",
-            e.message
-        );
-        let text = ASCII.replace("uchar int vertex_indices", "uchar float vertex_indices");
-        let e = err(text.as_bytes());
-        assert!(
-            e.message.contains("a list of integers is expected"),
-            "{}",
-            e.message
-        );
-    }
-
-    #[test]
-    fn huge_declared_counts_do_not_allocate() {
-        let text = "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty double x\n\
+        let huge_header = "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty double x\n\
             property double y\nproperty double z\nelement face 18446744073709551615\n\
             property list uchar int vertex_indices\nend_header\n";
-        let mut b = text.as_bytes().to_vec();
-        b.extend([0u8; 30]);
-        let e = err(&b);
-        assert!(
-            e.message.contains("in vertex 1 of 4000000000"),
-            "{}",
-            e.message
-        );
-        // Faces first, so that their (huge) reservation comes before anything fails.
-        let text = "ply\nformat ascii 1.0\nelement face 18446744073709551615\n\
-            property list uchar int vertex_indices\nelement vertex 3\nproperty float x\n\
-            property float y\nproperty float z\nend_header\n3 0 1 2\n";
-        let e = err(text.as_bytes());
-        assert!(
-            e.message.contains("face 1 of 18446744073709551615"),
-            "{}",
-            e.message
-        );
-        let text = "ply\nformat ascii 1.0\nelement vertex 4294967296\nproperty float x\n\
-            property float y\nproperty float z\nend_header\n";
-        assert_eq!(err(text.as_bytes()).kind, ErrorKind::OutOfRange);
-    }
-
-    #[test]
-    fn garbage_after_magic_is_an_error() {
-        let mut b = b"ply\n".to_vec();
-        b.extend((0..200u32).map(|i| (i * 89 % 256) as u8));
-        let e = err(&b);
-        assert!(e.message.starts_with("t.ply:2: "), "{}", e.message);
+        let huge = [huge_header.as_bytes(), &[0u8; 30]].concat();
+        let mut garbage = b"ply\n".to_vec();
+        garbage.extend((0..200u32).map(|i| (i * 89 % 256) as u8));
+        let eof = "unexpected end of file (truncated?) in";
+        let oor = "face 1: vertex index 9 is out of range (the file has 5 vertices)";
+        #[rustfmt::skip]
+        let cases = [
+            (bad_index, OutOfRange, n - 13, oor.to_string()),
+            (b[..n - 3].to_vec(), Parse, n - 13, format!("{eof} face 1 of 2")),
+            (b[..header_end + 20].to_vec(), Parse, header_end + 12, format!("{eof} vertex 1 of 5")),
+            (huge, Parse, huge_header.len() + 24, format!("{eof} vertex 1 of 4000000000")),
+        ];
+        for (input, kind, byte, words) in cases {
+            let e = parse_error(p, input);
+            assert_eq!(
+                (e.kind, e.message),
+                (kind, format!("t.ply: at byte {byte}: {words}"))
+            );
+        }
+        assert_errors(p, [(garbage, Parse, "t.ply:2: ")]);
     }
 }

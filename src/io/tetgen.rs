@@ -10,8 +10,7 @@ use std::path::{Path, PathBuf};
 /// Parses a `.node` file: the points, and the id base (the first point's id, 0 or 1).
 pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64)> {
     let mut lx = Lexer::new(text, name, true);
-    let n = lx.usize("the number of points")?;
-    lx.check_point_count(n)?;
+    let n = lx.point_count("the number of points")?;
     let dim = lx.u64("the dimension")?;
     if dim != 3 {
         return Err(lx.error(format!("dimension {dim} (only 3 is read)")));
@@ -34,11 +33,8 @@ pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64)> {
         } else if id != base + i {
             return Err(lx.error(format!("point id {id}, expected {}", base + i)));
         }
-        let x = lx.f64("a coordinate")?;
-        let y = lx.f64("a coordinate")?;
-        let z = lx.f64("a coordinate")?;
+        positions.push(lx.point()?);
         lx.skip(extra, "a point attribute or marker")?;
-        positions.push(DVec3::new(x, y, z));
     }
     Ok((positions, base))
 }
@@ -59,22 +55,12 @@ pub(crate) fn parse_ele(
     let nattr = lx.usize("the number of attributes")?;
     let extra = (per - 4).saturating_add(nattr);
     let mut tets = Vec::with_capacity(lx.capacity(n, extra.saturating_add(5)));
-    let last = base + num_points as u64;
+    let out_of_range =
+        |id| format!("node id {id} out of range ({num_points} points numbered from {base})");
     for _ in 0..n {
         lx.expect("a tetrahedron id")?;
-        let mut t = [0u32; 4];
-        for v in &mut t {
-            let id = lx.u64("a node id")?;
-            if id < base || id >= last {
-                return Err(lx.error(format!(
-                    "node id {id} out of range ({} points numbered from {base})",
-                    num_points
-                )));
-            }
-            *v = (id - base) as u32;
-        }
+        tets.push(lx.ids("a node id", (base, num_points), out_of_range)?);
         lx.skip(extra, "a node id or attribute")?;
-        tets.push(t);
     }
     Ok(tets)
 }
@@ -191,73 +177,6 @@ mod tests {
             e.message
         );
         assert!(e.message.contains("missing file"), "{}", e.message);
-    }
-
-    #[test]
-    fn out_of_range_ids_name_file_and_line() {
-        // 1-based: node 0 and node 6 do not exist.
-        let e = parse(NODE1, "a.node", "1 4 0\n\n1 0 1 2 3\n", "a.ele").unwrap_err();
-        assert!(
-            e.message.starts_with("a.ele:3: node id 0 out of range"),
-            "{}",
-            e.message
-        );
-        let e = parse(NODE1, "a.node", "2 4 0\n1 1 2 3 4\n2 1 2 3 6\n", "a.ele").unwrap_err();
-        assert!(e.message.starts_with("a.ele:3: node id 6"), "{}", e.message);
-        let e = parse("1 3 0 0\n2 0 0 0\n", "a.node", "0 4 0", "a.ele").unwrap_err();
-        assert!(
-            e.message.starts_with("a.node:2: first point id 2"),
-            "{}",
-            e.message
-        );
-        let e = parse("2 3 0 0\n0 0 0 0\n2 0 0 0\n", "a.node", "0 4 0", "a.ele").unwrap_err();
-        assert!(
-            e.message.starts_with("a.node:3: point id 2, expected 1"),
-            "{}",
-            e.message
-        );
-    }
-
-    #[test]
-    fn truncated_and_bad_headers_name_line() {
-        let e = parse(NODE1, "a.node", "2 4 1\n1 1 2 3 4 0\n2 2 3", "a.ele").unwrap_err();
-        assert!(
-            e.message.starts_with("a.ele:3: unexpected end of file"),
-            "{}",
-            e.message
-        );
-        let e = parse(NODE1, "a.node", "1 8 0\n1 1 2 3 4 5 6 7 8", "a.ele").unwrap_err();
-        assert!(
-            e.message.starts_with("a.ele:1: 8 nodes per"),
-            "{}",
-            e.message
-        );
-        let e = parse("1 2 0 0\n1 0 0\n", "a.node", "", "a.ele").unwrap_err();
-        assert!(
-            e.message.starts_with("a.node:1: dimension 2"),
-            "{}",
-            e.message
-        );
-        let e = parse("#\n\n1 3 0 0\n1 0 x 0\n", "a.node", "", "a.ele").unwrap_err();
-        assert_eq!(e.message, "a.node:4: expected a coordinate, found 'x'");
-        let e = parse("9999999999 3 0 0\n", "a.node", "", "a.ele").unwrap_err();
-        assert!(
-            e.message.starts_with("a.node:1: 9999999999 points"),
-            "{}",
-            e.message
-        );
-        let e = parse(
-            "3000000000 3 18446744073709551615 1\n0 0 0 0 1",
-            "a.node",
-            "",
-            "a.ele",
-        )
-        .unwrap_err();
-        assert!(
-            e.message.starts_with("a.node:2: unexpected end"),
-            "{}",
-            e.message
-        );
     }
 
     #[test]

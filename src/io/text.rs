@@ -1,8 +1,10 @@
 //! Shared by the ASCII readers and writers of tetgen, medit, gmsh and vtk: a zero-copy token
-//! reader that knows its line, and helpers for the writers.
+//! reader that knows its line and reads counts, points and ids; the lines every writer (OFF's
+//! too) writes; and the readers' test helpers (error tables, round trips, robustness).
 
 use super::MeshData;
 use crate::error::{Error, Result};
+use glam::DVec3;
 use std::fmt::Display;
 use std::io::Write;
 use std::path::Path;
@@ -192,18 +194,58 @@ impl<'a> Lexer<'a> {
         count.min(left / tokens.max(1).saturating_mul(2))
     }
 
-    /// Errors unless `count` points can be numbered with `u32` ids.
-    pub(in crate::io) fn check_point_count(&self, count: usize) -> Result<()> {
+    /// A count of points (`what` names it in errors) that `u32` ids can number.
+    pub(in crate::io) fn point_count(&mut self, what: &str) -> Result<usize> {
+        let count = self.usize(what)?;
         if count > u32::MAX as usize {
-            Err(Error::too_large(format!(
+            return Err(Error::too_large(format!(
                 "{}:{}: {count} points is more than the {} that u32 ids can number",
                 self.name,
                 self.tok_line,
                 u32::MAX
-            )))
-        } else {
-            Ok(())
+            )));
         }
+        Ok(count)
+    }
+
+    /// A point: three coordinates `x y z`.
+    #[inline]
+    pub(in crate::io) fn point(&mut self) -> Result<DVec3> {
+        let x = self.f64("a coordinate")?;
+        let y = self.f64("a coordinate")?;
+        let z = self.f64("a coordinate")?;
+        Ok(DVec3::new(x, y, z))
+    }
+
+    /// An id of one of `count` points numbered from `base`, returned numbered from 0;
+    /// `out_of_range` words the error for any other id.
+    #[inline]
+    pub(in crate::io) fn id(
+        &mut self,
+        what: &str,
+        (base, count): (u64, usize),
+        out_of_range: impl Fn(u64) -> String,
+    ) -> Result<u32> {
+        let id = self.u64(what)?;
+        if id < base || id - base >= count as u64 {
+            return Err(self.error(out_of_range(id)));
+        }
+        Ok((id - base) as u32)
+    }
+
+    /// The `K` ids that start an element, read as [`Lexer::id`] reads one.
+    #[inline]
+    pub(in crate::io) fn ids<const K: usize>(
+        &mut self,
+        what: &str,
+        range: (u64, usize),
+        out_of_range: impl Fn(u64) -> String,
+    ) -> Result<[u32; K]> {
+        let mut ids = [0u32; K];
+        for v in &mut ids {
+            *v = self.id(what, range, &out_of_range)?;
+        }
+        Ok(ids)
     }
 }
 
@@ -229,7 +271,7 @@ pub(in crate::io) fn read_text(path: &Path) -> Result<String> {
 }
 
 /// Errors if a triangle or tetrahedron names a point that does not exist.
-pub(in crate::io) fn check_ids(path: &Path, data: &MeshData) -> Result<()> {
+fn check_ids(path: &Path, data: &MeshData) -> Result<()> {
     let n = data.positions.len();
     let bad = |kind: &str, i: usize, id: u32| {
         Error::out_of_range(format!(
@@ -250,11 +292,50 @@ pub(in crate::io) fn check_ids(path: &Path, data: &MeshData) -> Result<()> {
     Ok(())
 }
 
-/// Creates `path` and writes it through a buffer with `body`, naming the file in errors.
-pub(in crate::io) fn write_file(
+/// Writes one line per point, `x y z` and then `suffix`, in the shortest text that reads back
+/// to the same `f64`s.
+pub(in crate::io) fn write_points(
+    w: &mut dyn Write,
+    points: &[DVec3],
+    suffix: &str,
+) -> std::io::Result<()> {
+    for p in points {
+        writeln!(w, "{} {} {}{suffix}", p.x, p.y, p.z)?;
+    }
+    Ok(())
+}
+
+/// Writes one line per element: `prefix`, its ids plus `add` (1 for 1-based formats), then
+/// `suffix`.
+pub(in crate::io) fn write_elements<const K: usize>(
+    w: &mut dyn Write,
+    elements: &[[u32; K]],
+    (prefix, add, suffix): (&str, u32, &str),
+) -> std::io::Result<()> {
+    for e in elements {
+        w.write_all(prefix.as_bytes())?;
+        for (i, id) in e.iter().enumerate() {
+            let sep = if i == 0 { "" } else { " " };
+            write!(w, "{sep}{}", id + add)?;
+        }
+        writeln!(w, "{suffix}")?;
+    }
+    Ok(())
+}
+
+/// Writes `data` to `path` with a format's `write_to`, once every element is checked to name
+/// an existing point.
+pub(in crate::io) fn write_checked(
     path: &Path,
-    body: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    data: &MeshData,
+    write_to: fn(&mut dyn Write, &MeshData) -> std::io::Result<()>,
 ) -> Result<()> {
+    check_ids(path, data)?;
+    write_file(path, |w| write_to(w, data))
+}
+
+/// Creates `path` and writes it through a buffer with `body`, naming the file in errors.
+fn write_file(path: &Path, body: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<()> {
     let io = |e: std::io::Error| Error::io(format!("{}: {e}", path.display()));
     let file = std::fs::File::create(path).map_err(io)?;
     let mut w = std::io::BufWriter::new(file);
@@ -272,6 +353,90 @@ pub(in crate::io) fn temp_path(tag: &str, ext: &str) -> std::path::PathBuf {
         std::process::id(),
         NEXT.fetch_add(1, Ordering::Relaxed)
     ))
+}
+
+/// Writes `bytes` to a temporary `.ext` file and reads it back with [`crate::io::read`].
+#[cfg(test)]
+pub(in crate::io) fn read_temp(ext: &str, bytes: impl AsRef<[u8]>) -> Result<MeshData> {
+    let path = temp_path("read", ext);
+    std::fs::write(&path, bytes).unwrap();
+    let read = crate::io::read(&path);
+    let _ = std::fs::remove_file(&path);
+    read
+}
+
+/// Writes `data` to a temporary `.ext` file and reads it back: the same mesh.
+#[cfg(test)]
+pub(in crate::io) fn assert_round_trip(ext: &str, data: &MeshData) {
+    let path = temp_path("round-trip", ext);
+    let written = crate::io::write(&path, data);
+    let back = crate::io::read(&path);
+    let _ = std::fs::remove_file(&path);
+    written.unwrap();
+    assert_eq!(&back.unwrap(), data);
+}
+
+/// A mesh whose coordinates are hard to print exactly (thirds, sums that round, -0.0, tiny and
+/// huge magnitudes): writers must read back to the same `f64`s.
+#[cfg(test)]
+pub(in crate::io) fn awkward_mesh() -> MeshData {
+    MeshData {
+        positions: vec![
+            DVec3::new(0.1, -2.5e-300, 1.0 / 3.0),
+            DVec3::new(1e20, 0.0, -0.0),
+            DVec3::new(f64::MIN_POSITIVE, 7.0, 0.1 + 0.2),
+            DVec3::new(std::f64::consts::PI, 12345.678901234567, -2.5e-7),
+        ],
+        triangles: vec![[0, 1, 2], [3, 2, 1]],
+        tetrahedra: vec![[0, 1, 2, 3], [3, 2, 1, 0]],
+    }
+}
+
+/// Writing `data` as a `.ext` file fails with a message holding `words`, and leaves no file.
+#[cfg(test)]
+pub(in crate::io) fn assert_write_refused(ext: &str, data: &MeshData, words: &str) {
+    let path = temp_path("refused", ext);
+    let e = crate::io::write(&path, data).unwrap_err();
+    assert!(!path.exists());
+    assert!(e.message.contains(words), "{}", e.message);
+}
+
+/// Test input as text.
+#[cfg(test)]
+pub(in crate::io) fn utf8(bytes: &[u8]) -> &str {
+    std::str::from_utf8(bytes).unwrap()
+}
+
+/// The error `parse` gives for `input`; panics if it parses.
+#[cfg(test)]
+pub(in crate::io) fn parse_error(
+    parse: impl Fn(&[u8]) -> Result<MeshData>,
+    input: impl AsRef<[u8]>,
+) -> Error {
+    let input = input.as_ref();
+    match parse(input) {
+        Ok(m) => panic!(
+            "expected an error for {:?}, got {m:?}",
+            String::from_utf8_lossy(input)
+        ),
+        Err(e) => e,
+    }
+}
+
+/// Parses each input and checks its error: the kind, and the words the message starts with.
+#[cfg(test)]
+pub(in crate::io) fn assert_errors<I: AsRef<[u8]>>(
+    parse: impl Fn(&[u8]) -> Result<MeshData>,
+    cases: impl IntoIterator<Item = (I, crate::error::ErrorKind, &'static str)>,
+) {
+    let mut wrong = String::new();
+    for (input, kind, start) in cases {
+        let e = parse_error(&parse, input);
+        if e.kind != kind || !e.message.starts_with(start) {
+            wrong += &format!("\nexpected a {kind:?} error starting {start:?}, got {e:?}");
+        }
+    }
+    assert!(wrong.is_empty(), "{wrong}");
 }
 
 /// Parses every prefix of `src`, and `src` with each token in turn replaced by hostile

@@ -6,7 +6,6 @@
 use super::MeshData;
 use super::text::{self, Lexer};
 use crate::error::Result;
-use glam::DVec3;
 use std::io::Write;
 use std::path::Path;
 
@@ -30,11 +29,9 @@ impl Cells {
 
 #[inline]
 fn point_id(lx: &mut Lexer, num_points: usize) -> Result<u32> {
-    let id = lx.u64("a point id")?;
-    if id >= num_points as u64 {
-        return Err(lx.error(format!("point id {id} out of range ({num_points} points)")));
-    }
-    Ok(id as u32)
+    lx.id("a point id", (0, num_points), |id| {
+        format!("point id {id} out of range ({num_points} points)")
+    })
 }
 
 /// Reads a cell array after its keyword (`CELLS`, `POLYGONS`, ...), in either form.
@@ -270,16 +267,12 @@ impl Sections {
             return Err(lx.error("a second POINTS section"));
         }
         self.have_points = true;
-        let n = lx.usize("the number of points")?;
-        lx.check_point_count(n)?;
+        let n = lx.point_count("the number of points")?;
         lx.expect("the points' data type")?;
         let positions = &mut self.data.positions;
         positions.reserve(lx.capacity(n, 3));
         for _ in 0..n {
-            let x = lx.f64("a coordinate")?;
-            let y = lx.f64("a coordinate")?;
-            let z = lx.f64("a coordinate")?;
-            positions.push(DVec3::new(x, y, z));
+            positions.push(lx.point()?);
         }
         Ok(())
     }
@@ -344,18 +337,12 @@ pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()
         "# vtk DataFile Version 3.0\ntopomesh\nASCII\nDATASET UNSTRUCTURED_GRID"
     )?;
     writeln!(w, "POINTS {} double", data.positions.len())?;
-    for p in &data.positions {
-        writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
-    }
+    text::write_points(w, &data.positions, "")?;
     let (nt, nk) = (data.triangles.len(), data.tetrahedra.len());
     if nt + nk > 0 {
         writeln!(w, "CELLS {} {}", nt + nk, 4 * nt + 5 * nk)?;
-        for t in &data.triangles {
-            writeln!(w, "3 {} {} {}", t[0], t[1], t[2])?;
-        }
-        for t in &data.tetrahedra {
-            writeln!(w, "4 {} {} {} {}", t[0], t[1], t[2], t[3])?;
-        }
+        text::write_elements(w, &data.triangles, ("3 ", 0, ""))?;
+        text::write_elements(w, &data.tetrahedra, ("4 ", 0, ""))?;
         writeln!(w, "CELL_TYPES {}", nt + nk)?;
         for _ in 0..nt {
             writeln!(w, "5")?;
@@ -367,19 +354,18 @@ pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()
     Ok(())
 }
 
-/// Writes a legacy ASCII `.vtk` file.
-pub fn write(path: &Path, data: &MeshData) -> Result<()> {
-    text::check_ids(path, data)?;
-    text::write_file(path, |w| write_to(w, data))
-}
-
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
+    use crate::error::ErrorKind::Parse;
+    use crate::io::text::{
+        assert_errors, assert_round_trip, assert_write_refused, awkward_mesh, utf8,
+    };
+    use glam::DVec3;
 
     /// A tet, a triangle, a quadratic tet and triangle, and a vertex, a line and a hex to skip;
     /// point coordinates wrap lines anyhow.
-    const LEGACY: &str = "\
+    pub(in crate::io) const LEGACY: &str = "\
 # vtk DataFile Version 2.0
 mixed cells
 
@@ -413,7 +399,7 @@ LOOKUP_TABLE default
 0 1 2 3 4 5 6 7 8 9
 ";
 
-    const V51: &str = "\
+    pub(in crate::io) const V51: &str = "\
 # vtk DataFile Version 5.1
 vtk output
 ASCII
@@ -443,7 +429,7 @@ CELL_TYPES 3
 CELL_DATA 3
 ";
 
-    const POLY: &str = "\
+    pub(in crate::io) const POLY: &str = "\
 # vtk DataFile Version 3.0
 surface
 ASCII
@@ -461,10 +447,6 @@ POLYGONS 3 12
 TRIANGLE_STRIPS 1 5
 4 0 1 3 2
 ";
-
-    fn err(text: &str) -> String {
-        parse(text, "v.vtk").unwrap_err().message
-    }
 
     #[test]
     fn reads_legacy_mixed_cells() {
@@ -499,22 +481,7 @@ TRIANGLE_STRIPS 1 5
 
     #[test]
     fn round_trip() {
-        let data = MeshData {
-            positions: vec![
-                DVec3::new(0.1, -2.5e-7, 1.0 / 3.0),
-                DVec3::new(1e15, 0.0, 12345.678901234567),
-                DVec3::new(std::f64::consts::E, 2.0, 3.0),
-                DVec3::new(-1.0, 7.0, 1e-12),
-            ],
-            triangles: vec![[0, 1, 2], [3, 2, 1]],
-            tetrahedra: vec![[0, 1, 2, 3], [3, 2, 1, 0]],
-        };
-        let path = text::temp_path("vtk-rt", "vtk");
-        write(&path, &data).unwrap();
-        let back = super::super::read(&path);
-        std::fs::remove_file(&path).unwrap();
-        assert_eq!(back.unwrap(), data);
-
+        assert_round_trip("vtk", &awkward_mesh());
         let empty = MeshData::default();
         let mut buf = Vec::new();
         write_to(&mut buf, &empty).unwrap();
@@ -531,92 +498,39 @@ TRIANGLE_STRIPS 1 5
             triangles: vec![],
             tetrahedra: vec![[0, 1, 2, 4]],
         };
-        let path = text::temp_path("vtk-bad", "vtk");
-        let e = write(&path, &data).unwrap_err();
-        assert!(!path.exists());
-        assert!(
-            e.message.contains("tetrahedron 0 names vertex 4"),
-            "{}",
-            e.message
-        );
+        assert_write_refused("vtk", &data, "tetrahedron 0 names vertex 4");
     }
 
     #[test]
-    fn binary_and_foreign_files_are_errors() {
-        let e = err("# vtk DataFile Version 3.0\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\n");
-        assert_eq!(e, "v.vtk:3: binary .vtk not supported (save as ASCII)");
-        let e = err("ply\nformat ascii 1.0\n");
-        assert!(e.starts_with("v.vtk:1: not a legacy VTK file"), "{e}");
-        let e = err("# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\n");
-        assert!(
-            e.starts_with("v.vtk:4: dataset STRUCTURED_POINTS not supported"),
-            "{e}"
+    fn bad_input_names_the_line() {
+        let legacy = |from: &str, to: &str| LEGACY.replace(from, to);
+        let v51 = |from: &str, to: &str| V51.replace(from, to);
+        let head = "# vtk DataFile Version 3.0";
+        #[rustfmt::skip]
+        let cases = [
+            (format!("{head}\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\n"), "v.vtk:3: binary .vtk not supported (save as ASCII)"),
+            ("ply\nformat ascii 1.0\n".into(), "v.vtk:1: not a legacy VTK file"),
+            (format!("{head}\nt\nASCII\nDATASET STRUCTURED_POINTS\n"), "v.vtk:4: dataset STRUCTURED_POINTS not supported"),
+            (head.into(), "v.vtk:1: unexpected end of file"),
+            (format!("{head}\ntitle\n"), "v.vtk:3: unexpected end of file, expected ASCII"),
+            (legacy("6 0 1 2 5 6 7", "6 0 1 2 5 6 10"), "v.vtk:16: point id 10 out of range (10 points)"),
+            (v51("0 1 2\nCELL_TYPES", "0 1 5\nCELL_TYPES"), "v.vtk:21: point id 5 out of range (5 points)"),
+            (legacy("CELLS 7 41", "CELLS 7 42"), "v.vtk:19: the cells hold 41 numbers, 42 declared"),
+            (legacy("CELLS 7 41", "CELLS 7 30"), "v.vtk:18: the cells hold more than the 30"),
+            (legacy("CELL_TYPES 7\n10\n5", "CELL_TYPES 7\n5\n10"), "v.vtk:21: cell 0 of type 5 has 4 points, expected 3"),
+            (legacy("CELL_TYPES 7", "CELL_TYPES 6"), "v.vtk:20: 6 cell types for 7 cells"),
+            (v51("0 4 8 11", "0 8 4 11"), "v.vtk:18: offset 4"),
+            (v51("0 4 8 11", "0 4 8 10"), "v.vtk:18: last offset 10, connectivity size 11"),
+            (v51("CELL_TYPES 3\n10\n10\n5\n", ""), "v.vtk:16: CELLS without CELL_TYPES"),
+            (LEGACY[..LEGACY.find("5 6\n6 6").unwrap()].into(), "v.vtk:10: unexpected end of file"),
+            (legacy("0 0 1\n", "0 0 one\n"), "v.vtk:8: expected a coordinate, found 'one'"),
+            (POLY.replace("VERTICES", "VERTEXES"), "v.vtk:7: unexpected keyword 'VERTEXES'"),
+            (legacy("POINTS 10 float", "POINTS 3000000000 float"), "v.vtk:12: expected a coordinate, found 'CELLS'"),
+            (legacy("CELLS 7 41", "CELLS 18446744073709551615 41"), "v.vtk:20: expected a cell size, found 'CELL_TYPES'"),
+        ];
+        assert_errors(
+            |b| parse(utf8(b), "v.vtk"),
+            cases.map(|(input, start)| (input, Parse, start)),
         );
-        let e = err("# vtk DataFile Version 3.0");
-        assert!(e.starts_with("v.vtk:1: unexpected end of file"), "{e}");
-        let e = err("# vtk DataFile Version 3.0\ntitle\n");
-        assert!(
-            e.starts_with("v.vtk:3: unexpected end of file, expected ASCII"),
-            "{e}"
-        );
-    }
-
-    #[test]
-    fn out_of_range_ids_name_line() {
-        let e = err(&LEGACY.replace("6 0 1 2 5 6 7", "6 0 1 2 5 6 10"));
-        assert_eq!(e, "v.vtk:16: point id 10 out of range (10 points)");
-        let e = err(&V51.replace("0 1 2\nCELL_TYPES", "0 1 5\nCELL_TYPES"));
-        assert_eq!(e, "v.vtk:21: point id 5 out of range (5 points)");
-    }
-
-    #[test]
-    fn inconsistent_cells_name_line() {
-        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 7 42"));
-        assert!(
-            e.starts_with("v.vtk:19: the cells hold 41 numbers, 42 declared"),
-            "{e}"
-        );
-        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 7 30"));
-        assert!(
-            e.starts_with("v.vtk:18: the cells hold more than the 30"),
-            "{e}"
-        );
-        let e = err(&LEGACY.replace("CELL_TYPES 7\n10\n5", "CELL_TYPES 7\n5\n10"));
-        assert_eq!(e, "v.vtk:21: cell 0 of type 5 has 4 points, expected 3");
-        let e = err(&LEGACY.replace("CELL_TYPES 7", "CELL_TYPES 6"));
-        assert!(e.starts_with("v.vtk:20: 6 cell types for 7 cells"), "{e}");
-        let e = err(&V51.replace("0 4 8 11", "0 8 4 11"));
-        assert!(e.starts_with("v.vtk:18: offset 4"), "{e}");
-        let e = err(&V51.replace("0 4 8 11", "0 4 8 10"));
-        assert!(
-            e.starts_with("v.vtk:18: last offset 10, connectivity size 11"),
-            "{e}"
-        );
-        let e = err(&V51.replace("CELL_TYPES 3\n10\n10\n5\n", ""));
-        assert!(e.starts_with("v.vtk:16: CELLS without CELL_TYPES"), "{e}");
-    }
-
-    #[test]
-    fn truncated_and_bad_tokens_name_line() {
-        let e = err(&LEGACY[..LEGACY.find("5 6\n6 6").unwrap()]);
-        assert!(e.starts_with("v.vtk:10: unexpected end of file"), "{e}");
-        let e = err(&LEGACY.replace("0 0 1\n", "0 0 one\n"));
-        assert_eq!(e, "v.vtk:8: expected a coordinate, found 'one'");
-        let e = err(&POLY.replace("VERTICES", "VERTEXES"));
-        assert_eq!(e, "v.vtk:7: unexpected keyword 'VERTEXES'");
-        let e = err(&LEGACY.replace("POINTS 10 float", "POINTS 3000000000 float"));
-        assert!(
-            e.starts_with("v.vtk:12: expected a coordinate, found 'CELLS'"),
-            "{e}"
-        );
-        let e = err(&LEGACY.replace("CELLS 7 41", "CELLS 18446744073709551615 41"));
-        assert_eq!(e, "v.vtk:20: expected a cell size, found 'CELL_TYPES'");
-    }
-
-    #[test]
-    fn prefixes_and_mutations_never_panic() {
-        for src in [LEGACY, V51, POLY] {
-            text::assert_robust(src, "v.vtk:", |t| parse(t, "v.vtk"));
-        }
     }
 }

@@ -232,7 +232,7 @@ public:
     Csr vertex_triangles_csr() const;
     Csr triangle_triangles_csr() const;
 
-    // Summary, build report, memory.
+    // Summary, build report, memory, validation.
     Summary summary() const;
     /// The C struct of summary().
     che_summary raw_summary() const;
@@ -242,6 +242,9 @@ public:
     /// Ids of the elements a report count counts.
     std::vector<std::uint32_t> report_examples(che_report_kind kind) const;
     che_memory memory() const;
+    /// Checks every invariant of the structure at its level; throws Error naming the first
+    /// violation (element and rule). For tests and for data from untrusted code.
+    void validate() const;
 
     // Old names, kept for one release.
     [[deprecated("use vertex_vertices")]] Ids<VertexId> vertices_around(VertexId v) const {
@@ -383,7 +386,7 @@ public:
     Csr edge_tetrahedra_csr() const;
     Csr tetrahedron_tetrahedra_csr() const;
 
-    // Summary, build report, memory.
+    // Summary, build report, memory, validation.
     Summary summary() const;
     /// The C struct of summary().
     chf_summary raw_summary() const;
@@ -393,6 +396,9 @@ public:
     /// Ids of the elements a report count counts.
     std::vector<std::uint32_t> report_examples(chf_report_kind kind) const;
     chf_memory memory() const;
+    /// Checks every invariant of the structure at its level; throws Error naming the first
+    /// violation (element and rule). For tests and for data from untrusted code.
+    void validate() const;
 
 private:
     chf_mesh *m_ = nullptr;

@@ -37,6 +37,19 @@ static unsigned long check_count = 0;
         CHECK(thrown_);                                                                    \
     } while (0)
 
+// Expects `expr` to return without throwing topomesh::Error (a throw names its detail).
+#define CHECK_NOTHROW(expr)                                                                \
+    do {                                                                                   \
+        check_count++;                                                                     \
+        try {                                                                              \
+            (void)(expr);                                                                  \
+        } catch (const topomesh::Error &e) {                                               \
+            std::fprintf(stderr, "%s:%d: %s threw: %s\n", __FILE__, __LINE__, #expr,      \
+                         e.what());                                                        \
+            failures++;                                                                    \
+        }                                                                                  \
+    } while (0)
+
 // The ids of a range as raw integers.
 template <class T> static std::vector<std::uint32_t> raw(const T &range) {
     std::vector<std::uint32_t> out;

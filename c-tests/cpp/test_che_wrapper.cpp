@@ -362,6 +362,7 @@ static void test_views_csr_summary() {
     Csr ff = s.triangle_triangles_csr();
     CHECK((ff.indices == std::vector<std::uint32_t>{none, 1, none, none, none, 0}));
 
+    CHECK_NOTHROW(s.validate());
     Surface::Summary sum2 = s.summary();
     static_assert(std::is_same<decltype(sum2.vertices), std::size_t>::value, "C++ counts");
     CHECK(sum2.vertices == 4 && sum2.edges == 5 && sum2.euler_characteristic == 1);

@@ -192,6 +192,8 @@ static void test_views_csr_boundary_summary() {
     CHECK(skin.level() == 3 && skin.num_triangles() == 12 && skin.num_boundary_curves() == 0);
     CHECK(s.vertices == 8 && s.edges == 18 && s.euler_characteristic == 2 && s.genus == 0);
 
+    CHECK_NOTHROW(skin.validate());
+    CHECK_NOTHROW(v.validate());
     Volume::Summary sum = v.summary();
     CHECK(v.raw_summary().faces == sum.faces && v.raw_summary().boundary_faces == 6);
     CHECK(sum.vertices == 5 && sum.edges == 9 && sum.faces == 7 && sum.tetrahedra == 2);

@@ -257,6 +257,8 @@ inline Csr Surface::triangle_triangles_csr() const {
 
 // Summary, build report, memory.
 
+inline void Surface::validate() const { detail::check(che_mesh_validate(m_)); }
+
 inline che_summary Surface::raw_summary() const {
     che_summary s{};
     detail::check(che_mesh_summary(m_, &s));

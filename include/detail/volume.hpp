@@ -203,6 +203,8 @@ TOPOMESH_VOLUME_CSR(tetrahedron_tetrahedra)
 
 // Summary, build report, memory.
 
+inline void Volume::validate() const { detail::check(chf_mesh_validate(m_)); }
+
 inline chf_summary Volume::raw_summary() const {
     chf_summary s{};
     detail::check(chf_mesh_summary(m_, &s));

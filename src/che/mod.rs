@@ -23,6 +23,7 @@ pub(crate) use tables::edge_directory;
 
 use crate::NONE;
 use crate::error::{Error, Result};
+use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
@@ -58,9 +59,9 @@ pub struct Che {
     num_edges: usize,
     positions: Vec<DVec3>,
     /// Structure vertex -> input vertex; empty when the identity.
-    vertex_origin: Vec<u32>,
+    vertex_origin: OriginMap,
     /// Structure triangle -> input triangle; empty when the identity.
-    triangle_origin: Vec<u32>,
+    triangle_origin: OriginMap,
     /// Sorted half-edges of non-manifold edges (3+ triangles), kept unpaired.
     non_manifold: Vec<u32>,
     /// Sorted half-edges on the seams of non-orientable components, kept unpaired.
@@ -170,27 +171,19 @@ impl Che {
 
     /// The input vertex a structure vertex comes from.
     pub fn vertex_origin(&self, v: u32) -> u32 {
-        if self.vertex_origin.is_empty() {
-            v
-        } else {
-            self.vertex_origin[v as usize]
-        }
+        self.vertex_origin.get(v)
     }
     /// The input triangle a structure triangle comes from.
     pub fn triangle_origin(&self, t: u32) -> u32 {
-        if self.triangle_origin.is_empty() {
-            t
-        } else {
-            self.triangle_origin[t as usize]
-        }
+        self.triangle_origin.get(t)
     }
     /// The vertex origin map, or `None` when it is the identity.
     pub fn vertex_origins(&self) -> Option<&[u32]> {
-        (!self.vertex_origin.is_empty()).then_some(&self.vertex_origin[..])
+        self.vertex_origin.explicit()
     }
     /// The triangle origin map, or `None` when it is the identity.
     pub fn triangle_origins(&self) -> Option<&[u32]> {
-        (!self.triangle_origin.is_empty()).then_some(&self.triangle_origin[..])
+        self.triangle_origin.explicit()
     }
 
     pub fn report(&self) -> &BuildReport {

@@ -66,6 +66,7 @@ pub type ChfMemory = Memory;
 pub type ChfSummary = Summary;
 
 use crate::error::{Error, Result};
+use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
 use build::level2;
 use build::level3;
@@ -102,9 +103,9 @@ pub struct Chf {
     num_faces: usize,
     positions: Vec<DVec3>,
     /// Structure vertex -> input vertex; empty when the identity.
-    vertex_origin: Vec<u32>,
+    vertex_origin: OriginMap,
     /// Structure tetrahedron -> input tetrahedron; empty when the identity.
-    tet_origin: Vec<u32>,
+    tet_origin: OriginMap,
     /// Sorted half-faces of non-manifold faces (3+ tetrahedra), unpaired at every level.
     non_manifold: Vec<u32>,
     /// Sorted half-faces on orientation seams, unpaired at every level.
@@ -132,8 +133,8 @@ impl Chf {
             num_edges: 0,
             num_faces: 0,
             positions: Vec::new(),
-            vertex_origin: Vec::new(),
-            tet_origin: Vec::new(),
+            vertex_origin: OriginMap::default(),
+            tet_origin: OriginMap::default(),
             non_manifold: Vec::new(),
             seams: Vec::new(),
             multi_fan: Vec::new(),
@@ -278,27 +279,19 @@ impl Chf {
 
     /// The input vertex a structure vertex comes from.
     pub fn vertex_origin(&self, v: u32) -> u32 {
-        if self.vertex_origin.is_empty() {
-            v
-        } else {
-            self.vertex_origin[v as usize]
-        }
+        self.vertex_origin.get(v)
     }
     /// The input tetrahedron a structure tetrahedron comes from.
     pub fn tetrahedron_origin(&self, t: u32) -> u32 {
-        if self.tet_origin.is_empty() {
-            t
-        } else {
-            self.tet_origin[t as usize]
-        }
+        self.tet_origin.get(t)
     }
     /// The vertex origin map, or `None` when it is the identity.
     pub fn vertex_origins(&self) -> Option<&[u32]> {
-        (!self.vertex_origin.is_empty()).then_some(&self.vertex_origin[..])
+        self.vertex_origin.explicit()
     }
     /// The tetrahedron origin map, or `None` when it is the identity.
     pub fn tetrahedron_origins(&self) -> Option<&[u32]> {
-        (!self.tet_origin.is_empty()).then_some(&self.tet_origin[..])
+        self.tet_origin.explicit()
     }
 
     pub fn report(&self) -> &BuildReport {

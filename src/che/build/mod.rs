@@ -18,6 +18,7 @@ pub use report::BuildReport;
 use super::Che;
 use crate::NONE;
 use crate::error::{Error, Result};
+use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
@@ -37,13 +38,8 @@ pub(crate) fn build(
     };
     let threads = crate::util::par::build_threads(options.threads, triangles.len());
     let (mut v, triangle_origin) = soup::soup(triangles, n_vertices, &mut report, threads)?;
-    let origin_of = |t: u32| {
-        if triangle_origin.is_empty() {
-            t
-        } else {
-            triangle_origin[t as usize]
-        }
-    };
+    let triangle_origin = OriginMap::from(triangle_origin);
+    let origin_of = |t: u32| triangle_origin.get(t);
     let mut matching = matching::match_pairs(&v, n_vertices, threads, &mut report);
     if options.strict {
         matching::reject_non_manifold_edges(&report, &v, &matching.non_manifold, origin_of)?;
@@ -173,7 +169,7 @@ struct Canonical {
     o: Vec<u32>,
     seams: Vec<u32>,
     non_manifold: Vec<u32>,
-    triangle_origin: Vec<u32>,
+    triangle_origin: OriginMap,
 }
 
 /// The structure at level 1, with the vertex copies of the split appended.
@@ -184,13 +180,7 @@ fn assemble(
     positions: &[DVec3],
     report: BuildReport,
 ) -> Che {
-    let vertex_origin: Vec<u32> = if copies.is_empty() {
-        Vec::new()
-    } else {
-        (0..n_vertices as u32)
-            .chain(copies.iter().copied())
-            .collect()
-    };
+    let vertex_origin = OriginMap::with_copies(n_vertices, copies);
     let mut positions = positions.to_vec();
     if !positions.is_empty() {
         for &x in copies {

@@ -22,6 +22,7 @@ use crate::chf::ids::tet;
 use crate::chf::star_pass::link::FaceCensus;
 use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
 use crate::error::{Error, Result};
+use crate::util::origin::OriginMap;
 use glam::DVec3;
 
 /// How to build: the level (0..=3) and whether non-manifold input is an error.
@@ -80,7 +81,7 @@ pub(crate) fn build(
         pairs,
         pass,
     } = oriented(tets, n_vertices, positions, options, &mut report)?;
-    let origin_of = |t: u32| origin(&tet_origin, t);
+    let origin_of = |t: u32| tet_origin.get(t);
     non_manifold.sort_unstable();
     // 4. Vertex split, when some star is in several pieces.
     let copies = if stars.split_needed {
@@ -90,7 +91,7 @@ pub(crate) fn build(
     };
     drop(links);
     let n_total = n_vertices + copies.len();
-    let vertex_origin = vertex_origins(n_vertices, &copies);
+    let vertex_origin = OriginMap::with_copies(n_vertices, &copies);
     // 5. Edges: the census by input vertex pair (after a split, one more star pass).
     let census = if copies.is_empty() {
         std::mem::take(&mut stars.census)
@@ -138,7 +139,7 @@ struct Oriented {
     non_manifold: Vec<u32>,
     /// The last star pass, on this `V`.
     stars: Stars,
-    tet_origin: Vec<u32>,
+    tet_origin: OriginMap,
     /// Triples of two half-faces.
     pairs: usize,
     /// The build's star pass, pairs aside.
@@ -156,8 +157,8 @@ fn oriented(
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // 1. Soup: range check, degenerate tetrahedra dropped, flips by the determinant.
     let mut soup = soup::soup(tets, n_vertices, positions, report, n_threads)?;
-    let tet_origin = std::mem::take(&mut soup.tet_origin);
-    let origin_of = |t: u32| origin(&tet_origin, t);
+    let tet_origin = OriginMap::from(std::mem::take(&mut soup.tet_origin));
+    let origin_of = |t: u32| tet_origin.get(t);
     // 2. The star pass: faces and their pairs, pieces, edges, `VH` and the edge bits.
     let pass = StarPass {
         pairs: Pairs::No,
@@ -192,15 +193,6 @@ fn oriented(
         pairs,
         pass,
     })
-}
-
-/// Structure tetrahedron `t`'s input tetrahedron (`tet_origin` empty for the identity).
-fn origin(tet_origin: &[u32], t: u32) -> u32 {
-    if tet_origin.is_empty() {
-        t
-    } else {
-        tet_origin[t as usize]
-    }
 }
 
 /// The build's first star pass, on the soup's `V`: the face census and the partners
@@ -315,17 +307,6 @@ fn split_vertices(
         )));
     }
     Ok(split.copies)
-}
-
-/// Structure vertex -> input vertex; empty when the identity (no copies).
-fn vertex_origins(n_vertices: usize, copies: &[u32]) -> Vec<u32> {
-    if copies.is_empty() {
-        Vec::new()
-    } else {
-        (0..n_vertices as u32)
-            .chain(copies.iter().copied())
-            .collect()
-    }
 }
 
 /// The positions, each copy repeating its origin's.

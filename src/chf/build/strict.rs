@@ -4,6 +4,7 @@
 use crate::chf::build::report::BuildReport;
 use crate::chf::ids::{first, sorted_triple, tet};
 use crate::error::{Error, Result};
+use crate::util::origin::origin;
 
 pub(crate) fn strict_faces(
     report: &BuildReport,
@@ -41,13 +42,7 @@ pub(crate) fn strict_after_split(
     vertex_origin: &[u32],
     origin_of: &impl Fn(u32) -> u32,
 ) -> Result<()> {
-    let input = |x: u32| {
-        if vertex_origin.is_empty() {
-            x
-        } else {
-            vertex_origin[x as usize]
-        }
-    };
+    let input = |x: u32| origin(vertex_origin, x);
     if let Some(&[a, b]) = report.non_manifold_edge_examples.first() {
         let tets: Vec<String> = (0..(v.len() / 4) as u32)
             .filter(|&t| {

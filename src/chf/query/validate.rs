@@ -480,10 +480,12 @@ mod tests {
         c.v[5] = c.v[4];
         fails(&c, "degenerate");
         let mut c = chf.clone();
-        c.vertex_origin[0] = 3;
+        let mut map = c.vertex_origin.to_vec();
+        map[0] = 3;
+        c.vertex_origin = map.into();
         fails(&c, "vertex 0 has origin 3");
         let mut c = chf.clone();
-        c.tet_origin = vec![1, 0];
+        c.tet_origin = vec![1, 0].into();
         fails(&c, "tetrahedron origins");
         let mut c = chf.clone();
         c.seams = vec![4, 2];

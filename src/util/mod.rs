@@ -4,6 +4,7 @@
 
 pub(crate) mod dsu;
 pub(crate) mod holes;
+pub(crate) mod options;
 pub(crate) mod origin;
 pub(crate) mod pages;
 pub(crate) mod par;

@@ -18,6 +18,7 @@ pub use report::BuildReport;
 use super::Che;
 use crate::NONE;
 use crate::error::{Error, Result};
+use crate::util::options::{InputSizes, check_input};
 use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
@@ -66,27 +67,17 @@ pub(crate) fn build(
 
 /// Ids must fit below `NONE`; positions are none or one per vertex.
 fn check_sizes(n_triangles: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
-    if level > 3 {
-        return Err(Error::out_of_range(format!(
-            "level {level} is not in 0..=3"
-        )));
-    }
-    if n_vertices >= NONE as usize {
-        return Err(Error::too_large(format!(
-            "{n_vertices} vertices: ids must fit below 2^32 - 1"
-        )));
-    }
-    if n_triangles > MAX_TRIANGLES {
-        return Err(Error::too_large(format!(
+    let too_many = (n_triangles > MAX_TRIANGLES).then(|| {
+        format!(
             "{n_triangles} triangles: half-edge ids must fit below 2^32 - 1 (at most {MAX_TRIANGLES} triangles)"
-        )));
-    }
-    if n_positions != 0 && n_positions != n_vertices {
-        return Err(Error::invalid(format!(
-            "{n_positions} positions given for {n_vertices} vertices"
-        )));
-    }
-    Ok(())
+        )
+    });
+    let sizes = InputSizes {
+        level,
+        n_vertices,
+        n_positions,
+    };
+    check_input(sizes, too_many)
 }
 
 /// Step 3: orients only when some pair runs the same way (otherwise the partners are the

@@ -22,39 +22,11 @@ use crate::chf::ids::tet;
 use crate::chf::star_pass::link::FaceCensus;
 use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
 use crate::error::{Error, Result};
+use crate::util::options::{InputSizes, check_input};
 use crate::util::origin::OriginMap;
 use glam::DVec3;
 
-/// How to build: the level (0..=3) and whether non-manifold input is an error.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct BuildOptions {
-    pub level: u8,
-    /// Reject non-manifold faces, edges and vertices and duplicate tetrahedra instead of
-    /// keeping them.
-    pub strict: bool,
-    /// Threads for the build: 0 (the default) for as many as the machine runs at once, 1
-    /// for the calling thread alone. The structure is the same whatever the number.
-    pub threads: usize,
-}
-
-impl Default for BuildOptions {
-    fn default() -> Self {
-        BuildOptions {
-            level: 2,
-            strict: false,
-            threads: 0,
-        }
-    }
-}
-
-impl BuildOptions {
-    pub fn level(level: u8) -> Self {
-        BuildOptions {
-            level,
-            ..Self::default()
-        }
-    }
-}
+pub use crate::util::options::BuildOptions;
 
 /// Largest tetrahedron count whose half-face ids (`4T`) fit below `NONE`.
 pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
@@ -382,27 +354,17 @@ fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<
 
 /// Level, counts and lengths, before anything is allocated.
 fn check_sizes(n_tets: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
-    if level > 3 {
-        return Err(Error::out_of_range(format!(
-            "level {level} is not in 0..=3"
-        )));
-    }
-    if n_vertices >= NONE as usize {
-        return Err(Error::too_large(format!(
-            "{n_vertices} vertices: ids must fit below 2^32 - 1"
-        )));
-    }
-    if n_tets > MAX_TETRAHEDRA {
-        return Err(Error::too_large(format!(
+    let too_many = (n_tets > MAX_TETRAHEDRA).then(|| {
+        format!(
             "tetrahedron {MAX_TETRAHEDRA} (of {n_tets}): half-face ids must fit below 2^32 - 1, so at most {MAX_TETRAHEDRA} tetrahedra"
-        )));
-    }
-    if n_positions != 0 && n_positions != n_vertices {
-        return Err(Error::invalid(format!(
-            "{n_positions} positions given for {n_vertices} vertices"
-        )));
-    }
-    Ok(())
+        )
+    });
+    let sizes = InputSizes {
+        level,
+        n_vertices,
+        n_positions,
+    };
+    check_input(sizes, too_many)
 }
 
 fn record_edges(report: &mut BuildReport, census: &EdgeCensus) {

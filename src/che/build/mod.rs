@@ -18,7 +18,7 @@ pub use report::BuildReport;
 use super::Che;
 use crate::NONE;
 use crate::error::{Error, Result};
-use crate::util::options::{InputSizes, check_input};
+use crate::util::options::check_input;
 use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
@@ -31,7 +31,8 @@ pub(crate) fn build(
     positions: &[DVec3],
     options: BuildOptions,
 ) -> Result<Che> {
-    check_sizes(triangles.len(), n_vertices, positions.len(), options.level)?;
+    let too_many = too_many_triangles(triangles.len());
+    check_input(&options, n_vertices, positions.len(), too_many)?;
     let mut report = BuildReport {
         input_triangles: triangles.len(),
         input_vertices: n_vertices,
@@ -65,19 +66,13 @@ pub(crate) fn build(
     Ok(che)
 }
 
-/// Ids must fit below `NONE`; positions are none or one per vertex.
-fn check_sizes(n_triangles: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
-    let too_many = (n_triangles > MAX_TRIANGLES).then(|| {
+/// The build's own message when `n_triangles` elements do not fit below `NONE`.
+fn too_many_triangles(n_triangles: usize) -> Option<String> {
+    (n_triangles > MAX_TRIANGLES).then(|| {
         format!(
             "{n_triangles} triangles: half-edge ids must fit below 2^32 - 1 (at most {MAX_TRIANGLES} triangles)"
         )
-    });
-    let sizes = InputSizes {
-        level,
-        n_vertices,
-        n_positions,
-    };
-    check_input(sizes, too_many)
+    })
 }
 
 /// Step 3: orients only when some pair runs the same way (otherwise the partners are the

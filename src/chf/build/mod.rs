@@ -22,7 +22,7 @@ use crate::chf::ids::tet;
 use crate::chf::star_pass::link::FaceCensus;
 use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
 use crate::error::{Error, Result};
-use crate::util::options::{InputSizes, check_input};
+use crate::util::options::check_input;
 use crate::util::origin::OriginMap;
 use glam::DVec3;
 
@@ -38,7 +38,12 @@ pub(crate) fn build(
     positions: &[DVec3],
     options: BuildOptions,
 ) -> Result<Chf> {
-    check_sizes(tets.len(), n_vertices, positions.len(), options.level)?;
+    check_input(
+        &options,
+        n_vertices,
+        positions.len(),
+        too_many_tetrahedra(tets.len()),
+    )?;
     let mut report = BuildReport::of_input(tets.len(), n_vertices);
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
@@ -352,19 +357,13 @@ fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<
     Ok(chf)
 }
 
-/// Level, counts and lengths, before anything is allocated.
-fn check_sizes(n_tets: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
-    let too_many = (n_tets > MAX_TETRAHEDRA).then(|| {
+/// The build's own message when `n_tets` elements do not fit below `NONE`.
+fn too_many_tetrahedra(n_tets: usize) -> Option<String> {
+    (n_tets > MAX_TETRAHEDRA).then(|| {
         format!(
             "tetrahedron {MAX_TETRAHEDRA} (of {n_tets}): half-face ids must fit below 2^32 - 1, so at most {MAX_TETRAHEDRA} tetrahedra"
         )
-    });
-    let sizes = InputSizes {
-        level,
-        n_vertices,
-        n_positions,
-    };
-    check_input(sizes, too_many)
+    })
 }
 
 fn record_edges(report: &mut BuildReport, census: &EdgeCensus) {
@@ -382,21 +381,24 @@ mod tests {
 
     #[test]
     fn sizes_are_checked_before_allocating() {
-        assert!(check_sizes(MAX_TETRAHEDRA, 10, 0, 3).is_ok());
-        let e = check_sizes(MAX_TETRAHEDRA + 1, 10, 0, 2).unwrap_err();
+        let check = |n_tets, n_vertices, n_positions, level| {
+            let options = BuildOptions::level(level);
+            check_input(
+                &options,
+                n_vertices,
+                n_positions,
+                too_many_tetrahedra(n_tets),
+            )
+        };
+        assert!(check(MAX_TETRAHEDRA, 10, 0, 3).is_ok());
+        let e = check(MAX_TETRAHEDRA + 1, 10, 0, 2).unwrap_err();
         assert_eq!(e.kind, ErrorKind::TooLarge);
         assert!(e.message.contains(&format!("tetrahedron {MAX_TETRAHEDRA}")));
         assert!(4 * MAX_TETRAHEDRA < NONE as usize);
         assert!(4 * (MAX_TETRAHEDRA + 1) > NONE as usize);
-        let e = check_sizes(1, NONE as usize, 0, 2).unwrap_err();
+        let e = check(1, NONE as usize, 0, 2).unwrap_err();
         assert_eq!(e.kind, ErrorKind::TooLarge);
-        assert_eq!(
-            check_sizes(1, 4, 3, 2).unwrap_err().kind,
-            ErrorKind::InvalidInput
-        );
-        assert_eq!(
-            check_sizes(1, 4, 0, 4).unwrap_err().kind,
-            ErrorKind::OutOfRange
-        );
+        assert_eq!(check(1, 4, 3, 2).unwrap_err().kind, ErrorKind::InvalidInput);
+        assert_eq!(check(1, 4, 0, 4).unwrap_err().kind, ErrorKind::OutOfRange);
     }
 }

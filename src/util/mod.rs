@@ -2,6 +2,7 @@
 //! small id lists, closing the holes of dropped elements, and the build reports' example
 //! lists.
 
+pub(crate) mod csr;
 pub(crate) mod dsu;
 pub(crate) mod holes;
 pub(crate) mod options;

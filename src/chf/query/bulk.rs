@@ -15,25 +15,8 @@ use crate::chf::ids::{EDGE, face_cycle};
 use crate::chf::query::fan::EdgeIds;
 use crate::chf::query::view::{Need, View};
 
-/// Rows `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Csr {
-    pub offsets: Vec<u32>,
-    pub indices: Vec<u32>,
-}
-
-impl Csr {
-    /// The number of rows.
-    pub fn len(&self) -> usize {
-        self.offsets.len().saturating_sub(1)
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-    pub fn row(&self, i: usize) -> &[u32] {
-        &self.indices[self.offsets[i] as usize..self.offsets[i + 1] as usize]
-    }
-}
+/// Row `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
+pub type Csr = crate::util::csr::Csr<u32>;
 
 /// Rows over `n` vertices from `(vertex, id)` pairs given twice by `each` (once to count,
 /// once to place), ids in increasing order per pass, so that every row is sorted.

@@ -35,6 +35,26 @@ pub(crate) fn test_rng(seed: u64) -> impl FnMut(usize) -> u32 {
     }
 }
 
+/// Unit tests' random soups, `rounds` of them from `seed`: in round `r`,
+/// `vertices.0 + r % vertices.1` vertices and `elements.0 + r % elements.1` elements of `K`
+/// ids each, repeats and all.
+#[cfg(test)]
+pub(crate) fn test_soups<const K: usize>(
+    seed: u64,
+    rounds: usize,
+    vertices: (usize, usize),
+    elements: (usize, usize),
+) -> impl Iterator<Item = (usize, Vec<[u32; K]>)> {
+    let mut rnd = test_rng(seed);
+    (0..rounds).map(move |r| {
+        let n = vertices.0 + r % vertices.1;
+        let soup = (0..elements.0 + r % elements.1)
+            .map(|_| [0; K].map(|_| rnd(n)))
+            .collect();
+        (n, soup)
+    })
+}
+
 /// [`push_example`] for each of `items`, in order: the examples a build thread found after
 /// those already in `list`.
 pub(crate) fn extend_examples<T>(list: &mut Vec<T>, items: impl IntoIterator<Item = T>) {

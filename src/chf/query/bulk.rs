@@ -173,12 +173,10 @@ mod tests {
 
     #[test]
     fn bulk_rows_are_the_one_element_answers_at_every_level() {
-        let mut rnd = crate::util::test_rng(0x2545_F491_4F6C_DD1Du64);
-        for round in 0..60 {
-            let n = 6 + round % 15;
-            let tets: Vec<[u32; 4]> = (0..8 + round % 40)
-                .map(|_| [0; 4].map(|_| rnd(n)))
-                .collect();
+        let seed = 0x2545_F491_4F6C_DD1Du64;
+        for (round, (n, tets)) in
+            crate::util::test_soups::<4>(seed, 60, (6, 15), (8, 40)).enumerate()
+        {
             for level in 0..=3 {
                 let chf = Chf::from_tetrahedra(&tets, n, &[], BuildOptions::level(level)).unwrap();
                 let nv = chf.num_vertices();

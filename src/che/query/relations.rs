@@ -186,13 +186,7 @@ impl Che {
     /// EF: the one or two triangles of edge `e`, the canonical half-edge's first.
     pub fn edge_triangles(&self, e: u32) -> Ids<2> {
         let h = self.edge_half_edge(e);
-        let mut out = Ids::new();
-        out.push(tri(h));
-        let o = self.opposite(h);
-        if o != NONE {
-            out.push(tri(o));
-        }
-        out
+        Ids::both_sides(h, self.opposite(h), tri)
     }
 
     /// EE: the wings of edge `e`, the other edges of its triangles: next and previous in the

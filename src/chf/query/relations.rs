@@ -154,13 +154,7 @@ impl Chf {
     pub fn face_tetrahedra(&self, f: u32) -> Ids<2> {
         let view = self.view(Need::FACES);
         let hf = view.face_half_face(f);
-        let mut out = Ids::new();
-        out.push(tet(hf));
-        let o = view.opposite(hf);
-        if o != NONE {
-            out.push(tet(o));
-        }
-        out
+        Ids::both_sides(hf, view.opposite(hf), tet)
     }
 
     /// TV: the four vertices of tetrahedron `t`.

@@ -15,10 +15,9 @@ impl Chf {
     #[inline]
     pub fn opposite(&self, hf: u32) -> u32 {
         if self.level >= 1 {
-            self.o[hf as usize]
-        } else {
-            self.opposite_by_scan(hf)
+            return self.o[hf as usize];
         }
+        self.opposite_by_scan(hf)
     }
 
     /// Is half-face `hf` on the boundary? O(1) from level 1.

@@ -183,11 +183,7 @@ impl Chf {
     /// Raises (or lowers) the level in place, on every thread of the machine. Ids do not
     /// change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
-        if level > 3 {
-            return Err(Error::out_of_range(format!(
-                "level {level} is not in 0..=3"
-            )));
-        }
+        crate::util::options::check_level(level)?;
         if level < self.level {
             if level < 3 {
                 self.boundary = None;

@@ -220,11 +220,7 @@ fn finish_level(che: &mut Che, level: u8, vh: Vec<u32>) {
 
 /// Raises or lowers the level of a built structure in place (ids do not change).
 pub(crate) fn change_level(che: &mut Che, level: u8) -> Result<()> {
-    if level > 3 {
-        return Err(Error::out_of_range(format!(
-            "level {level} is not in 0..=3"
-        )));
-    }
+    crate::util::options::check_level(level)?;
     che.lazy_edge_bits = Default::default();
     if level < che.level {
         if level < 3 {

@@ -68,6 +68,7 @@ pub type ChfSummary = Summary;
 use crate::error::{Error, Result};
 use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
+use crate::util::structure::check_id;
 use build::level2;
 use build::level3;
 use edges::MultiFan;
@@ -171,14 +172,12 @@ impl Chf {
         Self::from_tetrahedra(quads, n_vertices, positions, options)
     }
 
-    pub fn level(&self) -> u8 {
-        self.level
-    }
-
     /// The threads `build_level` takes: the build's default for this mesh.
     fn build_threads(&self) -> usize {
         crate::util::par::build_threads(0, self.num_tetrahedra())
     }
+
+    crate::util::structure::structure_accessors!(BuildReport);
 
     /// Raises (or lowers) the level in place, on every thread of the machine. Ids do not
     /// change.
@@ -228,21 +227,11 @@ impl Chf {
         Ok(())
     }
 
-    /// Vertices of the structure: the input vertices, then copies made by splitting.
-    pub fn num_vertices(&self) -> usize {
-        self.n_vertices
-    }
-    pub fn num_input_vertices(&self) -> usize {
-        self.n_input_vertices
-    }
     pub fn num_tetrahedra(&self) -> usize {
         self.v.len() / 4
     }
     pub fn num_half_faces(&self) -> usize {
         self.v.len()
-    }
-    pub fn num_edges(&self) -> usize {
-        self.num_edges
     }
     pub fn num_faces(&self) -> usize {
         self.num_faces
@@ -251,10 +240,6 @@ impl Chf {
     /// `V`: vertex `hf & 3` of tetrahedron `hf >> 2`, for every half-face `hf`.
     pub fn half_face_vertices(&self) -> &[u32] {
         &self.v
-    }
-    /// `O`, from level 1.
-    pub fn opposites(&self) -> Option<&[u32]> {
-        (self.level >= 1).then_some(&self.o[..])
     }
     /// `VH`, from level 2.
     pub fn vertex_half_faces(&self) -> Option<&[u32]> {
@@ -268,30 +253,14 @@ impl Chf {
     pub fn edge_slot_tetrahedra(&self) -> Option<&[u32]> {
         (self.level >= 2).then_some(&self.eh[..])
     }
-    /// Positions of the structure's vertices (copies repeat their origin); may be empty.
-    pub fn positions(&self) -> &[DVec3] {
-        &self.positions
-    }
 
-    /// The input vertex a structure vertex comes from.
-    pub fn vertex_origin(&self, v: u32) -> u32 {
-        self.vertex_origin.get(v)
-    }
     /// The input tetrahedron a structure tetrahedron comes from.
     pub fn tetrahedron_origin(&self, t: u32) -> u32 {
         self.tet_origin.get(t)
     }
-    /// The vertex origin map, or `None` when it is the identity.
-    pub fn vertex_origins(&self) -> Option<&[u32]> {
-        self.vertex_origin.explicit()
-    }
     /// The tetrahedron origin map, or `None` when it is the identity.
     pub fn tetrahedron_origins(&self) -> Option<&[u32]> {
         self.tet_origin.explicit()
-    }
-
-    pub fn report(&self) -> &BuildReport {
-        &self.report
     }
 
     /// Half-faces of non-manifold faces (sorted); they are unpaired at every level.
@@ -303,20 +272,14 @@ impl Chf {
         &self.seams
     }
 
-    pub fn check_vertex(&self, v: u32) -> Result<()> {
-        check("vertex", "vertices", v, self.n_vertices)
-    }
-    pub fn check_edge(&self, e: u32) -> Result<()> {
-        check("edge", "edges", e, self.num_edges)
-    }
     pub fn check_face(&self, f: u32) -> Result<()> {
-        check("face", "faces", f, self.num_faces)
+        check_id(f, self.num_faces, "face", "faces")
     }
     pub fn check_tetrahedron(&self, t: u32) -> Result<()> {
-        check("tetrahedron", "tetrahedra", t, self.num_tetrahedra())
+        check_id(t, self.num_tetrahedra(), "tetrahedron", "tetrahedra")
     }
     pub fn check_half_face(&self, hf: u32) -> Result<()> {
-        check("half-face", "half-faces", hf, self.v.len())
+        check_id(hf, self.v.len(), "half-face", "half-faces")
     }
     pub fn check_half_edge(&self, he: HalfEdge) -> Result<()> {
         if he < 3 * self.v.len() as u64 {
@@ -327,16 +290,6 @@ impl Chf {
                 3 * self.v.len()
             )))
         }
-    }
-}
-
-fn check(what: &str, plural: &str, id: u32, n: usize) -> Result<()> {
-    if (id as usize) < n {
-        Ok(())
-    } else {
-        Err(Error::out_of_range(format!(
-            "{what} {id} out of range (the mesh has {n} {plural})"
-        )))
     }
 }
 

@@ -12,6 +12,7 @@ pub(crate) mod par;
 pub(crate) mod rank;
 pub(crate) mod rank_directory;
 pub(crate) mod small_ids;
+pub(crate) mod structure;
 
 /// How many offending ids a build report keeps of each kind.
 pub const REPORT_EXAMPLES: usize = 16;

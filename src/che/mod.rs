@@ -22,11 +22,11 @@ pub(crate) use query::{Push, Rows};
 pub(crate) use tables::edge_directory;
 
 use crate::NONE;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
-use crate::util::structure::check_id;
+use crate::util::structure::{as_elements, check_id};
 use glam::DVec3;
 use std::sync::OnceLock;
 
@@ -89,13 +89,7 @@ impl Che {
         positions: &[DVec3],
         options: BuildOptions,
     ) -> Result<Che> {
-        if !triangles.len().is_multiple_of(3) {
-            return Err(Error::invalid(format!(
-                "triangle array has {} ids, not a multiple of 3",
-                triangles.len()
-            )));
-        }
-        let tris: &[[u32; 3]] = as_triples(triangles);
+        let tris = as_elements::<3>(triangles, "triangle")?;
         Self::from_triangles(tris, n_vertices, positions, options)
     }
 
@@ -176,11 +170,6 @@ impl Che {
     pub fn check_half_edge(&self, h: u32) -> Result<()> {
         check_id(h, self.v.len(), "half-edge", "half-edges")
     }
-}
-
-/// Views a flat id array as triples without copying (the caller checked the length).
-pub(crate) fn as_triples(flat: &[u32]) -> &[[u32; 3]] {
-    flat.as_chunks::<3>().0
 }
 
 const _: () = {

@@ -68,7 +68,7 @@ pub type ChfSummary = Summary;
 use crate::error::{Error, Result};
 use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
-use crate::util::structure::check_id;
+use crate::util::structure::{as_elements, check_id};
 use build::level2;
 use build::level3;
 use edges::MultiFan;
@@ -161,14 +161,7 @@ impl Chf {
         positions: &[DVec3],
         options: BuildOptions,
     ) -> Result<Chf> {
-        if !tets.len().is_multiple_of(4) {
-            return Err(Error::invalid(format!(
-                "tetrahedron array has {} ids, not a multiple of 4",
-                tets.len()
-            )));
-        }
-        // A view of the same memory, no copy: the build's peak is what it allocates.
-        let (quads, _) = tets.as_chunks::<4>();
+        let quads = as_elements::<4>(tets, "tetrahedron")?;
         Self::from_tetrahedra(quads, n_vertices, positions, options)
     }
 

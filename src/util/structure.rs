@@ -68,3 +68,20 @@ fn out_of_range(id: u32, count: usize, one: &str, many: &str) -> Error {
         "{one} {id} out of range (the mesh has {count} {many})"
     ))
 }
+
+/// A flat id array as elements of `K` ids, without copying (the build's peak is what it
+/// allocates); an error naming the `element` kind when the length is not a multiple of
+/// `K`.
+pub(crate) fn as_elements<'a, const K: usize>(
+    flat: &'a [u32],
+    element: &str,
+) -> Result<&'a [[u32; K]]> {
+    let (elements, rest) = flat.as_chunks::<K>();
+    if !rest.is_empty() {
+        return Err(Error::invalid(format!(
+            "{element} array has {} ids, not a multiple of {K}",
+            flat.len()
+        )));
+    }
+    Ok(elements)
+}

@@ -6,6 +6,7 @@ pub(crate) mod csr;
 pub(crate) mod dsu;
 pub(crate) mod holes;
 pub(crate) mod options;
+pub(crate) mod orient;
 pub(crate) mod origin;
 pub(crate) mod pages;
 pub(crate) mod par;

@@ -5,6 +5,7 @@
 use super::report::push_example;
 use crate::NONE;
 use crate::che::ids::{first, tri};
+use crate::util::orient::{Walk, settle};
 
 pub(crate) struct Oriented {
     /// Opposites in the flipped numbering.
@@ -60,73 +61,31 @@ struct Choice {
 /// input orientation as possible.
 fn choose_flips(v: &[u32], partner: &[u32]) -> Choice {
     let n_tris = v.len() / 3;
-    let mut choice = Choice {
-        flipped: vec![false; n_tris],
-        ..Choice::default()
-    };
+    let mut choice = Choice::default();
+    let mut flipped = vec![false; n_tris];
     let mut visited = vec![false; n_tris];
     let mut queue: Vec<u32> = Vec::new();
+    let mut walk = Walk::<3, _> {
+        partner,
+        // Partners on one vertex pair run the same way when they start at the same vertex.
+        same_direction: |h: u32, g: u32| v[h as usize] == v[g as usize],
+        flipped: &mut flipped,
+        visited: &mut visited,
+        seam_pairs: &mut choice.seam_pairs,
+    };
     for root in 0..n_tris as u32 {
-        if visited[root as usize] {
+        if walk.visited[root as usize] {
             continue;
         }
-        visited[root as usize] = true;
-        queue.clear();
-        queue.push(root);
-        let conflict = traverse(v, partner, &mut visited, &mut queue, &mut choice);
-        let flipped = &mut choice.flipped;
-        let count = queue.iter().filter(|&&t| flipped[t as usize]).count();
-        if 2 * count > queue.len() {
-            for &t in &queue {
-                flipped[t as usize] = !flipped[t as usize];
-            }
-            choice.flipped_count += queue.len() - count;
-        } else {
-            choice.flipped_count += count;
-        }
+        let conflict = walk.component(root, &mut queue);
+        choice.flipped_count += settle(&queue, walk.flipped, &[]);
         if conflict {
             choice.non_orientable_components += 1;
             push_example(&mut choice.non_orientable_examples, root);
         }
     }
+    choice.flipped = flipped;
     choice
-}
-
-/// Visits the component of `queue[0]`, leaving it in `queue`: a neighbour across a pair
-/// running the same way gets the other flip. Returns whether some pair conflicts.
-fn traverse(
-    v: &[u32],
-    partner: &[u32],
-    visited: &mut [bool],
-    queue: &mut Vec<u32>,
-    choice: &mut Choice,
-) -> bool {
-    let mut head = 0;
-    let mut conflict = false;
-    while head < queue.len() {
-        let t = queue[head];
-        head += 1;
-        let ft = choice.flipped[t as usize];
-        for h in first(t)..first(t) + 3 {
-            let g = partner[h as usize];
-            if g == NONE {
-                continue;
-            }
-            let t2 = tri(g);
-            let same_direction = v[h as usize] == v[g as usize];
-            let want = ft ^ same_direction;
-            if !visited[t2 as usize] {
-                visited[t2 as usize] = true;
-                choice.flipped[t2 as usize] = want;
-                queue.push(t2);
-            } else if choice.flipped[t2 as usize] != want && h < g {
-                conflict = true;
-                choice.seam_pairs.push(h);
-                choice.seam_pairs.push(g);
-            }
-        }
-    }
-    conflict
 }
 
 /// The opposites and the sorted seams in the flipped numbering: every partner pair but

@@ -12,7 +12,8 @@
 
 use crate::NONE;
 use crate::chf::build::report::push_example;
-use crate::chf::ids::{first, same_direction, tet};
+use crate::chf::ids::{same_direction, tet};
+use crate::util::orient::{Walk, settle};
 
 pub(crate) struct Oriented {
     /// Opposites in the flipped numbering (seams left unpaired).
@@ -64,9 +65,9 @@ pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Oriented {
         inverted: 0,
         inverted_examples: Vec::new(),
     };
-    let mut walk = Walk {
-        v,
+    let mut walk = Walk::<4, _> {
         partner,
+        same_direction: |h, g| same_direction(v, h, g),
         flipped: &mut flipped,
         visited: &mut visited,
         seam_pairs: &mut seam_pairs,
@@ -94,82 +95,6 @@ pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Oriented {
     apply(v, partner, &flipped, &seam_pairs, &mut out);
     out.flipped = flipped;
     out
-}
-
-/// The propagation's state: a flip per tetrahedron, relative to its component's root.
-struct Walk<'a> {
-    v: &'a [u32],
-    partner: &'a [u32],
-    flipped: &'a mut [bool],
-    visited: &'a mut [bool],
-    /// Pairs that disagree, `h < g` each.
-    seam_pairs: &'a mut Vec<u32>,
-}
-
-impl Walk<'_> {
-    /// Visits the component of `root` breadth first into `queue`, flipping each tetrahedron
-    /// to agree with the one it is reached from; true when some pair disagrees anyway.
-    fn component(&mut self, root: u32, queue: &mut Vec<u32>) -> bool {
-        self.visited[root as usize] = true;
-        queue.clear();
-        queue.push(root);
-        let mut head = 0;
-        let mut conflict = false;
-        while head < queue.len() {
-            let t = queue[head];
-            head += 1;
-            let ft = self.flipped[t as usize];
-            for h in first(t)..first(t) + 4 {
-                let g = self.partner[h as usize];
-                if g == NONE {
-                    continue;
-                }
-                let t2 = tet(g);
-                let want = ft ^ same_direction(self.v, h, g);
-                if !self.visited[t2 as usize] {
-                    self.visited[t2 as usize] = true;
-                    self.flipped[t2 as usize] = want;
-                    queue.push(t2);
-                } else if self.flipped[t2 as usize] != want && h < g {
-                    conflict = true;
-                    self.seam_pairs.push(h);
-                    self.seam_pairs.push(g);
-                }
-            }
-        }
-        conflict
-    }
-}
-
-/// Chooses the orientation of a component (`queue`): the one most determinants agree
-/// with, else the one that keeps most of the input's. Returns the tetrahedra it flips.
-fn settle(queue: &[u32], flipped: &mut [bool], sign: &[i8]) -> usize {
-    let (mut pos, mut neg) = (0usize, 0usize);
-    if !sign.is_empty() {
-        for &t in queue {
-            let s = sign[t as usize];
-            match if flipped[t as usize] { -s } else { s } {
-                1 => pos += 1,
-                -1 => neg += 1,
-                _ => {}
-            }
-        }
-    }
-    let count = queue.iter().filter(|&&t| flipped[t as usize]).count();
-    let flip_all = if pos != neg {
-        neg > pos
-    } else {
-        // Keep as much of the input orientation as possible.
-        2 * count > queue.len()
-    };
-    if flip_all {
-        for &t in queue {
-            flipped[t as usize] = !flipped[t as usize];
-        }
-        queue.len() - count
-    } else {
-        count
-    }
 }
 
 /// Flips the tetrahedra of `v` and renumbers the pairs: `O` without the seams, the seams,

@@ -5,23 +5,72 @@
 //! of the input's.
 
 use crate::NONE;
+use crate::util::push_example;
+
+/// The flips the propagation chooses, in the input numbering.
+#[derive(Default)]
+pub(crate) struct Flips {
+    /// Per element: is it flipped.
+    pub flipped: Vec<bool>,
+    /// Pairs that disagree (the seams), `h < g` each.
+    pub seam_pairs: Vec<u32>,
+    pub flipped_count: usize,
+    pub non_orientable_components: usize,
+    /// One element of each non-orientable component.
+    pub non_orientable_examples: Vec<u32>,
+}
+
+/// Orients each component of the elements of `K` halves that `partner` links: every
+/// element's flip, the seams, and the components that cannot be oriented. `sign` is empty
+/// or holds the sign of each element's determinant.
+pub(crate) fn choose_flips<const K: usize>(
+    partner: &[u32],
+    same_direction: impl Fn(u32, u32) -> bool,
+    sign: &[i8],
+) -> Flips {
+    let n = partner.len() / K;
+    let mut out = Flips::default();
+    let mut flipped = vec![false; n];
+    let mut visited = vec![false; n];
+    let mut queue: Vec<u32> = Vec::new();
+    let mut walk = Walk::<K, _> {
+        partner,
+        same_direction,
+        flipped: &mut flipped,
+        visited: &mut visited,
+        seam_pairs: &mut out.seam_pairs,
+    };
+    for root in 0..n as u32 {
+        if walk.visited[root as usize] {
+            continue;
+        }
+        let conflict = walk.component(root, &mut queue);
+        out.flipped_count += settle(&queue, walk.flipped, sign);
+        if conflict {
+            out.non_orientable_components += 1;
+            push_example(&mut out.non_orientable_examples, root);
+        }
+    }
+    out.flipped = flipped;
+    out
+}
 
 /// The propagation's state over elements of `K` halves each (half `h` of element `h / K`):
 /// a flip per element, relative to its component's root.
-pub(crate) struct Walk<'a, const K: usize, S> {
-    pub partner: &'a [u32],
+struct Walk<'a, const K: usize, S> {
+    partner: &'a [u32],
     /// Whether half `h` and its partner `g` run the same way.
-    pub same_direction: S,
-    pub flipped: &'a mut [bool],
-    pub visited: &'a mut [bool],
+    same_direction: S,
+    flipped: &'a mut [bool],
+    visited: &'a mut [bool],
     /// Pairs that disagree, `h < g` each.
-    pub seam_pairs: &'a mut Vec<u32>,
+    seam_pairs: &'a mut Vec<u32>,
 }
 
 impl<const K: usize, S: Fn(u32, u32) -> bool> Walk<'_, K, S> {
     /// Visits the component of `root` breadth first into `queue`, flipping each element to
     /// agree with the one it is reached from; true when some pair disagrees anyway.
-    pub(crate) fn component(&mut self, root: u32, queue: &mut Vec<u32>) -> bool {
+    fn component(&mut self, root: u32, queue: &mut Vec<u32>) -> bool {
         self.visited[root as usize] = true;
         queue.clear();
         queue.push(root);
@@ -57,7 +106,7 @@ impl<const K: usize, S: Fn(u32, u32) -> bool> Walk<'_, K, S> {
 /// Chooses the orientation of a component (`queue`): the one most determinants agree
 /// with (`sign`, empty without positions), else the one that keeps most of the input's.
 /// Returns the elements it flips.
-pub(crate) fn settle(queue: &[u32], flipped: &mut [bool], sign: &[i8]) -> usize {
+fn settle(queue: &[u32], flipped: &mut [bool], sign: &[i8]) -> usize {
     let (mut pos, mut neg) = (0usize, 0usize);
     if !sign.is_empty() {
         for &t in queue {

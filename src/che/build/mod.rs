@@ -90,16 +90,17 @@ fn orient_step(
     }
     let oriented = orient::orient(v, &partner);
     drop(partner);
-    report.flipped_triangles = oriented.flipped_count;
-    report.non_orientable_components = oriented.non_orientable_components;
-    report.non_orientable_examples = oriented
+    let flips = &oriented.flips;
+    report.flipped_triangles = flips.flipped_count;
+    report.non_orientable_components = flips.non_orientable_components;
+    report.non_orientable_examples = flips
         .non_orientable_examples
         .iter()
         .map(|&t| origin_of(t))
         .collect();
     report.seam_edges = oriented.seams.len() / 2;
     for h in matching.non_manifold.iter_mut() {
-        if oriented.flipped[(*h / 3) as usize] {
+        if flips.flipped[(*h / 3) as usize] {
             *h = orient::flipped_id(*h);
         }
     }

@@ -250,14 +250,15 @@ fn orient_soup(
     let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign);
     drop(input_partner);
     let origins = |ts: &[u32]| ts.iter().map(|&t| origin_of(t)).collect();
-    report.flipped_tetrahedra = oriented.flipped_count;
-    report.non_orientable_components = oriented.non_orientable_components;
-    report.non_orientable_examples = origins(&oriented.non_orientable_examples);
+    let flips = &oriented.flips;
+    report.flipped_tetrahedra = flips.flipped_count;
+    report.non_orientable_components = flips.non_orientable_components;
+    report.non_orientable_examples = origins(&flips.non_orientable_examples);
     report.inverted_tetrahedra = oriented.inverted;
     report.inverted_examples = origins(&oriented.inverted_examples);
     report.seam_faces = oriented.seams.len() / 2;
     for hf in non_manifold.iter_mut() {
-        if oriented.flipped[tet(*hf) as usize] {
+        if flips.flipped[tet(*hf) as usize] {
             *hf = flipped_id(*hf);
         }
     }

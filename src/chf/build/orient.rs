@@ -13,7 +13,7 @@
 use crate::NONE;
 use crate::chf::build::report::push_example;
 use crate::chf::ids::{same_direction, tet};
-use crate::util::orient::{Walk, settle};
+use crate::util::orient::{Flips, choose_flips};
 
 pub(crate) struct Oriented {
     /// Opposites in the flipped numbering (seams left unpaired).
@@ -23,12 +23,9 @@ pub(crate) struct Oriented {
     /// When there are seams: the partners including the seam pairs, flipped numbering
     /// (the input's face adjacency, to tell seam splits from non-manifold vertices).
     pub links: Vec<u32>,
-    /// Per tetrahedron: was it flipped.
-    pub flipped: Vec<bool>,
-    pub flipped_count: usize,
-    pub non_orientable_components: usize,
-    /// Structure tetrahedra (one per non-orientable component).
-    pub non_orientable_examples: Vec<u32>,
+    /// Per tetrahedron: was it flipped; the counts and examples (structure tetrahedra) for
+    /// the report.
+    pub flips: Flips,
     pub inverted: usize,
     /// Structure tetrahedra.
     pub inverted_examples: Vec<u32>,
@@ -49,51 +46,27 @@ pub(crate) fn flipped_id(hf: u32) -> u32 {
 /// (either orientation), else `NONE`. `sign` is empty or holds the sign of each
 /// tetrahedron's determinant. Flips `v` in place.
 pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Oriented {
-    let n_tets = v.len() / 4;
-    let mut flipped = vec![false; n_tets];
-    let mut visited = vec![false; n_tets];
-    let mut seam_pairs: Vec<u32> = Vec::new();
-    let mut queue: Vec<u32> = Vec::new();
+    let flips = choose_flips::<4>(partner, |h, g| same_direction(v, h, g), sign);
+    let (mut inverted, mut inverted_examples) = (0, Vec::new());
+    if !sign.is_empty() {
+        for (t, &f) in flips.flipped.iter().enumerate() {
+            let s = if f { -sign[t] } else { sign[t] };
+            if s < 0 {
+                inverted += 1;
+                push_example(&mut inverted_examples, t as u32);
+            }
+        }
+    }
     let mut out = Oriented {
         o: Vec::new(),
         seams: Vec::new(),
         links: Vec::new(),
-        flipped: Vec::new(),
-        flipped_count: 0,
-        non_orientable_components: 0,
-        non_orientable_examples: Vec::new(),
-        inverted: 0,
-        inverted_examples: Vec::new(),
+        flips: Flips::default(),
+        inverted,
+        inverted_examples,
     };
-    let mut walk = Walk::<4, _> {
-        partner,
-        same_direction: |h, g| same_direction(v, h, g),
-        flipped: &mut flipped,
-        visited: &mut visited,
-        seam_pairs: &mut seam_pairs,
-    };
-    for root in 0..n_tets as u32 {
-        if walk.visited[root as usize] {
-            continue;
-        }
-        let conflict = walk.component(root, &mut queue);
-        out.flipped_count += settle(&queue, walk.flipped, sign);
-        if conflict {
-            out.non_orientable_components += 1;
-            push_example(&mut out.non_orientable_examples, root);
-        }
-    }
-    if !sign.is_empty() {
-        for (t, &f) in flipped.iter().enumerate() {
-            let s = if f { -sign[t] } else { sign[t] };
-            if s < 0 {
-                out.inverted += 1;
-                push_example(&mut out.inverted_examples, t as u32);
-            }
-        }
-    }
-    apply(v, partner, &flipped, &seam_pairs, &mut out);
-    out.flipped = flipped;
+    apply(v, partner, &flips.flipped, &flips.seam_pairs, &mut out);
+    out.flips = flips;
     out
 }
 

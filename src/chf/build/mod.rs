@@ -14,7 +14,7 @@ mod strict;
 use self::orient::flipped_id;
 pub use self::report::BuildReport;
 use self::soup::Soup;
-use self::strict::{strict_after_split, strict_faces};
+use self::strict::Strict;
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::edges::{self, EdgeCensus};
@@ -83,7 +83,12 @@ pub(crate) fn build(
     };
     record_edges(&mut report, &census);
     if options.strict {
-        strict_after_split(&report, &v, &vertex_origin, &origin_of)?;
+        let strict = Strict {
+            report: &report,
+            v: &v,
+            origin_of: &origin_of,
+        };
+        strict.after_split(&vertex_origin)?;
     }
     // 6. Level 1, then the levels above it.
     let chf = Chf {
@@ -147,7 +152,12 @@ fn oriented(
     let same_direction = faces.same_direction;
     let mut non_manifold = record_faces(report, faces, &origin_of);
     if options.strict {
-        strict_faces(report, &soup.v, &non_manifold, &origin_of)?;
+        let strict = Strict {
+            report,
+            v: &soup.v,
+            origin_of: &origin_of,
+        };
+        strict.faces(&non_manifold)?;
     }
     // 3. Orientation, only when some pair still runs the same way after the soup's flips:
     // otherwise the pairs are the opposites (see `soup.rs`) and the stars are right as found.

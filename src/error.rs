@@ -22,6 +22,18 @@ pub struct Error {
     pub message: String,
 }
 
+/// One constructor per error kind: `Error::parse(message)` for `ErrorKind::Parse`, ...
+macro_rules! kind_constructors {
+    ($($name:ident => $kind:ident,)*) => {
+        $(
+            #[doc = concat!("An error of kind [`ErrorKind::", stringify!($kind), "`].")]
+            pub fn $name(message: impl Into<String>) -> Self {
+                Self::new(ErrorKind::$kind, message)
+            }
+        )*
+    };
+}
+
 impl Error {
     pub fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
         Error {
@@ -29,23 +41,13 @@ impl Error {
             message: message.into(),
         }
     }
-    pub fn out_of_range(message: impl Into<String>) -> Self {
-        Self::new(ErrorKind::OutOfRange, message)
-    }
-    pub fn invalid(message: impl Into<String>) -> Self {
-        Self::new(ErrorKind::InvalidInput, message)
-    }
-    pub fn parse(message: impl Into<String>) -> Self {
-        Self::new(ErrorKind::Parse, message)
-    }
-    pub fn io(message: impl Into<String>) -> Self {
-        Self::new(ErrorKind::Io, message)
-    }
-    pub fn too_large(message: impl Into<String>) -> Self {
-        Self::new(ErrorKind::TooLarge, message)
-    }
-    pub fn non_manifold(message: impl Into<String>) -> Self {
-        Self::new(ErrorKind::NonManifold, message)
+    kind_constructors! {
+        out_of_range => OutOfRange,
+        invalid => InvalidInput,
+        parse => Parse,
+        io => Io,
+        too_large => TooLarge,
+        non_manifold => NonManifold,
     }
 }
 

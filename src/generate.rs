@@ -20,6 +20,13 @@ pub fn grid(nx: u32, ny: u32) -> Surface {
             s.positions.push(DVec3::new(i as f64, j as f64, 0.0));
         }
     }
+    push_quads(&mut s, nx, ny, id);
+    s
+}
+
+/// Two triangles for each of the `nx` by `ny` quads, whose corner `(i, j)` is vertex
+/// `id(i, j)`.
+fn push_quads(s: &mut Surface, nx: u32, ny: u32, id: impl Fn(u32, u32) -> u32) {
     for j in 0..ny {
         for i in 0..nx {
             let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
@@ -27,7 +34,6 @@ pub fn grid(nx: u32, ny: u32) -> Surface {
             s.triangles.push([a, c, d]);
         }
     }
-    s
 }
 
 /// A torus of `nu` by `nv` quads (both at least 3): closed, genus 1.
@@ -42,13 +48,7 @@ pub fn torus(nu: u32, nv: u32) -> Surface {
                 .push(DVec3::new(r * u.cos(), r * u.sin(), v.sin()));
         }
     }
-    for j in 0..nv {
-        for i in 0..nu {
-            let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-            s.triangles.push([a, b, c]);
-            s.triangles.push([a, c, d]);
-        }
-    }
+    push_quads(&mut s, nu, nv, id);
     s
 }
 

@@ -22,9 +22,11 @@ pub(crate) use query::{Push, Rows};
 pub(crate) use tables::edge_directory;
 
 use crate::NONE;
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
+use crate::util::structure::{as_elements, check_id};
 use glam::DVec3;
 use std::sync::OnceLock;
 
@@ -58,9 +60,9 @@ pub struct Che {
     num_edges: usize,
     positions: Vec<DVec3>,
     /// Structure vertex -> input vertex; empty when the identity.
-    vertex_origin: Vec<u32>,
+    vertex_origin: OriginMap,
     /// Structure triangle -> input triangle; empty when the identity.
-    triangle_origin: Vec<u32>,
+    triangle_origin: OriginMap,
     /// Sorted half-edges of non-manifold edges (3+ triangles), kept unpaired.
     non_manifold: Vec<u32>,
     /// Sorted half-edges on the seams of non-orientable components, kept unpaired.
@@ -87,49 +89,27 @@ impl Che {
         positions: &[DVec3],
         options: BuildOptions,
     ) -> Result<Che> {
-        if !triangles.len().is_multiple_of(3) {
-            return Err(Error::invalid(format!(
-                "triangle array has {} ids, not a multiple of 3",
-                triangles.len()
-            )));
-        }
-        let tris: &[[u32; 3]] = as_triples(triangles);
+        let tris = as_elements::<3>(triangles, "triangle")?;
         Self::from_triangles(tris, n_vertices, positions, options)
     }
 
-    pub fn level(&self) -> u8 {
-        self.level
-    }
+    crate::util::structure::structure_accessors!(BuildReport);
 
     /// Raises (or lowers) the level in place. Ids do not change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
         build::change_level(self, level)
     }
 
-    /// Vertices of the structure: the input vertices, then copies made by splitting.
-    pub fn num_vertices(&self) -> usize {
-        self.n_vertices
-    }
-    pub fn num_input_vertices(&self) -> usize {
-        self.n_input_vertices
-    }
     pub fn num_triangles(&self) -> usize {
         self.v.len() / 3
     }
     pub fn num_half_edges(&self) -> usize {
         self.v.len()
     }
-    pub fn num_edges(&self) -> usize {
-        self.num_edges
-    }
 
     /// `V`: the origin of every half-edge.
     pub fn half_edge_vertices(&self) -> &[u32] {
         &self.v
-    }
-    /// `O`, from level 1.
-    pub fn opposites(&self) -> Option<&[u32]> {
-        (self.level >= 1).then_some(&self.o[..])
     }
     /// `VH`, from level 2.
     pub fn vertex_half_edges(&self) -> Option<&[u32]> {
@@ -163,38 +143,14 @@ impl Che {
     pub fn curve_half_edges(&self) -> Option<&[u32]> {
         (self.level >= 3).then_some(&self.ch[..])
     }
-    /// Positions of the structure's vertices (copies repeat their origin); may be empty.
-    pub fn positions(&self) -> &[DVec3] {
-        &self.positions
-    }
 
-    /// The input vertex a structure vertex comes from.
-    pub fn vertex_origin(&self, v: u32) -> u32 {
-        if self.vertex_origin.is_empty() {
-            v
-        } else {
-            self.vertex_origin[v as usize]
-        }
-    }
     /// The input triangle a structure triangle comes from.
     pub fn triangle_origin(&self, t: u32) -> u32 {
-        if self.triangle_origin.is_empty() {
-            t
-        } else {
-            self.triangle_origin[t as usize]
-        }
-    }
-    /// The vertex origin map, or `None` when it is the identity.
-    pub fn vertex_origins(&self) -> Option<&[u32]> {
-        (!self.vertex_origin.is_empty()).then_some(&self.vertex_origin[..])
+        self.triangle_origin.get(t)
     }
     /// The triangle origin map, or `None` when it is the identity.
     pub fn triangle_origins(&self) -> Option<&[u32]> {
-        (!self.triangle_origin.is_empty()).then_some(&self.triangle_origin[..])
-    }
-
-    pub fn report(&self) -> &BuildReport {
-        &self.report
+        self.triangle_origin.explicit()
     }
 
     /// Half-edges of non-manifold edges (sorted); they are unpaired at every level.
@@ -207,10 +163,6 @@ impl Che {
     }
 
     #[inline]
-    pub fn check_vertex(&self, v: u32) -> Result<()> {
-        check_id(v, self.n_vertices, "vertex", "vertices")
-    }
-    #[inline]
     pub fn check_triangle(&self, t: u32) -> Result<()> {
         check_id(t, self.num_triangles(), "triangle", "triangles")
     }
@@ -218,32 +170,6 @@ impl Che {
     pub fn check_half_edge(&self, h: u32) -> Result<()> {
         check_id(h, self.v.len(), "half-edge", "half-edges")
     }
-    #[inline]
-    pub fn check_edge(&self, e: u32) -> Result<()> {
-        check_id(e, self.num_edges, "edge", "edges")
-    }
-}
-
-/// `id` below `count`, or an out-of-range error naming the element.
-#[inline]
-fn check_id(id: u32, count: usize, one: &str, many: &str) -> Result<()> {
-    if (id as usize) < count {
-        Ok(())
-    } else {
-        Err(out_of_range(id, count, one, many))
-    }
-}
-
-#[cold]
-fn out_of_range(id: u32, count: usize, one: &str, many: &str) -> Error {
-    Error::out_of_range(format!(
-        "{one} {id} out of range (the mesh has {count} {many})"
-    ))
-}
-
-/// Views a flat id array as triples without copying (the caller checked the length).
-pub(crate) fn as_triples(flat: &[u32]) -> &[[u32; 3]] {
-    flat.as_chunks::<3>().0
 }
 
 const _: () = {

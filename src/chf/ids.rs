@@ -122,22 +122,24 @@ pub fn slot_half_edges(s: u64) -> [HalfEdge; 2] {
     ]
 }
 
+/// Local half-edge `3i + j` (`i` the face, `j` its edge) as the pair of local vertices it
+/// runs between.
+const fn local_half_edge(h: usize) -> (u32, u32) {
+    let face = FACE[h / 3];
+    (face[h % 3], face[(h % 3 + 1) % 3])
+}
+
 /// Per local edge, the two local half-edges `3i + j` that lie on it, increasing.
 const SLOT_HALF_EDGES: [[u32; 2]; 6] = {
     let mut table = [[u32::MAX; 2]; 6];
     let mut n = [0usize; 6];
-    let mut i = 0;
-    while i < 4 {
-        let mut j = 0;
-        while j < 3 {
-            let p = FACE[i][j];
-            let q = FACE[i][(j + 1) % 3];
-            let k = EDGE_INDEX[p as usize][q as usize] as usize;
-            table[k][n[k]] = (3 * i + j) as u32;
-            n[k] += 1;
-            j += 1;
-        }
-        i += 1;
+    let mut h = 0;
+    while h < 12 {
+        let (p, q) = local_half_edge(h);
+        let k = EDGE_INDEX[p as usize][q as usize] as usize;
+        table[k][n[k]] = h as u32;
+        n[k] += 1;
+        h += 1;
     }
     table
 };
@@ -145,24 +147,20 @@ const SLOT_HALF_EDGES: [[u32; 2]; 6] = {
 /// Per local half-edge `3i + j`, its mate's local half-edge.
 const MATE: [u32; 12] = {
     let mut table = [u32::MAX; 12];
-    let mut i = 0;
-    while i < 4 {
-        let mut j = 0;
-        while j < 3 {
-            let p = FACE[i][j];
-            let q = FACE[i][(j + 1) % 3];
-            // The other face holding edge {p, q} is opposite the fourth local vertex.
-            let other = 6 - p - q - i as u32;
-            let mut j2 = 0;
-            while j2 < 3 {
-                if FACE[other as usize][j2] == q && FACE[other as usize][(j2 + 1) % 3] == p {
-                    table[3 * i + j] = (3 * other as usize + j2) as u32;
-                }
-                j2 += 1;
+    let mut h = 0;
+    while h < 12 {
+        let (p, q) = local_half_edge(h);
+        // The other face holding edge {p, q} is opposite the fourth local vertex.
+        let other = (6 - p - q) as usize - h / 3;
+        let mut h2 = 3 * other;
+        while h2 < 3 * other + 3 {
+            let (p2, q2) = local_half_edge(h2);
+            if p2 == q && q2 == p {
+                table[h] = h2 as u32;
             }
-            j += 1;
+            h2 += 1;
         }
-        i += 1;
+        h += 1;
     }
     table
 };

@@ -66,7 +66,9 @@ pub type ChfMemory = Memory;
 pub type ChfSummary = Summary;
 
 use crate::error::{Error, Result};
+use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
+use crate::util::structure::{as_elements, check_id};
 use build::level2;
 use build::level3;
 use edges::MultiFan;
@@ -102,9 +104,9 @@ pub struct Chf {
     num_faces: usize,
     positions: Vec<DVec3>,
     /// Structure vertex -> input vertex; empty when the identity.
-    vertex_origin: Vec<u32>,
+    vertex_origin: OriginMap,
     /// Structure tetrahedron -> input tetrahedron; empty when the identity.
-    tet_origin: Vec<u32>,
+    tet_origin: OriginMap,
     /// Sorted half-faces of non-manifold faces (3+ tetrahedra), unpaired at every level.
     non_manifold: Vec<u32>,
     /// Sorted half-faces on orientation seams, unpaired at every level.
@@ -132,8 +134,8 @@ impl Chf {
             num_edges: 0,
             num_faces: 0,
             positions: Vec::new(),
-            vertex_origin: Vec::new(),
-            tet_origin: Vec::new(),
+            vertex_origin: OriginMap::default(),
+            tet_origin: OriginMap::default(),
             non_manifold: Vec::new(),
             seams: Vec::new(),
             multi_fan: Vec::new(),
@@ -159,19 +161,8 @@ impl Chf {
         positions: &[DVec3],
         options: BuildOptions,
     ) -> Result<Chf> {
-        if !tets.len().is_multiple_of(4) {
-            return Err(Error::invalid(format!(
-                "tetrahedron array has {} ids, not a multiple of 4",
-                tets.len()
-            )));
-        }
-        // A view of the same memory, no copy: the build's peak is what it allocates.
-        let (quads, _) = tets.as_chunks::<4>();
+        let quads = as_elements::<4>(tets, "tetrahedron")?;
         Self::from_tetrahedra(quads, n_vertices, positions, options)
-    }
-
-    pub fn level(&self) -> u8 {
-        self.level
     }
 
     /// The threads `build_level` takes: the build's default for this mesh.
@@ -179,14 +170,12 @@ impl Chf {
         crate::util::par::build_threads(0, self.num_tetrahedra())
     }
 
+    crate::util::structure::structure_accessors!(BuildReport);
+
     /// Raises (or lowers) the level in place, on every thread of the machine. Ids do not
     /// change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
-        if level > 3 {
-            return Err(Error::out_of_range(format!(
-                "level {level} is not in 0..=3"
-            )));
-        }
+        crate::util::options::check_level(level)?;
         if level < self.level {
             if level < 3 {
                 self.boundary = None;
@@ -231,21 +220,11 @@ impl Chf {
         Ok(())
     }
 
-    /// Vertices of the structure: the input vertices, then copies made by splitting.
-    pub fn num_vertices(&self) -> usize {
-        self.n_vertices
-    }
-    pub fn num_input_vertices(&self) -> usize {
-        self.n_input_vertices
-    }
     pub fn num_tetrahedra(&self) -> usize {
         self.v.len() / 4
     }
     pub fn num_half_faces(&self) -> usize {
         self.v.len()
-    }
-    pub fn num_edges(&self) -> usize {
-        self.num_edges
     }
     pub fn num_faces(&self) -> usize {
         self.num_faces
@@ -254,10 +233,6 @@ impl Chf {
     /// `V`: vertex `hf & 3` of tetrahedron `hf >> 2`, for every half-face `hf`.
     pub fn half_face_vertices(&self) -> &[u32] {
         &self.v
-    }
-    /// `O`, from level 1.
-    pub fn opposites(&self) -> Option<&[u32]> {
-        (self.level >= 1).then_some(&self.o[..])
     }
     /// `VH`, from level 2.
     pub fn vertex_half_faces(&self) -> Option<&[u32]> {
@@ -271,38 +246,14 @@ impl Chf {
     pub fn edge_slot_tetrahedra(&self) -> Option<&[u32]> {
         (self.level >= 2).then_some(&self.eh[..])
     }
-    /// Positions of the structure's vertices (copies repeat their origin); may be empty.
-    pub fn positions(&self) -> &[DVec3] {
-        &self.positions
-    }
 
-    /// The input vertex a structure vertex comes from.
-    pub fn vertex_origin(&self, v: u32) -> u32 {
-        if self.vertex_origin.is_empty() {
-            v
-        } else {
-            self.vertex_origin[v as usize]
-        }
-    }
     /// The input tetrahedron a structure tetrahedron comes from.
     pub fn tetrahedron_origin(&self, t: u32) -> u32 {
-        if self.tet_origin.is_empty() {
-            t
-        } else {
-            self.tet_origin[t as usize]
-        }
-    }
-    /// The vertex origin map, or `None` when it is the identity.
-    pub fn vertex_origins(&self) -> Option<&[u32]> {
-        (!self.vertex_origin.is_empty()).then_some(&self.vertex_origin[..])
+        self.tet_origin.get(t)
     }
     /// The tetrahedron origin map, or `None` when it is the identity.
     pub fn tetrahedron_origins(&self) -> Option<&[u32]> {
-        (!self.tet_origin.is_empty()).then_some(&self.tet_origin[..])
-    }
-
-    pub fn report(&self) -> &BuildReport {
-        &self.report
+        self.tet_origin.explicit()
     }
 
     /// Half-faces of non-manifold faces (sorted); they are unpaired at every level.
@@ -314,20 +265,14 @@ impl Chf {
         &self.seams
     }
 
-    pub fn check_vertex(&self, v: u32) -> Result<()> {
-        check("vertex", "vertices", v, self.n_vertices)
-    }
-    pub fn check_edge(&self, e: u32) -> Result<()> {
-        check("edge", "edges", e, self.num_edges)
-    }
     pub fn check_face(&self, f: u32) -> Result<()> {
-        check("face", "faces", f, self.num_faces)
+        check_id(f, self.num_faces, "face", "faces")
     }
     pub fn check_tetrahedron(&self, t: u32) -> Result<()> {
-        check("tetrahedron", "tetrahedra", t, self.num_tetrahedra())
+        check_id(t, self.num_tetrahedra(), "tetrahedron", "tetrahedra")
     }
     pub fn check_half_face(&self, hf: u32) -> Result<()> {
-        check("half-face", "half-faces", hf, self.v.len())
+        check_id(hf, self.v.len(), "half-face", "half-faces")
     }
     pub fn check_half_edge(&self, he: HalfEdge) -> Result<()> {
         if he < 3 * self.v.len() as u64 {
@@ -338,16 +283,6 @@ impl Chf {
                 3 * self.v.len()
             )))
         }
-    }
-}
-
-fn check(what: &str, plural: &str, id: u32, n: usize) -> Result<()> {
-    if (id as usize) < n {
-        Ok(())
-    } else {
-        Err(Error::out_of_range(format!(
-            "{what} {id} out of range (the mesh has {n} {plural})"
-        )))
     }
 }
 

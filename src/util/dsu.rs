@@ -31,3 +31,27 @@ impl Dsu {
             .count() as u64
     }
 }
+
+/// The components of the input vertices that the elements use, and how many input vertices
+/// no element uses: `v` holds `K` structure vertex ids per element, `origin` maps them to
+/// the `n` input vertices, and the vertices of one element are connected.
+pub(crate) fn element_components<const K: usize>(
+    v: &[u32],
+    n: usize,
+    origin: impl Fn(u32) -> u32,
+) -> (u64, u64) {
+    let mut used = vec![false; n];
+    let mut dsu = Dsu::new(n);
+    for element in v.chunks_exact(K) {
+        let a = origin(element[0]);
+        used[a as usize] = true;
+        for &x in &element[1..] {
+            let b = origin(x);
+            used[b as usize] = true;
+            dsu.union(a, b);
+        }
+    }
+    let components = dsu.roots_among(&used);
+    let isolated = used.iter().filter(|&&u| !u).count() as u64;
+    (components, isolated)
+}

@@ -2,13 +2,18 @@
 //! small id lists, closing the holes of dropped elements, and the build reports' example
 //! lists.
 
+pub(crate) mod csr;
 pub(crate) mod dsu;
 pub(crate) mod holes;
+pub(crate) mod options;
+pub(crate) mod orient;
+pub(crate) mod origin;
 pub(crate) mod pages;
 pub(crate) mod par;
 pub(crate) mod rank;
 pub(crate) mod rank_directory;
 pub(crate) mod small_ids;
+pub(crate) mod structure;
 
 /// How many offending ids a build report keeps of each kind.
 pub const REPORT_EXAMPLES: usize = 16;
@@ -30,6 +35,26 @@ pub(crate) fn test_rng(seed: u64) -> impl FnMut(usize) -> u32 {
         x ^= x << 17;
         (x % m as u64) as u32
     }
+}
+
+/// Unit tests' random soups, `rounds` of them from `seed`: in round `r`,
+/// `vertices.0 + r % vertices.1` vertices and `elements.0 + r % elements.1` elements of `K`
+/// ids each, repeats and all.
+#[cfg(test)]
+pub(crate) fn test_soups<const K: usize>(
+    seed: u64,
+    rounds: usize,
+    vertices: (usize, usize),
+    elements: (usize, usize),
+) -> impl Iterator<Item = (usize, Vec<[u32; K]>)> {
+    let mut rnd = test_rng(seed);
+    (0..rounds).map(move |r| {
+        let n = vertices.0 + r % vertices.1;
+        let soup = (0..elements.0 + r % elements.1)
+            .map(|_| [0; K].map(|_| rnd(n)))
+            .collect();
+        (n, soup)
+    })
 }
 
 /// [`push_example`] for each of `items`, in order: the examples a build thread found after

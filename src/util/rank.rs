@@ -98,6 +98,24 @@ impl RankBits {
     }
 }
 
+/// Test helper for both rank structures: `get`, `rank` and `ones` (the three `answers`)
+/// agree with `pattern` and its prefix counts on `0..len`.
+#[cfg(test)]
+pub(crate) fn assert_prefix_counts(
+    len: usize,
+    pattern: impl Fn(usize) -> bool,
+    answers: (impl Fn(usize) -> bool, impl Fn(usize) -> usize, usize),
+) {
+    let (get, rank, ones) = answers;
+    let mut count = 0;
+    for i in 0..len {
+        assert_eq!(rank(i), count, "len {len} i {i}");
+        assert_eq!(get(i), pattern(i));
+        count += pattern(i) as usize;
+    }
+    assert_eq!(ones, count);
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -107,13 +125,8 @@ mod tests {
         let pattern = |i: usize| (i * 7 + i / 3) % 5 < 2;
         for len in [0usize, 1, 63, 64, 65, 200, 1000] {
             let bits = RankBits::from_fn(len, pattern);
-            let mut count = 0;
-            for i in 0..len {
-                assert_eq!(bits.rank(i), count, "len {len} i {i}");
-                assert_eq!(bits.get(i), pattern(i));
-                count += pattern(i) as usize;
-            }
-            assert_eq!(bits.ones(), count);
+            let answers = (|i| bits.get(i), |i| bits.rank(i), bits.ones());
+            assert_prefix_counts(len, pattern, answers);
             let words = bits.words.clone();
             let again = RankBits::from_words(words, len);
             assert_eq!((again.before, again.ones), (bits.before.clone(), bits.ones));

@@ -68,13 +68,8 @@ mod tests {
         let pattern = |i: usize| (i * 7 + i / 3) % 5 < 2;
         for len in [0usize, 1, 31, 32, 33, 64, 200, 1000] {
             let bits = RankDirectory::from_fn(len, pattern).unwrap();
-            let mut count = 0;
-            for i in 0..len {
-                assert_eq!(bits.rank(i), count, "len {len} i {i}");
-                assert_eq!(bits.get(i), pattern(i));
-                count += pattern(i) as usize;
-            }
-            assert_eq!(bits.ones(), count);
+            let answers = (|i| bits.get(i), |i| bits.rank(i), bits.ones());
+            crate::util::rank::assert_prefix_counts(len, pattern, answers);
             assert_eq!(bits.entries().len(), len.div_ceil(SPAN));
         }
     }

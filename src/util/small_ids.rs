@@ -23,6 +23,19 @@ impl<const N: usize> Ids<N> {
     }
 }
 
+impl Ids<2> {
+    /// The element of `h`, then that of its opposite `o` unless `o` is `NONE`: the one or
+    /// two elements on either side of a shared edge or face.
+    pub(crate) fn both_sides(h: u32, o: u32, element: impl Fn(u32) -> u32) -> Self {
+        let mut out = Ids::new();
+        out.push(element(h));
+        if o != crate::NONE {
+            out.push(element(o));
+        }
+        out
+    }
+}
+
 impl<const N: usize> std::ops::Deref for Ids<N> {
     type Target = [u32];
     fn deref(&self) -> &[u32] {

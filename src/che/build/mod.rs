@@ -18,6 +18,8 @@ pub use report::BuildReport;
 use super::Che;
 use crate::NONE;
 use crate::error::{Error, Result};
+use crate::util::options::check_input;
+use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
@@ -29,7 +31,8 @@ pub(crate) fn build(
     positions: &[DVec3],
     options: BuildOptions,
 ) -> Result<Che> {
-    check_sizes(triangles.len(), n_vertices, positions.len(), options.level)?;
+    let too_many = too_many_triangles(triangles.len());
+    check_input(&options, n_vertices, positions.len(), too_many)?;
     let mut report = BuildReport {
         input_triangles: triangles.len(),
         input_vertices: n_vertices,
@@ -37,13 +40,8 @@ pub(crate) fn build(
     };
     let threads = crate::util::par::build_threads(options.threads, triangles.len());
     let (mut v, triangle_origin) = soup::soup(triangles, n_vertices, &mut report, threads)?;
-    let origin_of = |t: u32| {
-        if triangle_origin.is_empty() {
-            t
-        } else {
-            triangle_origin[t as usize]
-        }
-    };
+    let triangle_origin = OriginMap::from(triangle_origin);
+    let origin_of = |t: u32| triangle_origin.get(t);
     let mut matching = matching::match_pairs(&v, n_vertices, threads, &mut report);
     if options.strict {
         matching::reject_non_manifold_edges(&report, &v, &matching.non_manifold, origin_of)?;
@@ -68,29 +66,13 @@ pub(crate) fn build(
     Ok(che)
 }
 
-/// Ids must fit below `NONE`; positions are none or one per vertex.
-fn check_sizes(n_triangles: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
-    if level > 3 {
-        return Err(Error::out_of_range(format!(
-            "level {level} is not in 0..=3"
-        )));
-    }
-    if n_vertices >= NONE as usize {
-        return Err(Error::too_large(format!(
-            "{n_vertices} vertices: ids must fit below 2^32 - 1"
-        )));
-    }
-    if n_triangles > MAX_TRIANGLES {
-        return Err(Error::too_large(format!(
+/// The build's own message when `n_triangles` elements do not fit below `NONE`.
+fn too_many_triangles(n_triangles: usize) -> Option<String> {
+    (n_triangles > MAX_TRIANGLES).then(|| {
+        format!(
             "{n_triangles} triangles: half-edge ids must fit below 2^32 - 1 (at most {MAX_TRIANGLES} triangles)"
-        )));
-    }
-    if n_positions != 0 && n_positions != n_vertices {
-        return Err(Error::invalid(format!(
-            "{n_positions} positions given for {n_vertices} vertices"
-        )));
-    }
-    Ok(())
+        )
+    })
 }
 
 /// Step 3: orients only when some pair runs the same way (otherwise the partners are the
@@ -108,16 +90,17 @@ fn orient_step(
     }
     let oriented = orient::orient(v, &partner);
     drop(partner);
-    report.flipped_triangles = oriented.flipped_count;
-    report.non_orientable_components = oriented.non_orientable_components;
-    report.non_orientable_examples = oriented
+    let flips = &oriented.flips;
+    report.flipped_triangles = flips.flipped_count;
+    report.non_orientable_components = flips.non_orientable_components;
+    report.non_orientable_examples = flips
         .non_orientable_examples
         .iter()
         .map(|&t| origin_of(t))
         .collect();
     report.seam_edges = oriented.seams.len() / 2;
     for h in matching.non_manifold.iter_mut() {
-        if oriented.flipped[(*h / 3) as usize] {
+        if flips.flipped[(*h / 3) as usize] {
             *h = orient::flipped_id(*h);
         }
     }
@@ -173,7 +156,7 @@ struct Canonical {
     o: Vec<u32>,
     seams: Vec<u32>,
     non_manifold: Vec<u32>,
-    triangle_origin: Vec<u32>,
+    triangle_origin: OriginMap,
 }
 
 /// The structure at level 1, with the vertex copies of the split appended.
@@ -184,13 +167,7 @@ fn assemble(
     positions: &[DVec3],
     report: BuildReport,
 ) -> Che {
-    let vertex_origin: Vec<u32> = if copies.is_empty() {
-        Vec::new()
-    } else {
-        (0..n_vertices as u32)
-            .chain(copies.iter().copied())
-            .collect()
-    };
+    let vertex_origin = OriginMap::with_copies(n_vertices, copies);
     let mut positions = positions.to_vec();
     if !positions.is_empty() {
         for &x in copies {
@@ -244,11 +221,7 @@ fn finish_level(che: &mut Che, level: u8, vh: Vec<u32>) {
 
 /// Raises or lowers the level of a built structure in place (ids do not change).
 pub(crate) fn change_level(che: &mut Che, level: u8) -> Result<()> {
-    if level > 3 {
-        return Err(Error::out_of_range(format!(
-            "level {level} is not in 0..=3"
-        )));
-    }
+    crate::util::options::check_level(level)?;
     che.lazy_edge_bits = Default::default();
     if level < che.level {
         if level < 3 {

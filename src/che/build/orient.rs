@@ -2,20 +2,17 @@
 //! whose shared half-edge runs the same way is flipped. Where a component cannot be
 //! oriented (Moebius strip, Klein bottle) the conflicting pairs become seams: left unpaired.
 
-use super::report::push_example;
 use crate::NONE;
 use crate::che::ids::{first, tri};
+use crate::util::orient::{Flips, choose_flips};
 
 pub(crate) struct Oriented {
     /// Opposites in the flipped numbering.
     pub o: Vec<u32>,
     /// Seam half-edges in the flipped numbering, sorted.
     pub seams: Vec<u32>,
-    /// Per triangle: was it flipped.
-    pub flipped: Vec<bool>,
-    pub flipped_count: usize,
-    pub non_orientable_components: usize,
-    pub non_orientable_examples: Vec<u32>,
+    /// Per triangle: was it flipped; the counts and examples for the report.
+    pub flips: Flips,
 }
 
 /// The new id of half-edge `h` once its triangle is flipped: flipping swaps corners 1 and 2,
@@ -29,104 +26,15 @@ pub(crate) fn flipped_id(h: u32) -> u32 {
 /// `partner[h]` is the other half-edge on `h`'s vertex pair when there are exactly two (in
 /// either direction), else `NONE`. Flips `v` in place and returns the opposites.
 pub(crate) fn orient(v: &mut [u32], partner: &[u32]) -> Oriented {
-    let choice = choose_flips(v, partner);
-    for (t, &f) in choice.flipped.iter().enumerate() {
+    // Partners on one vertex pair run the same way when they start at the same vertex.
+    let flips = choose_flips::<3>(partner, |h, g| v[h as usize] == v[g as usize], &[]);
+    for (t, &f) in flips.flipped.iter().enumerate() {
         if f {
             v.swap(3 * t + 1, 3 * t + 2);
         }
     }
-    let (o, seams) = renumber_pairs(partner, &choice.flipped, &choice.seam_pairs);
-    Oriented {
-        o,
-        seams,
-        flipped: choice.flipped,
-        flipped_count: choice.flipped_count,
-        non_orientable_components: choice.non_orientable_components,
-        non_orientable_examples: choice.non_orientable_examples,
-    }
-}
-
-/// Which triangles to flip, and the pairs that conflict (seams, in the input numbering).
-#[derive(Default)]
-struct Choice {
-    flipped: Vec<bool>,
-    seam_pairs: Vec<u32>,
-    flipped_count: usize,
-    non_orientable_components: usize,
-    non_orientable_examples: Vec<u32>,
-}
-
-/// A breadth-first traversal of each edge-connected component; each keeps as much of the
-/// input orientation as possible.
-fn choose_flips(v: &[u32], partner: &[u32]) -> Choice {
-    let n_tris = v.len() / 3;
-    let mut choice = Choice {
-        flipped: vec![false; n_tris],
-        ..Choice::default()
-    };
-    let mut visited = vec![false; n_tris];
-    let mut queue: Vec<u32> = Vec::new();
-    for root in 0..n_tris as u32 {
-        if visited[root as usize] {
-            continue;
-        }
-        visited[root as usize] = true;
-        queue.clear();
-        queue.push(root);
-        let conflict = traverse(v, partner, &mut visited, &mut queue, &mut choice);
-        let flipped = &mut choice.flipped;
-        let count = queue.iter().filter(|&&t| flipped[t as usize]).count();
-        if 2 * count > queue.len() {
-            for &t in &queue {
-                flipped[t as usize] = !flipped[t as usize];
-            }
-            choice.flipped_count += queue.len() - count;
-        } else {
-            choice.flipped_count += count;
-        }
-        if conflict {
-            choice.non_orientable_components += 1;
-            push_example(&mut choice.non_orientable_examples, root);
-        }
-    }
-    choice
-}
-
-/// Visits the component of `queue[0]`, leaving it in `queue`: a neighbour across a pair
-/// running the same way gets the other flip. Returns whether some pair conflicts.
-fn traverse(
-    v: &[u32],
-    partner: &[u32],
-    visited: &mut [bool],
-    queue: &mut Vec<u32>,
-    choice: &mut Choice,
-) -> bool {
-    let mut head = 0;
-    let mut conflict = false;
-    while head < queue.len() {
-        let t = queue[head];
-        head += 1;
-        let ft = choice.flipped[t as usize];
-        for h in first(t)..first(t) + 3 {
-            let g = partner[h as usize];
-            if g == NONE {
-                continue;
-            }
-            let t2 = tri(g);
-            let same_direction = v[h as usize] == v[g as usize];
-            let want = ft ^ same_direction;
-            if !visited[t2 as usize] {
-                visited[t2 as usize] = true;
-                choice.flipped[t2 as usize] = want;
-                queue.push(t2);
-            } else if choice.flipped[t2 as usize] != want && h < g {
-                conflict = true;
-                choice.seam_pairs.push(h);
-                choice.seam_pairs.push(g);
-            }
-        }
-    }
-    conflict
+    let (o, seams) = renumber_pairs(partner, &flips.flipped, &flips.seam_pairs);
+    Oriented { o, seams, flips }
 }
 
 /// The opposites and the sorted seams in the flipped numbering: every partner pair but

@@ -11,21 +11,12 @@ use crate::che::tables::{edge_ids, vertex_half_edges};
 use std::borrow::Cow;
 
 /// A relation for every element: element `i` has `indices[offsets[i]..offsets[i + 1]]`.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Csr {
-    pub offsets: Vec<usize>,
-    pub indices: Vec<u32>,
-}
+pub type Csr = crate::util::csr::Csr<usize>;
 
 impl Csr {
-    pub fn len(&self) -> usize {
-        self.offsets.len().saturating_sub(1)
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
+    /// Row `i` (the name before [`Csr::row`]).
     pub fn get(&self, i: usize) -> &[u32] {
-        &self.indices[self.offsets[i]..self.offsets[i + 1]]
+        self.row(i)
     }
 
     fn with_capacity(rows: usize, indices: usize) -> Self {

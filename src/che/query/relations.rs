@@ -24,10 +24,9 @@ impl Che {
     #[inline]
     pub fn opposite(&self, h: u32) -> u32 {
         if self.level >= 1 {
-            self.o[h as usize]
-        } else {
-            self.opposite_by_scan(h)
+            return self.o[h as usize];
         }
+        self.opposite_by_scan(h)
     }
 
     /// The level-0 rule (the same that level 1 stores): `h` and `g` are opposite when they
@@ -81,10 +80,9 @@ impl Che {
     #[inline]
     pub fn vertex_half_edge(&self, v: u32) -> u32 {
         if self.level >= 2 {
-            self.vh[v as usize]
-        } else {
-            self.vertex_half_edge_by_scan(v)
+            return self.vh[v as usize];
         }
+        self.vertex_half_edge_by_scan(v)
     }
 
     /// [`Che::vertex_half_edge`] below level 2: the first boundary half-edge from `v`, else
@@ -186,13 +184,7 @@ impl Che {
     /// EF: the one or two triangles of edge `e`, the canonical half-edge's first.
     pub fn edge_triangles(&self, e: u32) -> Ids<2> {
         let h = self.edge_half_edge(e);
-        let mut out = Ids::new();
-        out.push(tri(h));
-        let o = self.opposite(h);
-        if o != NONE {
-            out.push(tri(o));
-        }
-        out
+        Ids::both_sides(h, self.opposite(h), tri)
     }
 
     /// EE: the wings of edge `e`, the other edges of its triangles: next and previous in the

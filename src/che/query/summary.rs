@@ -4,7 +4,7 @@
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::next;
-use crate::util::dsu::Dsu;
+use crate::util::dsu::{Dsu, element_components};
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -37,18 +37,7 @@ impl Che {
     pub fn summary(&self) -> Summary {
         let r = &self.report;
         let n = self.n_input_vertices;
-        let mut used = vec![false; n];
-        let mut dsu = Dsu::new(n);
-        for t in self.v.chunks_exact(3) {
-            let [a, b, c] = [t[0], t[1], t[2]].map(|x| self.vertex_origin(x));
-            used[a as usize] = true;
-            used[b as usize] = true;
-            used[c as usize] = true;
-            dsu.union(a, b);
-            dsu.union(a, c);
-        }
-        let components = dsu.roots_among(&used);
-        let isolated = used.iter().filter(|&&u| !u).count() as u64;
+        let (components, isolated) = element_components::<3>(&self.v, n, |x| self.vertex_origin(x));
 
         // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
         let o = self.opposites_or_computed();

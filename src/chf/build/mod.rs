@@ -14,7 +14,7 @@ mod strict;
 use self::orient::flipped_id;
 pub use self::report::BuildReport;
 use self::soup::Soup;
-use self::strict::{strict_after_split, strict_faces};
+use self::strict::Strict;
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::edges::{self, EdgeCensus};
@@ -22,38 +22,11 @@ use crate::chf::ids::tet;
 use crate::chf::star_pass::link::FaceCensus;
 use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
 use crate::error::{Error, Result};
+use crate::util::options::check_input;
+use crate::util::origin::OriginMap;
 use glam::DVec3;
 
-/// How to build: the level (0..=3) and whether non-manifold input is an error.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct BuildOptions {
-    pub level: u8,
-    /// Reject non-manifold faces, edges and vertices and duplicate tetrahedra instead of
-    /// keeping them.
-    pub strict: bool,
-    /// Threads for the build: 0 (the default) for as many as the machine runs at once, 1
-    /// for the calling thread alone. The structure is the same whatever the number.
-    pub threads: usize,
-}
-
-impl Default for BuildOptions {
-    fn default() -> Self {
-        BuildOptions {
-            level: 2,
-            strict: false,
-            threads: 0,
-        }
-    }
-}
-
-impl BuildOptions {
-    pub fn level(level: u8) -> Self {
-        BuildOptions {
-            level,
-            ..Self::default()
-        }
-    }
-}
+pub use crate::util::options::BuildOptions;
 
 /// Largest tetrahedron count whose half-face ids (`4T`) fit below `NONE`.
 pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
@@ -65,7 +38,12 @@ pub(crate) fn build(
     positions: &[DVec3],
     options: BuildOptions,
 ) -> Result<Chf> {
-    check_sizes(tets.len(), n_vertices, positions.len(), options.level)?;
+    check_input(
+        &options,
+        n_vertices,
+        positions.len(),
+        too_many_tetrahedra(tets.len()),
+    )?;
     let mut report = BuildReport::of_input(tets.len(), n_vertices);
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
@@ -80,7 +58,7 @@ pub(crate) fn build(
         pairs,
         pass,
     } = oriented(tets, n_vertices, positions, options, &mut report)?;
-    let origin_of = |t: u32| origin(&tet_origin, t);
+    let origin_of = |t: u32| tet_origin.get(t);
     non_manifold.sort_unstable();
     // 4. Vertex split, when some star is in several pieces.
     let copies = if stars.split_needed {
@@ -90,7 +68,7 @@ pub(crate) fn build(
     };
     drop(links);
     let n_total = n_vertices + copies.len();
-    let vertex_origin = vertex_origins(n_vertices, &copies);
+    let vertex_origin = OriginMap::with_copies(n_vertices, &copies);
     // 5. Edges: the census by input vertex pair (after a split, one more star pass).
     let census = if copies.is_empty() {
         std::mem::take(&mut stars.census)
@@ -105,7 +83,12 @@ pub(crate) fn build(
     };
     record_edges(&mut report, &census);
     if options.strict {
-        strict_after_split(&report, &v, &vertex_origin, &origin_of)?;
+        let strict = Strict {
+            report: &report,
+            v: &v,
+            origin_of: &origin_of,
+        };
+        strict.after_split(&vertex_origin)?;
     }
     // 6. Level 1, then the levels above it.
     let chf = Chf {
@@ -138,7 +121,7 @@ struct Oriented {
     non_manifold: Vec<u32>,
     /// The last star pass, on this `V`.
     stars: Stars,
-    tet_origin: Vec<u32>,
+    tet_origin: OriginMap,
     /// Triples of two half-faces.
     pairs: usize,
     /// The build's star pass, pairs aside.
@@ -156,8 +139,8 @@ fn oriented(
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // 1. Soup: range check, degenerate tetrahedra dropped, flips by the determinant.
     let mut soup = soup::soup(tets, n_vertices, positions, report, n_threads)?;
-    let tet_origin = std::mem::take(&mut soup.tet_origin);
-    let origin_of = |t: u32| origin(&tet_origin, t);
+    let tet_origin = OriginMap::from(std::mem::take(&mut soup.tet_origin));
+    let origin_of = |t: u32| tet_origin.get(t);
     // 2. The star pass: faces and their pairs, pieces, edges, `VH` and the edge bits.
     let pass = StarPass {
         pairs: Pairs::No,
@@ -169,7 +152,12 @@ fn oriented(
     let same_direction = faces.same_direction;
     let mut non_manifold = record_faces(report, faces, &origin_of);
     if options.strict {
-        strict_faces(report, &soup.v, &non_manifold, &origin_of)?;
+        let strict = Strict {
+            report,
+            v: &soup.v,
+            origin_of: &origin_of,
+        };
+        strict.faces(&non_manifold)?;
     }
     // 3. Orientation, only when some pair still runs the same way after the soup's flips:
     // otherwise the pairs are the opposites (see `soup.rs`) and the stars are right as found.
@@ -192,15 +180,6 @@ fn oriented(
         pairs,
         pass,
     })
-}
-
-/// Structure tetrahedron `t`'s input tetrahedron (`tet_origin` empty for the identity).
-fn origin(tet_origin: &[u32], t: u32) -> u32 {
-    if tet_origin.is_empty() {
-        t
-    } else {
-        tet_origin[t as usize]
-    }
 }
 
 /// The build's first star pass, on the soup's `V`: the face census and the partners
@@ -281,14 +260,15 @@ fn orient_soup(
     let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign);
     drop(input_partner);
     let origins = |ts: &[u32]| ts.iter().map(|&t| origin_of(t)).collect();
-    report.flipped_tetrahedra = oriented.flipped_count;
-    report.non_orientable_components = oriented.non_orientable_components;
-    report.non_orientable_examples = origins(&oriented.non_orientable_examples);
+    let flips = &oriented.flips;
+    report.flipped_tetrahedra = flips.flipped_count;
+    report.non_orientable_components = flips.non_orientable_components;
+    report.non_orientable_examples = origins(&flips.non_orientable_examples);
     report.inverted_tetrahedra = oriented.inverted;
     report.inverted_examples = origins(&oriented.inverted_examples);
     report.seam_faces = oriented.seams.len() / 2;
     for hf in non_manifold.iter_mut() {
-        if oriented.flipped[tet(*hf) as usize] {
+        if flips.flipped[tet(*hf) as usize] {
             *hf = flipped_id(*hf);
         }
     }
@@ -315,17 +295,6 @@ fn split_vertices(
         )));
     }
     Ok(split.copies)
-}
-
-/// Structure vertex -> input vertex; empty when the identity (no copies).
-fn vertex_origins(n_vertices: usize, copies: &[u32]) -> Vec<u32> {
-    if copies.is_empty() {
-        Vec::new()
-    } else {
-        (0..n_vertices as u32)
-            .chain(copies.iter().copied())
-            .collect()
-    }
 }
 
 /// The positions, each copy repeating its origin's.
@@ -399,29 +368,13 @@ fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<
     Ok(chf)
 }
 
-/// Level, counts and lengths, before anything is allocated.
-fn check_sizes(n_tets: usize, n_vertices: usize, n_positions: usize, level: u8) -> Result<()> {
-    if level > 3 {
-        return Err(Error::out_of_range(format!(
-            "level {level} is not in 0..=3"
-        )));
-    }
-    if n_vertices >= NONE as usize {
-        return Err(Error::too_large(format!(
-            "{n_vertices} vertices: ids must fit below 2^32 - 1"
-        )));
-    }
-    if n_tets > MAX_TETRAHEDRA {
-        return Err(Error::too_large(format!(
+/// The build's own message when `n_tets` elements do not fit below `NONE`.
+fn too_many_tetrahedra(n_tets: usize) -> Option<String> {
+    (n_tets > MAX_TETRAHEDRA).then(|| {
+        format!(
             "tetrahedron {MAX_TETRAHEDRA} (of {n_tets}): half-face ids must fit below 2^32 - 1, so at most {MAX_TETRAHEDRA} tetrahedra"
-        )));
-    }
-    if n_positions != 0 && n_positions != n_vertices {
-        return Err(Error::invalid(format!(
-            "{n_positions} positions given for {n_vertices} vertices"
-        )));
-    }
-    Ok(())
+        )
+    })
 }
 
 fn record_edges(report: &mut BuildReport, census: &EdgeCensus) {
@@ -439,21 +392,24 @@ mod tests {
 
     #[test]
     fn sizes_are_checked_before_allocating() {
-        assert!(check_sizes(MAX_TETRAHEDRA, 10, 0, 3).is_ok());
-        let e = check_sizes(MAX_TETRAHEDRA + 1, 10, 0, 2).unwrap_err();
+        let check = |n_tets, n_vertices, n_positions, level| {
+            let options = BuildOptions::level(level);
+            check_input(
+                &options,
+                n_vertices,
+                n_positions,
+                too_many_tetrahedra(n_tets),
+            )
+        };
+        assert!(check(MAX_TETRAHEDRA, 10, 0, 3).is_ok());
+        let e = check(MAX_TETRAHEDRA + 1, 10, 0, 2).unwrap_err();
         assert_eq!(e.kind, ErrorKind::TooLarge);
         assert!(e.message.contains(&format!("tetrahedron {MAX_TETRAHEDRA}")));
         assert!(4 * MAX_TETRAHEDRA < NONE as usize);
         assert!(4 * (MAX_TETRAHEDRA + 1) > NONE as usize);
-        let e = check_sizes(1, NONE as usize, 0, 2).unwrap_err();
+        let e = check(1, NONE as usize, 0, 2).unwrap_err();
         assert_eq!(e.kind, ErrorKind::TooLarge);
-        assert_eq!(
-            check_sizes(1, 4, 3, 2).unwrap_err().kind,
-            ErrorKind::InvalidInput
-        );
-        assert_eq!(
-            check_sizes(1, 4, 0, 4).unwrap_err().kind,
-            ErrorKind::OutOfRange
-        );
+        assert_eq!(check(1, 4, 3, 2).unwrap_err().kind, ErrorKind::InvalidInput);
+        assert_eq!(check(1, 4, 0, 4).unwrap_err().kind, ErrorKind::OutOfRange);
     }
 }

@@ -12,7 +12,8 @@
 
 use crate::NONE;
 use crate::chf::build::report::push_example;
-use crate::chf::ids::{first, same_direction, tet};
+use crate::chf::ids::{same_direction, tet};
+use crate::util::orient::{Flips, choose_flips};
 
 pub(crate) struct Oriented {
     /// Opposites in the flipped numbering (seams left unpaired).
@@ -22,12 +23,9 @@ pub(crate) struct Oriented {
     /// When there are seams: the partners including the seam pairs, flipped numbering
     /// (the input's face adjacency, to tell seam splits from non-manifold vertices).
     pub links: Vec<u32>,
-    /// Per tetrahedron: was it flipped.
-    pub flipped: Vec<bool>,
-    pub flipped_count: usize,
-    pub non_orientable_components: usize,
-    /// Structure tetrahedra (one per non-orientable component).
-    pub non_orientable_examples: Vec<u32>,
+    /// Per tetrahedron: was it flipped; the counts and examples (structure tetrahedra) for
+    /// the report.
+    pub flips: Flips,
     pub inverted: usize,
     /// Structure tetrahedra.
     pub inverted_examples: Vec<u32>,
@@ -48,128 +46,28 @@ pub(crate) fn flipped_id(hf: u32) -> u32 {
 /// (either orientation), else `NONE`. `sign` is empty or holds the sign of each
 /// tetrahedron's determinant. Flips `v` in place.
 pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Oriented {
-    let n_tets = v.len() / 4;
-    let mut flipped = vec![false; n_tets];
-    let mut visited = vec![false; n_tets];
-    let mut seam_pairs: Vec<u32> = Vec::new();
-    let mut queue: Vec<u32> = Vec::new();
+    let flips = choose_flips::<4>(partner, |h, g| same_direction(v, h, g), sign);
+    let (mut inverted, mut inverted_examples) = (0, Vec::new());
+    if !sign.is_empty() {
+        for (t, &f) in flips.flipped.iter().enumerate() {
+            let s = if f { -sign[t] } else { sign[t] };
+            if s < 0 {
+                inverted += 1;
+                push_example(&mut inverted_examples, t as u32);
+            }
+        }
+    }
     let mut out = Oriented {
         o: Vec::new(),
         seams: Vec::new(),
         links: Vec::new(),
-        flipped: Vec::new(),
-        flipped_count: 0,
-        non_orientable_components: 0,
-        non_orientable_examples: Vec::new(),
-        inverted: 0,
-        inverted_examples: Vec::new(),
+        flips: Flips::default(),
+        inverted,
+        inverted_examples,
     };
-    let mut walk = Walk {
-        v,
-        partner,
-        flipped: &mut flipped,
-        visited: &mut visited,
-        seam_pairs: &mut seam_pairs,
-    };
-    for root in 0..n_tets as u32 {
-        if walk.visited[root as usize] {
-            continue;
-        }
-        let conflict = walk.component(root, &mut queue);
-        out.flipped_count += settle(&queue, walk.flipped, sign);
-        if conflict {
-            out.non_orientable_components += 1;
-            push_example(&mut out.non_orientable_examples, root);
-        }
-    }
-    if !sign.is_empty() {
-        for (t, &f) in flipped.iter().enumerate() {
-            let s = if f { -sign[t] } else { sign[t] };
-            if s < 0 {
-                out.inverted += 1;
-                push_example(&mut out.inverted_examples, t as u32);
-            }
-        }
-    }
-    apply(v, partner, &flipped, &seam_pairs, &mut out);
-    out.flipped = flipped;
+    apply(v, partner, &flips.flipped, &flips.seam_pairs, &mut out);
+    out.flips = flips;
     out
-}
-
-/// The propagation's state: a flip per tetrahedron, relative to its component's root.
-struct Walk<'a> {
-    v: &'a [u32],
-    partner: &'a [u32],
-    flipped: &'a mut [bool],
-    visited: &'a mut [bool],
-    /// Pairs that disagree, `h < g` each.
-    seam_pairs: &'a mut Vec<u32>,
-}
-
-impl Walk<'_> {
-    /// Visits the component of `root` breadth first into `queue`, flipping each tetrahedron
-    /// to agree with the one it is reached from; true when some pair disagrees anyway.
-    fn component(&mut self, root: u32, queue: &mut Vec<u32>) -> bool {
-        self.visited[root as usize] = true;
-        queue.clear();
-        queue.push(root);
-        let mut head = 0;
-        let mut conflict = false;
-        while head < queue.len() {
-            let t = queue[head];
-            head += 1;
-            let ft = self.flipped[t as usize];
-            for h in first(t)..first(t) + 4 {
-                let g = self.partner[h as usize];
-                if g == NONE {
-                    continue;
-                }
-                let t2 = tet(g);
-                let want = ft ^ same_direction(self.v, h, g);
-                if !self.visited[t2 as usize] {
-                    self.visited[t2 as usize] = true;
-                    self.flipped[t2 as usize] = want;
-                    queue.push(t2);
-                } else if self.flipped[t2 as usize] != want && h < g {
-                    conflict = true;
-                    self.seam_pairs.push(h);
-                    self.seam_pairs.push(g);
-                }
-            }
-        }
-        conflict
-    }
-}
-
-/// Chooses the orientation of a component (`queue`): the one most determinants agree
-/// with, else the one that keeps most of the input's. Returns the tetrahedra it flips.
-fn settle(queue: &[u32], flipped: &mut [bool], sign: &[i8]) -> usize {
-    let (mut pos, mut neg) = (0usize, 0usize);
-    if !sign.is_empty() {
-        for &t in queue {
-            let s = sign[t as usize];
-            match if flipped[t as usize] { -s } else { s } {
-                1 => pos += 1,
-                -1 => neg += 1,
-                _ => {}
-            }
-        }
-    }
-    let count = queue.iter().filter(|&&t| flipped[t as usize]).count();
-    let flip_all = if pos != neg {
-        neg > pos
-    } else {
-        // Keep as much of the input orientation as possible.
-        2 * count > queue.len()
-    };
-    if flip_all {
-        for &t in queue {
-            flipped[t as usize] = !flipped[t as usize];
-        }
-        queue.len() - count
-    } else {
-        count
-    }
 }
 
 /// Flips the tetrahedra of `v` and renumbers the pairs: `O` without the seams, the seams,

@@ -15,25 +15,8 @@ use crate::chf::ids::{EDGE, face_cycle};
 use crate::chf::query::fan::EdgeIds;
 use crate::chf::query::view::{Need, View};
 
-/// Rows `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Csr {
-    pub offsets: Vec<u32>,
-    pub indices: Vec<u32>,
-}
-
-impl Csr {
-    /// The number of rows.
-    pub fn len(&self) -> usize {
-        self.offsets.len().saturating_sub(1)
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-    pub fn row(&self, i: usize) -> &[u32] {
-        &self.indices[self.offsets[i] as usize..self.offsets[i + 1] as usize]
-    }
-}
+/// Row `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
+pub type Csr = crate::util::csr::Csr<u32>;
 
 /// Rows over `n` vertices from `(vertex, id)` pairs given twice by `each` (once to count,
 /// once to place), ids in increasing order per pass, so that every row is sorted.
@@ -190,12 +173,10 @@ mod tests {
 
     #[test]
     fn bulk_rows_are_the_one_element_answers_at_every_level() {
-        let mut rnd = crate::util::test_rng(0x2545_F491_4F6C_DD1Du64);
-        for round in 0..60 {
-            let n = 6 + round % 15;
-            let tets: Vec<[u32; 4]> = (0..8 + round % 40)
-                .map(|_| [0; 4].map(|_| rnd(n)))
-                .collect();
+        let seed = 0x2545_F491_4F6C_DD1Du64;
+        for (round, (n, tets)) in
+            crate::util::test_soups::<4>(seed, 60, (6, 15), (8, 40)).enumerate()
+        {
             for level in 0..=3 {
                 let chf = Chf::from_tetrahedra(&tets, n, &[], BuildOptions::level(level)).unwrap();
                 let nv = chf.num_vertices();

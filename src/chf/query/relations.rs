@@ -15,10 +15,9 @@ impl Chf {
     #[inline]
     pub fn opposite(&self, hf: u32) -> u32 {
         if self.level >= 1 {
-            self.o[hf as usize]
-        } else {
-            self.opposite_by_scan(hf)
+            return self.o[hf as usize];
         }
+        self.opposite_by_scan(hf)
     }
 
     /// Is half-face `hf` on the boundary? O(1) from level 1.
@@ -154,13 +153,7 @@ impl Chf {
     pub fn face_tetrahedra(&self, f: u32) -> Ids<2> {
         let view = self.view(Need::FACES);
         let hf = view.face_half_face(f);
-        let mut out = Ids::new();
-        out.push(tet(hf));
-        let o = view.opposite(hf);
-        if o != NONE {
-            out.push(tet(o));
-        }
-        out
+        Ids::both_sides(hf, view.opposite(hf), tet)
     }
 
     /// TV: the four vertices of tetrahedron `t`.

@@ -6,6 +6,7 @@ use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::face_cycle;
 use crate::chf::query::view::Need;
+use crate::util::dsu::{Dsu, element_components};
 
 /// Field names match `chf_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -39,52 +40,12 @@ pub struct Summary {
     pub non_orientable_components: u64,
 }
 
-/// Union-find over input vertex ids.
-struct Dsu(Vec<u32>);
-
-impl Dsu {
-    fn new(n: usize) -> Self {
-        Dsu((0..n as u32).collect())
-    }
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.0[x as usize] != x {
-            let up = self.0[self.0[x as usize] as usize];
-            self.0[x as usize] = up;
-            x = up;
-        }
-        x
-    }
-    fn union(&mut self, a: u32, b: u32) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra != rb {
-            self.0[ra.max(rb) as usize] = ra.min(rb);
-        }
-    }
-    fn roots_among(&mut self, used: &[bool]) -> u64 {
-        (0..used.len() as u32)
-            .filter(|&x| used[x as usize] && self.find(x) == x)
-            .count() as u64
-    }
-}
-
 impl Chf {
     /// The summary; O(T log T) at every level (it sorts the boundary edges).
     pub fn summary(&self) -> Summary {
         let r = &self.report;
         let n = self.n_input_vertices;
-        let mut used = vec![false; n];
-        let mut dsu = Dsu::new(n);
-        for t in self.v.chunks_exact(4) {
-            let [a, b, c, d] = [t[0], t[1], t[2], t[3]].map(|x| self.vertex_origin(x));
-            for x in [a, b, c, d] {
-                used[x as usize] = true;
-            }
-            dsu.union(a, b);
-            dsu.union(a, c);
-            dsu.union(a, d);
-        }
-        let components = dsu.roots_among(&used);
-        let isolated = used.iter().filter(|&&u| !u).count() as u64;
+        let (components, isolated) = element_components::<4>(&self.v, n, |x| self.vertex_origin(x));
 
         // Input boundary faces: unpaired half-faces that are neither non-manifold nor seams.
         let view = self.view(Need::NOTHING);

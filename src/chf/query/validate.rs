@@ -13,6 +13,18 @@ fn broken(what: String) -> Result<()> {
     Err(Error::invalid(format!("invalid CHF: {what}")))
 }
 
+/// `Err` unless the array `name` has one entry for each of the `n` elements (`of`).
+fn ensure_len(name: &str, len: usize, n: usize, of: &str) -> Result<()> {
+    ensure(len == n, || {
+        format!("{name} has {len} entries for {n} {of}")
+    })
+}
+
+/// `Err` unless a directory of `kind` sets one bit (`ones` in all) for each of `n` elements.
+fn ensure_ones(kind: &str, ones: usize, n: usize) -> Result<()> {
+    ensure(ones == n, || format!("{ones} {kind} bits for {n} {kind}s"))
+}
+
 /// `Err` with `what` unless `ok`.
 fn ensure(ok: bool, what: impl FnOnce() -> String) -> Result<()> {
     if ok { Ok(()) } else { broken(what()) }
@@ -167,9 +179,7 @@ impl Chf {
     /// unpaired, and what the rule pairs (`rule`).
     fn validate_opposites(&self, flagged: &[u32], rule: &[u32]) -> Result<()> {
         let o = &self.o;
-        ensure(o.len() == self.v.len(), || {
-            format!("O has {} entries for {} half-faces", o.len(), self.v.len())
-        })?;
+        ensure_len("O", o.len(), self.v.len(), "half-faces")?;
         for (h, &g) in o.iter().enumerate() {
             let h = h as u32;
             if g == NONE {
@@ -201,20 +211,8 @@ impl Chf {
     /// Level 2's faces: a bit on each canonical half-face, `FH` the canonical half-faces
     /// in order.
     fn validate_faces(&self, canonical: &impl Fn(usize) -> bool) -> Result<()> {
-        ensure(self.face_bits.ones() == self.num_faces, || {
-            format!(
-                "{} face bits for {} faces",
-                self.face_bits.ones(),
-                self.num_faces
-            )
-        })?;
-        ensure(self.fh.len() == self.num_faces, || {
-            format!(
-                "FH has {} entries for {} faces",
-                self.fh.len(),
-                self.num_faces
-            )
-        })?;
+        ensure_ones("face", self.face_bits.ones(), self.num_faces)?;
+        ensure_len("FH", self.fh.len(), self.num_faces, "faces")?;
         let mut f = 0;
         for hf in 0..self.v.len() {
             ensure(self.face_bits.get(hf) == canonical(hf), || {
@@ -234,20 +232,8 @@ impl Chf {
     /// of each.
     fn validate_edges(&self, rule: &crate::util::rank::RankBits) -> Result<()> {
         let n_slots = 6 * self.num_tetrahedra();
-        ensure(self.edge_bits.ones() == self.num_edges, || {
-            format!(
-                "{} edge bits for {} edges",
-                self.edge_bits.ones(),
-                self.num_edges
-            )
-        })?;
-        ensure(self.eh.len() == self.num_edges, || {
-            format!(
-                "EH has {} entries for {} edges",
-                self.eh.len(),
-                self.num_edges
-            )
-        })?;
+        ensure_ones("edge", self.edge_bits.ones(), self.num_edges)?;
+        ensure_len("EH", self.eh.len(), self.num_edges, "edges")?;
         let mut e = 0;
         for s in 0..n_slots {
             let bit = self.edge_bits.get(s);
@@ -275,13 +261,7 @@ impl Chf {
     /// exactly on isolated ones.
     fn validate_vertex_half_faces(&self, o: &[u32]) -> Result<()> {
         let vh = &self.vh;
-        ensure(vh.len() == self.n_vertices, || {
-            format!(
-                "VH has {} entries for {} vertices",
-                vh.len(),
-                self.n_vertices
-            )
-        })?;
+        ensure_len("VH", vh.len(), self.n_vertices, "vertices")?;
         let mut used = vec![false; self.n_vertices];
         let mut boundary = vec![false; self.n_vertices];
         for &x in &self.v {
@@ -480,10 +460,12 @@ mod tests {
         c.v[5] = c.v[4];
         fails(&c, "degenerate");
         let mut c = chf.clone();
-        c.vertex_origin[0] = 3;
+        let mut map = c.vertex_origin.to_vec();
+        map[0] = 3;
+        c.vertex_origin = map.into();
         fails(&c, "vertex 0 has origin 3");
         let mut c = chf.clone();
-        c.tet_origin = vec![1, 0];
+        c.tet_origin = vec![1, 0].into();
         fails(&c, "tetrahedron origins");
         let mut c = chf.clone();
         c.seams = vec![4, 2];

@@ -730,13 +730,11 @@ mod against_walks {
 
     #[test]
     fn stars_match_walking_the_fans() {
-        let mut rnd = crate::util::test_rng(0x1234_5678_9ABC_DEF0u64);
-        for round in 0..200 {
-            // Random soups: duplicates, non-manifold faces and edges, pinched links, seams.
-            let n = 6 + round % 20;
-            let tets: Vec<[u32; 4]> = (0..10 + round % 60)
-                .map(|_| [0; 4].map(|_| rnd(n)))
-                .collect();
+        // Random soups: duplicates, non-manifold faces and edges, pinched links, seams.
+        let seed = 0x1234_5678_9ABC_DEF0u64;
+        for (round, (n, tets)) in
+            crate::util::test_soups::<4>(seed, 200, (6, 20), (10, 60)).enumerate()
+        {
             let chf = Chf::from_tetrahedra(&tets, n, &[], BuildOptions::level(1)).unwrap();
             let flagged = merged(&chf.non_manifold, &chf.seams);
             let stars = stars(

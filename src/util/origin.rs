@@ -1,0 +1,55 @@
+//! Where each element of a structure comes from in the input: the vertex, triangle and
+//! tetrahedron origin maps of CHE and CHF, stored empty when they are the identity.
+
+use std::ops::Deref;
+
+/// Structure element -> input element; no storage when every element is its own origin.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct OriginMap(Vec<u32>);
+
+impl OriginMap {
+    /// The vertex map after a split: the input vertices map to themselves, and copy
+    /// `n_vertices + i` to `copies[i]`; the identity when nothing was copied.
+    pub(crate) fn with_copies(n_vertices: usize, copies: &[u32]) -> OriginMap {
+        if copies.is_empty() {
+            OriginMap::default()
+        } else {
+            OriginMap(
+                (0..n_vertices as u32)
+                    .chain(copies.iter().copied())
+                    .collect(),
+            )
+        }
+    }
+
+    /// The input element `x` comes from.
+    #[inline]
+    pub(crate) fn get(&self, x: u32) -> u32 {
+        origin(&self.0, x)
+    }
+
+    /// The map, or `None` when it is the identity.
+    pub(crate) fn explicit(&self) -> Option<&[u32]> {
+        (!self.0.is_empty()).then_some(&self.0[..])
+    }
+}
+
+/// The stored map (empty for the identity).
+impl Deref for OriginMap {
+    type Target = [u32];
+    fn deref(&self) -> &[u32] {
+        &self.0
+    }
+}
+
+impl From<Vec<u32>> for OriginMap {
+    fn from(map: Vec<u32>) -> Self {
+        OriginMap(map)
+    }
+}
+
+/// The input element `x` comes from, by a map stored empty for the identity.
+#[inline]
+pub(crate) fn origin(map: &[u32], x: u32) -> u32 {
+    if map.is_empty() { x } else { map[x as usize] }
+}

@@ -1,7 +1,7 @@
 //! Grouping half-edges by unordered vertex pair, for the build's matching step and for `O`
-//! computed from `V` (raising level 0, and queries at level 0): a counting pass buckets the
-//! half-edges by their smaller vertex, then each (small) bucket is sorted by the larger
-//! vertex. O(T) plus tiny sorts; no hash map, no global comparison sort.
+//! computed from `V` (raising level 0, and queries at level 0): a two-pass radix buckets the
+//! half-edges by their smaller vertex (see [`for_each_group`]), then each (small) bucket is
+//! sorted by the larger vertex. O(T) plus tiny sorts; no hash map, no global comparison sort.
 
 use super::ids::next;
 use crate::NONE;

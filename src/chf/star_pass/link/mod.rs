@@ -1,4 +1,4 @@
-//! The work on one vertex star, from its records alone (see `stars.rs`): the star of `x`
+//! The work on one vertex star, from its records alone (see the star pass, `star_pass/mod.rs`): the star of `x`
 //! is its tetrahedra; its **link** is the surface of their faces opposite `x` (one
 //! triangle per tetrahedron). A face `(x, y, z)` is the link edge `(y, z)`, so:
 //!

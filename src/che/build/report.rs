@@ -1,7 +1,7 @@
 //! What a build did to its input: nothing is dropped or changed without being listed here.
 //! Lists keep the first [`crate::REPORT_EXAMPLES`] offending ids.
 
-/// Counts, plus the first [`REPORT_EXAMPLES`] offending ids of each kind (input ids).
+/// Counts, plus the first [`REPORT_EXAMPLES`](crate::REPORT_EXAMPLES) offending ids of each kind (input ids).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct BuildReport {
     /// Triangles given.

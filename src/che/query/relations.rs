@@ -114,7 +114,7 @@ impl Che {
         self.vertex_half_edge(v) == NONE
     }
 
-    /// The star of `v` in rotation order; see [`StarStep`].
+    /// The star of `v` in rotation order; see [`StarStep`](crate::che::StarStep).
     pub fn vertex_star(&self, v: u32) -> Rotation<'_> {
         let start = self.vertex_half_edge(v);
         let mut r = Rotation::new(self, start);

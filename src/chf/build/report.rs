@@ -1,6 +1,6 @@
 //! What a build did to its input: nothing is dropped or changed without being listed here.
 
-/// Counts, plus the first [`REPORT_EXAMPLES`] offending ids of each kind (input ids:
+/// Counts, plus the first [`REPORT_EXAMPLES`](crate::REPORT_EXAMPLES) offending ids of each kind (input ids:
 /// input tetrahedra, input vertices).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct BuildReport {

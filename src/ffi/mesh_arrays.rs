@@ -20,13 +20,26 @@ pub(crate) fn coordinates(points: &[DVec3]) -> &[f64] {
 }
 
 /// What one build call takes: `per` vertex ids per cell, at most `max_cells` cells
-/// (`cells` names them, `part` names the ids that must fit: "half-edge", "half-face").
+/// (`cells` names them, `part` names the ids that must fit).
 pub(crate) struct Cells {
-    pub per: usize,
-    pub max_cells: usize,
-    pub cells: &'static str,
-    pub part: &'static str,
+    per: usize,
+    max_cells: usize,
+    cells: &'static str,
+    part: &'static str,
 }
+
+pub(crate) const TRIANGLES: Cells = Cells {
+    per: 3,
+    max_cells: crate::che::MAX_TRIANGLES,
+    cells: "triangles",
+    part: "half-edge",
+};
+pub(crate) const TETRAHEDRA: Cells = Cells {
+    per: 4,
+    max_cells: crate::chf::MAX_TETRAHEDRA,
+    cells: "tetrahedra",
+    part: "half-face",
+};
 
 /// The ids (`per * n_cells`) and positions (empty, or `n_vertices`) of a build call.
 ///

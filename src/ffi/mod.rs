@@ -39,6 +39,8 @@ pub mod che;
 pub mod chf;
 mod mesh_arrays;
 mod shapes;
+#[cfg(test)]
+mod tests;
 
 pub use che::{CheBuildOptions, CheMesh};
 pub use che::{CheBuildReport, CheMemory, CheReportKind, CheStarIter, CheStarStep, CheSummary};

@@ -1,6 +1,6 @@
 //! Status codes, the thread-local last-error detail and the library version.
 
-use super::boundary::{self, Out};
+use super::boundary;
 use std::ffi::c_char;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
@@ -74,7 +74,7 @@ pub unsafe extern "C" fn topomesh_last_error(
     // Not behind `boundary::guard`: reading the detail must not overwrite it.
     let run = || {
         // SAFETY: the caller passes NULL or a pointer valid for one write.
-        let Some(out_len) = (unsafe { Out::new(out_len) }) else {
+        let Some(out_len) = (unsafe { boundary::out_arg(out_len, "out_len").ok() }) else {
             return Status::NullArgument;
         };
         if buf.is_null() && cap != 0 {

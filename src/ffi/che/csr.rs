@@ -25,16 +25,8 @@ pub unsafe extern "C" fn che_mesh_vertex_vertices_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        vertex_vertices_rows
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => vertex_vertices_rows)
 }
 
 /// VE for every vertex (rows as `che_vertex_edges`).
@@ -48,16 +40,8 @@ pub unsafe extern "C" fn che_mesh_vertex_edges_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        vertex_edges_rows
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => vertex_edges_rows)
 }
 
 /// VF for every vertex (rows as `che_vertex_triangles`).
@@ -71,16 +55,8 @@ pub unsafe extern "C" fn che_mesh_vertex_triangles_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        vertex_triangles_rows
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => vertex_triangles_rows)
 }
 
 /// FF for every triangle: 3 entries per row (so `offsets[t] == 3 t`), `TOPOMESH_NONE`
@@ -95,14 +71,6 @@ pub unsafe extern "C" fn che_mesh_triangle_triangles_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        triangle_triangles_rows
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => triangle_triangles_rows)
 }

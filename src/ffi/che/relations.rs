@@ -140,10 +140,7 @@ pub unsafe extern "C" fn che_boundary_curve_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    ids!(m, buf, cap, out_len, |c, s| {
-        s.extend(c.boundary_curve_vertices(curve)?);
-        Ok(())
-    })
+    ids!(m, buf, cap, out_len, try |c| c.boundary_curve_vertices(curve))
 }
 
 /// The opposite of half-edge `h` into `*out` (`TOPOMESH_NONE` on the boundary).

@@ -13,28 +13,8 @@
 //! temporary memory. A size query followed by the call does the work twice.
 
 use super::ChfMesh;
-use crate::chf;
-use crate::ffi::boundary::CsrSink;
 use crate::ffi::shapes::csr;
 use crate::ffi::status::Status;
-
-/// Copies the rows of a CSR computed in full.
-fn copy(s: &mut CsrSink<'_>, c: &chf::Csr) {
-    for i in 0..c.len() {
-        s.row();
-        for &x in c.row(i) {
-            s.push(x);
-        }
-    }
-}
-
-/// Streams one row per call of `each`'s callback.
-fn stream(s: &mut CsrSink<'_>, row: impl IntoIterator<Item = u32>) {
-    s.row();
-    for x in row {
-        s.push(x);
-    }
-}
 
 /// VV for every vertex (rows as `chf_vertex_vertices`).
 #[unsafe(no_mangle)]
@@ -47,16 +27,8 @@ pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        |c, s| copy(s, &c.all_vertex_vertices())
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => |c, s| s.copy(&c.all_vertex_vertices()))
 }
 
 /// VE for every vertex (rows as `chf_vertex_edges`).
@@ -70,16 +42,8 @@ pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        |c, s| copy(s, &c.all_vertex_edges())
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => |c, s| s.copy(&c.all_vertex_edges()))
 }
 
 /// VF for every vertex (rows as `chf_vertex_faces`).
@@ -93,16 +57,8 @@ pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        |c, s| copy(s, &c.all_vertex_faces())
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => |c, s| s.copy(&c.all_vertex_faces()))
 }
 
 /// VT for every vertex (rows as `chf_vertex_tetrahedra`).
@@ -116,16 +72,8 @@ pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        |c, s| copy(s, &c.all_vertex_tetrahedra())
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => |c, s| s.copy(&c.all_vertex_tetrahedra()))
 }
 
 /// EF for every edge (rows as `chf_edge_faces`, in rotation order).
@@ -139,16 +87,8 @@ pub unsafe extern "C" fn chf_mesh_edge_faces_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        |c, s| { c.for_each_edge_faces(|_, row| stream(s, row)) }
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => |c, s| c.for_each_edge_faces(|_, row| s.stream(row)))
 }
 
 /// ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order).
@@ -162,16 +102,8 @@ pub unsafe extern "C" fn chf_mesh_edge_tetrahedra_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        |c, s| { c.for_each_edge_tetrahedra(|_, row| stream(s, row)) }
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => |c, s| c.for_each_edge_tetrahedra(|_, row| s.stream(row)))
 }
 
 /// TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
@@ -187,14 +119,6 @@ pub unsafe extern "C" fn chf_mesh_tetrahedron_tetrahedra_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        |c, s| { c.for_each_tetrahedron_tetrahedra(|row| stream(s, row)) }
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => |c, s| c.for_each_tetrahedron_tetrahedra(|row| s.stream(row)))
 }

@@ -5,6 +5,7 @@
 //! container may be returned as a non-NULL pointer with `*len == 0`.
 
 use super::ChfMesh;
+use crate::ffi::boundary::origins;
 use crate::ffi::mesh_arrays::coordinates;
 use crate::ffi::shapes::view;
 use std::borrow::Cow;
@@ -101,7 +102,11 @@ pub unsafe extern "C" fn chf_mesh_positions(m: *const ChfMesh, len: *mut usize) 
 /// identity; then kept with the mesh.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_origins(m: *const ChfMesh, len: *mut usize) -> *const u32 {
-    view!(m, len, |m| Some(m.vertex_origins()))
+    view!(m, len, |m| Some(origins(
+        m.chf.vertex_origins(),
+        &m.vertex_origins,
+        m.chf.num_vertices()
+    )))
 }
 
 /// Structure tetrahedron -> input tetrahedron (`num_tetrahedra` entries; increasing, with
@@ -112,5 +117,9 @@ pub unsafe extern "C" fn chf_mesh_tetrahedron_origins(
     m: *const ChfMesh,
     len: *mut usize,
 ) -> *const u32 {
-    view!(m, len, |m| Some(m.tetrahedron_origins()))
+    view!(m, len, |m| Some(origins(
+        m.chf.tetrahedron_origins(),
+        &m.tetrahedron_origins,
+        m.chf.num_tetrahedra()
+    )))
 }

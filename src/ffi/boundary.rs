@@ -22,24 +22,10 @@ pub(crate) fn with_last_error<R>(f: impl FnOnce(&str) -> R) -> R {
     LAST_ERROR.with(|e| f(&e.borrow()))
 }
 
-/// Records `e` as the last error and returns its status (`Status` lists the kinds in
-/// `ErrorKind`'s order, after `Ok`).
+/// Records `e` as the last error and returns its status.
 fn fail(e: Error) -> Status {
-    use Status::*;
-    let statuses = [
-        NullArgument,
-        OutOfRange,
-        InvalidInput,
-        NonManifold,
-        BufferTooSmall,
-    ];
-    let more = [Io, Parse, TooLarge, Panic];
     LAST_ERROR.with(|last| *last.borrow_mut() = e.message);
-    statuses
-        .into_iter()
-        .chain(more)
-        .nth(e.kind as usize)
-        .unwrap_or(Panic)
+    super::status::STATUSES[e.kind as usize + 1].0
 }
 
 fn caught(payload: Box<dyn std::any::Any + Send>) -> Status {
@@ -175,6 +161,12 @@ pub(crate) fn origins<'a>(
     map.unwrap_or_else(|| cell.get_or_init(|| (0..n as u32).collect()))
 }
 
+/// The core structure behind a handle, or a NULL_ARGUMENT error naming `m`.
+pub(crate) unsafe fn core<'a, H: Handle + 'a>(m: *const H) -> Result<&'a H::Core> {
+    // SAFETY: forwarded contract.
+    Ok(unsafe { handle(m, "m")? }.core())
+}
+
 /// An opaque handle over a core structure (`Che`, `Chf`): the macros of `shapes` call the
 /// core through it.
 pub(crate) trait Handle {
@@ -287,6 +279,22 @@ pub(crate) struct CsrSink<'a> {
 }
 
 impl CsrSink<'_> {
+    /// `(offsets, offsets_cap, n_offsets)` and the same for the indices, checked.
+    pub(crate) unsafe fn new(bufs: [(*mut u32, usize, *mut usize); 2]) -> Result<Self> {
+        let [(o, oc, no), (i, ic, ni)] = bufs;
+        if o.is_null() != i.is_null() {
+            return Err(null(if o.is_null() { "offsets" } else { "indices" }));
+        }
+        // SAFETY: forwarded contract.
+        let (offsets, indices) = unsafe {
+            (
+                Sink::new(o, oc, no, "offsets")?,
+                Sink::new(i, ic, ni, "indices")?,
+            )
+        };
+        Ok(CsrSink { offsets, indices })
+    }
+
     /// One row.
     pub(crate) fn stream(&mut self, row: impl IntoIterator<Item = u32>) {
         self.row();
@@ -299,7 +307,7 @@ impl CsrSink<'_> {
     }
 
     /// Closes the last row and reports both lengths.
-    fn finish(mut self) -> Result<()> {
+    pub(crate) fn finish(mut self) -> Result<()> {
         self.row();
         if self.indices.len > u32::MAX as usize {
             let n = self.indices.len;
@@ -325,89 +333,4 @@ impl Rows for CsrSink<'_> {
         let at = self.indices.len as u32;
         self.offsets.push(at);
     }
-}
-
-// The bodies behind the macros of `shapes`. Each pointer is NULL or valid for the access
-// its type and capacity state (the safety contract of `ffi`).
-
-#[inline(always)]
-pub(crate) unsafe fn ids_answer<H>(
-    h: *const H,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
-    f: impl FnOnce(&H, &mut Sink<'_>) -> Result<()>,
-) -> Status {
-    guard(|| {
-        // SAFETY: forwarded contract.
-        let (h, mut sink) = unsafe { (handle(h, "m")?, Sink::new(buf, cap, out_len, "buf")?) };
-        f(h, &mut sink)?;
-        sink.finish()
-    })
-}
-
-#[inline(always)]
-pub(crate) unsafe fn value_answer<H, T>(
-    h: *const H,
-    out: *mut T,
-    f: impl FnOnce(&H) -> Result<T>,
-) -> Status {
-    guard(|| {
-        // SAFETY: forwarded contract.
-        let (h, out) = unsafe { (handle(h, "m")?, out_arg(out, "out")?) };
-        out.set(f(h)?);
-        Ok(())
-    })
-}
-
-/// The container's first element and its length, or NULL and 0 for a NULL handle or a
-/// container missing at this level.
-pub(crate) unsafe fn view_answer<M, T>(
-    m: *const M,
-    len: *mut usize,
-    f: impl FnOnce(&M) -> Option<&[T]>,
-) -> *const T {
-    let (p, n) = guard_or((std::ptr::null(), 0), || {
-        // SAFETY: forwarded contract.
-        let m = unsafe { handle(m, "m")? };
-        Ok(f(m).map_or((std::ptr::null(), 0), |s| (s.as_ptr(), s.len())))
-    });
-    if !len.is_null() {
-        // SAFETY: non-NULL, valid for one write (contract).
-        unsafe { len.write(n) };
-    }
-    p
-}
-
-/// The handle and the buffers checked, the rows filled, the lengths written.
-#[allow(clippy::too_many_arguments)]
-pub(crate) unsafe fn csr_answer<M>(
-    m: *const M,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
-    fill: impl FnOnce(&M, &mut CsrSink<'_>) -> Result<()>,
-) -> Status {
-    guard(|| {
-        // SAFETY: forwarded contract.
-        let m = unsafe { handle(m, "m")? };
-        if offsets.is_null() != indices.is_null() {
-            return Err(null(if offsets.is_null() {
-                "offsets"
-            } else {
-                "indices"
-            }));
-        }
-        // SAFETY: forwarded contract.
-        let mut sink = unsafe {
-            let offsets = Sink::new(offsets, offsets_cap, n_offsets, "offsets")?;
-            let indices = Sink::new(indices, indices_cap, n_indices, "indices")?;
-            CsrSink { offsets, indices }
-        };
-        fill(m, &mut sink)?;
-        sink.finish()
-    })
 }

@@ -14,8 +14,7 @@ macro_rules! count {
     ($m:ident, |$c:ident| $value:expr) => {
         $crate::ffi::boundary::guard_or(0 as _, || {
             // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-            let h = unsafe { $crate::ffi::boundary::handle($m, "m")? };
-            let $c = $crate::ffi::boundary::Handle::core(h);
+            let $c = unsafe { $crate::ffi::boundary::core($m)? };
             Ok($value)
         })
     };
@@ -26,8 +25,7 @@ macro_rules! status {
     ($m:ident, |$c:ident| $result:expr) => {
         $crate::ffi::boundary::guard(|| {
             // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-            let h = unsafe { $crate::ffi::boundary::handle($m, "m")? };
-            let $c = $crate::ffi::boundary::Handle::core(h);
+            let $c = unsafe { $crate::ffi::boundary::core($m)? };
             $result
         })
     };
@@ -37,59 +35,56 @@ macro_rules! status {
 /// a `Result`), or `value!(m, out, check_vertex(v) => |c| value)` (a range check first).
 macro_rules! value {
     ($m:ident, $out:ident, |$c:ident| $result:expr) => {
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
-        unsafe {
-            $crate::ffi::boundary::value_answer($m, $out, |h| {
-                let $c = $crate::ffi::boundary::Handle::core(h);
-                $result
-            })
-        }
-    };
-    ($m:ident, $out:ident, $check:ident($id:expr) => |$c:ident| $value:expr) => {
-        value!($m, $out, |$c| {
-            $c.$check($id)?;
-            Ok($value)
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
+            let ($c, out) = unsafe {
+                (
+                    $crate::ffi::boundary::core($m)?,
+                    $crate::ffi::boundary::out_arg($out, "out")?,
+                )
+            };
+            Ok(out.set($result?))
         })
     };
+    ($m:ident, $out:ident, $check:ident($id:expr) => |$c:ident| $value:expr) => {
+        value!($m, $out, |$c| $c.$check($id).map(|_| $value))
+    };
 }
 
-/// A variable-size answer into the caller buffer `(buf, cap, *out_len)`:
+/// A variable-size answer into the caller buffer `(buf, cap, *out_len)` (see `Sink`):
 /// `ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.walk_into(v, s))` (the core
 /// writes into the sink), `ids!(m, buf, cap, out_len, check_vertex(v) => |c| iterable)`,
-/// or `ids!(m, buf, cap, out_len, try |c| result)` (the closure gives a `Result` of an
-/// iterable).
+/// or `ids!(m, buf, cap, out_len, try |c| result)` (a `Result` of an iterable).
 macro_rules! ids {
-    ($m:ident, $buf:ident, $cap:ident, $len:ident, |$c:ident, $s:ident| $result:expr) => {
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-        unsafe {
-            $crate::ffi::boundary::ids_answer($m, $buf, $cap, $len, |h, $s| {
-                let $c = $crate::ffi::boundary::Handle::core(h);
-                $result
-            })
-        }
+    ($m:ident, $buf:ident, $cap:ident, $len:ident, |$c:ident, $s:ident| $fill:expr) => {
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
+            let ($c, mut sink) = unsafe {
+                (
+                    $crate::ffi::boundary::core($m)?,
+                    $crate::ffi::boundary::Sink::new($buf, $cap, $len, "buf")?,
+                )
+            };
+            let $s = &mut sink;
+            $fill;
+            sink.finish()
+        })
     };
     ($m:ident, $buf:ident, $cap:ident, $len:ident, try |$c:ident| $items:expr) => {
-        ids!($m, $buf, $cap, $len, |$c, s| Ok(s.extend($items?)))
+        ids!($m, $buf, $cap, $len, |$c, s| s.extend($items?))
     };
     ($m:ident, $buf:ident, $cap:ident, $len:ident, $check:ident($id:expr) => |$c:ident, $s:ident| $walk:expr) => {
-        ids!(
-            $m,
-            $buf,
-            $cap,
-            $len,
-            |$c, $s| Ok(($c.$check($id)?, $walk).1)
-        )
+        ids!($m, $buf, $cap, $len, |$c, $s| ($c.$check($id)?, $walk))
     };
     ($m:ident, $buf:ident, $cap:ident, $len:ident, $check:ident($id:expr) => |$c:ident| $items:expr) => {
-        ids!($m, $buf, $cap, $len, |$c, s| Ok((
+        ids!($m, $buf, $cap, $len, |$c, s| (
             $c.$check($id)?,
             s.extend($items)
-        )
-            .1))
+        ))
     };
 }
 
-/// A bulk answer in CSR into the caller's `offsets` and `indices`:
+/// A bulk answer in CSR into the caller's `offsets` and `indices` (see `CsrSink`):
 /// `csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices => rows)`,
 /// where the core's method `rows` writes its rows into the sink (a `crate::che::Rows`),
 /// or the same with `|c, s| expression` in place of `rows`.
@@ -98,23 +93,32 @@ macro_rules! csr {
         csr!($m, $o, $oc, $i, $ic, $no, $ni => |c, s| c.$rows(s))
     };
     ($m:ident, $o:ident, $oc:ident, $i:ident, $ic:ident, $no:ident, $ni:ident => |$c:ident, $s:ident| $rows:expr) => {
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-        unsafe {
-            $crate::ffi::boundary::csr_answer($m, $o, $oc, $i, $ic, $no, $ni, |h, $s| {
-                let $c = $crate::ffi::boundary::Handle::core(h);
-                Ok($rows)
-            })
-        }
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
+            let ($c, mut sink) = unsafe { ($crate::ffi::boundary::core($m)?, $crate::ffi::boundary::CsrSink::new([($o, $oc, $no), ($i, $ic, $ni)])?) };
+            let $s = &mut sink;
+            $rows;
+            sink.finish()
+        })
     };
 }
 
 /// A zero-copy view: the first element of the slice the closure gives (`None`: NULL) and
-/// its length into `*len`. The closure gets the handle, which may hold materialised maps.
+/// its length into `*len` (when not NULL); NULL and 0 for a NULL handle. The closure gets
+/// the handle, which may hold materialised maps.
 macro_rules! view {
-    ($m:ident, $len:ident, |$h:ident| $slice:expr) => {
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
-        unsafe { $crate::ffi::boundary::view_answer($m, $len, |$h| $slice) }
-    };
+    ($m:ident, $len:ident, |$h:ident| $slice:expr) => {{
+        let (p, n) = $crate::ffi::boundary::guard_or((std::ptr::null(), 0), || {
+            // SAFETY: caller contract (see `ffi`): NULL or a live handle.
+            let $h = unsafe { $crate::ffi::boundary::handle($m, "m")? };
+            Ok($slice.map_or((std::ptr::null(), 0), |s| (s.as_ptr(), s.len())))
+        });
+        // SAFETY: caller contract (see `ffi`): NULL or valid for one write.
+        if let Some(len) = unsafe { $len.as_mut() } {
+            *len = n;
+        }
+        p
+    }};
 }
 
 /// A new handle into `*out` (NULL on every failure): `made` gives the core structure.

@@ -32,29 +32,26 @@ pub enum Status {
     Panic = 9,
 }
 
-impl Status {
-    /// A static, NUL-terminated description.
-    pub(crate) fn as_cstr(self) -> &'static std::ffi::CStr {
-        match self {
-            Status::Ok => c"ok",
-            Status::NullArgument => c"null argument",
-            Status::OutOfRange => c"out of range",
-            Status::InvalidInput => c"invalid input",
-            Status::NonManifold => c"non-manifold input (strict mode)",
-            Status::BufferTooSmall => c"buffer too small",
-            Status::Io => c"input/output error",
-            Status::Parse => c"parse error",
-            Status::TooLarge => c"too large for 32-bit ids",
-            Status::Panic => c"internal error (panic caught)",
-        }
-    }
-}
+/// Every status in order with its description (`STATUSES[s as usize].0 == s`; the error
+/// kinds map one to one onto the statuses after `Ok`).
+pub(crate) const STATUSES: [(Status, &std::ffi::CStr); 10] = [
+    (Status::Ok, c"ok"),
+    (Status::NullArgument, c"null argument"),
+    (Status::OutOfRange, c"out of range"),
+    (Status::InvalidInput, c"invalid input"),
+    (Status::NonManifold, c"non-manifold input (strict mode)"),
+    (Status::BufferTooSmall, c"buffer too small"),
+    (Status::Io, c"input/output error"),
+    (Status::Parse, c"parse error"),
+    (Status::TooLarge, c"too large for 32-bit ids"),
+    (Status::Panic, c"internal error (panic caught)"),
+];
 
 /// A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
 /// the `topomesh_status` values.
 #[unsafe(no_mangle)]
 pub extern "C" fn topomesh_status_str(s: Status) -> *const c_char {
-    s.as_cstr().as_ptr()
+    STATUSES[s as usize].1.as_ptr()
 }
 
 /// The detail of the last failed call on this thread (for example

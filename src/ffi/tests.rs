@@ -133,15 +133,19 @@ fn errors_map_one_to_one() {
         InvalidInput,
         NonManifold,
         BufferTooSmall,
-        Io,
-        Parse,
-        TooLarge,
-        Panic,
     ];
+    let kinds = kinds.into_iter().chain([Io, Parse, TooLarge, Panic]);
     for (i, k) in kinds.into_iter().enumerate() {
         let s = guard(|| Err(Error::new(k, format!("kind {i}"))));
         assert_eq!(s as u32, i as u32 + 1);
         assert_eq!(last(), format!("kind {i}"));
+    }
+}
+
+#[test]
+fn statuses_are_in_order() {
+    for (i, (s, _)) in super::status::STATUSES.into_iter().enumerate() {
+        assert_eq!(s as usize, i);
     }
 }
 

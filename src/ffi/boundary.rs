@@ -270,9 +270,10 @@ impl Push for Sink<'_> {
     }
 }
 
-/// A bulk answer in compressed sparse rows: `offsets` (one per row, plus the end) and
-/// `indices`. Both buffers NULL (capacities 0) is a size query; exactly one NULL is an
-/// error.
+/// A bulk answer in compressed sparse rows: row `i` is `indices[offsets[i] ..
+/// offsets[i + 1]]`, so `offsets` has one entry per row plus one. Both buffers NULL
+/// (capacities 0) is a size query; exactly one NULL is an error; either too small gives
+/// BUFFER_TOO_SMALL with both needed lengths written (the buffers then hold a prefix).
 pub(crate) struct CsrSink<'a> {
     offsets: Sink<'a>,
     indices: Sink<'a>,

@@ -104,8 +104,9 @@ macro_rules! csr {
 }
 
 /// A zero-copy view: the first element of the slice the closure gives (`None`: NULL) and
-/// its length into `*len` (when not NULL); NULL and 0 for a NULL handle. The closure gets
-/// the handle, which may hold materialised maps.
+/// its length into `*len` (when not NULL); NULL and 0 for a NULL handle. An empty
+/// container may come as a non-NULL pointer with length 0. The closure gets the handle,
+/// which may hold materialised maps.
 macro_rules! view {
     ($m:ident, $len:ident, |$h:ident| $slice:expr) => {{
         let (p, n) = $crate::ffi::boundary::guard_or((std::ptr::null(), 0), || {

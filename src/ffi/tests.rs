@@ -167,3 +167,36 @@ fn sinks_count_past_capacity() {
     s.finish().unwrap();
     assert_eq!(len, 5);
 }
+
+#[test]
+fn last_error_sizes_truncates_and_terminates() {
+    use super::status::{topomesh_last_error, topomesh_version};
+    let _ = guard(|| Err(Error::invalid("abcdef")));
+    let (mut buf, mut len) = ([7 as std::ffi::c_char; 4], 0usize);
+    // SAFETY: local buffers of the stated sizes; NULL with 0 is a size query.
+    unsafe {
+        assert_eq!(topomesh_last_error(null_mut(), 0, &mut len), Status::Ok);
+        assert_eq!(len, 7);
+        assert_eq!(
+            topomesh_last_error(buf.as_mut_ptr(), 0, &mut len),
+            Status::BufferTooSmall
+        );
+        assert_eq!(buf[0], 7, "nothing written without room for the NUL");
+        assert_eq!(
+            topomesh_last_error(buf.as_mut_ptr(), 4, &mut len),
+            Status::BufferTooSmall
+        );
+        assert_eq!(std::ffi::CStr::from_ptr(buf.as_ptr()), c"abc");
+        assert_eq!(
+            topomesh_last_error(null_mut(), 1, &mut len),
+            Status::NullArgument
+        );
+        assert_eq!(
+            topomesh_last_error(buf.as_mut_ptr(), 4, null_mut()),
+            Status::NullArgument
+        );
+        let version = std::ffi::CStr::from_ptr(topomesh_version());
+        assert_eq!(version.to_str().unwrap(), env!("CARGO_PKG_VERSION"));
+    }
+    assert_eq!(last(), "abcdef", "reading the detail leaves it");
+}

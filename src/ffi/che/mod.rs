@@ -1,9 +1,5 @@
-//! The CHE exports: the `che_mesh` handle (a boxed [`Che`] plus the identity origin maps,
-//! materialised on the first request for a zero-copy view, as the core stores none when
-//! they are the identity) and its build options; `build` (create, load, free, level,
-//! counts), `relations` (one element at a time), `star` (the stack iterator; its step is
-//! inline in `topomesh_inline.h` from level 2), `csr` (bulk), `views` (zero-copy), `info`
-//! (summary, report, memory), `validate`.
+//! The CHE exports: the `che_mesh` handle (a [`Che`] plus the identity origin maps,
+//! materialised on the first request for a view, as the core stores none) and its options.
 
 mod build;
 mod csr;
@@ -15,13 +11,7 @@ mod tests;
 mod validate;
 mod views;
 
-pub use build::*;
-pub use csr::*;
-pub use info::*;
-pub use relations::*;
-pub use star::*;
-pub use validate::*;
-pub use views::*;
+pub use {build::*, csr::*, info::*, relations::*, star::*, validate::*, views::*};
 
 use super::shapes::handle;
 use crate::che::{BuildOptions, Che};

@@ -1,8 +1,5 @@
-//! Zero-copy views of the containers. Each returns a pointer to the first element and
-//! writes the element count to `*len` (when `len` is not NULL); NULL (and `*len = 0`) when
-//! the handle is NULL or the container does not exist at the current level. A view is
-//! valid until the mesh is freed or its level changes (`che_mesh_build_level`). An empty
-//! container may be returned as a non-NULL pointer with `*len == 0`.
+//! Zero-copy views of the containers (see `view!`), valid until the mesh is freed or its
+//! level changes.
 
 use super::CheMesh;
 use crate::ffi::boundary::origins;

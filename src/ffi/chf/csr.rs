@@ -1,16 +1,7 @@
-//! Bulk relations for all elements at once, in compressed sparse rows: row `i` is
-//! `indices[offsets[i] .. offsets[i + 1]]`, so `offsets` has one entry per element plus one.
-//!
-//! Every call has the form `(m, offsets, offsets_cap, indices, indices_cap, *n_offsets,
-//! *n_indices)`. Both buffers NULL (capacities 0) is a size query: OK, with both lengths
-//! written. Exactly one NULL buffer gives NULL_ARGUMENT. A buffer too small gives
-//! BUFFER_TOO_SMALL with both needed lengths written (the buffers then hold a prefix).
-//! Rows are the answers of the one-element calls, in the same order. O(T) at every level,
-//! without raising the level or copying the mesh: the rows around the vertices (VV, VE,
-//! VF, VT, each row in increasing id order) come from counting passes over `V` and the
-//! face and edge ranks, not from walks; ET and EF walk the rotations on one view; below
-//! the level that stores them, the call computes the ranks (and `O` at level 0) once, in
-//! temporary memory. A size query followed by the call does the work twice.
+//! Bulk relations for all elements at once, in compressed sparse rows (see `CsrSink`),
+//! rows as the one-element calls give them. O(T) at every level, without raising the
+//! level: below the level that stores them, the call computes the ranks (and `O` at level
+//! 0) once, in temporary memory. A size query followed by the call does the work twice.
 
 use super::ChfMesh;
 use crate::ffi::shapes::csr;

@@ -1,5 +1,5 @@
-//! The `chf_mesh` handle: a boxed [`Chf`] plus the identity origin maps, materialised on
-//! the first request for a zero-copy view (the core stores none when they are the identity).
+//! The CHF exports: the `chf_mesh` handle (a [`Chf`] plus the identity origin maps,
+//! materialised on the first request for a view, as the core stores none) and its options.
 
 mod build;
 mod csr;
@@ -11,13 +11,7 @@ mod surface;
 mod tests;
 mod views;
 
-pub use build::*;
-pub use csr::*;
-pub use half_faces::*;
-pub use info::*;
-pub use relations::*;
-pub use surface::*;
-pub use views::*;
+pub use {build::*, csr::*, half_faces::*, info::*, relations::*, surface::*, views::*};
 
 use super::shapes::handle;
 use crate::chf::{BuildOptions, Chf};

@@ -95,7 +95,10 @@ macro_rules! csr {
     ($m:ident, $o:ident, $oc:ident, $i:ident, $ic:ident, $no:ident, $ni:ident => |$c:ident, $s:ident| $rows:expr) => {
         $crate::ffi::boundary::guard(|| {
             // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-            let ($c, mut sink) = unsafe { ($crate::ffi::boundary::core($m)?, $crate::ffi::boundary::CsrSink::new([($o, $oc, $no), ($i, $ic, $ni)])?) };
+            let ($c, mut sink) = unsafe {
+                let sink = $crate::ffi::boundary::CsrSink::new;
+                ($crate::ffi::boundary::core($m)?, sink([($o, $oc, $no), ($i, $ic, $ni)])?)
+            };
             let $s = &mut sink;
             $rows;
             sink.finish()

@@ -46,7 +46,10 @@ pub struct ChfSummary {
 }
 
 mirror!(Summary => ChfSummary {
-    vertices, edges, faces, tetrahedra, boundary_faces, boundary_edges, boundary_vertices, boundary_components, components, isolated_vertices, euler_characteristic, manifold, orientable, dropped_degenerate, zero_volume, inverted_tetrahedra, non_manifold_faces, non_manifold_edges, split_vertices, flipped_tetrahedra, non_orientable_components,
+    vertices, edges, faces, tetrahedra, boundary_faces, boundary_edges, boundary_vertices,
+    boundary_components, components, isolated_vertices, euler_characteristic, manifold,
+    orientable, dropped_degenerate, zero_volume, inverted_tetrahedra, non_manifold_faces,
+    non_manifold_edges, split_vertices, flipped_tetrahedra, non_orientable_components,
 });
 
 /// The topology summary into `*out`. O(T log T) at every level.
@@ -101,7 +104,10 @@ pub struct ChfBuildReport {
 }
 
 mirror!(Report => ChfBuildReport {
-    input_tetrahedra, input_vertices, dropped_degenerate, zero_volume, inverted_tetrahedra, duplicate_tetrahedra, input_faces, boundary_faces, non_manifold_faces, input_edges, non_manifold_edges, kept_non_manifold_edges, split_vertices, seam_split_vertices, added_vertices, flipped_tetrahedra, non_orientable_components, seam_faces,
+    input_tetrahedra, input_vertices, dropped_degenerate, zero_volume, inverted_tetrahedra,
+    duplicate_tetrahedra, input_faces, boundary_faces, non_manifold_faces, input_edges,
+    non_manifold_edges, kept_non_manifold_edges, split_vertices, seam_split_vertices,
+    added_vertices, flipped_tetrahedra, non_orientable_components, seam_faces,
 });
 
 /// The build report into `*out`. O(1).
@@ -189,7 +195,8 @@ pub struct ChfMemory {
 }
 
 mirror!(Memory => ChfMemory {
-    half_face_vertices, opposites, vertex_half_faces, edges, faces, boundary, topology, positions, maps,
+    half_face_vertices, opposites, vertex_half_faces, edges, faces, boundary, topology,
+    positions, maps,
 });
 
 /// Memory per container into `*out`. O(1).

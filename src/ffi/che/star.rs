@@ -99,7 +99,11 @@ impl CheStarIter {
             o: lent(che.opposites(), inline),
             edge_ranks: lent(che.edge_ranks(), inline),
             cursor: StarCursor::new(start),
-            cur_opposite: (start != NONE).then(|| che.opposite(start)).unwrap_or(NONE),
+            cur_opposite: if start == NONE {
+                NONE
+            } else {
+                che.opposite(start)
+            },
         })
     }
 

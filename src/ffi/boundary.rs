@@ -52,11 +52,12 @@ pub(crate) fn guard(body: impl FnOnce() -> Result<()>) -> Status {
 /// `guard` for a body that returns a value (counts, views): `fallback` on a failure.
 #[inline(always)]
 pub(crate) fn guard_or<T>(fallback: T, body: impl FnOnce() -> Result<T>) -> T {
-    match catch_unwind(AssertUnwindSafe(body)) {
-        Ok(Ok(v)) => v,
-        Ok(Err(e)) => (fail(e), fallback).1,
-        Err(payload) => (caught(payload), fallback).1,
-    }
+    let mut value = fallback;
+    guard(|| {
+        value = body()?;
+        Ok(())
+    });
+    value
 }
 
 fn null(name: &str) -> Error {

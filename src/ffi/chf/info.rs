@@ -195,8 +195,7 @@ pub struct ChfMemory {
 }
 
 mirror!(Memory => ChfMemory {
-    half_face_vertices, opposites, vertex_half_faces, edges, faces, boundary, topology,
-    positions, maps,
+    half_face_vertices, opposites, vertex_half_faces, edges, faces, boundary, topology, positions, maps,
 });
 
 /// Memory per container into `*out`. O(1).

@@ -19,14 +19,11 @@ pub(crate) fn coordinates(points: &[DVec3]) -> &[f64] {
     unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f64>(), 3 * points.len()) }
 }
 
-/// What one build call takes: `per` vertex ids per cell, at most `max_cells` cells
-/// (`cells` names them, `part` names the ids that must fit: "half-edge", "half-face").
-pub(crate) struct Cells {
-    pub per: usize,
-    pub max_cells: usize,
-    pub cells: &'static str,
-    pub part: &'static str,
-}
+/// What one build call takes: `(per, max_cells, cells, part)`, `per` vertex ids per cell,
+/// at most `max_cells` cells (`cells` names them, `part` names the ids that must fit).
+pub(crate) type Cells = (usize, usize, &'static str, &'static str);
+pub(crate) const TRIANGLES: Cells = (3, crate::che::MAX_TRIANGLES, "triangles", "half-edge");
+pub(crate) const TETRAHEDRA: Cells = (4, crate::chf::MAX_TETRAHEDRA, "tetrahedra", "half-face");
 
 /// The ids (`per * n_cells`) and positions (empty, or `n_vertices`) of a build call.
 ///
@@ -40,12 +37,7 @@ pub(crate) unsafe fn mesh_arrays<'a>(
     n_vertices: usize,
     positions: *const f64,
 ) -> Result<(&'a [u32], &'a [DVec3])> {
-    let Cells {
-        per,
-        max_cells,
-        cells,
-        part,
-    } = kind;
+    let (per, max_cells, cells, part) = kind;
     if n_cells > max_cells {
         return Err(Error::too_large(format!(
             "{n_cells} {cells}: {part} ids must fit below 2^32 - 1 (at most {max_cells} {cells})"

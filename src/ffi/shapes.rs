@@ -1,139 +1,213 @@
-//! The uniform shapes of an export's body, as macros shared by the CHE and CHF exports.
-//!
+//! The uniform bodies of the exports, as macros shared by the CHE and CHF exports.
 //! cbindgen reads the source without expanding macros, so every export keeps its doc
-//! comment and signature written out; only the body comes from here:
-//!
-//! ```ignore
-//! /// VE: the edges around `v`.
-//! #[unsafe(no_mangle)]
-//! pub unsafe extern "C" fn che_vertex_edges(
-//!     m: *const CheMesh, v: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
-//! ) -> Status {
-//!     ids!(m, buf, cap, out_len, check_vertex(v) => |c| c.vertex_edges(v))
-//! }
-//! ```
+//! comment and signature written out; only the body comes from here, for example
+//! `ids!(m, buf, cap, out_len, check_vertex(v) => |c| c.vertex_edges(v))`.
 //!
 //! Each macro is the guard (null checks, `catch_unwind`, error -> status and detail), the
-//! conversion of the arguments and one call into the core, which it reaches through
-//! [`Handle::core`](super::boundary::Handle). The pointer arguments are passed by name so
-//! that the body stays in the caller's words; every one of them follows the safety
-//! contract of the module docs of `ffi`.
+//! conversion of the arguments and one call into the core, reached through
+//! [`Handle`](super::boundary::Handle). The pointer arguments are passed by name so that
+//! the body stays in the caller's words; each follows the safety contract of `ffi`.
 
-/// A count or other plain value returned directly: `fallback` for a NULL handle.
-/// `count!(m, 0, |c| c.num_vertices())`.
+/// A count or other plain value returned directly, 0 for a NULL handle:
+/// `count!(m, |c| c.num_vertices())`.
 macro_rules! count {
-    ($m:ident, $fallback:expr, |$c:ident| $value:expr) => {
-        $crate::ffi::boundary::guard_or($fallback, || {
+    ($m:ident, |$c:ident| $value:expr) => {
+        $crate::ffi::boundary::guard_or(0 as _, || {
             // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-            let h = unsafe { $crate::ffi::boundary::handle($m, "m")? };
-            let $c = $crate::ffi::boundary::Handle::core(h);
+            let $c = unsafe { $crate::ffi::boundary::core($m)? };
             Ok($value)
+        })
+    };
+}
+
+/// A status alone: `status!(m, |c| result)` (the closure gives a `Result<()>`).
+macro_rules! status {
+    ($m:ident, |$c:ident| $result:expr) => {
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or a live handle.
+            let $c = unsafe { $crate::ffi::boundary::core($m)? };
+            $result
         })
     };
 }
 
 /// One value into the out-parameter `out`: `value!(m, out, |c| result)` (the closure gives
-/// a `Result`), or `value!(m, out, check_vertex(v) => |c| value)` (a range check on the
-/// core first).
+/// a `Result`), or `value!(m, out, check_vertex(v) => |c| value)` (a range check first).
 macro_rules! value {
     ($m:ident, $out:ident, |$c:ident| $result:expr) => {
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
-        unsafe {
-            $crate::ffi::boundary::value_answer($m, $out, |h| {
-                let $c = $crate::ffi::boundary::Handle::core(h);
-                $result
-            })
-        }
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
+            let ($c, out) = unsafe {
+                (
+                    $crate::ffi::boundary::core($m)?,
+                    $crate::ffi::boundary::out_arg($out, "out")?,
+                )
+            };
+            Ok(out.set($result?))
+        })
     };
     ($m:ident, $out:ident, $check:ident($id:expr) => |$c:ident| $value:expr) => {
-        value!($m, $out, |$c| {
-            $c.$check($id)?;
-            Ok($value)
-        })
+        value!($m, $out, |$c| $c.$check($id).map(|_| $value))
     };
 }
 
-/// A variable-size answer into the caller buffer `(buf, cap, *out_len)`:
-/// `ids!(m, buf, cap, out_len, |c, s| result)` (the closure pushes into the sink `s`),
+/// A variable-size answer into the caller buffer `(buf, cap, *out_len)` (see `Sink`):
 /// `ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.walk_into(v, s))` (the core
-/// writes into the sink), or `ids!(m, buf, cap, out_len, check_vertex(v) => |c| iterable)`.
+/// writes into the sink), `ids!(m, buf, cap, out_len, check_vertex(v) => |c| iterable)`,
+/// or `ids!(m, buf, cap, out_len, try |c| result)` (a `Result` of an iterable).
 macro_rules! ids {
-    ($m:ident, $buf:ident, $cap:ident, $len:ident, |$c:ident, $s:ident| $result:expr) => {
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-        unsafe {
-            $crate::ffi::boundary::ids_answer($m, $buf, $cap, $len, |h, $s| {
-                let $c = $crate::ffi::boundary::Handle::core(h);
-                $result
-            })
-        }
+    ($m:ident, $buf:ident, $cap:ident, $len:ident, |$c:ident, $s:ident| $fill:expr) => {
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
+            let ($c, mut sink) = unsafe {
+                (
+                    $crate::ffi::boundary::core($m)?,
+                    $crate::ffi::boundary::Sink::new($buf, $cap, $len, "buf")?,
+                )
+            };
+            let $s = &mut sink;
+            $fill;
+            sink.finish()
+        })
+    };
+    ($m:ident, $buf:ident, $cap:ident, $len:ident, try |$c:ident| $items:expr) => {
+        ids!($m, $buf, $cap, $len, |$c, s| s.extend($items?))
     };
     ($m:ident, $buf:ident, $cap:ident, $len:ident, $check:ident($id:expr) => |$c:ident, $s:ident| $walk:expr) => {
-        ids!($m, $buf, $cap, $len, |$c, $s| {
-            $c.$check($id)?;
-            $walk;
-            Ok(())
-        })
+        ids!($m, $buf, $cap, $len, |$c, $s| ($c.$check($id)?, $walk))
     };
     ($m:ident, $buf:ident, $cap:ident, $len:ident, $check:ident($id:expr) => |$c:ident| $items:expr) => {
-        ids!($m, $buf, $cap, $len, |$c, s| {
-            $c.$check($id)?;
-            s.extend($items);
-            Ok(())
-        })
+        ids!($m, $buf, $cap, $len, |$c, s| (
+            $c.$check($id)?,
+            s.extend($items)
+        ))
     };
 }
 
-/// A bulk answer in CSR into the caller's `offsets` and `indices`:
-/// `csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices, rows)`, where
-/// the core's method `rows` writes its rows into the sink (a `crate::che::Rows`), or the
-/// same with `|c, s| expression` in place of `rows`.
+/// A bulk answer in CSR into the caller's `offsets` and `indices` (see `CsrSink`):
+/// `csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices => rows)`,
+/// where the core's method `rows` writes its rows into the sink (a `crate::che::Rows`),
+/// or the same with `|c, s| expression` in place of `rows`.
 macro_rules! csr {
-    ($m:ident, $o:ident, $oc:ident, $i:ident, $ic:ident, $no:ident, $ni:ident, $rows:ident) => {
-        csr!($m, $o, $oc, $i, $ic, $no, $ni, |c, s| c.$rows(s))
+    ($m:ident, $o:ident, $oc:ident, $i:ident, $ic:ident, $no:ident, $ni:ident => $rows:ident) => {
+        csr!($m, $o, $oc, $i, $ic, $no, $ni => |c, s| c.$rows(s))
     };
-    ($m:ident, $o:ident, $oc:ident, $i:ident, $ic:ident, $no:ident, $ni:ident, |$c:ident, $s:ident| $rows:expr) => {
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-        unsafe {
-            $crate::ffi::boundary::csr_answer($m, $o, $oc, $i, $ic, $no, $ni, |h, $s| {
-                let $c = $crate::ffi::boundary::Handle::core(h);
-                $rows;
-                Ok(())
-            })
-        }
+    ($m:ident, $o:ident, $oc:ident, $i:ident, $ic:ident, $no:ident, $ni:ident => |$c:ident, $s:ident| $rows:expr) => {
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
+            let ($c, mut sink) = unsafe {
+                let sink = $crate::ffi::boundary::CsrSink::new;
+                ($crate::ffi::boundary::core($m)?, sink([($o, $oc, $no), ($i, $ic, $ni)])?)
+            };
+            let $s = &mut sink;
+            $rows;
+            sink.finish()
+        })
     };
 }
 
 /// A zero-copy view: the first element of the slice the closure gives (`None`: NULL) and
-/// its length into `*len`. The closure gets the handle, which may hold materialised maps.
+/// its length into `*len` (when not NULL); NULL and 0 for a NULL handle. An empty
+/// container may come as a non-NULL pointer with length 0. The closure gets the handle,
+/// which may hold materialised maps.
 macro_rules! view {
-    ($m:ident, $len:ident, |$h:ident| $slice:expr) => {
+    ($m:ident, $len:ident, |$h:ident| $slice:expr) => {{
+        let (p, n) = $crate::ffi::boundary::guard_or((std::ptr::null(), 0), || {
+            // SAFETY: caller contract (see `ffi`): NULL or a live handle.
+            let $h = unsafe { $crate::ffi::boundary::handle($m, "m")? };
+            Ok($slice.map_or((std::ptr::null(), 0), |s| (s.as_ptr(), s.len())))
+        });
+        // SAFETY: caller contract (see `ffi`): NULL or valid for one write.
+        if let Some(len) = unsafe { $len.as_mut() } {
+            *len = n;
+        }
+        p
+    }};
+}
+
+/// A new handle into `*out` (NULL on every failure): `made` gives the core structure.
+macro_rules! make {
+    ($out:ident, $made:expr) => {
         // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
-        unsafe { $crate::ffi::boundary::view_answer($m, $len, |$h| $slice) }
+        unsafe { $crate::ffi::boundary::new_handle($out, || Ok(From::from($made?))) }
     };
 }
 
-/// A new handle into `*out` (NULL on every failure): `made` gives the handle's value.
-macro_rules! make {
-    ($out:ident, $made:expr) => {
-        $crate::ffi::boundary::guard(|| {
-            // SAFETY: caller contract (see `ffi`): NULL or a writable handle slot.
-            let out = unsafe { $crate::ffi::boundary::handle_out($out, "out")? };
-            $crate::ffi::boundary::new_handle($made?, &out);
-            Ok(())
+/// A new handle from C arrays, with options (NULL: the defaults):
+/// `build!(out, options, Che(TRIANGLES, triangles, n_triangles, n_vertices, positions))`.
+macro_rules! build {
+    ($out:ident, $opt:ident, $core:ident($kind:expr, $ids:ident, $n:ident, $nv:ident, $pos:ident)) => {
+        $crate::ffi::shapes::make!($out, {
+            let options = $crate::ffi::boundary::options_arg($opt).to_core()?;
+            let (ids, points) = $crate::ffi::mesh_arrays::mesh_arrays($kind, $ids, $n, $nv, $pos)?;
+            $core::from_flat(ids, $nv, points, options)
         })
     };
 }
 
-/// Frees a handle; NULL is a no-op. Guarded although dropping plain vectors cannot panic,
-/// so that nothing ever unwinds.
-macro_rules! free {
-    ($m:ident) => {{
+/// A new handle from a file, with options (NULL: the defaults):
+/// `load!(out, path, options => crate::io::load::che)`.
+macro_rules! load {
+    ($out:ident, $path:ident, $opt:ident => $load:path) => {
+        $crate::ffi::shapes::make!($out, {
+            let options = $crate::ffi::boundary::options_arg($opt).to_core()?;
+            $load($crate::ffi::boundary::path_arg($path, "path")?, options)
+        })
+    };
+}
+
+/// Raises or lowers the level of a handle in place (exclusive access).
+macro_rules! relevel {
+    ($m:ident, $level:ident) => {
         $crate::ffi::boundary::guard(|| {
-            // SAFETY: caller contract (see `ffi`): NULL or a live handle, freed once.
-            unsafe { $crate::ffi::boundary::free_handle($m) };
-            Ok(())
-        });
-    }};
+            // SAFETY: caller contract (see `ffi`): NULL or a live handle, not shared.
+            let h = unsafe { $crate::ffi::boundary::handle_mut($m, "m")? };
+            let level = $crate::ffi::boundary::level_arg($level)?;
+            $crate::ffi::boundary::Handle::core_mut(h).build_level(level)
+        })
+    };
+}
+
+/// The Rust side of a handle type and its options struct: `Handle` over the core field,
+/// the handle from a core structure, and the options' defaults and conversion.
+macro_rules! handle {
+    ($h:ident { $field:ident: $core:ty, $($map:ident),* }, $opt:ident => $core_opt:ident) => {
+        impl $crate::ffi::boundary::Handle for $h {
+            type Core = $core;
+            #[inline(always)]
+            fn core(&self) -> &$core {
+                &self.$field
+            }
+            fn core_mut(&mut self) -> &mut $core {
+                &mut self.$field
+            }
+        }
+
+        impl From<$core> for $h {
+            fn from($field: $core) -> Self {
+                $h { $field, $($map: Default::default()),* }
+            }
+        }
+
+        impl Default for $opt {
+            fn default() -> Self {
+                let d = $core_opt::default();
+                $opt { level: d.level as u32, strict: d.strict, threads: d.threads as u32 }
+            }
+        }
+
+        impl $opt {
+            /// The defaults at `level`.
+            pub(crate) fn at(level: u32) -> Self {
+                $opt { level, ..Self::default() }
+            }
+
+            fn to_core(self) -> $crate::error::Result<$core_opt> {
+                let level = $crate::ffi::boundary::level_arg(self.level)?;
+                Ok($core_opt { level, strict: self.strict, threads: self.threads as usize })
+            }
+        }
+    };
 }
 
 /// `From<&Core>` for a C struct that mirrors the core's fields by name (each converted
@@ -149,4 +223,4 @@ macro_rules! mirror {
     };
 }
 
-pub(crate) use {count, csr, free, ids, make, mirror, value, view};
+pub(crate) use {build, count, csr, handle, ids, load, make, mirror, relevel, status, value, view};

@@ -1,6 +1,6 @@
 //! Status codes, the thread-local last-error detail and the library version.
 
-use super::boundary::{self, Out};
+use super::boundary;
 use std::ffi::c_char;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
@@ -32,29 +32,26 @@ pub enum Status {
     Panic = 9,
 }
 
-impl Status {
-    /// A static, NUL-terminated description.
-    pub(crate) fn as_cstr(self) -> &'static std::ffi::CStr {
-        match self {
-            Status::Ok => c"ok",
-            Status::NullArgument => c"null argument",
-            Status::OutOfRange => c"out of range",
-            Status::InvalidInput => c"invalid input",
-            Status::NonManifold => c"non-manifold input (strict mode)",
-            Status::BufferTooSmall => c"buffer too small",
-            Status::Io => c"input/output error",
-            Status::Parse => c"parse error",
-            Status::TooLarge => c"too large for 32-bit ids",
-            Status::Panic => c"internal error (panic caught)",
-        }
-    }
-}
+/// Every status in order with its description (`STATUSES[s as usize].0 == s`; the error
+/// kinds map one to one onto the statuses after `Ok`).
+pub(crate) const STATUSES: [(Status, &std::ffi::CStr); 10] = [
+    (Status::Ok, c"ok"),
+    (Status::NullArgument, c"null argument"),
+    (Status::OutOfRange, c"out of range"),
+    (Status::InvalidInput, c"invalid input"),
+    (Status::NonManifold, c"non-manifold input (strict mode)"),
+    (Status::BufferTooSmall, c"buffer too small"),
+    (Status::Io, c"input/output error"),
+    (Status::Parse, c"parse error"),
+    (Status::TooLarge, c"too large for 32-bit ids"),
+    (Status::Panic, c"internal error (panic caught)"),
+];
 
 /// A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
 /// the `topomesh_status` values.
 #[unsafe(no_mangle)]
 pub extern "C" fn topomesh_status_str(s: Status) -> *const c_char {
-    s.as_cstr().as_ptr()
+    STATUSES[s as usize].1.as_ptr()
 }
 
 /// The detail of the last failed call on this thread (for example
@@ -74,35 +71,30 @@ pub unsafe extern "C" fn topomesh_last_error(
     // Not behind `boundary::guard`: reading the detail must not overwrite it.
     let run = || {
         // SAFETY: the caller passes NULL or a pointer valid for one write.
-        let Some(out_len) = (unsafe { Out::new(out_len) }) else {
+        let out_len = unsafe { boundary::out_arg(out_len, "out_len") };
+        let (Ok(out_len), false) = (out_len, buf.is_null() && cap != 0) else {
             return Status::NullArgument;
         };
-        if buf.is_null() && cap != 0 {
-            return Status::NullArgument;
-        }
         boundary::with_last_error(|msg| {
             let bytes = msg.as_bytes();
-            let needed = bytes.len() + 1;
-            out_len.set(needed);
-            if cap == 0 {
-                // A size query (`buf == NULL`), or a buffer that cannot hold even the NUL.
-                return if buf.is_null() {
-                    Status::Ok
-                } else {
-                    Status::BufferTooSmall
-                };
-            }
-            let n = bytes.len().min(cap - 1);
-            // SAFETY: `buf` is valid for `cap >= 1` byte writes (caller contract), `n < cap`,
-            // and `bytes` is a Rust string that cannot overlap the caller's buffer.
-            unsafe {
-                std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
-                *buf.add(n) = 0;
-            }
-            if n < bytes.len() {
-                Status::BufferTooSmall
-            } else {
-                Status::Ok
+            out_len.set(bytes.len() + 1);
+            match (buf.is_null(), cap.checked_sub(1)) {
+                (true, _) => Status::Ok,
+                (false, None) => Status::BufferTooSmall,
+                (false, Some(room)) => {
+                    let n = bytes.len().min(room);
+                    // SAFETY: `buf` is valid for `cap > n` byte writes (caller contract), and
+                    // `bytes` is a Rust string that cannot overlap the caller's buffer.
+                    unsafe {
+                        std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
+                        *buf.add(n) = 0;
+                    }
+                    if n < bytes.len() {
+                        Status::BufferTooSmall
+                    } else {
+                        Status::Ok
+                    }
+                }
             }
         })
     };
@@ -112,11 +104,5 @@ pub unsafe extern "C" fn topomesh_last_error(
 /// The library version, "MAJOR.MINOR.PATCH" (static, NUL-terminated).
 #[unsafe(no_mangle)]
 pub extern "C" fn topomesh_version() -> *const c_char {
-    const VERSION: &std::ffi::CStr = match std::ffi::CStr::from_bytes_with_nul(
-        concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
-    ) {
-        Ok(v) => v,
-        Err(_) => panic!("version has a NUL"),
-    };
-    VERSION.as_ptr()
+    concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()
 }

@@ -1,39 +1,12 @@
 //! Making, freeing and re-levelling `che_mesh` handles, and their counts.
 
-use super::{CheBuildOptions, CheMesh, level_arg};
-use crate::che::{BuildOptions, Che, MAX_TRIANGLES};
-use crate::error::Result;
-use crate::ffi::boundary::{guard, handle_mut, options_arg, path_arg};
-use crate::ffi::mesh_arrays::{Cells, mesh_arrays};
-use crate::ffi::shapes::{count, free, make};
+use super::{CheBuildOptions, CheMesh};
+use crate::che::Che;
+use crate::ffi::boundary::free_handle;
+use crate::ffi::mesh_arrays::TRIANGLES;
+use crate::ffi::shapes::{build, count, load, relevel};
 use crate::ffi::status::Status;
 use std::ffi::c_char;
-
-/// Builds from C arrays (sizes checked before any slice is made).
-///
-/// # Safety
-/// `triangles` is NULL or holds `3 * n_triangles` ids; `positions` is NULL or holds
-/// `3 * n_vertices` doubles.
-unsafe fn build(
-    triangles: *const u32,
-    n_triangles: usize,
-    n_vertices: usize,
-    positions: *const f64,
-    options: BuildOptions,
-) -> Result<CheMesh> {
-    let kind = Cells {
-        per: 3,
-        max_cells: MAX_TRIANGLES,
-        cells: "triangles",
-        part: "half-edge",
-    };
-    // SAFETY: forwarded contract.
-    let (flat, points) =
-        unsafe { mesh_arrays(kind, triangles, n_triangles, n_vertices, positions)? };
-    Ok(CheMesh::new(Che::from_flat(
-        flat, n_vertices, points, options,
-    )?))
-}
 
 /// Builds a CHE at `level` (0..3) from `n_triangles` triangles (3 vertex ids each, over
 /// vertices `0..n_vertices`). `positions` may be NULL; otherwise it holds 3 doubles (x, y,
@@ -73,12 +46,11 @@ pub unsafe extern "C" fn che_mesh_from_triangles_ex(
     options: *const CheBuildOptions,
     out: *mut *mut CheMesh,
 ) -> Status {
-    // SAFETY: caller contract: `options` NULL or readable, the arrays NULL or of the
-    // stated sizes.
-    make!(out, unsafe {
-        let options = options_arg(options).to_core()?;
-        build(triangles, n_triangles, n_vertices, positions, options)
-    })
+    build!(
+        out,
+        options,
+        Che(TRIANGLES, triangles, n_triangles, n_vertices, positions)
+    )
 }
 
 /// Reads a surface file (the format from the extension: .off .obj .ply .stl; also .mesh
@@ -103,70 +75,62 @@ pub unsafe extern "C" fn che_mesh_load_ex(
     options: *const CheBuildOptions,
     out: *mut *mut CheMesh,
 ) -> Status {
-    // SAFETY: caller contract: `options` NULL or readable, `path` NULL or NUL-terminated.
-    let (options, path) = unsafe { (options_arg(options), path_arg(path, "path")) };
-    make!(out, {
-        let options = options.to_core()?;
-        crate::io::load::che(path?, options).map(CheMesh::new)
-    })
+    load!(out, path, options => crate::io::load::che)
 }
 
 /// Frees a mesh; NULL is a no-op. Needs exclusive access.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_free(m: *mut CheMesh) {
-    free!(m)
+    // SAFETY: caller contract: NULL or a live handle, freed once.
+    unsafe { free_handle(m) }
 }
 
 /// Raises or lowers the level (0..3) in place. Ids never change with the level; views
 /// obtained before are invalid afterwards. Needs exclusive access.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_build_level(m: *mut CheMesh, level: u32) -> Status {
-    guard(|| {
-        // SAFETY: caller contract: NULL or a live handle, not shared during the call.
-        let m = unsafe { handle_mut(m, "m")? };
-        m.che.build_level(level_arg(level)?)
-    })
+    relevel!(m, level)
 }
 
 /// The current level (0..3); 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_level(m: *const CheMesh) -> u32 {
-    count!(m, 0, |c| c.level() as u32)
+    count!(m, |c| c.level() as u32)
 }
 
 /// Vertices of the structure: the input vertices, then the copies made by splitting
 /// non-manifold vertices. 0 for NULL (and likewise for the other counts).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_vertices(m: *const CheMesh) -> usize {
-    count!(m, 0, |c| c.num_vertices())
+    count!(m, |c| c.num_vertices())
 }
 
 /// Vertices given as input (ids `0..n` of the structure are the same vertices).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_input_vertices(m: *const CheMesh) -> usize {
-    count!(m, 0, |c| c.num_input_vertices())
+    count!(m, |c| c.num_input_vertices())
 }
 
 /// Triangles kept (degenerate input triangles are dropped).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_triangles(m: *const CheMesh) -> usize {
-    count!(m, 0, |c| c.num_triangles())
+    count!(m, |c| c.num_triangles())
 }
 
 /// Edges of the structure (the edges of a non-manifold edge count once per triangle).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_edges(m: *const CheMesh) -> usize {
-    count!(m, 0, |c| c.num_edges())
+    count!(m, |c| c.num_edges())
 }
 
 /// Half-edges: 3 per triangle.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_half_edges(m: *const CheMesh) -> usize {
-    count!(m, 0, |c| c.num_half_edges())
+    count!(m, |c| c.num_half_edges())
 }
 
 /// Boundary curves of the structure (O(1) at level 3, O(T) below).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_boundary_curves(m: *const CheMesh) -> usize {
-    count!(m, 0, |c| c.num_boundary_curves())
+    count!(m, |c| c.num_boundary_curves())
 }

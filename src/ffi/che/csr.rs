@@ -1,14 +1,6 @@
-//! Bulk relations for all elements at once, in compressed sparse rows: row `i` is
-//! `indices[offsets[i] .. offsets[i + 1]]`, so `offsets` has one entry per element plus one.
-//!
-//! Every call has the form `(m, offsets, offsets_cap, indices, indices_cap, *n_offsets,
-//! *n_indices)`. Both buffers NULL (capacities 0) is a size query: OK, with both lengths
-//! written. Exactly one NULL buffer gives NULL_ARGUMENT. A buffer too small gives
-//! BUFFER_TOO_SMALL with both needed lengths written (the buffers then hold a prefix).
-//! Rows are in the order of the one-element calls. O(T) at every level: the core's bulk
-//! sweep streams the rows into the caller's buffers, computing once what the level does
-//! not store (a starting half-edge per vertex at level 1, and the edge ids for VE; `O`
-//! too at level 0).
+//! Bulk relations for all elements at once, in compressed sparse rows (see `CsrSink`),
+//! rows in the order of the one-element calls. O(T) at every level: the core's bulk sweep
+//! streams the rows into the caller's buffers.
 
 use super::CheMesh;
 use crate::ffi::shapes::csr;
@@ -25,16 +17,8 @@ pub unsafe extern "C" fn che_mesh_vertex_vertices_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        vertex_vertices_rows
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => vertex_vertices_rows)
 }
 
 /// VE for every vertex (rows as `che_vertex_edges`).
@@ -48,16 +32,8 @@ pub unsafe extern "C" fn che_mesh_vertex_edges_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        vertex_edges_rows
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => vertex_edges_rows)
 }
 
 /// VF for every vertex (rows as `che_vertex_triangles`).
@@ -71,16 +47,8 @@ pub unsafe extern "C" fn che_mesh_vertex_triangles_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        vertex_triangles_rows
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => vertex_triangles_rows)
 }
 
 /// FF for every triangle: 3 entries per row (so `offsets[t] == 3 t`), `TOPOMESH_NONE`
@@ -95,14 +63,6 @@ pub unsafe extern "C" fn che_mesh_triangle_triangles_csr(
     n_offsets: *mut usize,
     n_indices: *mut usize,
 ) -> Status {
-    csr!(
-        m,
-        offsets,
-        offsets_cap,
-        indices,
-        indices_cap,
-        n_offsets,
-        n_indices,
-        triangle_triangles_rows
-    )
+    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
+        => triangle_triangles_rows)
 }

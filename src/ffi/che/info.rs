@@ -3,7 +3,8 @@
 
 use super::CheMesh;
 use crate::che::{BuildReport, Memory, Summary};
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::ffi::boundary::{flat, report_kind};
 use crate::ffi::shapes::{ids, mirror, value};
 use crate::ffi::status::Status;
 
@@ -108,34 +109,20 @@ pub enum CheReportKind {
     NonOrientable = 4,
 }
 
-impl CheReportKind {
-    fn from_raw(k: u32) -> Result<Self> {
-        use CheReportKind::*;
-        [
-            Degenerate,
-            Duplicate,
-            NonManifoldEdge,
-            SplitVertex,
-            NonOrientable,
-        ]
-        .into_iter()
-        .find(|&x| x as u32 == k)
-        .ok_or_else(|| {
-            Error::out_of_range(format!("report kind {k} is not a che_report_kind (0..4)"))
-        })
-    }
-
-    /// The report's examples of this kind, flattened.
-    fn examples(self, r: &BuildReport) -> Vec<u32> {
-        let flat = |pairs: &[[u32; 2]]| pairs.iter().flatten().copied().collect();
-        match self {
-            CheReportKind::Degenerate => r.degenerate_examples.clone(),
-            CheReportKind::Duplicate => flat(&r.duplicate_examples),
-            CheReportKind::NonManifoldEdge => flat(&r.non_manifold_edge_examples),
-            CheReportKind::SplitVertex => r.split_vertex_examples.clone(),
-            CheReportKind::NonOrientable => r.non_orientable_examples.clone(),
-        }
-    }
+/// The report's examples of kind `kind`, flattened.
+fn examples(r: &BuildReport, kind: u32) -> Result<Vec<u32>> {
+    let (pairs, edges) = (
+        flat(&r.duplicate_examples),
+        flat(&r.non_manifold_edge_examples),
+    );
+    let all = [
+        r.degenerate_examples.clone(),
+        pairs,
+        edges,
+        r.split_vertex_examples.clone(),
+        r.non_orientable_examples.clone(),
+    ];
+    report_kind(all, kind, "che_report_kind")
 }
 
 /// The first offending ids of one kind (a `che_report_kind` value), flattened, into `buf`
@@ -148,10 +135,7 @@ pub unsafe extern "C" fn che_mesh_report_examples(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    ids!(m, buf, cap, out_len, |c, s| {
-        s.extend(CheReportKind::from_raw(kind)?.examples(c.report()));
-        Ok(())
-    })
+    ids!(m, buf, cap, out_len, try |c| examples(c.report(), kind))
 }
 
 /// Bytes held by each container (lengths, not capacities).

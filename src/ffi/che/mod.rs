@@ -1,9 +1,5 @@
-//! The CHE exports: the `che_mesh` handle (a boxed [`Che`] plus the identity origin maps,
-//! materialised on the first request for a zero-copy view, as the core stores none when
-//! they are the identity) and its build options; `build` (create, load, free, level,
-//! counts), `relations` (one element at a time), `star` (the stack iterator; its step is
-//! inline in `topomesh_inline.h` from level 2), `csr` (bulk), `views` (zero-copy), `info`
-//! (summary, report, memory), `validate`.
+//! The CHE exports: the `che_mesh` handle (a [`Che`] plus the identity origin maps,
+//! materialised on the first request for a view, as the core stores none) and its options.
 
 mod build;
 mod csr;
@@ -15,17 +11,10 @@ mod tests;
 mod validate;
 mod views;
 
-pub use build::*;
-pub use csr::*;
-pub use info::*;
-pub use relations::*;
-pub use star::*;
-pub use validate::*;
-pub use views::*;
+pub use {build::*, csr::*, info::*, relations::*, star::*, validate::*, views::*};
 
-use super::boundary::{CsrSink, Handle, Sink};
-use crate::che::{BuildOptions, Che, Push, Rows};
-use crate::error::{Error, Result};
+use super::shapes::handle;
+use crate::che::{BuildOptions, Che};
 use std::sync::OnceLock;
 
 /// Opaque handle to a CHE surface. Create with `che_mesh_from_triangles` or
@@ -36,65 +25,7 @@ pub struct CheMesh {
     triangle_origins: OnceLock<Box<[u32]>>,
 }
 
-impl Handle for CheMesh {
-    type Core = Che;
-    #[inline(always)]
-    fn core(&self) -> &Che {
-        &self.che
-    }
-}
-
-impl CheMesh {
-    pub(crate) fn new(che: Che) -> Self {
-        CheMesh {
-            che,
-            vertex_origins: OnceLock::new(),
-            triangle_origins: OnceLock::new(),
-        }
-    }
-
-    /// Structure vertex -> input vertex, identity included (origins do not depend on the level).
-    pub(crate) fn vertex_origins(&self) -> &[u32] {
-        match self.che.vertex_origins() {
-            Some(map) => map,
-            None => self
-                .vertex_origins
-                .get_or_init(|| (0..self.che.num_vertices() as u32).collect()),
-        }
-    }
-
-    /// Structure triangle -> input triangle, identity included.
-    pub(crate) fn triangle_origins(&self) -> &[u32] {
-        match self.che.triangle_origins() {
-            Some(map) => map,
-            None => self
-                .triangle_origins
-                .get_or_init(|| (0..self.che.num_triangles() as u32).collect()),
-        }
-    }
-}
-
-// The core's walks write straight into the caller's buffers.
-impl Push for Sink<'_, u32> {
-    #[inline(always)]
-    fn push(&mut self, x: u32) {
-        Sink::push(self, x);
-    }
-}
-
-impl Push for CsrSink<'_> {
-    #[inline(always)]
-    fn push(&mut self, x: u32) {
-        CsrSink::push(self, x);
-    }
-}
-
-impl Rows for CsrSink<'_> {
-    #[inline(always)]
-    fn row(&mut self) {
-        CsrSink::row(self);
-    }
-}
+handle!(CheMesh { che: Che, vertex_origins, triangle_origins }, CheBuildOptions => BuildOptions);
 
 /// How to build a CHE.
 #[repr(C)]
@@ -109,44 +40,6 @@ pub struct CheBuildOptions {
     /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
     /// the calling thread alone. The mesh is the same whatever the number.
     pub threads: u32,
-}
-
-impl Default for CheBuildOptions {
-    fn default() -> Self {
-        let d = BuildOptions::default();
-        CheBuildOptions {
-            level: d.level as u32,
-            strict: d.strict,
-            threads: d.threads as u32,
-        }
-    }
-}
-
-/// A C level as the core's, or OUT_OF_RANGE.
-pub(crate) fn level_arg(level: u32) -> Result<u8> {
-    if level <= 3 {
-        Ok(level as u8)
-    } else {
-        Err(Error::out_of_range(format!("level {level} is not in 0..3")))
-    }
-}
-
-impl CheBuildOptions {
-    /// The defaults at `level`.
-    pub(crate) fn at(level: u32) -> Self {
-        CheBuildOptions {
-            level,
-            ..Self::default()
-        }
-    }
-
-    pub(crate) fn to_core(self) -> Result<BuildOptions> {
-        Ok(BuildOptions {
-            level: level_arg(self.level)?,
-            strict: self.strict,
-            threads: self.threads as usize,
-        })
-    }
 }
 
 /// The default build options: level 2, not strict, every thread of the machine.

@@ -1,10 +1,5 @@
-//! The nine relations, boundary curves and the half-edge helpers, one element at a time.
-//!
-//! Every relation call has the form `(m, id, buf, cap, *out_len)`: the answer goes into
-//! `buf[0..*out_len]`. `buf == NULL` with `cap == 0` is a size query (OK, `*out_len` set).
-//! A buffer shorter than the answer receives its first `cap` entries and the call returns
-//! `TOPOMESH_STATUS_BUFFER_TOO_SMALL` with the needed length in `*out_len`. An id out of
-//! range gives `TOPOMESH_STATUS_OUT_OF_RANGE` (the detail names it) and writes nothing.
+//! The nine relations, boundary curves and the half-edge helpers, one element at a time
+//! (answers into caller buffers, see `ids!`).
 
 use super::CheMesh;
 use crate::ffi::shapes::{ids, value};
@@ -140,10 +135,7 @@ pub unsafe extern "C" fn che_boundary_curve_vertices(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    ids!(m, buf, cap, out_len, |c, s| {
-        s.extend(c.boundary_curve_vertices(curve)?);
-        Ok(())
-    })
+    ids!(m, buf, cap, out_len, try |c| c.boundary_curve_vertices(curve))
 }
 
 /// The opposite of half-edge `h` into `*out` (`TOPOMESH_NONE` on the boundary).

@@ -88,16 +88,16 @@ impl CheStarIter {
     fn begin(m: *const CheMesh, che: &Che, v: u32) -> crate::error::Result<Self> {
         che.check_vertex(v)?;
         let start = che.vertex_half_edge(v);
+        // The arrays are lent to the inline step from level 2 only.
         let inline = che.level() >= 2;
-        let array = |a: Option<&[u32]>| a.filter(|_| inline).map_or(ptr::null(), <[u32]>::as_ptr);
+        fn lent<T>(a: Option<&[T]>, inline: bool) -> *const T {
+            a.filter(|_| inline).map_or(ptr::null(), <[T]>::as_ptr)
+        }
         Ok(CheStarIter {
             mesh: m,
-            v: array(Some(che.half_edge_vertices())),
-            o: array(che.opposites()),
-            edge_ranks: che
-                .edge_ranks()
-                .filter(|_| inline)
-                .map_or(ptr::null(), <[u64]>::as_ptr),
+            v: lent(Some(che.half_edge_vertices()), inline),
+            o: lent(che.opposites(), inline),
+            edge_ranks: lent(che.edge_ranks(), inline),
             cursor: StarCursor::new(start),
             cur_opposite: if start == NONE {
                 NONE

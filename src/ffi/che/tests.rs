@@ -6,25 +6,12 @@ use crate::NONE;
 use crate::che::{BuildOptions, Che};
 use crate::ffi::boundary::with_last_error;
 use crate::ffi::status::Status;
-use std::ptr::{null, null_mut};
+use std::ptr::null_mut;
 
 const STRIP: [u32; 6] = [0, 1, 2, 1, 3, 2];
 
 fn build(tris: &[u32], n_vertices: usize, level: u32) -> *mut CheMesh {
-    let mut m = null_mut();
-    // SAFETY: a live array of `tris.len()` ids and a local out-pointer.
-    let s = unsafe {
-        che_mesh_from_triangles(
-            tris.as_ptr(),
-            tris.len() / 3,
-            n_vertices,
-            null(),
-            level,
-            &mut m,
-        )
-    };
-    assert_eq!(s, Status::Ok);
-    m
+    crate::ffi::tests::build(che_mesh_from_triangles, tris, 3, n_vertices, level)
 }
 
 #[test]
@@ -91,22 +78,8 @@ fn buffers_views_and_csr() {
             &[NONE, 5, NONE, NONE, NONE, 1]
         );
 
-        let (mut no, mut ni) = (0usize, 0usize);
-        let (mut off, mut idx) = ([0u32; 5], [0u32; 10]);
-        let s = che_mesh_vertex_vertices_csr(m, null_mut(), 0, null_mut(), 0, &mut no, &mut ni);
-        assert_eq!((s, no, ni), (Status::Ok, 5, 10));
-        let s = che_mesh_vertex_vertices_csr(
-            m,
-            off.as_mut_ptr(),
-            5,
-            idx.as_mut_ptr(),
-            10,
-            &mut no,
-            &mut ni,
-        );
-        assert_eq!(s, Status::Ok);
-        assert_eq!(off, [0, 2, 5, 8, 10]);
-        assert_eq!(idx, [1, 2, 3, 2, 0, 0, 1, 3, 2, 1]);
+        let rows = crate::ffi::tests::bulk(m, che_mesh_vertex_vertices_csr);
+        assert_eq!(rows, [vec![1, 2], vec![3, 2, 0], vec![0, 1, 3], vec![2, 1]]);
         assert_eq!(
             che_mesh_level(m),
             1,
@@ -132,7 +105,7 @@ fn edge_directory_gives_the_core_edge_ids() {
     }
     for level in 1..=3 {
         let mesh =
-            CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(level)).unwrap());
+            CheMesh::from(Che::from_flat(&tris, 42, &[], BuildOptions::level(level)).unwrap());
         let o = mesh.che.opposites().unwrap();
         let d = mesh.che.edge_ranks().unwrap();
         assert_eq!(d.len(), o.len().div_ceil(32));
@@ -145,24 +118,13 @@ fn edge_directory_gives_the_core_edge_ids() {
             assert_eq!(edge, mesh.che.edge_of(h), "level {level} h {h}");
         }
     }
-    let level0 = CheMesh::new(Che::from_flat(&tris, 42, &[], BuildOptions::level(0)).unwrap());
+    let level0 = CheMesh::from(Che::from_flat(&tris, 42, &[], BuildOptions::level(0)).unwrap());
     assert!(level0.che.edge_ranks().is_none());
 }
 
 #[test]
 fn validate_passes_at_every_level_and_names_a_null_handle() {
     let tetra = [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3];
-    for (tris, n) in [(&STRIP[..], 4), (&tetra[..], 4)] {
-        for level in 0..=3 {
-            let m = build(tris, n, level);
-            // SAFETY: a live mesh, freed once.
-            unsafe {
-                assert_eq!(che_mesh_validate(m), Status::Ok, "level {level}");
-                che_mesh_free(m);
-            }
-        }
-    }
-    // SAFETY: NULL is a documented argument.
-    assert_eq!(unsafe { che_mesh_validate(null()) }, Status::NullArgument);
-    assert!(with_last_error(|e| e.contains("'m'")));
+    let meshes = |level| vec![build(&STRIP, 4, level), build(&tetra, 4, level)];
+    crate::ffi::tests::validates(meshes, che_mesh_validate, che_mesh_free);
 }

@@ -1,6 +1,7 @@
 //! The invariant check of a mesh.
 
 use super::CheMesh;
+use crate::ffi::shapes::status;
 use crate::ffi::status::Status;
 
 /// Checks every invariant of the mesh at its level (ids in range, `O` an involution on
@@ -10,9 +11,5 @@ use crate::ffi::status::Status;
 /// `topomesh_last_error`. O(T).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_validate(m: *const CheMesh) -> Status {
-    crate::ffi::boundary::guard(|| {
-        // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-        let m = unsafe { crate::ffi::boundary::handle(m, "m")? };
-        m.che.validate()
-    })
+    status!(m, |c| c.validate())
 }

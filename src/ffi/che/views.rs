@@ -1,10 +1,8 @@
-//! Zero-copy views of the containers. Each returns a pointer to the first element and
-//! writes the element count to `*len` (when `len` is not NULL); NULL (and `*len = 0`) when
-//! the handle is NULL or the container does not exist at the current level. A view is
-//! valid until the mesh is freed or its level changes (`che_mesh_build_level`). An empty
-//! container may be returned as a non-NULL pointer with `*len == 0`.
+//! Zero-copy views of the containers (see `view!`), valid until the mesh is freed or its
+//! level changes.
 
 use super::CheMesh;
+use crate::ffi::boundary::origins;
 use crate::ffi::mesh_arrays::coordinates;
 use crate::ffi::shapes::view;
 
@@ -69,7 +67,11 @@ pub unsafe extern "C" fn che_mesh_positions(m: *const CheMesh, len: *mut usize) 
 /// identity; then kept with the mesh.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_origins(m: *const CheMesh, len: *mut usize) -> *const u32 {
-    view!(m, len, |m| Some(m.vertex_origins()))
+    view!(m, len, |m| Some(origins(
+        m.che.vertex_origins(),
+        &m.vertex_origins,
+        m.che.num_vertices()
+    )))
 }
 
 /// Structure triangle -> input triangle (`num_triangles` entries; increasing, with gaps
@@ -79,7 +81,11 @@ pub unsafe extern "C" fn che_mesh_triangle_origins(
     m: *const CheMesh,
     len: *mut usize,
 ) -> *const u32 {
-    view!(m, len, |m| Some(m.triangle_origins()))
+    view!(m, len, |m| Some(origins(
+        m.che.triangle_origins(),
+        &m.triangle_origins,
+        m.che.num_triangles()
+    )))
 }
 
 /// The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);

@@ -1,39 +1,12 @@
 //! Making, freeing and re-levelling `chf_mesh` handles, and their counts.
 
 use super::{ChfBuildOptions, ChfMesh};
-use crate::chf::{BuildOptions as CoreOptions, Chf, MAX_TETRAHEDRA};
-use crate::error::Result;
-use crate::ffi::boundary::{guard, handle, handle_mut, options_arg, path_arg};
-use crate::ffi::che::level_arg;
-use crate::ffi::mesh_arrays::{Cells, mesh_arrays};
-use crate::ffi::shapes::{count, free, make};
+use crate::chf::Chf;
+use crate::ffi::boundary::free_handle;
+use crate::ffi::mesh_arrays::TETRAHEDRA;
+use crate::ffi::shapes::{build, count, load, relevel, status};
 use crate::ffi::status::Status;
 use std::ffi::c_char;
-
-/// Builds from C arrays (sizes checked before any slice is made).
-///
-/// # Safety
-/// `tets` is NULL or holds `4 * n_tets` ids; `positions` is NULL or holds `3 * n_vertices`
-/// doubles.
-unsafe fn build(
-    tets: *const u32,
-    n_tets: usize,
-    n_vertices: usize,
-    positions: *const f64,
-    options: CoreOptions,
-) -> Result<ChfMesh> {
-    let kind = Cells {
-        per: 4,
-        max_cells: MAX_TETRAHEDRA,
-        cells: "tetrahedra",
-        part: "half-face",
-    };
-    // SAFETY: forwarded contract.
-    let (flat, points) = unsafe { mesh_arrays(kind, tets, n_tets, n_vertices, positions)? };
-    Ok(ChfMesh::new(Chf::from_flat(
-        flat, n_vertices, points, options,
-    )?))
-}
 
 /// Builds a CHF at `level` (0..3) from `n_tets` tetrahedra (4 vertex ids each, over
 /// vertices `0..n_vertices`). `positions` may be NULL; otherwise it holds 3 doubles (x, y,
@@ -76,12 +49,11 @@ pub unsafe extern "C" fn chf_mesh_from_tetrahedra_ex(
     options: *const ChfBuildOptions,
     out: *mut *mut ChfMesh,
 ) -> Status {
-    // SAFETY: caller contract: `options` NULL or readable, the arrays NULL or of the
-    // stated sizes.
-    make!(out, unsafe {
-        let options = options_arg(options).to_core()?;
-        build(tetrahedra, n_tets, n_vertices, positions, options)
-    })
+    build!(
+        out,
+        options,
+        Chf(TETRAHEDRA, tetrahedra, n_tets, n_vertices, positions)
+    )
 }
 
 /// Reads a volume file (the format from the extension: .mesh (Medit), .msh (Gmsh), .vtk,
@@ -107,15 +79,14 @@ pub unsafe extern "C" fn chf_mesh_load_ex(
     options: *const ChfBuildOptions,
     out: *mut *mut ChfMesh,
 ) -> Status {
-    // SAFETY: caller contract: `options` NULL or readable, `path` NULL or NUL-terminated.
-    let (options, path) = unsafe { (options_arg(options), path_arg(path, "path")) };
-    make!(out, Chf::load(path?, options.to_core()?).map(ChfMesh::new))
+    load!(out, path, options => Chf::load)
 }
 
 /// Frees a mesh; NULL is a no-op. Needs exclusive access.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_free(m: *mut ChfMesh) {
-    free!(m)
+    // SAFETY: caller contract: NULL or a live handle, freed once.
+    unsafe { free_handle(m) }
 }
 
 /// Raises or lowers the level (0..3) in place. Ids never change with the level; views
@@ -123,11 +94,7 @@ pub unsafe extern "C" fn chf_mesh_free(m: *mut ChfMesh) {
 /// the machine (large meshes).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_build_level(m: *mut ChfMesh, level: u32) -> Status {
-    guard(|| {
-        // SAFETY: caller contract: NULL or a live handle, not shared during the call.
-        let m = unsafe { handle_mut(m, "m")? };
-        m.chf.build_level(level_arg(level)?)
-    })
+    relevel!(m, level)
 }
 
 /// Checks every invariant of the mesh at its level: `TOPOMESH_STATUS_OK`, or
@@ -135,51 +102,50 @@ pub unsafe extern "C" fn chf_mesh_build_level(m: *mut ChfMesh, level: u32) -> St
 /// wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_validate(m: *const ChfMesh) -> Status {
-    // SAFETY: caller contract: NULL or a live handle.
-    guard(|| unsafe { handle(m, "m")? }.chf.validate())
+    status!(m, |c| c.validate())
 }
 
 /// The current level (0..3); 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_level(m: *const ChfMesh) -> u32 {
-    count!(m, 0, |c| c.level() as u32)
+    count!(m, |c| c.level() as u32)
 }
 
 /// Vertices of the structure: the input vertices, then the copies made by splitting
 /// non-manifold vertices. 0 for NULL (and likewise for the other counts).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_vertices(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_vertices())
+    count!(m, |c| c.num_vertices())
 }
 
 /// Vertices given as input (ids `0..n` of the structure are the same vertices).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_input_vertices(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_input_vertices())
+    count!(m, |c| c.num_input_vertices())
 }
 
 /// Tetrahedra kept (degenerate input tetrahedra are dropped).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_tetrahedra(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_tetrahedra())
+    count!(m, |c| c.num_tetrahedra())
 }
 
 /// Faces of the structure: paired half-faces count once, unpaired ones (boundary, and the
 /// half-faces of a non-manifold face, which stay unpaired) once each.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_faces(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_faces())
+    count!(m, |c| c.num_faces())
 }
 
 /// Edges of the structure: one per fan of tetrahedra around a vertex pair (a non-manifold
 /// edge whose fans the vertex split did not separate counts once per fan).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_edges(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_edges())
+    count!(m, |c| c.num_edges())
 }
 
 /// Half-faces: 4 per tetrahedron (half-face `4t + i` is the face opposite local vertex `i`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_half_faces(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_half_faces())
+    count!(m, |c| c.num_half_faces())
 }

@@ -3,7 +3,8 @@
 
 use super::ChfMesh;
 use crate::chf::{BuildReport as Report, Memory, Summary};
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::ffi::boundary::{flat, report_kind};
 use crate::ffi::shapes::{ids, mirror, value};
 use crate::ffi::status::Status;
 
@@ -45,7 +46,10 @@ pub struct ChfSummary {
 }
 
 mirror!(Summary => ChfSummary {
-    vertices, edges, faces, tetrahedra, boundary_faces, boundary_edges, boundary_vertices, boundary_components, components, isolated_vertices, euler_characteristic, manifold, orientable, dropped_degenerate, zero_volume, inverted_tetrahedra, non_manifold_faces, non_manifold_edges, split_vertices, flipped_tetrahedra, non_orientable_components,
+    vertices, edges, faces, tetrahedra, boundary_faces, boundary_edges, boundary_vertices,
+    boundary_components, components, isolated_vertices, euler_characteristic, manifold,
+    orientable, dropped_degenerate, zero_volume, inverted_tetrahedra, non_manifold_faces,
+    non_manifold_edges, split_vertices, flipped_tetrahedra, non_orientable_components,
 });
 
 /// The topology summary into `*out`. O(T log T) at every level.
@@ -100,7 +104,10 @@ pub struct ChfBuildReport {
 }
 
 mirror!(Report => ChfBuildReport {
-    input_tetrahedra, input_vertices, dropped_degenerate, zero_volume, inverted_tetrahedra, duplicate_tetrahedra, input_faces, boundary_faces, non_manifold_faces, input_edges, non_manifold_edges, kept_non_manifold_edges, split_vertices, seam_split_vertices, added_vertices, flipped_tetrahedra, non_orientable_components, seam_faces,
+    input_tetrahedra, input_vertices, dropped_degenerate, zero_volume, inverted_tetrahedra,
+    duplicate_tetrahedra, input_faces, boundary_faces, non_manifold_faces, input_edges,
+    non_manifold_edges, kept_non_manifold_edges, split_vertices, seam_split_vertices,
+    added_vertices, flipped_tetrahedra, non_orientable_components, seam_faces,
 });
 
 /// The build report into `*out`. O(1).
@@ -134,48 +141,20 @@ pub enum ChfReportKind {
     NonOrientable = 8,
 }
 
-impl ChfReportKind {
-    /// The report's examples of this kind, flattened.
-    fn examples(self, r: &Report) -> Vec<u32> {
-        use ChfReportKind::*;
-        let flat = |xs: &[[u32; 2]]| xs.iter().flatten().copied().collect();
-        match self {
-            Degenerate => r.degenerate_examples.clone(),
-            ZeroVolume => r.zero_volume_examples.clone(),
-            Inverted => r.inverted_examples.clone(),
-            Duplicate => flat(&r.duplicate_examples),
-            NonManifoldFace => r
-                .non_manifold_face_examples
-                .iter()
-                .flatten()
-                .copied()
-                .collect(),
-            NonManifoldEdge => flat(&r.non_manifold_edge_examples),
-            KeptNonManifoldEdge => flat(&r.kept_non_manifold_edge_examples),
-            SplitVertex => r.split_vertex_examples.clone(),
-            NonOrientable => r.non_orientable_examples.clone(),
-        }
-    }
-
-    fn from_raw(k: u32) -> Result<Self> {
-        use ChfReportKind::*;
-        [
-            Degenerate,
-            ZeroVolume,
-            Inverted,
-            Duplicate,
-            NonManifoldFace,
-            NonManifoldEdge,
-            KeptNonManifoldEdge,
-            SplitVertex,
-            NonOrientable,
-        ]
-        .into_iter()
-        .find(|&x| x as u32 == k)
-        .ok_or_else(|| {
-            Error::out_of_range(format!("report kind {k} is not a chf_report_kind (0..8)"))
-        })
-    }
+/// The report's examples of kind `kind`, flattened.
+fn examples(r: &Report, kind: u32) -> Result<Vec<u32>> {
+    let all = [
+        r.degenerate_examples.clone(),
+        r.zero_volume_examples.clone(),
+        r.inverted_examples.clone(),
+        flat(&r.duplicate_examples),
+        flat(&r.non_manifold_face_examples),
+        flat(&r.non_manifold_edge_examples),
+        flat(&r.kept_non_manifold_edge_examples),
+        r.split_vertex_examples.clone(),
+        r.non_orientable_examples.clone(),
+    ];
+    report_kind(all, kind, "chf_report_kind")
 }
 
 /// The first offending ids of one kind (a `chf_report_kind` value), flattened, into `buf`
@@ -188,10 +167,7 @@ pub unsafe extern "C" fn chf_mesh_report_examples(
     cap: usize,
     out_len: *mut usize,
 ) -> Status {
-    ids!(m, buf, cap, out_len, |c, s| {
-        s.extend(ChfReportKind::from_raw(kind)?.examples(c.report()));
-        Ok(())
-    })
+    ids!(m, buf, cap, out_len, try |c| examples(c.report(), kind))
 }
 
 /// Bytes held by each container (lengths, not capacities).

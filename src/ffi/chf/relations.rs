@@ -1,16 +1,7 @@
-//! The 16 relations, one element at a time.
-//!
-//! Every relation call has the form `(m, id, buf, cap, *out_len)`: the answer goes into
-//! `buf[0..*out_len]`. `buf == NULL` with `cap == 0` is a size query (OK, `*out_len` set).
-//! A buffer shorter than the answer receives its first `cap` entries and the call returns
-//! `TOPOMESH_STATUS_BUFFER_TOO_SMALL` with the needed length in `*out_len`. An id out of
-//! range gives `TOPOMESH_STATUS_OUT_OF_RANGE` (the detail names it) and writes nothing.
-//!
-//! Every relation works at every level with the same answer in the same order; a higher
-//! level only answers faster. Below level 2 a call computes the tables it needs (face and
-//! edge ranks, and `O` at level 0) for itself: O(T) per call. Answers are bounded except
-//! around a vertex (VV, VE, VF, VT) and an edge (EE, EF, ET): size them with a query or
-//! use the bulk calls (`chf_mesh_*_csr`).
+//! The 16 relations, one element at a time (answers into caller buffers, see `ids!`).
+//! Every relation works at every level with the same answer in the same order; below
+//! level 2 a call computes the tables it needs (face and edge ranks, and `O` at level 0)
+//! for itself, O(T) per call.
 
 use super::ChfMesh;
 use crate::ffi::shapes::ids;

@@ -24,11 +24,7 @@ use crate::ffi::status::Status;
 /// curves); a mesh without tetrahedra an empty one. `*out` is NULL on failure.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_boundary(m: *const ChfMesh, out: *mut *mut CheMesh) -> Status {
-    // SAFETY: caller contract: `m` NULL or a live handle.
-    make!(
-        out,
-        unsafe { handle(m, "m") }.and_then(|m| m.chf.boundary_surface().map(CheMesh::new))
-    )
+    make!(out, handle(m, "m")?.chf.boundary_surface())
 }
 
 /// Boundary faces: faces with exactly one tetrahedron (as `boundary_faces` in
@@ -39,7 +35,7 @@ pub unsafe extern "C" fn chf_mesh_boundary(m: *const ChfMesh, out: *mut *mut Che
 /// (`chf_mesh_num_boundary_triangles`). O(1) at level 3, O(T) below; 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_faces(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_boundary_faces())
+    count!(m, |c| c.num_boundary_faces())
 }
 
 /// Unpaired half-faces: the triangles of `chf_mesh_boundary`'s surface, that is
@@ -47,21 +43,21 @@ pub unsafe extern "C" fn chf_mesh_num_boundary_faces(m: *const ChfMesh) -> usize
 /// chf_mesh_num_seam_half_faces`. O(1) at level 3, O(T) below; 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_triangles(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_boundary_triangles())
+    count!(m, |c| c.num_boundary_triangles())
 }
 
 /// Half-faces of non-manifold faces (faces shared by 3+ tetrahedra: one per tetrahedron,
 /// each unpaired). O(1); 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_non_manifold_half_faces(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_non_manifold_half_faces())
+    count!(m, |c| c.num_non_manifold_half_faces())
 }
 
 /// Half-faces on orientation seams (a face of two tetrahedra whose orientations disagree,
 /// in a non-orientable component: both unpaired). O(1); 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_seam_half_faces(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_seam_half_faces())
+    count!(m, |c| c.num_seam_half_faces())
 }
 
 /// Boundary vertices: the vertices of the unpaired half-faces, the vertices of
@@ -69,7 +65,7 @@ pub unsafe extern "C" fn chf_mesh_num_seam_half_faces(m: *const ChfMesh) -> usiz
 /// NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_vertices(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_boundary_vertices())
+    count!(m, |c| c.num_boundary_vertices())
 }
 
 /// The boundary-surface vertex of volume vertex `v` into `*out`, `TOPOMESH_NONE` off the
@@ -99,7 +95,7 @@ pub unsafe extern "C" fn chf_boundary_vertex_vertex(
 /// boundary faces joined through shared vertices. O(1) at level 3, O(T) below; 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_components(m: *const ChfMesh) -> usize {
-    count!(m, 0, |c| c.num_boundary_components())
+    count!(m, |c| c.num_boundary_components())
 }
 
 /// The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is

@@ -11,79 +11,14 @@ use crate::NONE;
 use crate::ffi::boundary::with_last_error;
 use crate::ffi::che::{che_mesh_free, che_mesh_num_triangles};
 use crate::ffi::status::Status;
-use std::ptr::{null, null_mut};
+use crate::ffi::tests::{Bulk, Relation, bulk, rows};
+use std::ptr::null_mut;
 
 /// Two tetrahedra sharing the face (1, 2, 3), both positive.
 const PAIR: [u32; 8] = [0, 1, 2, 3, 4, 1, 3, 2];
 
 fn build(tets: &[u32], n_vertices: usize, level: u32) -> *mut ChfMesh {
-    let mut m = null_mut();
-    // SAFETY: a live array of `tets.len()` ids and a local out-pointer.
-    let s = unsafe {
-        chf_mesh_from_tetrahedra(
-            tets.as_ptr(),
-            tets.len() / 4,
-            n_vertices,
-            null(),
-            level,
-            &mut m,
-        )
-    };
-    assert_eq!(s, Status::Ok);
-    m
-}
-
-type Relation = unsafe extern "C" fn(*const ChfMesh, u32, *mut u32, usize, *mut usize) -> Status;
-type Bulk = unsafe extern "C" fn(
-    *const ChfMesh,
-    *mut u32,
-    usize,
-    *mut u32,
-    usize,
-    *mut usize,
-    *mut usize,
-) -> Status;
-
-/// All rows of a relation, one call per element.
-fn rows(m: *const ChfMesh, f: Relation, n: usize) -> Vec<Vec<u32>> {
-    (0..n as u32)
-        .map(|x| {
-            let mut len = 0;
-            // SAFETY: live mesh; a size query, then a buffer of that size.
-            unsafe {
-                assert_eq!(f(m, x, null_mut(), 0, &mut len), Status::Ok);
-                let mut buf = vec![0u32; len];
-                assert_eq!(f(m, x, buf.as_mut_ptr(), len, &mut len), Status::Ok);
-                buf
-            }
-        })
-        .collect()
-}
-
-/// The same rows from a bulk call.
-fn bulk(m: *const ChfMesh, f: Bulk) -> Vec<Vec<u32>> {
-    let (mut no, mut ni) = (0, 0);
-    // SAFETY: live mesh; a size query, then buffers of those sizes (never empty).
-    unsafe {
-        assert_eq!(
-            f(m, null_mut(), 0, null_mut(), 0, &mut no, &mut ni),
-            Status::Ok
-        );
-        let (mut off, mut idx) = (vec![0u32; no], vec![0u32; ni.max(1)]);
-        let s = f(
-            m,
-            off.as_mut_ptr(),
-            no,
-            idx.as_mut_ptr(),
-            ni,
-            &mut no,
-            &mut ni,
-        );
-        assert_eq!(s, Status::Ok);
-        off.windows(2)
-            .map(|w| idx[w[0] as usize..w[1] as usize].to_vec())
-            .collect()
-    }
+    crate::ffi::tests::build(chf_mesh_from_tetrahedra, tets, 4, n_vertices, level)
 }
 
 #[test]
@@ -99,7 +34,7 @@ fn relations_and_bulk_rows_agree_at_every_level() {
                 chf_mesh_num_tetrahedra(m),
             );
             assert_eq!((nv, ne, chf_mesh_num_faces(m), nt), (5, 9, 7, 2));
-            let pairs: [(Relation, Bulk, usize); 6] = [
+            let pairs: [(Relation<ChfMesh>, Bulk<ChfMesh>, usize); 6] = [
                 (chf_vertex_vertices, chf_mesh_vertex_vertices_csr, nv),
                 (chf_vertex_edges, chf_mesh_vertex_edges_csr, nv),
                 (chf_vertex_faces, chf_mesh_vertex_faces_csr, nv),
@@ -154,15 +89,6 @@ fn relations_and_bulk_rows_agree_at_every_level() {
 
 #[test]
 fn validate_passes_on_a_build_and_rejects_null() {
-    for level in 0..=3 {
-        let m = build(&PAIR, 5, level);
-        // SAFETY: a live handle, freed once.
-        unsafe {
-            assert_eq!(chf_mesh_validate(m), Status::Ok);
-            chf_mesh_free(m);
-        }
-    }
-    // SAFETY: NULL is allowed and reported.
-    assert_eq!(unsafe { chf_mesh_validate(null()) }, Status::NullArgument);
-    with_last_error(|e| assert!(e.contains('m'), "{e}"));
+    let meshes = |level| vec![build(&PAIR, 5, level)];
+    crate::ffi::tests::validates(meshes, chf_mesh_validate, chf_mesh_free);
 }

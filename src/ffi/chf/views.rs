@@ -1,10 +1,8 @@
-//! Zero-copy views of the containers. Each returns a pointer to the first element and
-//! writes the element count to `*len` (when `len` is not NULL); NULL (and `*len = 0`) when
-//! the handle is NULL or the container does not exist at the current level. A view is
-//! valid until the mesh is freed or its level changes (`chf_mesh_build_level`). An empty
-//! container may be returned as a non-NULL pointer with `*len == 0`.
+//! Zero-copy views of the containers (see `view!`), valid until the mesh is freed or its
+//! level changes.
 
 use super::ChfMesh;
+use crate::ffi::boundary::origins;
 use crate::ffi::mesh_arrays::coordinates;
 use crate::ffi::shapes::view;
 use std::borrow::Cow;
@@ -101,7 +99,11 @@ pub unsafe extern "C" fn chf_mesh_positions(m: *const ChfMesh, len: *mut usize) 
 /// identity; then kept with the mesh.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_origins(m: *const ChfMesh, len: *mut usize) -> *const u32 {
-    view!(m, len, |m| Some(m.vertex_origins()))
+    view!(m, len, |m| Some(origins(
+        m.chf.vertex_origins(),
+        &m.vertex_origins,
+        m.chf.num_vertices()
+    )))
 }
 
 /// Structure tetrahedron -> input tetrahedron (`num_tetrahedra` entries; increasing, with
@@ -112,5 +114,9 @@ pub unsafe extern "C" fn chf_mesh_tetrahedron_origins(
     m: *const ChfMesh,
     len: *mut usize,
 ) -> *const u32 {
-    view!(m, len, |m| Some(m.tetrahedron_origins()))
+    view!(m, len, |m| Some(origins(
+        m.chf.tetrahedron_origins(),
+        &m.tetrahedron_origins,
+        m.chf.num_tetrahedra()
+    )))
 }

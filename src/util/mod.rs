@@ -1,6 +1,7 @@
-//! Helpers below both structures: threads, huge pages, rank directories, union-find,
-//! small id lists, closing the holes of dropped elements, and the build reports' example
-//! lists.
+//! Helpers below both structures: build options and size checks, orientation, origin
+//! maps, the accessors both structures share, CSR arrays, threads, huge pages, rank
+//! directories, union-find, small id lists, closing the holes of dropped elements, and the
+//! build reports' example lists.
 
 pub(crate) mod csr;
 pub(crate) mod dsu;

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <stdexcept>
 #include <string>
 
 namespace topomesh {
@@ -43,11 +44,14 @@ template <class M> struct Calls {
 /// Writes into an Ids (a friend of it).
 struct IdsWriter {
     template <class Ids> static void push(Ids &out, std::uint32_t id) { out.push_raw(id); }
-    /// Sets the ids of an empty Ids to `ids` (at most its inline capacity).
-    template <class Ids> static void set(Ids &out, std::initializer_list<std::uint32_t> ids) {
+    /// Sets the ids of an empty Ids to `ids` (at most its inline capacity). One store per
+    /// id, no initializer_list: a fixed-size answer then stays in registers, and a loop over
+    /// it unrolls at -O2 as over a std::array.
+    template <class Ids, class... U> static void set(Ids &out, U... ids) {
         std::uint32_t *buf = out.buffer(0);
-        for (std::uint32_t id : ids) *buf++ = id;
-        out.size_ = ids.size();
+        std::size_t i = 0;
+        ((buf[i++] = static_cast<std::uint32_t>(ids)), ...);
+        out.size_ = sizeof...(U);
     }
     /// One call into the inline buffer; a second into the heap when the answer is longer.
     template <class Ids, class M, class F>
@@ -61,6 +65,21 @@ struct IdsWriter {
         }
         check(s);
         out.size_ = len;
+    }
+    /// `call` for the relations whose answer always has exactly N ids (a triangle's three
+    /// vertices, edges and neighbours; an edge's two vertices). The C call writes into a
+    /// local array, not into `out`, so that `out` never escapes: for the same reason as
+    /// `set`, a loop over the answer then unrolls as over a std::array.
+    template <class Ids, class M, class F>
+    static void call_exact(Ids &out, F f, const M *m, std::uint32_t id) {
+        constexpr std::size_t n = Ids::inline_capacity();
+        std::uint32_t ids[n];
+        std::size_t len = 0;
+        check(f(m, id, ids, n, &len));
+        if (len != n) throw std::logic_error("topomesh: a fixed-size answer of another size");
+        std::uint32_t *buf = out.buffer(0);
+        for (std::size_t i = 0; i < n; i++) buf[i] = ids[i];
+        out.size_ = n;
     }
 };
 

@@ -119,9 +119,9 @@ inline Ids<VertexId, 2> Surface::edge_vertices(EdgeId e) const {
     Ids<VertexId, 2> out;
     if (views_.EH != nullptr && views_.edge(e.value())) {
         const std::uint32_t h = views_.EH[e.value()];
-        IdsWriter::set(out, {views_.V[h], views_.V[che_next(h)]});
+        IdsWriter::set(out, views_.V[h], views_.V[che_next(h)]);
     } else {
-        IdsWriter::call(out, che_edge_vertices, m_, e.value());
+        IdsWriter::call_exact(out, che_edge_vertices, m_, e.value());
     }
     return out;
 }
@@ -137,9 +137,9 @@ inline Ids<TriangleId, 2> Surface::edge_triangles(EdgeId e) const {
     if (views_.EH != nullptr && views_.edge(e.value())) {
         const std::uint32_t h = views_.EH[e.value()], g = views_.O[h];
         if (g != none)
-            IdsWriter::set(out, {che_tri(h), che_tri(g)});
+            IdsWriter::set(out, che_tri(h), che_tri(g));
         else
-            IdsWriter::set(out, {che_tri(h)});
+            IdsWriter::set(out, che_tri(h));
     } else {
         IdsWriter::call(out, che_edge_triangles, m_, e.value());
     }
@@ -150,16 +150,16 @@ inline Ids<VertexId, 3> Surface::triangle_vertices(TriangleId t) const {
     Ids<VertexId, 3> out;
     if (views_.V != nullptr && views_.triangle(t.value())) {
         const std::uint32_t *c = views_.V + che_first(t.value());
-        IdsWriter::set(out, {c[0], c[1], c[2]});
+        IdsWriter::set(out, c[0], c[1], c[2]);
     } else {
-        IdsWriter::call(out, che_triangle_vertices, m_, t.value());
+        IdsWriter::call_exact(out, che_triangle_vertices, m_, t.value());
     }
     return out;
 }
 
 inline Ids<EdgeId, 3> Surface::triangle_edges(TriangleId t) const {
     Ids<EdgeId, 3> out;
-    IdsWriter::call(out, che_triangle_edges, m_, t.value());
+    IdsWriter::call_exact(out, che_triangle_edges, m_, t.value());
     return out;
 }
 
@@ -168,9 +168,9 @@ inline Ids<TriangleId, 3> Surface::triangle_triangles(TriangleId t) const {
     if (views_.O != nullptr && views_.triangle(t.value())) {
         const std::uint32_t *o = views_.O + che_first(t.value());
         const auto across = [](std::uint32_t g) { return g == none ? none : che_tri(g); };
-        IdsWriter::set(out, {across(o[0]), across(o[1]), across(o[2])});
+        IdsWriter::set(out, across(o[0]), across(o[1]), across(o[2]));
     } else {
-        IdsWriter::call(out, che_triangle_triangles, m_, t.value());
+        IdsWriter::call_exact(out, che_triangle_triangles, m_, t.value());
     }
     return out;
 }

@@ -1481,13 +1481,6 @@ topomesh_status chf_mesh_tetrahedron_tetrahedra_csr(const struct chf_mesh *m,
 /* ---- CHF: summary, build report, memory and validation ---- */
 
 /**
- * Checks every invariant of the mesh at its level: `TOPOMESH_STATUS_OK`, or
- * `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (the element and what is
- * wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
- */
-topomesh_status chf_mesh_validate(const struct chf_mesh *m);
-
-/**
  * The topology summary into `*out`. O(T log T) at every level.
  */
 topomesh_status chf_mesh_summary(const struct chf_mesh *m, struct chf_summary *out);
@@ -1511,6 +1504,13 @@ topomesh_status chf_mesh_report_examples(const struct chf_mesh *m,
  * Memory per container into `*out`. O(1).
  */
 topomesh_status chf_mesh_memory(const struct chf_mesh *m, struct chf_memory *out);
+
+/**
+ * Checks every invariant of the mesh at its level: `TOPOMESH_STATUS_OK`, or
+ * `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (the element and what is
+ * wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
+ */
+topomesh_status chf_mesh_validate(const struct chf_mesh *m);
 
 /* ---- CHF: zero-copy views of the structure's arrays ---- */
 

@@ -1,11 +1,11 @@
-//! What a mesh is (topology summary), what its build did (report) and what it costs
-//! (memory per container).
+//! What a mesh is (topology summary), what its build did (report), what it costs
+//! (memory per container), and whether its invariants hold (validate).
 
 use super::CheMesh;
 use crate::che::{BuildReport, Memory, Summary};
 use crate::error::Result;
 use crate::ffi::boundary::{flat, report_kind};
-use crate::ffi::shapes::{ids, mirror, value};
+use crate::ffi::shapes::{ids, mirror, status, value};
 use crate::ffi::status::Status;
 
 /// The topology of the input complex as given (input vertices, unique input edges, kept
@@ -168,4 +168,14 @@ mirror!(Memory => CheMemory {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_memory(m: *const CheMesh, out: *mut CheMemory) -> Status {
     value!(m, out, |c| Ok((&c.memory_bytes()).into()))
+}
+
+/// Checks every invariant of the mesh at its level (ids in range, `O` an involution on
+/// matching vertex pairs, the rules of `VH`, the edge directory and `EH`, the boundary
+/// curves). `TOPOMESH_STATUS_OK` when they all hold; otherwise
+/// `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (element and what is wrong) in
+/// `topomesh_last_error`. O(T).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_validate(m: *const CheMesh) -> Status {
+    status!(m, |c| c.validate())
 }

@@ -8,10 +8,9 @@ mod relations;
 mod star;
 #[cfg(test)]
 mod tests;
-mod validate;
 mod views;
 
-pub use {build::*, csr::*, info::*, relations::*, star::*, validate::*, views::*};
+pub use {build::*, csr::*, info::*, relations::*, star::*, views::*};
 
 use super::shapes::handle;
 use crate::che::{BuildOptions, Che};

@@ -4,7 +4,7 @@ use super::{ChfBuildOptions, ChfMesh};
 use crate::chf::Chf;
 use crate::ffi::boundary::free_handle;
 use crate::ffi::mesh_arrays::TETRAHEDRA;
-use crate::ffi::shapes::{build, count, load, relevel, status};
+use crate::ffi::shapes::{build, count, load, relevel};
 use crate::ffi::status::Status;
 use std::ffi::c_char;
 
@@ -95,14 +95,6 @@ pub unsafe extern "C" fn chf_mesh_free(m: *mut ChfMesh) {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_build_level(m: *mut ChfMesh, level: u32) -> Status {
     relevel!(m, level)
-}
-
-/// Checks every invariant of the mesh at its level: `TOPOMESH_STATUS_OK`, or
-/// `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (the element and what is
-/// wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_validate(m: *const ChfMesh) -> Status {
-    status!(m, |c| c.validate())
 }
 
 /// The current level (0..3); 0 for NULL.

@@ -1,11 +1,11 @@
-//! What a volume mesh is (topology summary), what its build did (report) and what it
-//! costs (memory per container).
+//! What a volume mesh is (topology summary), what its build did (report), what it
+//! costs (memory per container), and whether its invariants hold (validate).
 
 use super::ChfMesh;
 use crate::chf::{BuildReport as Report, Memory, Summary};
 use crate::error::Result;
 use crate::ffi::boundary::{flat, report_kind};
-use crate::ffi::shapes::{ids, mirror, value};
+use crate::ffi::shapes::{ids, mirror, status, value};
 use crate::ffi::status::Status;
 
 /// The topology of the input complex as given (input vertices, unique input edges and
@@ -202,4 +202,12 @@ mirror!(Memory => ChfMemory {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_memory(m: *const ChfMesh, out: *mut ChfMemory) -> Status {
     value!(m, out, |c| Ok((&c.memory_bytes()).into()))
+}
+
+/// Checks every invariant of the mesh at its level: `TOPOMESH_STATUS_OK`, or
+/// `TOPOMESH_STATUS_INVALID_INPUT` with the first violation (the element and what is
+/// wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_validate(m: *const ChfMesh) -> Status {
+    status!(m, |c| c.validate())
 }

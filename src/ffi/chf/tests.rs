@@ -4,6 +4,7 @@
 use super::ChfMesh;
 use super::build::*;
 use super::csr::*;
+use super::info::chf_mesh_validate;
 use super::relations::*;
 use super::surface::*;
 use super::views::*;

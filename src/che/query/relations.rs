@@ -215,9 +215,12 @@ impl Che {
 
     /// FF: the triangle across each edge of `t` (`NONE` on the boundary).
     pub fn triangle_triangles(&self, t: u32) -> [u32; 3] {
-        [0, 1, 2].map(|i| {
-            let o = self.opposite(first(t) + i);
-            if o == NONE { NONE } else { tri(o) }
-        })
+        let across = |o: u32| if o == NONE { NONE } else { tri(o) };
+        let h = first(t) as usize;
+        // From level 1 one slice of `O`: a single bounds check and no level test per corner.
+        match self.opposites().and_then(|o| o.get(h..h + 3)) {
+            Some(o) => [across(o[0]), across(o[1]), across(o[2])],
+            None => [0, 1, 2].map(|i| across(self.opposite(first(t) + i))),
+        }
     }
 }

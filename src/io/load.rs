@@ -3,6 +3,7 @@
 
 use super::{MeshData, read};
 use crate::che::{BuildOptions, Che};
+use crate::chf::Chf;
 use crate::error::{Error, Result};
 use std::path::Path;
 
@@ -37,6 +38,17 @@ pub fn che(path: &Path, options: BuildOptions) -> Result<Che> {
     let data = read_surface(path)?;
     Che::from_triangles(
         &data.triangles,
+        data.num_vertices(),
+        &data.positions,
+        options,
+    )
+}
+
+/// Reads a volume file and builds its CHF; triangles the file also holds are ignored.
+pub fn chf(path: &Path, options: BuildOptions) -> Result<Chf> {
+    let data = read_volume(path)?;
+    Chf::from_tetrahedra(
+        &data.tetrahedra,
         data.num_vertices(),
         &data.positions,
         options,

@@ -4,7 +4,6 @@
 
 pub(crate) mod level2;
 pub(crate) mod level3;
-mod load;
 mod orient;
 pub(crate) mod report;
 mod soup;

@@ -79,7 +79,7 @@ pub unsafe extern "C" fn chf_mesh_load_ex(
     options: *const ChfBuildOptions,
     out: *mut *mut ChfMesh,
 ) -> Status {
-    load!(out, path, options => Chf::load)
+    load!(out, path, options => crate::io::load::chf)
 }
 
 /// Frees a mesh; NULL is a no-op. Needs exclusive access.

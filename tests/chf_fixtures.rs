@@ -39,11 +39,7 @@ fn build_checked(tets: &[[u32; 4]], positions: &[DVec3], given: bool) -> Chf {
 }
 
 fn summary(
-    counts: [u64; 4],
-    boundary: [u64; 4],
-    components: u64,
-    isolated: u64,
-    euler: i64,
+    counts: [u64; 4], boundary: [u64; 4], components: u64, isolated: u64, euler: i64,
 ) -> chf::Summary {
     chf::Summary {
         vertices: counts[0],

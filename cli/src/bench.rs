@@ -80,8 +80,7 @@ fn bench_volume(name: &str, data: &MeshData, options: &BenchOptions) -> Result<(
 
 /// Builds `repeat` times; the last structure and the median time.
 fn timed_builds<T>(
-    repeat: usize,
-    mut build: impl FnMut() -> Result<T, Error>,
+    repeat: usize, mut build: impl FnMut() -> Result<T, Error>,
 ) -> Result<(T, f64), Error> {
     let mut times = Vec::with_capacity(repeat);
     let mut last = None;

@@ -76,9 +76,7 @@ impl InfoOptions {
 
 /// Runs `build` under the spinner's `message`; the structure and the seconds it took.
 fn timed_build<T>(
-    progress: &Progress,
-    message: String,
-    build: impl FnOnce() -> Result<T, Error>,
+    progress: &Progress, message: String, build: impl FnOnce() -> Result<T, Error>,
 ) -> Result<(T, f64), Error> {
     progress.step(message);
     let start = Instant::now();
@@ -99,11 +97,7 @@ fn emit<T: Serialize>(options: &InfoOptions, progress: Progress, out: &T, text: 
 }
 
 fn surface_info(
-    name: &str,
-    data: &MeshData,
-    options: &InfoOptions,
-    progress: Progress,
-    read_seconds: f64,
+    name: &str, data: &MeshData, options: &InfoOptions, progress: Progress, read_seconds: f64,
 ) -> Result<ExitCode, Error> {
     let message = format!(
         "building level {} from {} triangles",
@@ -273,10 +267,7 @@ impl VolumeStructure {
 }
 
 fn volume_info(
-    name: &str,
-    data: &MeshData,
-    options: &InfoOptions,
-    progress: Progress,
+    name: &str, data: &MeshData, options: &InfoOptions, progress: Progress,
 ) -> Result<ExitCode, Error> {
     let message = format!(
         "building level {} from {} tetrahedra",

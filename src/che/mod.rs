@@ -74,20 +74,14 @@ impl Che {
     /// Builds from a triangle list over vertices `0..n_vertices`; `positions` is empty or
     /// holds `n_vertices` points.
     pub fn from_triangles(
-        triangles: &[[u32; 3]],
-        n_vertices: usize,
-        positions: &[DVec3],
-        options: BuildOptions,
+        triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     ) -> Result<Che> {
         build::build(triangles, n_vertices, positions, options)
     }
 
     /// Builds from a flat array of `3 * n` vertex ids.
     pub fn from_flat(
-        triangles: &[u32],
-        n_vertices: usize,
-        positions: &[DVec3],
-        options: BuildOptions,
+        triangles: &[u32], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     ) -> Result<Che> {
         let tris = as_elements::<3>(triangles, "triangle")?;
         Self::from_triangles(tris, n_vertices, positions, options)

@@ -36,10 +36,7 @@ pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, f: impl FnMut(u32, u3
 /// smaller vertices, in order, with a state of its own from `state()`; the states come
 /// back in the order of their ranges.
 pub(crate) fn for_each_group_par<S: Send>(
-    v: &[u32],
-    n_vertices: usize,
-    threads: usize,
-    state: impl FnMut() -> S,
+    v: &[u32], n_vertices: usize, threads: usize, state: impl FnMut() -> S,
     f: impl Fn(&mut S, u32, u32, &[u64]) + Sync,
 ) -> Vec<S> {
     let grouping = Grouping {
@@ -60,10 +57,7 @@ struct Grouping {
 /// [`for_each_group_par`] on `threads` threads whatever the size: the first pass scatters
 /// to coarse buckets, then each thread visits a run of them.
 fn groups<S: Send>(
-    v: &[u32],
-    n_vertices: usize,
-    grouping: Grouping,
-    mut state: impl FnMut() -> S,
+    v: &[u32], n_vertices: usize, grouping: Grouping, mut state: impl FnMut() -> S,
     f: impl Fn(&mut S, u32, u32, &[u64]) + Sync,
 ) -> Vec<S> {
     let layout = Layout::new(n_vertices, v.len(), grouping.allow_packed);
@@ -218,10 +212,7 @@ fn cuts(scattered: &Scattered, layout: &Layout, threads: usize, total: usize) ->
 /// Second pass over the coarse buckets `range`, one at a time: by the low bits of the
 /// smaller vertex, then each fine bucket sorted and cut into groups for `f`.
 fn visit_buckets<S>(
-    sc: &Scattered,
-    layout: &Layout,
-    range: std::ops::Range<usize>,
-    s: &mut S,
+    sc: &Scattered, layout: &Layout, range: std::ops::Range<usize>, s: &mut S,
     f: &impl Fn(&mut S, u32, u32, &[u64]),
 ) {
     let shift = layout.shift;
@@ -273,10 +264,7 @@ fn visit_buckets<S>(
 /// Sorts one fine bucket (the pairs of smaller vertex `min`) and calls `f` per group.
 #[inline(always)]
 fn visit_fine_bucket<S>(
-    bucket: &mut [u64],
-    min: u32,
-    s: &mut S,
-    f: &impl Fn(&mut S, u32, u32, &[u64]),
+    bucket: &mut [u64], min: u32, s: &mut S, f: &impl Fn(&mut S, u32, u32, &[u64]),
 ) {
     if bucket.len() > 1 {
         bucket.sort_unstable();

@@ -34,10 +34,7 @@ pub(crate) enum FanEnd {
 /// the start or the boundary; `visit` returning `true` stops early (reported as `Closed`).
 #[inline]
 pub(crate) fn walk(
-    v: &[u32],
-    o: &[u32],
-    start: HalfEdge,
-    mut visit: impl FnMut(HalfEdge, HalfEdge) -> bool,
+    v: &[u32], o: &[u32], start: HalfEdge, mut visit: impl FnMut(HalfEdge, HalfEdge) -> bool,
 ) -> FanEnd {
     let mut g = start;
     loop {
@@ -150,10 +147,7 @@ pub(crate) struct EdgeCensus {
 /// Groups the canonical slots (one per fan) by input vertex pair (bucketed by the smaller
 /// input vertex, each bucket sorted), then by structure pair.
 pub(crate) fn census(
-    v: &[u32],
-    bits: &RankBits,
-    n_input: usize,
-    origin: impl Fn(u32) -> u32,
+    v: &[u32], bits: &RankBits, n_input: usize, origin: impl Fn(u32) -> u32,
 ) -> EdgeCensus {
     let ends = |s: u64| {
         let [p, q] = crate::chf::ids::EDGE[(s % 6) as usize];

@@ -146,20 +146,14 @@ impl Chf {
     /// Builds from tetrahedra over vertices `0..n_vertices`; `positions` is empty or holds
     /// `n_vertices` points.
     pub fn from_tetrahedra(
-        tets: &[[u32; 4]],
-        n_vertices: usize,
-        positions: &[DVec3],
-        options: BuildOptions,
+        tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     ) -> Result<Chf> {
         build::build(tets, n_vertices, positions, options)
     }
 
     /// Builds from a flat array of `4 * n` vertex ids.
     pub fn from_flat(
-        tets: &[u32],
-        n_vertices: usize,
-        positions: &[DVec3],
-        options: BuildOptions,
+        tets: &[u32], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     ) -> Result<Chf> {
         let quads = as_elements::<4>(tets, "tetrahedron")?;
         Self::from_tetrahedra(quads, n_vertices, positions, options)

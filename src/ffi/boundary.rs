@@ -139,9 +139,7 @@ pub(crate) fn level_arg(level: u32) -> Result<u8> {
 
 /// The examples of report kind `kind` (`all` in the C enum's order), or OUT_OF_RANGE.
 pub(crate) fn report_kind<const N: usize>(
-    all: [Vec<u32>; N],
-    kind: u32,
-    name: &str,
+    all: [Vec<u32>; N], kind: u32, name: &str,
 ) -> Result<Vec<u32>> {
     let max = N - 1;
     let error = || Error::out_of_range(format!("report kind {kind} is not a {name} (0..{max})"));
@@ -155,9 +153,7 @@ pub(crate) fn flat<const K: usize>(xs: &[[u32; K]]) -> Vec<u32> {
 
 /// The core's origin map, or the identity on `0..n` materialised once in `cell`.
 pub(crate) fn origins<'a>(
-    map: Option<&'a [u32]>,
-    cell: &'a OnceLock<Box<[u32]>>,
-    n: usize,
+    map: Option<&'a [u32]>, cell: &'a OnceLock<Box<[u32]>>, n: usize,
 ) -> &'a [u32] {
     map.unwrap_or_else(|| cell.get_or_init(|| (0..n as u32).collect()))
 }
@@ -213,10 +209,7 @@ pub(crate) struct Sink<'a> {
 impl<'a> Sink<'a> {
     /// `buf` is NULL or valid for `cap` writes during `'a`; `out_len` NULL or writable.
     pub(crate) unsafe fn new(
-        buf: *mut u32,
-        cap: usize,
-        out_len: *mut usize,
-        name: &'static str,
+        buf: *mut u32, cap: usize, out_len: *mut usize, name: &'static str,
     ) -> Result<Self> {
         // SAFETY: forwarded contract.
         let out_len = unsafe { out_arg(out_len, "out_len")? };

@@ -31,11 +31,7 @@ pub(crate) const TETRAHEDRA: Cells = (4, crate::chf::MAX_TETRAHEDRA, "tetrahedra
 /// `ids` is NULL or holds `per * n_cells` ids; `positions` is NULL or holds
 /// `3 * n_vertices` doubles; both stay alive and unchanged during `'a`.
 pub(crate) unsafe fn mesh_arrays<'a>(
-    kind: Cells,
-    ids: *const u32,
-    n_cells: usize,
-    n_vertices: usize,
-    positions: *const f64,
+    kind: Cells, ids: *const u32, n_cells: usize, n_vertices: usize, positions: *const f64,
 ) -> Result<(&'a [u32], &'a [DVec3])> {
     let (per, max_cells, cells, part) = kind;
     if n_cells > max_cells {

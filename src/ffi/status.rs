@@ -64,9 +64,7 @@ pub extern "C" fn topomesh_status_str(s: Status) -> *const c_char {
 /// the detail; this function never changes it.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn topomesh_last_error(
-    buf: *mut c_char,
-    cap: usize,
-    out_len: *mut usize,
+    buf: *mut c_char, cap: usize, out_len: *mut usize,
 ) -> Status {
     // Not behind `boundary::guard`: reading the detail must not overwrite it.
     let run = || {

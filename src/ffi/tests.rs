@@ -24,11 +24,7 @@ pub(super) type Bulk<H> = unsafe extern "C" fn(
 
 /// A new handle from `cells` (`per` ids each) over `n_vertices` vertices, without positions.
 pub(super) fn build<H>(
-    f: Build<H>,
-    cells: &[u32],
-    per: usize,
-    n_vertices: usize,
-    level: u32,
+    f: Build<H>, cells: &[u32], per: usize, n_vertices: usize, level: u32,
 ) -> *mut H {
     let mut m = null_mut();
     // SAFETY: a live array of `cells.len()` ids and a local out-pointer.
@@ -90,8 +86,7 @@ pub(super) fn bulk<H>(m: *const H, f: Bulk<H>) -> Vec<Vec<u32>> {
 
 /// `validate` passes on every build of `meshes` at every level and names a NULL handle.
 pub(super) fn validates<H>(
-    meshes: impl Fn(u32) -> Vec<*mut H>,
-    validate: unsafe extern "C" fn(*const H) -> Status,
+    meshes: impl Fn(u32) -> Vec<*mut H>, validate: unsafe extern "C" fn(*const H) -> Status,
     free: unsafe extern "C" fn(*mut H),
 ) {
     for level in 0..=3 {

@@ -173,10 +173,7 @@ fn read_element(lx: &mut Lexer, ty: u64, map: &TagMap, data: &mut MeshData) -> R
 
 /// Reads an `$Elements` section body.
 fn read_elements(
-    lx: &mut Lexer,
-    version: Version,
-    map: &TagMap,
-    data: &mut MeshData,
+    lx: &mut Lexer, version: Version, map: &TagMap, data: &mut MeshData,
 ) -> Result<()> {
     match version {
         Version::V2 => {

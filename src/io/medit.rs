@@ -91,10 +91,7 @@ impl Elements {
     /// Reads the count and the elements, keeping the first `K` tokens (1-based vertex ids)
     /// of each.
     fn read<const K: usize>(
-        &self,
-        lx: &mut Lexer,
-        num_vertices: usize,
-        out: &mut Vec<[u32; K]>,
+        &self, lx: &mut Lexer, num_vertices: usize, out: &mut Vec<[u32; K]>,
     ) -> Result<()> {
         let keyword = self.keyword;
         let n = lx.usize(&format!("the number of {keyword}"))?;
@@ -224,9 +221,7 @@ pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()
 
 /// A section of elements (1-based ids, ref 0), if there are any.
 fn write_section<const K: usize>(
-    w: &mut dyn Write,
-    keyword: &str,
-    elements: &[[u32; K]],
+    w: &mut dyn Write, keyword: &str, elements: &[[u32; K]],
 ) -> std::io::Result<()> {
     if elements.is_empty() {
         return Ok(());

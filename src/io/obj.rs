@@ -44,9 +44,7 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
 /// `line`, or, when it ends with `\`, `line` joined with the lines that continue it (taken
 /// from `rest`) into `joined`.
 fn logical_line<'j, 'b: 'j>(
-    line: &'b [u8],
-    rest: &mut impl Iterator<Item = (usize, &'b [u8])>,
-    joined: &'j mut Vec<u8>,
+    line: &'b [u8], rest: &mut impl Iterator<Item = (usize, &'b [u8])>, joined: &'j mut Vec<u8>,
 ) -> &'j [u8] {
     let Some(head) = line.strip_suffix(b"\\") else {
         return line;
@@ -96,9 +94,7 @@ impl Statements<'_> {
     }
 
     fn vertex<'w>(
-        &mut self,
-        line_no: usize,
-        mut words: impl Iterator<Item = &'w [u8]>,
+        &mut self, line_no: usize, mut words: impl Iterator<Item = &'w [u8]>,
     ) -> Result<()> {
         let mut p = [0.0f64; 3];
         for (k, slot) in p.iter_mut().enumerate() {

@@ -240,9 +240,7 @@ impl<'a> Payload<'a> {
     /// Decodes the `def.count` elements of `def` as `E`, handing each to `sink` with its
     /// number and location.
     fn elements<E: PropertyAccess>(
-        &mut self,
-        def: &ElementDef,
-        mut sink: impl FnMut(E, usize, &Located<'a>) -> Result<()>,
+        &mut self, def: &ElementDef, mut sink: impl FnMut(E, usize, &Located<'a>) -> Result<()>,
     ) -> Result<()> {
         if def.properties.is_empty() {
             return Ok(()); // nothing stored per element; an empty ASCII line is blank anyway
@@ -268,10 +266,7 @@ impl<'a> Payload<'a> {
 
     /// Element `i` of `def`: the next line that is not blank.
     fn ascii_element<E: PropertyAccess>(
-        &mut self,
-        parser: &Parser<E>,
-        def: &ElementDef,
-        i: usize,
+        &mut self, parser: &Parser<E>, def: &ElementDef, i: usize,
     ) -> Result<(E, Located<'a>)> {
         let element = &def.name;
         let (text, line) = self.next_line().ok_or_else(|| {
@@ -313,10 +308,7 @@ impl<'a> Payload<'a> {
 
     /// Element `i` of `def`, decoded from the bytes at `pos`.
     fn binary_element<E: PropertyAccess>(
-        &mut self,
-        parser: &Parser<E>,
-        def: &ElementDef,
-        i: usize,
+        &mut self, parser: &Parser<E>, def: &ElementDef, i: usize,
     ) -> Result<(E, Located<'a>)> {
         let at = self.located(At::Byte(self.pos));
         let mut cursor = Cursor::new(self.bytes);

@@ -41,10 +41,7 @@ pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64)> {
 
 /// Parses an `.ele` file over `num_points` points numbered from `base`.
 pub(crate) fn parse_ele(
-    text: &str,
-    name: &str,
-    num_points: usize,
-    base: u64,
+    text: &str, name: &str, num_points: usize, base: u64,
 ) -> Result<Vec<[u32; 4]>> {
     let mut lx = Lexer::new(text, name, true);
     let n = lx.usize("the number of tetrahedra")?;

@@ -221,10 +221,7 @@ impl<'a> Lexer<'a> {
     /// `out_of_range` words the error for any other id.
     #[inline]
     pub(in crate::io) fn id(
-        &mut self,
-        what: &str,
-        (base, count): (u64, usize),
-        out_of_range: impl Fn(u64) -> String,
+        &mut self, what: &str, (base, count): (u64, usize), out_of_range: impl Fn(u64) -> String,
     ) -> Result<u32> {
         let id = self.u64(what)?;
         if id < base || id - base >= count as u64 {
@@ -236,10 +233,7 @@ impl<'a> Lexer<'a> {
     /// The `K` ids that start an element, read as [`Lexer::id`] reads one.
     #[inline]
     pub(in crate::io) fn ids<const K: usize>(
-        &mut self,
-        what: &str,
-        range: (u64, usize),
-        out_of_range: impl Fn(u64) -> String,
+        &mut self, what: &str, range: (u64, usize), out_of_range: impl Fn(u64) -> String,
     ) -> Result<[u32; K]> {
         let mut ids = [0u32; K];
         for v in &mut ids {
@@ -295,9 +289,7 @@ fn check_ids(path: &Path, data: &MeshData) -> Result<()> {
 /// Writes one line per point, `x y z` and then `suffix`, in the shortest text that reads back
 /// to the same `f64`s.
 pub(in crate::io) fn write_points(
-    w: &mut dyn Write,
-    points: &[DVec3],
-    suffix: &str,
+    w: &mut dyn Write, points: &[DVec3], suffix: &str,
 ) -> std::io::Result<()> {
     for p in points {
         writeln!(w, "{} {} {}{suffix}", p.x, p.y, p.z)?;
@@ -308,9 +300,7 @@ pub(in crate::io) fn write_points(
 /// Writes one line per element: `prefix`, its ids plus `add` (1 for 1-based formats), then
 /// `suffix`.
 pub(in crate::io) fn write_elements<const K: usize>(
-    w: &mut dyn Write,
-    elements: &[[u32; K]],
-    (prefix, add, suffix): (&str, u32, &str),
+    w: &mut dyn Write, elements: &[[u32; K]], (prefix, add, suffix): (&str, u32, &str),
 ) -> std::io::Result<()> {
     for e in elements {
         w.write_all(prefix.as_bytes())?;
@@ -326,9 +316,7 @@ pub(in crate::io) fn write_elements<const K: usize>(
 /// Writes `data` to `path` with a format's `write_to`, once every element is checked to name
 /// an existing point.
 pub(in crate::io) fn write_checked(
-    path: &Path,
-    data: &MeshData,
-    write_to: fn(&mut dyn Write, &MeshData) -> std::io::Result<()>,
+    path: &Path, data: &MeshData, write_to: fn(&mut dyn Write, &MeshData) -> std::io::Result<()>,
 ) -> Result<()> {
     check_ids(path, data)?;
     write_file(path, |w| write_to(w, data))
@@ -410,8 +398,7 @@ pub(in crate::io) fn utf8(bytes: &[u8]) -> &str {
 /// The error `parse` gives for `input`; panics if it parses.
 #[cfg(test)]
 pub(in crate::io) fn parse_error(
-    parse: impl Fn(&[u8]) -> Result<MeshData>,
-    input: impl AsRef<[u8]>,
+    parse: impl Fn(&[u8]) -> Result<MeshData>, input: impl AsRef<[u8]>,
 ) -> Error {
     let input = input.as_ref();
     match parse(input) {
@@ -443,9 +430,7 @@ pub(in crate::io) fn assert_errors<I: AsRef<[u8]>>(
 /// ones: no panic, and every error starts with `prefix` (the file name and a colon).
 #[cfg(test)]
 pub(in crate::io) fn assert_robust(
-    src: &str,
-    prefix: &str,
-    parse: impl Fn(&str) -> Result<MeshData>,
+    src: &str, prefix: &str, parse: impl Fn(&str) -> Result<MeshData>,
 ) {
     let check = |text: &str| {
         if let Err(e) = parse(text) {

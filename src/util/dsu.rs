@@ -36,9 +36,7 @@ impl Dsu {
 /// no element uses: `v` holds `K` structure vertex ids per element, `origin` maps them to
 /// the `n` input vertices, and the vertices of one element are connected.
 pub(crate) fn element_components<const K: usize>(
-    v: &[u32],
-    n: usize,
-    origin: impl Fn(u32) -> u32,
+    v: &[u32], n: usize, origin: impl Fn(u32) -> u32,
 ) -> (u64, u64) {
     let mut used = vec![false; n];
     let mut dsu = Dsu::new(n);

@@ -5,10 +5,7 @@
 /// empty) down over the holes of `dropped` (input ids, increasing), and returns each kept
 /// element's input id. Gives memory back when much was dropped.
 pub(crate) fn close_holes<T: Copy>(
-    v: &mut Vec<u32>,
-    width: usize,
-    per: &mut Vec<T>,
-    dropped: &[u32],
+    v: &mut Vec<u32>, width: usize, per: &mut Vec<T>, dropped: &[u32],
 ) -> Vec<u32> {
     let n = v.len() / width;
     let mut origin = Vec::with_capacity(n - dropped.len());

@@ -43,10 +43,7 @@ pub(crate) fn test_rng(seed: u64) -> impl FnMut(usize) -> u32 {
 /// ids each, repeats and all.
 #[cfg(test)]
 pub(crate) fn test_soups<const K: usize>(
-    seed: u64,
-    rounds: usize,
-    vertices: (usize, usize),
-    elements: (usize, usize),
+    seed: u64, rounds: usize, vertices: (usize, usize), elements: (usize, usize),
 ) -> impl Iterator<Item = (usize, Vec<[u32; K]>)> {
     let mut rnd = test_rng(seed);
     (0..rounds).map(move |r| {

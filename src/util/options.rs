@@ -39,10 +39,7 @@ impl BuildOptions {
 /// The level is in 0..=3, vertex ids fit below `NONE`, the elements fit (`too_many`, the
 /// structure's own message when they do not) and positions are none or one per vertex.
 pub(crate) fn check_input(
-    options: &BuildOptions,
-    n_vertices: usize,
-    n_positions: usize,
-    too_many: Option<String>,
+    options: &BuildOptions, n_vertices: usize, n_positions: usize, too_many: Option<String>,
 ) -> Result<()> {
     check_level(options.level)?;
     if n_vertices >= NONE as usize {

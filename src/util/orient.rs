@@ -24,9 +24,7 @@ pub(crate) struct Flips {
 /// element's flip, the seams, and the components that cannot be oriented. `sign` is empty
 /// or holds the sign of each element's determinant.
 pub(crate) fn choose_flips<const K: usize>(
-    partner: &[u32],
-    same_direction: impl Fn(u32, u32) -> bool,
-    sign: &[i8],
+    partner: &[u32], same_direction: impl Fn(u32, u32) -> bool, sign: &[i8],
 ) -> Flips {
     let n = partner.len() / K;
     let mut out = Flips::default();

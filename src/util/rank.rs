@@ -102,8 +102,7 @@ impl RankBits {
 /// agree with `pattern` and its prefix counts on `0..len`.
 #[cfg(test)]
 pub(crate) fn assert_prefix_counts(
-    len: usize,
-    pattern: impl Fn(usize) -> bool,
+    len: usize, pattern: impl Fn(usize) -> bool,
     answers: (impl Fn(usize) -> bool, impl Fn(usize) -> usize, usize),
 ) {
     let (get, rank, ones) = answers;

@@ -73,8 +73,7 @@ fn out_of_range(id: u32, count: usize, one: &str, many: &str) -> Error {
 /// allocates); an error naming the `element` kind when the length is not a multiple of
 /// `K`.
 pub(crate) fn as_elements<'a, const K: usize>(
-    flat: &'a [u32],
-    element: &str,
+    flat: &'a [u32], element: &str,
 ) -> Result<&'a [[u32; K]]> {
     let (elements, rest) = flat.as_chunks::<K>();
     if !rest.is_empty() {

@@ -38,10 +38,7 @@ struct Matched {
 /// pairs and write the partners at random (relaxed atomic stores, plain ones on x86-64; the
 /// conversions in and out are in place and free); the rest is added up in pair order.
 pub(crate) fn match_pairs(
-    v: &[u32],
-    n_vertices: usize,
-    threads: usize,
-    report: &mut BuildReport,
+    v: &[u32], n_vertices: usize, threads: usize, report: &mut BuildReport,
 ) -> Matching {
     let partner: Vec<u32> = crate::util::pages::filled(v.len(), NONE);
     let partner: Vec<AtomicU32> = partner.into_iter().map(AtomicU32::new).collect();
@@ -144,10 +141,7 @@ pub(crate) fn count_pillows(o: &[u32], out: &mut Vec<[u32; 2]>) {
 
 /// Strict mode: the first non-manifold edge, with the input triangles on it, as an error.
 pub(crate) fn reject_non_manifold_edges(
-    report: &BuildReport,
-    v: &[u32],
-    non_manifold: &[u32],
-    origin_of: impl Fn(u32) -> u32,
+    report: &BuildReport, v: &[u32], non_manifold: &[u32], origin_of: impl Fn(u32) -> u32,
 ) -> Result<()> {
     if let Some(&[a, b]) = report.non_manifold_edge_examples.first() {
         let tris: Vec<String> = non_manifold

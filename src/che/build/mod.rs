@@ -26,10 +26,7 @@ use glam::DVec3;
 use report::push_example;
 
 pub(crate) fn build(
-    triangles: &[[u32; 3]],
-    n_vertices: usize,
-    positions: &[DVec3],
-    options: BuildOptions,
+    triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
 ) -> Result<Che> {
     let too_many = too_many_triangles(triangles.len());
     check_input(&options, n_vertices, positions.len(), too_many)?;
@@ -79,9 +76,7 @@ fn too_many_triangles(n_triangles: usize) -> Option<String> {
 /// opposites). Returns `O` and the seam half-edges; renumbers the non-manifold half-edges
 /// of flipped triangles.
 fn orient_step(
-    v: &mut [u32],
-    matching: &mut matching::Matching,
-    report: &mut BuildReport,
+    v: &mut [u32], matching: &mut matching::Matching, report: &mut BuildReport,
     origin_of: impl Fn(u32) -> u32,
 ) -> (Vec<u32>, Vec<u32>) {
     let partner = std::mem::take(&mut matching.partner);
@@ -110,9 +105,7 @@ fn orient_step(
 /// Duplicate triangles: those seen on non-manifold edges plus the closed pillows on `O`,
 /// counted and listed (input ids) in the report.
 fn duplicates_step(
-    o: &[u32],
-    mut duplicates: Vec<[u32; 2]>,
-    report: &mut BuildReport,
+    o: &[u32], mut duplicates: Vec<[u32; 2]>, report: &mut BuildReport,
     origin_of: impl Fn(u32) -> u32,
 ) {
     matching::count_pillows(o, &mut duplicates);
@@ -161,11 +154,7 @@ struct Canonical {
 
 /// The structure at level 1, with the vertex copies of the split appended.
 fn assemble(
-    c: Canonical,
-    copies: &[u32],
-    n_vertices: usize,
-    positions: &[DVec3],
-    report: BuildReport,
+    c: Canonical, copies: &[u32], n_vertices: usize, positions: &[DVec3], report: BuildReport,
 ) -> Che {
     let vertex_origin = OriginMap::with_copies(n_vertices, copies);
     let mut positions = positions.to_vec();

@@ -7,10 +7,7 @@ use crate::error::{Error, Result};
 
 /// `V` and the map from structure triangle to input triangle (empty: the identity).
 pub(crate) fn soup(
-    triangles: &[[u32; 3]],
-    n_vertices: usize,
-    report: &mut BuildReport,
-    threads: usize,
+    triangles: &[[u32; 3]], n_vertices: usize, report: &mut BuildReport, threads: usize,
 ) -> Result<(Vec<u32>, Vec<u32>)> {
     let n = triangles.len();
     let chunk = n.div_ceil(threads.max(1)).max(1);

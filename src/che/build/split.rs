@@ -152,11 +152,7 @@ pub(crate) struct Split {
 /// them ([`single_fans`], several walks at a time). Only the others take the general walk
 /// over every one of their half-edges, in half-edge order, which numbers the copies.
 pub(crate) fn split(
-    v: &mut [u32],
-    o: &[u32],
-    n_vertices: usize,
-    seams: &[u32],
-    threads: usize,
+    v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32], threads: usize,
 ) -> Split {
     let (mut vh, several) = single_fans(v, o, n_vertices, threads);
     let mut copies: Vec<u32> = Vec::new();
@@ -216,11 +212,7 @@ pub(crate) fn split(
 /// Joins the fans of each vertex that a seam pair connects; a split vertex whose fans all
 /// join was manifold in the input. Returns, per split origin, whether it is non-manifold.
 fn still_split(
-    v: &[u32],
-    n_vertices: usize,
-    copies: &[u32],
-    split_origins: &[u32],
-    seams: &[u32],
+    v: &[u32], n_vertices: usize, copies: &[u32], split_origins: &[u32], seams: &[u32],
 ) -> Vec<bool> {
     let n = n_vertices + copies.len();
     let mut dsu = Dsu::new(n);

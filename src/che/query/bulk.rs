@@ -75,10 +75,7 @@ impl Che {
 
     /// One row per vertex: `item` of each step of its rotation.
     fn star_rows(
-        &self,
-        t: &Tables,
-        out: &mut impl Rows,
-        mut item: impl FnMut(StarStep) -> Option<u32>,
+        &self, t: &Tables, out: &mut impl Rows, mut item: impl FnMut(StarStep) -> Option<u32>,
     ) {
         for &start in t.vh.iter() {
             out.row();

@@ -32,10 +32,7 @@ pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
 
 /// The pipeline: each step is a function below, in this order.
 pub(crate) fn build(
-    tets: &[[u32; 4]],
-    n_vertices: usize,
-    positions: &[DVec3],
-    options: BuildOptions,
+    tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
 ) -> Result<Chf> {
     check_input(
         &options,
@@ -129,10 +126,7 @@ struct Oriented {
 
 /// Steps 1 to 3: the soup, the star pass, and the orientation when some pair needs it.
 fn oriented(
-    tets: &[[u32; 4]],
-    n_vertices: usize,
-    positions: &[DVec3],
-    options: BuildOptions,
+    tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     report: &mut BuildReport,
 ) -> Result<Oriented> {
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
@@ -185,10 +179,7 @@ fn oriented(
 /// (level 0 keeps no pairs unless it must orient or split), with `VH` and the edge bits
 /// for level 2.
 fn first_star_pass(
-    v: &[u32],
-    n_vertices: usize,
-    pass: StarPass,
-    level: u8,
+    v: &[u32], n_vertices: usize, pass: StarPass, level: u8,
 ) -> (Stars, FaceCensus, Vec<u32>) {
     let pairs = if level == 0 {
         Pairs::Census
@@ -213,9 +204,7 @@ fn first_star_pass(
 
 /// The face counts into the report; returns the non-manifold half-faces.
 fn record_faces(
-    report: &mut BuildReport,
-    faces: FaceCensus,
-    origin_of: &impl Fn(u32) -> u32,
+    report: &mut BuildReport, faces: FaceCensus, origin_of: &impl Fn(u32) -> u32,
 ) -> Vec<u32> {
     report.input_faces = faces.input_faces;
     report.boundary_faces = faces.boundary_faces;
@@ -232,10 +221,7 @@ fn record_faces(
 
 /// Back to the input's numbering, then orients as given: `non_manifold` follows the flips.
 fn orient_soup(
-    soup: &mut Soup,
-    partner: Vec<u32>,
-    non_manifold: &mut [u32],
-    report: &mut BuildReport,
+    soup: &mut Soup, partner: Vec<u32>, non_manifold: &mut [u32], report: &mut BuildReport,
     origin_of: impl Fn(u32) -> u32,
 ) -> orient::Oriented {
     let unflip = |hf: u32| {
@@ -276,11 +262,7 @@ fn orient_soup(
 
 /// Splits the non-manifold vertices of `v`; returns the copies' origins.
 fn split_vertices(
-    v: &mut [u32],
-    o: &[u32],
-    links: &[u32],
-    n_vertices: usize,
-    report: &mut BuildReport,
+    v: &mut [u32], o: &[u32], links: &[u32], n_vertices: usize, report: &mut BuildReport,
 ) -> Result<Vec<u32>> {
     let split = split::split(v, o, links, n_vertices);
     report.split_vertices = split.split_vertices;

@@ -40,10 +40,7 @@ struct Run {
 /// of the signs); degenerate ones leave a hole, closed afterwards by one pass when there
 /// is any.
 pub(crate) fn soup(
-    tets: &[[u32; 4]],
-    n_vertices: usize,
-    positions: &[DVec3],
-    report: &mut BuildReport,
+    tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], report: &mut BuildReport,
     threads: usize,
 ) -> Result<Soup> {
     let n = tets.len();
@@ -95,11 +92,7 @@ pub(crate) fn soup(
 /// One run: `tets` from input id `t0` on, into `v` (four per tetrahedron) and `sign`
 /// (empty without positions).
 fn run(
-    t0: usize,
-    tets: &[[u32; 4]],
-    v: &mut [u32],
-    sign: &mut [i8],
-    n_vertices: usize,
+    t0: usize, tets: &[[u32; 4]], v: &mut [u32], sign: &mut [i8], n_vertices: usize,
     positions: &[DVec3],
 ) -> Run {
     let mut out = Run::default();

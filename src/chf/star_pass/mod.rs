@@ -138,11 +138,7 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], options: Star
 
 /// A thread's scratch per part of the tetrahedra.
 fn workers<'o>(
-    len: usize,
-    n_vertices: usize,
-    threads: usize,
-    opposites: &'o Opposites,
-    tables: bool,
+    len: usize, n_vertices: usize, threads: usize, opposites: &'o Opposites, tables: bool,
 ) -> Vec<Worker<'o>> {
     // About one edge per vertex and per tetrahedron, plus one per boundary face pair
     // (Euler): reserved at once, so that growing by doubling copies nothing at the peak
@@ -258,13 +254,8 @@ impl<'v> Plan<'v> {
     /// One round over coarse buckets `first..last`: every part scatters its occurrences to
     /// its region, then each worker takes the stars of a run of the buckets.
     fn round(
-        &self,
-        (first, last): (usize, usize),
-        records: &mut [u32],
-        workers: &mut [Worker],
-        vh: &mut [u32],
-        mode: &Mode,
-        total: &mut Tally,
+        &self, (first, last): (usize, usize), records: &mut [u32], workers: &mut [Worker],
+        vh: &mut [u32], mode: &Mode, total: &mut Tally,
     ) {
         let shift = self.shift;
         let mut rest = &mut records[..];
@@ -386,12 +377,7 @@ fn region_sizes(part_counts: &[Vec<u32>], rounds: &[(usize, usize)]) -> Vec<usiz
 /// tetrahedron order (records of five `u32`: see [`Record`]). Returns where each bucket
 /// starts in `records`, in records.
 fn scatter(
-    part: &[u32],
-    t0: u32,
-    count: &[u32],
-    first: u32,
-    shift: u32,
-    records: &mut [u32],
+    part: &[u32], t0: u32, count: &[u32], first: u32, shift: u32, records: &mut [u32],
 ) -> Vec<u32> {
     let span = count.len() as u32;
     let mut start = vec![0u32; count.len() + 2];
@@ -535,11 +521,7 @@ impl<'o> Worker<'o> {
     /// Sorts one coarse bucket at a time, in cache, by the low bits of the vertex, then
     /// hands each star to the link.
     fn round(
-        &mut self,
-        buckets: &[Vec<&[u32]>],
-        vh: &mut [u32],
-        vh_base: usize,
-        mode: &Mode,
+        &mut self, buckets: &[Vec<&[u32]>], vh: &mut [u32], vh_base: usize, mode: &Mode,
     ) -> Tally {
         let mut census = FaceCensus::default();
         let mut sums = Sums {

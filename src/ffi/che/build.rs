@@ -22,12 +22,8 @@ use std::ffi::c_char;
 /// NULL on failure.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_from_triangles(
-    triangles: *const u32,
-    n_triangles: usize,
-    n_vertices: usize,
-    positions: *const f64,
-    level: u32,
-    out: *mut *mut CheMesh,
+    triangles: *const u32, n_triangles: usize, n_vertices: usize, positions: *const f64,
+    level: u32, out: *mut *mut CheMesh,
 ) -> Status {
     let o = CheBuildOptions::at(level);
     // SAFETY: the same contract as the `_ex` variant; `o` is a local.
@@ -39,12 +35,8 @@ pub unsafe extern "C" fn che_mesh_from_triangles(
 /// naming the offending edge and triangles, or vertex.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_from_triangles_ex(
-    triangles: *const u32,
-    n_triangles: usize,
-    n_vertices: usize,
-    positions: *const f64,
-    options: *const CheBuildOptions,
-    out: *mut *mut CheMesh,
+    triangles: *const u32, n_triangles: usize, n_vertices: usize, positions: *const f64,
+    options: *const CheBuildOptions, out: *mut *mut CheMesh,
 ) -> Status {
     build!(
         out,
@@ -60,9 +52,7 @@ pub unsafe extern "C" fn che_mesh_from_triangles_ex(
 /// `TOPOMESH_STATUS_INVALID_INPUT`. `*out` is NULL on failure.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_load(
-    path: *const c_char,
-    level: u32,
-    out: *mut *mut CheMesh,
+    path: *const c_char, level: u32, out: *mut *mut CheMesh,
 ) -> Status {
     // SAFETY: the same contract as the `_ex` variant; the options are a local.
     unsafe { che_mesh_load_ex(path, &CheBuildOptions::at(level), out) }
@@ -71,9 +61,7 @@ pub unsafe extern "C" fn che_mesh_load(
 /// `che_mesh_load` with options (NULL: `che_build_options_default()`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_load_ex(
-    path: *const c_char,
-    options: *const CheBuildOptions,
-    out: *mut *mut CheMesh,
+    path: *const c_char, options: *const CheBuildOptions, out: *mut *mut CheMesh,
 ) -> Status {
     load!(out, path, options => crate::io::load::che)
 }

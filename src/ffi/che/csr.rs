@@ -9,13 +9,8 @@ use crate::ffi::status::Status;
 /// VV for every vertex (rows as `che_vertex_vertices`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_vertices_csr(
-    m: *const CheMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const CheMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => vertex_vertices_rows)
@@ -24,13 +19,8 @@ pub unsafe extern "C" fn che_mesh_vertex_vertices_csr(
 /// VE for every vertex (rows as `che_vertex_edges`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_edges_csr(
-    m: *const CheMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const CheMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => vertex_edges_rows)
@@ -39,13 +29,8 @@ pub unsafe extern "C" fn che_mesh_vertex_edges_csr(
 /// VF for every vertex (rows as `che_vertex_triangles`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_triangles_csr(
-    m: *const CheMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const CheMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => vertex_triangles_rows)
@@ -55,13 +40,8 @@ pub unsafe extern "C" fn che_mesh_vertex_triangles_csr(
 /// across boundary edges, as `che_triangle_triangles`. O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_triangle_triangles_csr(
-    m: *const CheMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const CheMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => triangle_triangles_rows)

@@ -11,11 +11,7 @@ use crate::ffi::status::Status;
 /// O(d) from level 2; scans below.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_vertex_vertices(
-    m: *const CheMesh,
-    v: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, v: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_vertices_into(v, s))
 }
@@ -24,11 +20,7 @@ pub unsafe extern "C" fn che_vertex_vertices(
 /// order. O(d) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_vertex_edges(
-    m: *const CheMesh,
-    v: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, v: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_edges_into(v, s))
 }
@@ -37,11 +29,7 @@ pub unsafe extern "C" fn che_vertex_edges(
 /// O(d) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_vertex_triangles(
-    m: *const CheMesh,
-    v: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, v: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.vertex_triangles_into(v, s))
 }
@@ -50,11 +38,7 @@ pub unsafe extern "C" fn che_vertex_triangles(
 /// half-edge on a boundary edge). O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_edge_vertices(
-    m: *const CheMesh,
-    e: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, e: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_vertices(e))
 }
@@ -63,11 +47,7 @@ pub unsafe extern "C" fn che_edge_vertices(
 /// in the canonical half-edge's triangle, then in the opposite triangle.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_edge_edges(
-    m: *const CheMesh,
-    e: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, e: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_edges(e))
 }
@@ -76,11 +56,7 @@ pub unsafe extern "C" fn che_edge_edges(
 /// half-edge's first.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_edge_triangles(
-    m: *const CheMesh,
-    e: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, e: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_triangles(e))
 }
@@ -89,11 +65,7 @@ pub unsafe extern "C" fn che_edge_triangles(
 /// half-edge 3t + i).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_triangle_vertices(
-    m: *const CheMesh,
-    t: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, t: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_vertices(t))
 }
@@ -101,11 +73,7 @@ pub unsafe extern "C" fn che_triangle_vertices(
 /// FE: the 3 edges of triangle `t`; edge i runs from corner i to corner i + 1.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_triangle_edges(
-    m: *const CheMesh,
-    t: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, t: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_edges(t))
 }
@@ -115,11 +83,7 @@ pub unsafe extern "C" fn che_triangle_edges(
 /// seam edges, which the structure keeps unpaired).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_triangle_triangles(
-    m: *const CheMesh,
-    t: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, t: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_triangle(t) => |c| c.triangle_triangles(t))
 }
@@ -129,11 +93,7 @@ pub unsafe extern "C" fn che_triangle_triangles(
 /// level 3; O(T) (level 2) or more below.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_boundary_curve_vertices(
-    m: *const CheMesh,
-    curve: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const CheMesh, curve: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, try |c| c.boundary_curve_vertices(curve))
 }
@@ -142,9 +102,7 @@ pub unsafe extern "C" fn che_boundary_curve_vertices(
 /// O(1) from level 1.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_half_edge_opposite(
-    m: *const CheMesh,
-    h: u32,
-    out: *mut u32,
+    m: *const CheMesh, h: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, check_half_edge(h) => |c| c.opposite(h))
 }
@@ -179,9 +137,7 @@ pub unsafe extern "C" fn che_edge_half_edge(m: *const CheMesh, e: u32, out: *mut
 /// Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_vertex_is_boundary(
-    m: *const CheMesh,
-    v: u32,
-    out: *mut bool,
+    m: *const CheMesh, v: u32, out: *mut bool,
 ) -> Status {
     value!(m, out, check_vertex(v) => |c| c.is_boundary_vertex(v))
 }

@@ -10,8 +10,7 @@ use crate::ffi::shapes::view;
 /// `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_half_edge_vertices(
-    m: *const CheMesh,
-    len: *mut usize,
+    m: *const CheMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| Some(m.che.half_edge_vertices()))
 }
@@ -27,8 +26,7 @@ pub unsafe extern "C" fn che_mesh_opposites(m: *const CheMesh, len: *mut usize) 
 /// `TOPOMESH_NONE` for an isolated vertex. NULL below level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_half_edges(
-    m: *const CheMesh,
-    len: *mut usize,
+    m: *const CheMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| m.che.vertex_half_edges())
 }
@@ -37,8 +35,7 @@ pub unsafe extern "C" fn che_mesh_vertex_half_edges(
 /// NULL below level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_edge_half_edges(
-    m: *const CheMesh,
-    len: *mut usize,
+    m: *const CheMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| m.che.edge_half_edges())
 }
@@ -46,8 +43,7 @@ pub unsafe extern "C" fn che_mesh_edge_half_edges(
 /// `CH`: one boundary half-edge per boundary curve (its smallest). NULL below level 3.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_curve_half_edges(
-    m: *const CheMesh,
-    len: *mut usize,
+    m: *const CheMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| m.che.curve_half_edges())
 }
@@ -78,8 +74,7 @@ pub unsafe extern "C" fn che_mesh_vertex_origins(m: *const CheMesh, len: *mut us
 /// where degenerate triangles were dropped).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_triangle_origins(
-    m: *const CheMesh,
-    len: *mut usize,
+    m: *const CheMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| Some(origins(
         m.che.triangle_origins(),

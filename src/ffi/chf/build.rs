@@ -25,11 +25,7 @@ use std::ffi::c_char;
 /// `*out` is NULL on failure.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_from_tetrahedra(
-    tetrahedra: *const u32,
-    n_tets: usize,
-    n_vertices: usize,
-    positions: *const f64,
-    level: u32,
+    tetrahedra: *const u32, n_tets: usize, n_vertices: usize, positions: *const f64, level: u32,
     out: *mut *mut ChfMesh,
 ) -> Status {
     // SAFETY: the same contract as the `_ex` variant; the options are a local.
@@ -42,12 +38,8 @@ pub unsafe extern "C" fn chf_mesh_from_tetrahedra(
 /// naming the offending face and tetrahedra, edge, or vertex.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_from_tetrahedra_ex(
-    tetrahedra: *const u32,
-    n_tets: usize,
-    n_vertices: usize,
-    positions: *const f64,
-    options: *const ChfBuildOptions,
-    out: *mut *mut ChfMesh,
+    tetrahedra: *const u32, n_tets: usize, n_vertices: usize, positions: *const f64,
+    options: *const ChfBuildOptions, out: *mut *mut ChfMesh,
 ) -> Status {
     build!(
         out,
@@ -64,9 +56,7 @@ pub unsafe extern "C" fn chf_mesh_from_tetrahedra_ex(
 /// `*out` is NULL on failure.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_load(
-    path: *const c_char,
-    level: u32,
-    out: *mut *mut ChfMesh,
+    path: *const c_char, level: u32, out: *mut *mut ChfMesh,
 ) -> Status {
     // SAFETY: the same contract as the `_ex` variant; the options are a local.
     unsafe { chf_mesh_load_ex(path, &ChfBuildOptions::at(level), out) }
@@ -75,9 +65,7 @@ pub unsafe extern "C" fn chf_mesh_load(
 /// `chf_mesh_load` with options (NULL: `chf_build_options_default()`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_load_ex(
-    path: *const c_char,
-    options: *const ChfBuildOptions,
-    out: *mut *mut ChfMesh,
+    path: *const c_char, options: *const ChfBuildOptions, out: *mut *mut ChfMesh,
 ) -> Status {
     load!(out, path, options => crate::io::load::chf)
 }

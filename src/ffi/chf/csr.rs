@@ -10,13 +10,8 @@ use crate::ffi::status::Status;
 /// VV for every vertex (rows as `chf_vertex_vertices`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
-    m: *const ChfMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => |c, s| s.copy(&c.all_vertex_vertices()))
@@ -25,13 +20,8 @@ pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
 /// VE for every vertex (rows as `chf_vertex_edges`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
-    m: *const ChfMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => |c, s| s.copy(&c.all_vertex_edges()))
@@ -40,13 +30,8 @@ pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
 /// VF for every vertex (rows as `chf_vertex_faces`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
-    m: *const ChfMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => |c, s| s.copy(&c.all_vertex_faces()))
@@ -55,13 +40,8 @@ pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
 /// VT for every vertex (rows as `chf_vertex_tetrahedra`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
-    m: *const ChfMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => |c, s| s.copy(&c.all_vertex_tetrahedra()))
@@ -70,13 +50,8 @@ pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
 /// EF for every edge (rows as `chf_edge_faces`, in rotation order).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_edge_faces_csr(
-    m: *const ChfMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => |c, s| c.for_each_edge_faces(|_, row| s.stream(row)))
@@ -85,13 +60,8 @@ pub unsafe extern "C" fn chf_mesh_edge_faces_csr(
 /// ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_edge_tetrahedra_csr(
-    m: *const ChfMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => |c, s| c.for_each_edge_tetrahedra(|_, row| s.stream(row)))
@@ -102,13 +72,8 @@ pub unsafe extern "C" fn chf_mesh_edge_tetrahedra_csr(
 /// `chf_tetrahedron_tetrahedra`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_tetrahedron_tetrahedra_csr(
-    m: *const ChfMesh,
-    offsets: *mut u32,
-    offsets_cap: usize,
-    indices: *mut u32,
-    indices_cap: usize,
-    n_offsets: *mut usize,
-    n_indices: *mut usize,
+    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
         => |c, s| c.for_each_tetrahedron_tetrahedra(|row| s.stream(row)))

@@ -12,9 +12,7 @@ use crate::ffi::status::Status;
 /// scan below.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_is_boundary(
-    m: *const ChfMesh,
-    v: u32,
-    out: *mut bool,
+    m: *const ChfMesh, v: u32, out: *mut bool,
 ) -> Status {
     value!(m, out, check_vertex(v) => |c| c.is_boundary_vertex(v))
 }
@@ -35,9 +33,7 @@ pub unsafe extern "C" fn chf_face_is_boundary(m: *const ChfMesh, f: u32, out: *m
 /// `*out`, `TOPOMESH_NONE` on the boundary. O(1) from level 1, a scan at level 0.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_half_face_opposite(
-    m: *const ChfMesh,
-    hf: u32,
-    out: *mut u32,
+    m: *const ChfMesh, hf: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, check_half_face(hf) => |c| c.opposite(hf))
 }

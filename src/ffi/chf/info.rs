@@ -161,11 +161,7 @@ fn examples(r: &Report, kind: u32) -> Result<Vec<u32>> {
 /// (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_report_examples(
-    m: *const ChfMesh,
-    kind: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, kind: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, try |c| examples(c.report(), kind))
 }

@@ -13,11 +13,7 @@ use crate::ffi::status::Status;
 /// each call also computes the missing tables, O(T).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_vertices(
-    m: *const ChfMesh,
-    v: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, v: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_vertex(v) => |c| c.vertex_vertices(v))
 }
@@ -25,11 +21,7 @@ pub unsafe extern "C" fn chf_vertex_vertices(
 /// VE: the edges holding `v`, each once, in increasing order. O(star) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_edges(
-    m: *const ChfMesh,
-    v: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, v: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_vertex(v) => |c| c.vertex_edges(v))
 }
@@ -37,11 +29,7 @@ pub unsafe extern "C" fn chf_vertex_edges(
 /// VF: the faces holding `v`, each once, in increasing order. O(star) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_faces(
-    m: *const ChfMesh,
-    v: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, v: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_vertex(v) => |c| c.vertex_faces(v))
 }
@@ -50,11 +38,7 @@ pub unsafe extern "C" fn chf_vertex_faces(
 /// from the half-face `chf_vertex_half_face` gives). O(star) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_tetrahedra(
-    m: *const ChfMesh,
-    v: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, v: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_vertex(v) => |c| c.vertex_tetrahedra(v))
 }
@@ -63,11 +47,7 @@ pub unsafe extern "C" fn chf_vertex_tetrahedra(
 /// rotation starts: on a boundary face for a boundary edge). O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_edge_vertices(
-    m: *const ChfMesh,
-    e: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, e: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_vertices(e))
 }
@@ -77,11 +57,7 @@ pub unsafe extern "C" fn chf_edge_vertices(
 /// from level 2 (k: tetrahedra around each edge).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_edge_edges(
-    m: *const ChfMesh,
-    e: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, e: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_edges(e))
 }
@@ -90,11 +66,7 @@ pub unsafe extern "C" fn chf_edge_edges(
 /// face to the other (one more face than tetrahedra). O(k) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_edge_faces(
-    m: *const ChfMesh,
-    e: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, e: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_faces(e))
 }
@@ -103,11 +75,7 @@ pub unsafe extern "C" fn chf_edge_faces(
 /// edge. O(k) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_edge_tetrahedra(
-    m: *const ChfMesh,
-    e: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, e: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_edge(e) => |c| c.edge_tetrahedra(e))
 }
@@ -117,11 +85,7 @@ pub unsafe extern "C" fn chf_edge_tetrahedra(
 /// tetrahedron. O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_face_vertices(
-    m: *const ChfMesh,
-    f: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, f: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_face(f) => |c| c.face_vertices(f))
 }
@@ -130,11 +94,7 @@ pub unsafe extern "C" fn chf_face_vertices(
 /// `chf_face_vertices`. O(k) per edge from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_face_edges(
-    m: *const ChfMesh,
-    f: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, f: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_face(f) => |c| c.face_edges(f))
 }
@@ -144,11 +104,7 @@ pub unsafe extern "C" fn chf_face_edges(
 /// face, 6 inside). O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_face_faces(
-    m: *const ChfMesh,
-    f: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, f: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_face(f) => |c| c.face_faces(f))
 }
@@ -157,11 +113,7 @@ pub unsafe extern "C" fn chf_face_faces(
 /// half-face's first. O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_face_tetrahedra(
-    m: *const ChfMesh,
-    f: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, f: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_face(f) => |c| c.face_tetrahedra(f))
 }
@@ -170,11 +122,7 @@ pub unsafe extern "C" fn chf_face_tetrahedra(
 /// built with positions and orientable). O(1) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_tetrahedron_vertices(
-    m: *const ChfMesh,
-    t: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, t: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_tetrahedron(t) => |c| c.tetrahedron_vertices(t))
 }
@@ -183,11 +131,7 @@ pub unsafe extern "C" fn chf_tetrahedron_vertices(
 /// (2,3). O(k) per edge from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_tetrahedron_edges(
-    m: *const ChfMesh,
-    t: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, t: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_tetrahedron(t) => |c| c.tetrahedron_edges(t))
 }
@@ -196,11 +140,7 @@ pub unsafe extern "C" fn chf_tetrahedron_edges(
 /// `i`. O(1) from level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_tetrahedron_faces(
-    m: *const ChfMesh,
-    t: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, t: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_tetrahedron(t) => |c| c.tetrahedron_faces(t))
 }
@@ -210,11 +150,7 @@ pub unsafe extern "C" fn chf_tetrahedron_faces(
 /// which the structure keeps unpaired). O(1) from level 1.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_tetrahedron_tetrahedra(
-    m: *const ChfMesh,
-    t: u32,
-    buf: *mut u32,
-    cap: usize,
-    out_len: *mut usize,
+    m: *const ChfMesh, t: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
     ids!(m, buf, cap, out_len, check_tetrahedron(t) => |c| c.tetrahedron_tetrahedra(t))
 }

@@ -72,9 +72,7 @@ pub unsafe extern "C" fn chf_mesh_num_boundary_vertices(m: *const ChfMesh) -> us
 /// boundary.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_boundary_vertex(
-    m: *const ChfMesh,
-    v: u32,
-    out: *mut u32,
+    m: *const ChfMesh, v: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, check_vertex(v) => |c| c.boundary_vertex(v))
 }
@@ -84,9 +82,7 @@ pub unsafe extern "C" fn chf_vertex_boundary_vertex(
 /// OUT_OF_RANGE.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_boundary_vertex_vertex(
-    m: *const ChfMesh,
-    b: u32,
-    out: *mut u32,
+    m: *const ChfMesh, b: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, |c| c.checked_boundary_vertex_volume_vertex(b))
 }
@@ -102,9 +98,7 @@ pub unsafe extern "C" fn chf_mesh_num_boundary_components(m: *const ChfMesh) -> 
 /// paired (interior).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_half_face_boundary_triangle(
-    m: *const ChfMesh,
-    hf: u32,
-    out: *mut u32,
+    m: *const ChfMesh, hf: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, check_half_face(hf) => |c| c.boundary_triangle(hf))
 }
@@ -113,9 +107,7 @@ pub unsafe extern "C" fn chf_half_face_boundary_triangle(
 /// `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_boundary_triangle_half_face(
-    m: *const ChfMesh,
-    k: u32,
-    out: *mut u32,
+    m: *const ChfMesh, k: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, |c| c.checked_boundary_triangle_half_face(k))
 }
@@ -123,9 +115,7 @@ pub unsafe extern "C" fn chf_boundary_triangle_half_face(
 /// The boundary triangle of face `f` into `*out`, `TOPOMESH_NONE` for an interior face.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_face_boundary_triangle(
-    m: *const ChfMesh,
-    f: u32,
-    out: *mut u32,
+    m: *const ChfMesh, f: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, check_face(f) => |c| c.face_boundary_triangle(f))
 }
@@ -133,9 +123,7 @@ pub unsafe extern "C" fn chf_face_boundary_triangle(
 /// The face of boundary triangle `k` into `*out`; `k` out of range gives OUT_OF_RANGE.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_boundary_triangle_face(
-    m: *const ChfMesh,
-    k: u32,
-    out: *mut u32,
+    m: *const ChfMesh, k: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, |c| c.checked_boundary_triangle_face(k))
 }
@@ -144,9 +132,7 @@ pub unsafe extern "C" fn chf_boundary_triangle_face(
 /// see `chf_mesh_boundary_vertex_components` for the array at level 3).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_boundary_component(
-    m: *const ChfMesh,
-    v: u32,
-    out: *mut u32,
+    m: *const ChfMesh, v: u32, out: *mut u32,
 ) -> Status {
     value!(m, out, check_vertex(v) => |c| c.boundary_component(v))
 }

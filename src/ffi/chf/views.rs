@@ -20,8 +20,7 @@ fn stored(map: Cow<'_, [u32]>) -> Option<&[u32]> {
 /// outward order are `V[chf_face_corner(hf, j)]`, j = 0, 1, 2. All levels.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_half_face_vertices(
-    m: *const ChfMesh,
-    len: *mut usize,
+    m: *const ChfMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| Some(m.chf.half_face_vertices()))
 }
@@ -36,8 +35,7 @@ pub unsafe extern "C" fn chf_mesh_opposites(m: *const ChfMesh, len: *mut usize) 
 /// `TOPOMESH_NONE` for an isolated vertex (`num_vertices` entries). NULL below level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_half_faces(
-    m: *const ChfMesh,
-    len: *mut usize,
+    m: *const ChfMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| m.chf.vertex_half_faces())
 }
@@ -46,8 +44,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_half_faces(
 /// boundary one on a boundary face). NULL below level 2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_face_half_faces(
-    m: *const ChfMesh,
-    len: *mut usize,
+    m: *const ChfMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| m.chf.face_half_faces())
 }
@@ -56,8 +53,7 @@ pub unsafe extern "C" fn chf_mesh_face_half_faces(
 /// surface is the `k`-th. NULL below level 3 (then use `chf_boundary_triangle_half_face`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_boundary_half_faces(
-    m: *const ChfMesh,
-    len: *mut usize,
+    m: *const ChfMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| stored(m.chf.boundary_half_faces()))
 }
@@ -67,8 +63,7 @@ pub unsafe extern "C" fn chf_mesh_boundary_half_faces(
 /// splits come after, see `chf_boundary_vertex_vertex`). NULL below level 3.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_boundary_vertices(
-    m: *const ChfMesh,
-    len: *mut usize,
+    m: *const ChfMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| stored(m.chf.boundary_vertices()))
 }
@@ -79,8 +74,7 @@ pub unsafe extern "C" fn chf_mesh_boundary_vertices(
 /// 3 (then use `chf_vertex_boundary_component`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_boundary_vertex_components(
-    m: *const ChfMesh,
-    len: *mut usize,
+    m: *const ChfMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| m.chf.boundary_vertex_components())
 }
@@ -111,8 +105,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_origins(m: *const ChfMesh, len: *mut us
 /// the identity.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_tetrahedron_origins(
-    m: *const ChfMesh,
-    len: *mut usize,
+    m: *const ChfMesh, len: *mut usize,
 ) -> *const u32 {
     view!(m, len, |m| Some(origins(
         m.chf.tetrahedron_origins(),

@@ -232,14 +232,8 @@ impl Link {
     /// Counts the face of corner `c` (its smallest vertex is `x`) and pairs it.
     #[allow(clippy::too_many_arguments)]
     fn face(
-        events: &mut Vec<([u32; 2], [u32; 2])>,
-        star: &[Record],
-        c: u32,
-        count: u32,
-        other: u32,
-        mated: bool,
-        same_direction: bool,
-        sums: &mut Sums,
+        events: &mut Vec<([u32; 2], [u32; 2])>, star: &[Record], c: u32, count: u32, other: u32,
+        mated: bool, same_direction: bool, sums: &mut Sums,
     ) {
         let (p, s) = ((c / 3) as usize, (c % 3) as usize);
         let r = &star[p];
@@ -272,10 +266,7 @@ impl Link {
     /// A face of three or more tetrahedra: all its half-faces, and the duplicate pairs among
     /// them (the same fourth vertex, above the face), as the build counts them.
     fn non_manifold_face(
-        events: &mut Vec<([u32; 2], [u32; 2])>,
-        star: &[Record],
-        c: usize,
-        census: &mut FaceCensus,
+        events: &mut Vec<([u32; 2], [u32; 2])>, star: &[Record], c: usize, census: &mut FaceCensus,
     ) {
         let (y, z) = face_others(&star[c / 3], c % 3);
         let key = |d: usize| {

@@ -315,10 +315,7 @@ impl Stamp for u64 {
 /// first corner (`3p + s`) holding it. Returns how many names. Branch-free per corner:
 /// one stamp lookup each.
 fn name_vertices<S: Stamp>(
-    star: &[Record],
-    stamps: &mut [S],
-    verts: &mut [u32],
-    first_corner: &mut [u32],
+    star: &[Record], stamps: &mut [S], verts: &mut [u32], first_corner: &mut [u32],
     ids: &mut Vec<[u32; 3]>,
 ) -> u32 {
     let tag = S::tag(star[0][1]);

@@ -19,6 +19,9 @@ step "cargo fmt and clippy"
 cargo fmt --check
 cargo clippy --workspace --all-targets --locked -- -D warnings
 
+step "the library builds for Windows (scripts/check-windows.sh)"
+bash scripts/check-windows.sh
+
 step "cargo test"
 cargo test --workspace --locked
 

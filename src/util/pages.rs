@@ -6,7 +6,9 @@
 //! touch cuts both; BENCHMARKS.md and the changelog give the effect measured.
 
 /// Arrays smaller than this keep the allocator's default pages.
+#[cfg(target_os = "linux")]
 const MIN_BYTES: usize = 8 << 20;
+#[cfg(target_os = "linux")]
 const HUGE_PAGE: usize = 2 << 20;
 
 /// An empty vector with room for `capacity` elements.

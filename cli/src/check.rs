@@ -13,7 +13,7 @@ use std::io::{self, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use topomesh::io::MeshData;
-use topomesh::{BuildOptions, Error, chf};
+use topomesh::{BuildOptions, BuildReport, Error, chf};
 
 #[derive(clap::Args)]
 pub struct CheckOptions {
@@ -72,7 +72,12 @@ struct CheckJson {
 /// The outcome, and the build report for `--verbose`.
 struct Checked {
     json: CheckJson,
-    report: Box<dyn Fn(&mut Out) -> io::Result<()>>,
+    report: Report,
+}
+
+enum Report {
+    Surface(BuildReport),
+    Volume(chf::BuildReport),
 }
 
 /// The nouns of one kind of problem: the JSON name, and the text for one and for many.
@@ -119,7 +124,10 @@ impl Checked {
             writeln!(out, "{}: {}", j.file, p.text)?;
         }
         if verbose() {
-            (self.report)(out)?;
+            match &self.report {
+                Report::Surface(r) => report::surface(out, r)?,
+                Report::Volume(r) => report::volume(out, r)?,
+            }
         }
         Ok(())
     }
@@ -174,7 +182,7 @@ fn check_surface(file: String, data: &MeshData) -> Result<Checked, Error> {
         euler_characteristic: s.euler_characteristic,
         problems: p.0,
     };
-    let report = Box::new(move |out: &mut Out| report::surface(out, &r));
+    let report = Report::Surface(r);
     Ok(Checked { json, report })
 }
 
@@ -249,6 +257,6 @@ fn check_volume(file: String, data: &MeshData) -> Result<Checked, Error> {
         euler_characteristic: s.euler_characteristic,
         problems: p.0,
     };
-    let report = Box::new(move |out: &mut Out| report::volume(out, &r));
+    let report = Report::Volume(r);
     Ok(Checked { json, report })
 }

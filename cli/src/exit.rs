@@ -6,6 +6,8 @@ use topomesh::{Error, ErrorKind};
 
 /// The mesh has a problem `check` looks for (or `--strict` refused it).
 pub const PROBLEM: u8 = 1;
+/// Unknown option, missing or bad argument (clap's own code).
+pub const USAGE: u8 = 2;
 /// Unreadable or invalid input, or output that cannot be written.
 pub const INPUT: u8 = 3;
 
@@ -56,4 +58,14 @@ pub fn code(result: Result<ExitCode, Failure>) -> ExitCode {
     // Nothing is left to tell if stderr is gone too: the exit code still says it.
     let _ = writeln!(io::stderr().lock(), "topomesh: error: {message}");
     ExitCode::from(code)
+}
+
+/// What clap stopped on: `--help` and `--version` on stdout (0, or as any output failure
+/// when stdout cannot take them), a usage error on stderr (2).
+pub fn usage(e: clap::Error) -> ExitCode {
+    let printed = e.print();
+    if e.use_stderr() {
+        return ExitCode::from(USAGE);
+    }
+    code(printed.map(|()| ExitCode::SUCCESS).map_err(Failure::from))
 }

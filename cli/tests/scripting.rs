@@ -8,6 +8,7 @@ use serde::de::{self, Deserialize, Deserializer, MapAccess, SeqAccess, Visitor};
 use std::collections::HashSet;
 use std::fmt;
 use std::process::{Command, Output, Stdio};
+use std::sync::OnceLock;
 
 const TWO_TETS: &str = "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n\
     0 1 0 0\n0 0 1 0\n1 1 1 0\nTetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nEnd\n";
@@ -20,9 +21,14 @@ fn code(args: &[&str]) -> Option<i32> {
     topomesh(args).status.code()
 }
 
+/// A torus file, written once: tests run at once and must not see it half written.
 fn torus_file() -> String {
-    let off = topomesh::generate::to_off(&topomesh::generate::torus(5, 4));
-    temp("torus.off", &off).to_str().unwrap().to_string()
+    static PATH: OnceLock<String> = OnceLock::new();
+    PATH.get_or_init(|| {
+        let off = topomesh::generate::to_off(&topomesh::generate::torus(5, 4));
+        temp("torus.off", &off).to_str().unwrap().to_string()
+    })
+    .clone()
 }
 
 #[test]
@@ -156,7 +162,10 @@ fn run_with_stdout(args: &[&str], stdout: Stdio) -> Output {
 }
 
 fn printing_commands(torus: &str) -> Vec<Vec<String>> {
-    let cmds: [&[&str]; 6] = [
+    let cmds: [&[&str]; 9] = [
+        &["--help"],
+        &["check", "--help"],
+        &["--version"],
         &["info"],
         &["info", "--json"],
         &["check", torus],
@@ -270,6 +279,7 @@ impl<'de> Visitor<'de> for UniqueVisitor {
 
 /// The JSON a command printed: checked for duplicate keys, then parsed.
 fn json(out: &Output) -> serde_json::Value {
+    assert!(matches!(out.status.code(), Some(0 | 1)), "{}", text(out).1);
     if let Err(e) = serde_json::from_slice::<Unique>(&out.stdout) {
         panic!("{e}: {}", text(out).0);
     }

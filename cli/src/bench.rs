@@ -20,6 +20,7 @@ use topomesh::{BuildOptions, Che, Error, chf};
 
 #[derive(clap::Args)]
 pub struct BenchOptions {
+    /// The mesh file, its format by extension (none: the embedded torus).
     file: Option<PathBuf>,
     /// Repetitions (the median is printed).
     #[arg(long, default_value_t = 5)]

@@ -17,6 +17,7 @@ use topomesh::{BuildOptions, BuildReport, Error, chf};
 
 #[derive(clap::Args)]
 pub struct CheckOptions {
+    /// The mesh file, its format by extension.
     file: PathBuf,
     /// Print JSON: `ok`, and each problem with its count and first ids.
     #[arg(long)]

@@ -21,8 +21,9 @@ use topomesh::{BuildOptions, Che, Chf, Error, chf};
 
 #[derive(clap::Args)]
 pub struct InfoOptions {
+    /// The mesh file, its format by extension (none: the embedded torus).
     file: Option<PathBuf>,
-    /// Structure level, 0 to 3 (3 by default, the library's default is 2: see the README).
+    /// Structure level, 0 to 3 (the library's default is 2: see the README).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(0..=3))]
     level: u8,
     /// Reject non-manifold input instead of repairing it.

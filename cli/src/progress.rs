@@ -38,12 +38,13 @@ impl Progress {
     /// A percentage bar with `msg`, for `total` units of work, at zero.
     pub fn start(&self, msg: String, total: u64) {
         if let Some(bar) = &self.0 {
+            // Message and length first: the ticking thread may draw between two calls.
+            bar.set_message(msg);
+            bar.set_length(total);
+            bar.set_position(0);
             if let Ok(style) = ProgressStyle::with_template(BAR) {
                 bar.set_style(style.progress_chars("=> "));
             }
-            bar.set_length(total);
-            bar.set_position(0);
-            bar.set_message(msg);
         }
     }
 

@@ -1,9 +1,17 @@
 //! `topomesh bench`: the median time of the build of every level and of full sweeps of the
-//! relations, with the topology's bytes per element.
+//! relations, with the topology's bytes per element, as text or JSON. Every timed build
+//! and sweep follows one untimed warm-up run, so that the first repetition does not pay
+//! for cold caches and page faults alone.
 
+use crate::exit::Failure;
 use crate::input::{build_surface, build_volume, load};
+use crate::json::BENCH_SCHEMA;
+use crate::output::{Out, verbose};
+use crate::print::count;
 use crate::progress::Progress;
+use serde::Serialize;
 use std::hint::black_box;
+use std::io::{self, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -12,6 +20,7 @@ use topomesh::{BuildOptions, Che, Error, chf};
 
 #[derive(clap::Args)]
 pub struct BenchOptions {
+    /// The mesh file, its format by extension (none: the embedded torus).
     file: Option<PathBuf>,
     /// Repetitions (the median is printed).
     #[arg(long, default_value_t = 5)]
@@ -19,6 +28,9 @@ pub struct BenchOptions {
     /// Threads for the build (0: as many as the machine runs at once).
     #[arg(long, default_value_t = 0)]
     threads: usize,
+    /// Print JSON: per level, the build and sweep times (median, fastest, slowest).
+    #[arg(long)]
+    json: bool,
 }
 
 impl BenchOptions {
@@ -28,83 +40,149 @@ impl BenchOptions {
     }
 }
 
-pub fn run(options: &BenchOptions) -> Result<ExitCode, Error> {
+/// What `bench --json` prints.
+#[derive(Serialize)]
+struct Bench {
+    file: String,
+    kind: &'static str,
+    /// Triangles or tetrahedra in the file.
+    elements: usize,
+    repeat: usize,
+    threads: usize,
+    levels: Vec<Level>,
+}
+
+#[derive(Serialize)]
+struct Level {
+    level: u8,
+    build: Timing,
+    topology_bytes: usize,
+    /// `null` at the levels where the sweeps are not timed.
+    sweeps: Option<Sweeps>,
+}
+
+/// Seconds over the repetitions.
+#[derive(Clone, Copy, Serialize)]
+struct Timing {
+    median: f64,
+    min: f64,
+    max: f64,
+}
+
+#[derive(Serialize)]
+struct Sweeps {
+    /// `per_element` (one query per element) or `bulk` (the CSR calls, below level 2).
+    method: &'static str,
+    relations: Vec<Sweep>,
+}
+
+#[derive(Serialize)]
+struct Sweep {
+    relation: &'static str,
+    seconds: Timing,
+}
+
+pub fn run(options: &BenchOptions) -> Result<ExitCode, Failure> {
     let progress = Progress::new();
     let (name, data) = load(options.file.as_deref(), &progress)?;
-    drop(progress);
-    if data.is_volume() {
-        bench_volume(&name, &data, options)?;
+    // Four levels, each a warm-up build and the timed ones.
+    let builds = 4 * (options.repeat() as u64 + 1);
+    progress.start("building every level".to_string(), builds);
+    let bench = if data.is_volume() {
+        bench_volume(name, &data, options, &progress)?
     } else {
-        bench_surface(&name, &data, options)?;
+        bench_surface(name, &data, options, &progress)?
+    };
+    drop(progress);
+    let mut out = Out::new();
+    if options.json {
+        crate::json::write(&mut out, BENCH_SCHEMA, &bench)?;
+    } else {
+        print(&mut out, &bench)?;
     }
+    out.finish()?;
     Ok(ExitCode::SUCCESS)
 }
 
-fn bench_surface(name: &str, data: &MeshData, options: &BenchOptions) -> Result<(), Error> {
+fn bench_surface(
+    file: String, data: &MeshData, options: &BenchOptions, progress: &Progress,
+) -> Result<Bench, Error> {
     let repeat = options.repeat();
-    let n = data.triangles.len();
-    println!("{name}: {n} triangles, median of {repeat}");
+    let mut levels = Vec::new();
     for level in 0..=3u8 {
         let build = BuildOptions {
             level,
             strict: false,
             threads: options.threads,
         };
-        let (che, secs) = timed_builds(repeat, || build_surface(data, build))?;
-        build_line(level, secs, n, che.memory_bytes().topology, "triangle");
-        if level >= 1 {
-            surface_sweeps(&che, repeat);
-        }
+        let (che, timing) = timed_builds(repeat, progress, || build_surface(data, build))?;
+        levels.push(Level {
+            level,
+            build: timing,
+            topology_bytes: che.memory_bytes().topology,
+            sweeps: (level >= 1).then(|| surface_sweeps(&che, repeat)),
+        });
     }
-    Ok(())
+    Ok(Bench {
+        file,
+        kind: "surface",
+        elements: data.triangles.len(),
+        repeat,
+        threads: options.threads,
+        levels,
+    })
 }
 
-fn bench_volume(name: &str, data: &MeshData, options: &BenchOptions) -> Result<(), Error> {
+fn bench_volume(
+    file: String, data: &MeshData, options: &BenchOptions, progress: &Progress,
+) -> Result<Bench, Error> {
     let repeat = options.repeat();
-    let n = data.tetrahedra.len();
-    println!("{name}: {n} tetrahedra, median of {repeat}");
+    let mut levels = Vec::new();
     for level in 0..=3u8 {
         let build = chf::BuildOptions {
             level,
             strict: false,
             threads: options.threads,
         };
-        let (chf, secs) = timed_builds(repeat, || build_volume(data, build))?;
-        build_line(level, secs, n, chf.memory_bytes().topology, "tetrahedron");
-        if level >= 2 {
-            volume_sweeps(&chf, repeat);
-        }
+        let (chf, timing) = timed_builds(repeat, progress, || build_volume(data, build))?;
+        levels.push(Level {
+            level,
+            build: timing,
+            topology_bytes: chf.memory_bytes().topology,
+            sweeps: (level >= 2).then(|| volume_sweeps(&chf, repeat)),
+        });
     }
-    Ok(())
+    Ok(Bench {
+        file,
+        kind: "volume",
+        elements: data.tetrahedra.len(),
+        repeat,
+        threads: options.threads,
+        levels,
+    })
 }
 
-/// Builds `repeat` times; the last structure and the median time.
+/// One untimed warm-up build, then `repeat` timed ones; the last structure and the times.
 fn timed_builds<T>(
-    repeat: usize, mut build: impl FnMut() -> Result<T, Error>,
-) -> Result<(T, f64), Error> {
-    let mut times = Vec::with_capacity(repeat);
-    let mut last = None;
+    repeat: usize, progress: &Progress, mut build: impl FnMut() -> Result<T, Error>,
+) -> Result<(T, Timing), Error> {
+    let mut last = build()?;
+    progress.advance(1);
+    let mut times = Vec::new();
     for _ in 0..repeat {
         let start = Instant::now();
-        last = Some(build()?);
+        last = build()?;
         times.push(start.elapsed().as_secs_f64());
+        progress.advance(1);
     }
-    Ok((last.expect("repeat >= 1"), median(times)))
+    Ok((last, Timing::of(times)))
 }
 
-fn build_line(level: u8, secs: f64, elements: usize, topology: usize, unit: &str) {
-    let n = elements.max(1) as f64;
-    println!(
-        "build level {level}: {:8.2} ms  {:6.1} ns/{unit}  {:6.2} bytes/{unit}",
-        secs * 1e3,
-        secs * 1e9 / n,
-        topology as f64 / n
-    );
-}
-
-/// The median time of `repeat` runs of `sweep` (its result kept from the optimiser).
-fn timed(repeat: usize, sweep: &dyn Fn() -> u64) -> f64 {
-    median(
+/// One untimed warm-up sweep, then the times of `repeat` (the result kept from the
+/// optimiser).
+fn timed(repeat: usize, sweep: &dyn Fn() -> u64) -> Timing {
+    black_box(sweep());
+    Timing::of(
         (0..repeat)
             .map(|_| {
                 let start = Instant::now();
@@ -115,16 +193,31 @@ fn timed(repeat: usize, sweep: &dyn Fn() -> u64) -> f64 {
     )
 }
 
-fn median(mut times: Vec<f64>) -> f64 {
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
+impl Timing {
+    /// Of at least one time.
+    fn of(mut times: Vec<f64>) -> Timing {
+        times.sort_by(f64::total_cmp);
+        Timing {
+            median: times[times.len() / 2],
+            min: times[0],
+            max: times[times.len() - 1],
+        }
+    }
 }
 
 fn sum(ids: impl Iterator<Item = u32>) -> u64 {
     ids.map(u64::from).sum()
 }
 
-fn surface_sweeps(che: &Che, repeat: usize) {
+fn sweeps(method: &'static str, times: [(&'static str, Timing); 3]) -> Sweeps {
+    let relations = times
+        .into_iter()
+        .map(|(relation, seconds)| Sweep { relation, seconds })
+        .collect();
+    Sweeps { method, relations }
+}
+
+fn surface_sweeps(che: &Che, repeat: usize) -> Sweeps {
     let nv = che.num_vertices() as u32;
     let nt = che.num_triangles() as u32;
     if che.level() < 2 {
@@ -133,8 +226,7 @@ fn surface_sweeps(che: &Che, repeat: usize) {
         let vv = timed(repeat, &|| csr(che.all_vertex_vertices()));
         let vf = timed(repeat, &|| csr(che.all_vertex_triangles()));
         let ff = timed(repeat, &|| sum(che.all_triangle_triangles().into_iter()));
-        sweep_line("  bulk sweeps", [("VV", vv), ("VF", vf), ("FF", ff)]);
-        return;
+        return sweeps("bulk", [("VV", vv), ("VF", vf), ("FF", ff)]);
     }
     let vv = timed(
         repeat,
@@ -146,10 +238,10 @@ fn surface_sweeps(che: &Che, repeat: usize) {
     let ff = timed(repeat, &|| {
         sum((0..nt).flat_map(|t| che.triangle_triangles(t)))
     });
-    sweep_line("  sweeps", [("VV", vv), ("VF", vf), ("FF", ff)]);
+    sweeps("per_element", [("VV", vv), ("VF", vf), ("FF", ff)])
 }
 
-fn volume_sweeps(chf: &topomesh::Chf, repeat: usize) {
+fn volume_sweeps(chf: &topomesh::Chf, repeat: usize) -> Sweeps {
     let nt = chf.num_tetrahedra() as u32;
     let nv = chf.num_vertices() as u32;
     let tt = timed(repeat, &|| {
@@ -162,14 +254,50 @@ fn volume_sweeps(chf: &topomesh::Chf, repeat: usize) {
         repeat,
         &|| sum((0..nv).flat_map(|v| chf.vertex_vertices(v))),
     );
-    sweep_line("  sweeps", [("TT", tt), ("VT", vt), ("VV", vv)]);
+    sweeps("per_element", [("TT", tt), ("VT", vt), ("VV", vv)])
 }
 
-/// `label: VV <t> ms, VF <t> ms, FF <t> ms` (the three sweeps, in milliseconds).
-fn sweep_line(label: &str, times: [(&str, f64); 3]) {
-    let parts: Vec<String> = times
-        .iter()
-        .map(|(name, secs)| format!("{name} {:.2} ms", secs * 1e3))
-        .collect();
-    println!("{label}: {}", parts.join(", "));
+fn print(out: &mut Out, b: &Bench) -> io::Result<()> {
+    let (one, many, unit) = match b.kind {
+        "volume" => ("tetrahedron", "tetrahedra", "tetrahedron"),
+        _ => ("triangle", "triangles", "triangle"),
+    };
+    let elements = count(b.elements as u64, one, many);
+    writeln!(out, "{}: {elements}, median of {}", b.file, b.repeat)?;
+    let n = b.elements.max(1) as f64;
+    for l in &b.levels {
+        let t = l.build;
+        write!(
+            out,
+            "build level {}: {:8.2} ms  {:6.1} ns/{unit}  {:6.2} bytes/{unit}",
+            l.level,
+            t.median * 1e3,
+            t.median * 1e9 / n,
+            l.topology_bytes as f64 / n
+        )?;
+        spread(out, t)?;
+        writeln!(out)?;
+        if let Some(s) = &l.sweeps {
+            let label = if s.method == "bulk" {
+                "bulk sweeps"
+            } else {
+                "sweeps"
+            };
+            let parts: Vec<String> = s
+                .relations
+                .iter()
+                .map(|r| format!("{} {:.2} ms", r.relation, r.seconds.median * 1e3))
+                .collect();
+            writeln!(out, "  {label}: {}", parts.join(", "))?;
+        }
+    }
+    Ok(())
+}
+
+/// `  (min .. max ms)` after a median, under `--verbose`.
+fn spread(out: &mut Out, t: Timing) -> io::Result<()> {
+    if verbose() {
+        write!(out, "  ({:.2} .. {:.2} ms)", t.min * 1e3, t.max * 1e3)?;
+    }
+    Ok(())
 }

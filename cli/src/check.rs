@@ -1,158 +1,263 @@
 //! `topomesh check`: exit 0 when the mesh is a clean manifold, 1 and one line per kind of
-//! problem otherwise (from the level-1 build report).
+//! problem otherwise (from the level-1 build report), as text or JSON.
 
+use crate::exit::{Failure, PROBLEM};
 use crate::input::{build_surface, build_volume, load};
-use crate::print::examples;
+use crate::json::CHECK_SCHEMA;
+use crate::output::{Out, verbose};
+use crate::print::{Id, count, ids};
 use crate::progress::Progress;
-use std::fmt::Debug;
+use crate::report;
+use serde::Serialize;
+use std::io::{self, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use topomesh::io::MeshData;
-use topomesh::{BuildOptions, Error, chf};
+use topomesh::{BuildOptions, BuildReport, Error, chf};
 
 #[derive(clap::Args)]
 pub struct CheckOptions {
+    /// The mesh file, its format by extension.
     file: PathBuf,
+    /// Print JSON: `ok`, and each problem with its count and first ids.
+    #[arg(long)]
+    json: bool,
 }
 
-pub fn run(options: &CheckOptions) -> Result<ExitCode, Error> {
+pub fn run(options: &CheckOptions) -> Result<ExitCode, Failure> {
     let progress = Progress::new();
     let (name, data) = load(Some(&options.file), &progress)?;
-    drop(progress);
-    if data.is_volume() {
-        check_volume(&name, &data)
+    progress.step("building level 1".to_string());
+    let checked = if data.is_volume() {
+        check_volume(name, &data)?
     } else {
-        check_surface(&name, &data)
+        check_surface(name, &data)?
+    };
+    drop(progress);
+    let mut out = Out::new();
+    if options.json {
+        crate::json::write(&mut out, CHECK_SCHEMA, &checked.json)?;
+    } else {
+        checked.print(&mut out)?;
     }
+    out.finish()?;
+    Ok(if checked.json.ok {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(PROBLEM)
+    })
 }
 
-/// The problems found, one line each.
+/// One kind of problem: its name in JSON, its count and the first offending ids.
+#[derive(Serialize)]
+struct Problem {
+    problem: &'static str,
+    count: usize,
+    examples: serde_json::Value,
+    #[serde(skip)]
+    text: String,
+}
+
+/// What `check --json` prints.
+#[derive(Serialize)]
+struct CheckJson {
+    file: String,
+    kind: &'static str,
+    ok: bool,
+    /// Triangles or tetrahedra kept by the build.
+    elements: u64,
+    euler_characteristic: i64,
+    problems: Vec<Problem>,
+}
+
+/// The outcome, and the build report for `--verbose`.
+struct Checked {
+    json: CheckJson,
+    report: Report,
+}
+
+enum Report {
+    Surface(BuildReport),
+    Volume(chf::BuildReport),
+}
+
+/// The nouns of one kind of problem: the JSON name, and the text for one and for many.
+type Nouns = (&'static str, &'static str, &'static str);
+
 #[derive(Default)]
-struct Problems(Vec<String>);
+struct Problems(Vec<Problem>);
 
 impl Problems {
-    fn note<T: Debug>(&mut self, count: usize, what: &str, list: &[T]) {
-        if count > 0 {
-            self.0.push(format!("{count} {what}{}", examples(list)));
+    fn note<T: Id + Serialize>(&mut self, n: usize, (key, one, many): Nouns, list: &[T]) {
+        if n == 0 {
+            return;
         }
-    }
-
-    /// Prints the problems, or `ok` and the description of a clean mesh.
-    fn print(self, name: &str, ok: impl FnOnce() -> String) -> ExitCode {
-        if self.0.is_empty() {
-            println!("{name}: ok: {}", ok());
-            return ExitCode::SUCCESS;
-        }
-        for p in &self.0 {
-            println!("{name}: {p}");
-        }
-        ExitCode::FAILURE
+        let list_text = ids(list, n);
+        let sep = if list_text.is_empty() { "" } else { ": " };
+        self.0.push(Problem {
+            problem: key,
+            count: n,
+            examples: serde_json::to_value(list).unwrap_or_default(),
+            text: format!("{}{sep}{list_text}", count(n as u64, one, many)),
+        });
     }
 }
 
-fn check_surface(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
+impl Checked {
+    /// One line per problem, or `ok` and the description of a clean mesh; then the build
+    /// report under `--verbose`.
+    fn print(&self, out: &mut Out) -> io::Result<()> {
+        let j = &self.json;
+        if j.ok {
+            let (one, many) = match j.kind {
+                "volume" => ("tetrahedron", "tetrahedra"),
+                _ => ("triangle", "triangles"),
+            };
+            writeln!(
+                out,
+                "{}: ok: a manifold of {}, euler characteristic {}",
+                j.file,
+                count(j.elements, one, many),
+                j.euler_characteristic
+            )?;
+        }
+        for p in &j.problems {
+            writeln!(out, "{}: {}", j.file, p.text)?;
+        }
+        if verbose() {
+            match &self.report {
+                Report::Surface(r) => report::surface(out, r)?,
+                Report::Volume(r) => report::volume(out, r)?,
+            }
+        }
+        Ok(())
+    }
+}
+
+fn check_surface(file: String, data: &MeshData) -> Result<Checked, Error> {
     let che = build_surface(data, BuildOptions::level(1))?;
-    let r = che.report();
-    let mut problems = Problems::default();
-    problems.note(
-        r.dropped_degenerate,
+    let r = che.report().clone();
+    let mut p = Problems::default();
+    let deg = (
+        "degenerate_triangles",
+        "degenerate triangle",
         "degenerate triangles",
-        &r.degenerate_examples,
     );
-    problems.note(
-        r.duplicate_triangles,
+    p.note(r.dropped_degenerate, deg, &r.degenerate_examples);
+    let dup = (
+        "duplicate_triangle_pairs",
+        "duplicate triangle pair",
         "duplicate triangle pairs",
-        &r.duplicate_examples,
     );
-    problems.note(
-        r.non_manifold_edges,
+    p.note(r.duplicate_triangles, dup, &r.duplicate_examples);
+    let nme = (
+        "non_manifold_edges",
+        "non-manifold edge",
         "non-manifold edges",
-        &r.non_manifold_edge_examples,
     );
-    problems.note(
-        r.split_vertices,
+    p.note(r.non_manifold_edges, nme, &r.non_manifold_edge_examples);
+    let nmv = (
+        "non_manifold_vertices",
+        "non-manifold vertex",
         "non-manifold vertices",
-        &r.split_vertex_examples,
     );
-    problems.note(
-        r.non_orientable_components,
+    p.note(r.split_vertices, nmv, &r.split_vertex_examples);
+    let no = (
+        "non_orientable_components",
+        "non-orientable component",
         "non-orientable components",
-        &r.non_orientable_examples,
     );
-    problems.note::<u32>(
-        r.flipped_triangles,
+    p.note(r.non_orientable_components, no, &r.non_orientable_examples);
+    let flip = (
+        "flipped_triangles",
+        "triangle oriented against its neighbours",
         "triangles oriented against their neighbours",
-        &[],
     );
-    Ok(problems.print(name, || {
-        let s = che.summary();
-        format!(
-            "a manifold of {} triangles, euler characteristic {}",
-            s.triangles, s.euler_characteristic
-        )
-    }))
+    p.note::<u32>(r.flipped_triangles, flip, &[]);
+    let s = che.summary();
+    let json = CheckJson {
+        file,
+        kind: "surface",
+        ok: p.0.is_empty(),
+        elements: s.triangles,
+        euler_characteristic: s.euler_characteristic,
+        problems: p.0,
+    };
+    let report = Report::Surface(r);
+    Ok(Checked { json, report })
 }
 
-fn check_volume(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
-    let chf = build_volume(
-        data,
-        chf::BuildOptions {
-            level: 1,
-            ..chf::BuildOptions::default()
-        },
-    )?;
-    let r = chf.report();
-    let mut problems = Problems::default();
-    problems.note(
-        r.dropped_degenerate,
+fn check_volume(file: String, data: &MeshData) -> Result<Checked, Error> {
+    let options = chf::BuildOptions {
+        level: 1,
+        ..chf::BuildOptions::default()
+    };
+    let chf = build_volume(data, options)?;
+    let r = chf.report().clone();
+    let mut p = Problems::default();
+    let deg = (
+        "degenerate_tetrahedra",
+        "degenerate tetrahedron",
         "degenerate tetrahedra",
-        &r.degenerate_examples,
     );
-    problems.note(
-        r.zero_volume,
+    p.note(r.dropped_degenerate, deg, &r.degenerate_examples);
+    let zero = (
+        "zero_volume_tetrahedra",
+        "zero-volume tetrahedron",
         "zero-volume tetrahedra",
-        &r.zero_volume_examples,
     );
-    problems.note(
-        r.inverted_tetrahedra,
+    p.note(r.zero_volume, zero, &r.zero_volume_examples);
+    let inv = (
+        "inverted_tetrahedra",
+        "inverted tetrahedron",
         "inverted tetrahedra",
-        &r.inverted_examples,
     );
-    problems.note(
-        r.duplicate_tetrahedra,
+    p.note(r.inverted_tetrahedra, inv, &r.inverted_examples);
+    let dup = (
+        "duplicate_tetrahedron_pairs",
+        "duplicate tetrahedron pair",
         "duplicate tetrahedron pairs",
-        &r.duplicate_examples,
     );
-    problems.note(
-        r.non_manifold_faces,
+    p.note(r.duplicate_tetrahedra, dup, &r.duplicate_examples);
+    let nmf = (
+        "non_manifold_faces",
+        "non-manifold face",
         "non-manifold faces",
-        &r.non_manifold_face_examples,
     );
-    problems.note(
-        r.non_manifold_edges,
+    p.note(r.non_manifold_faces, nmf, &r.non_manifold_face_examples);
+    let nme = (
+        "non_manifold_edges",
+        "non-manifold edge",
         "non-manifold edges",
-        &r.non_manifold_edge_examples,
     );
-    problems.note(
-        r.split_vertices,
+    p.note(r.non_manifold_edges, nme, &r.non_manifold_edge_examples);
+    let nmv = (
+        "non_manifold_vertices",
+        "non-manifold vertex",
         "non-manifold vertices",
-        &r.split_vertex_examples,
     );
-    problems.note(
-        r.non_orientable_components,
+    p.note(r.split_vertices, nmv, &r.split_vertex_examples);
+    let no = (
+        "non_orientable_components",
+        "non-orientable component",
         "non-orientable components",
-        &r.non_orientable_examples,
     );
-    problems.note::<u32>(
-        r.flipped_tetrahedra,
+    p.note(r.non_orientable_components, no, &r.non_orientable_examples);
+    let flip = (
+        "flipped_tetrahedra",
+        "tetrahedron oriented against its neighbours",
         "tetrahedra oriented against their neighbours",
-        &[],
     );
-    Ok(problems.print(name, || {
-        let s = chf.summary();
-        format!(
-            "a manifold of {} tetrahedra, euler characteristic {}",
-            s.tetrahedra, s.euler_characteristic
-        )
-    }))
+    p.note::<u32>(r.flipped_tetrahedra, flip, &[]);
+    let s = chf.summary();
+    let json = CheckJson {
+        file,
+        kind: "volume",
+        ok: p.0.is_empty(),
+        elements: s.tetrahedra,
+        euler_characteristic: s.euler_characteristic,
+        problems: p.0,
+    };
+    let report = Report::Volume(r);
+    Ok(Checked { json, report })
 }

@@ -1,13 +1,18 @@
 //! `topomesh info`: the topology summary, build report, structure counts and memory of a
 //! mesh, as text or JSON.
 
+use crate::exit::Failure;
 use crate::input::{build_surface, build_volume, load};
 use crate::json::{
-    SurfaceMemory, SurfaceReport, SurfaceSummary, VolumeMemory, VolumeReport, VolumeSummary,
+    INFO_SCHEMA, SurfaceMemory, SurfaceReport, SurfaceSummary, VolumeMemory, VolumeReport,
+    VolumeSummary,
 };
-use crate::print::{line, report_line, yes};
+use crate::output::{Out, verbose};
+use crate::print::{count, line, yes};
 use crate::progress::Progress;
+use crate::report;
 use serde::Serialize;
+use std::io;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -16,8 +21,9 @@ use topomesh::{BuildOptions, Che, Chf, Error, chf};
 
 #[derive(clap::Args)]
 pub struct InfoOptions {
+    /// The mesh file, its format by extension (none: the embedded torus).
     file: Option<PathBuf>,
-    /// Structure level, 0 to 3.
+    /// Structure level, 0 to 3 (the library's default is 2: see the README).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(0..=3))]
     level: u8,
     /// Reject non-manifold input instead of repairing it.
@@ -44,7 +50,7 @@ impl Default for InfoOptions {
     }
 }
 
-pub fn run(options: &InfoOptions) -> Result<ExitCode, Error> {
+pub fn run(options: &InfoOptions) -> Result<ExitCode, Failure> {
     let progress = Progress::new();
     let start = Instant::now();
     let (name, data) = load(options.file.as_deref(), &progress)?;
@@ -86,23 +92,29 @@ fn timed_build<T>(
     Ok((built, seconds))
 }
 
-/// Prints `out` as JSON or as text, once the spinner is gone.
-fn emit<T: Serialize>(options: &InfoOptions, progress: Progress, out: &T, text: fn(&T)) {
+/// Prints `info` as JSON or as text, once the spinner is gone.
+fn emit<T: Serialize>(
+    options: &InfoOptions, progress: Progress, info: &T, text: fn(&mut Out, &T) -> io::Result<()>,
+) -> Result<ExitCode, Failure> {
     drop(progress);
+    let mut out = Out::new();
     if options.json {
-        crate::json::print(out);
+        crate::json::write(&mut out, INFO_SCHEMA, info)?;
     } else {
-        text(out);
+        text(&mut out, info)?;
     }
+    out.finish()?;
+    Ok(ExitCode::SUCCESS)
 }
 
 fn surface_info(
     name: &str, data: &MeshData, options: &InfoOptions, progress: Progress, read_seconds: f64,
-) -> Result<ExitCode, Error> {
+) -> Result<ExitCode, Failure> {
+    let n = data.triangles.len() as u64;
     let message = format!(
-        "building level {} from {} triangles",
+        "building level {} from {}",
         options.level,
-        data.triangles.len()
+        count(n, "triangle", "triangles")
     );
     let (che, build_seconds) = timed_build(&progress, message, || {
         build_surface(data, options.surface())
@@ -119,8 +131,7 @@ fn surface_info(
         read_seconds,
         build_seconds,
     };
-    emit(options, progress, &out, print_surface);
-    Ok(ExitCode::SUCCESS)
+    emit(options, progress, &out, print_surface)
 }
 
 #[derive(Serialize)]
@@ -156,82 +167,58 @@ impl SurfaceStructure {
     }
 }
 
-fn print_surface(i: &SurfaceInfo) {
+fn print_surface(out: &mut Out, i: &SurfaceInfo) -> io::Result<()> {
     let s = i.summary.0;
-    line("file", i.file);
-    line("structure", format!("CHE level {}", i.level));
-    line("vertices", s.vertices);
-    line("edges", s.edges);
-    line("triangles", s.triangles);
-    line("boundary edges", s.boundary_edges);
-    line("boundary curves", s.boundary_curves);
-    line("components", s.components);
-    line("isolated vertices", s.isolated_vertices);
-    line("euler characteristic", s.euler_characteristic);
+    line(out, "file", i.file)?;
+    line(out, "structure", format!("CHE level {}", i.level))?;
+    line(out, "vertices", s.vertices)?;
+    line(out, "edges", s.edges)?;
+    line(out, "triangles", s.triangles)?;
+    line(out, "boundary edges", s.boundary_edges)?;
+    line(out, "boundary curves", s.boundary_curves)?;
+    line(out, "components", s.components)?;
+    line(out, "isolated vertices", s.isolated_vertices)?;
+    line(out, "euler characteristic", s.euler_characteristic)?;
     let genus = if s.genus < 0 {
         "undefined".to_string()
     } else {
         s.genus.to_string()
     };
-    line("genus", genus);
-    line("orientable", yes(s.orientable));
-    line("manifold", yes(s.manifold));
-    print_surface_report(i.report.0);
+    line(out, "genus", genus)?;
+    line(out, "orientable", yes(s.orientable))?;
+    line(out, "manifold", yes(s.manifold))?;
+    report::surface(out, i.report.0)?;
     let st = &i.structure;
-    line(
-        "structure counts",
-        format!(
-            "{} vertices, {} edges, {} half-edges, {} boundary curves",
-            st.vertices, st.edges, st.half_edges, st.boundary_curves
+    let counts = [
+        count(st.vertices as u64, "vertex", "vertices"),
+        count(st.edges as u64, "edge", "edges"),
+        count(st.half_edges as u64, "half-edge", "half-edges"),
+        count(
+            st.boundary_curves as u64,
+            "boundary curve",
+            "boundary curves",
         ),
+    ];
+    line(out, "structure counts", counts.join(", "))?;
+    memory_lines(out, i.memory.0.topology, s.triangles, "triangle")?;
+    if verbose() {
+        crate::json::memory_table(out, &i.memory)?;
+    }
+    let time = format!(
+        "read {:.3} s, build {:.3} s",
+        i.read_seconds, i.build_seconds
     );
-    memory_line(i.memory.0.topology, s.triangles, "triangle");
-    line(
-        "time",
-        format!(
-            "read {:.3} s, build {:.3} s",
-            i.read_seconds, i.build_seconds
-        ),
-    );
+    line(out, "time", time)
 }
 
 /// The topology's bytes, in all and per element.
-fn memory_line(topology: usize, elements: u64, unit: &str) {
+fn memory_lines(out: &mut Out, topology: usize, elements: u64, unit: &str) -> io::Result<()> {
+    let per = topology as f64 / (elements.max(1) as f64);
     line(
+        out,
         "topology memory",
-        format!(
-            "{topology} bytes ({:.2} bytes per {unit})",
-            topology as f64 / (elements.max(1) as f64)
-        ),
-    );
-}
-
-fn print_surface_report(r: &topomesh::BuildReport) {
-    println!("build report");
-    report_line(
-        "dropped degenerate",
-        r.dropped_degenerate,
-        &r.degenerate_examples,
-    );
-    report_line(
-        "duplicate triangle pairs",
-        r.duplicate_triangles,
-        &r.duplicate_examples,
-    );
-    report_line(
-        "non-manifold edges",
-        r.non_manifold_edges,
-        &r.non_manifold_edge_examples,
-    );
-    report_line("split vertices", r.split_vertices, &r.split_vertex_examples);
-    report_line::<u32>("flipped triangles", r.flipped_triangles, &[]);
-    report_line(
-        "non-orientable components",
-        r.non_orientable_components,
-        &r.non_orientable_examples,
-    );
-    report_line::<u32>("seam edges left unpaired", r.seam_edges, &[]);
-    report_line::<u32>("vertices added by splits", r.added_vertices, &[]);
+        format!("{topology} bytes ({per:.2} bytes per {unit})"),
+    )
 }
 
 #[derive(Serialize)]
@@ -268,11 +255,12 @@ impl VolumeStructure {
 
 fn volume_info(
     name: &str, data: &MeshData, options: &InfoOptions, progress: Progress,
-) -> Result<ExitCode, Error> {
+) -> Result<ExitCode, Failure> {
+    let n = data.tetrahedra.len() as u64;
     let message = format!(
-        "building level {} from {} tetrahedra",
+        "building level {} from {}",
         options.level,
-        data.tetrahedra.len()
+        count(n, "tetrahedron", "tetrahedra")
     );
     let (chf, build_seconds) =
         timed_build(&progress, message, || build_volume(data, options.volume()))?;
@@ -287,73 +275,38 @@ fn volume_info(
         memory: VolumeMemory(&memory),
         build_seconds,
     };
-    emit(options, progress, &out, print_volume);
-    Ok(ExitCode::SUCCESS)
+    emit(options, progress, &out, print_volume)
 }
 
-fn print_volume(i: &VolumeInfo) {
+fn print_volume(out: &mut Out, i: &VolumeInfo) -> io::Result<()> {
     let s = i.summary.0;
-    line("file", i.file);
-    line("structure", format!("CHF level {}", i.level));
-    line("vertices", s.vertices);
-    line("edges", s.edges);
-    line("faces", s.faces);
-    line("tetrahedra", s.tetrahedra);
-    line("boundary faces", s.boundary_faces);
-    line("boundary edges", s.boundary_edges);
-    line("boundary vertices", s.boundary_vertices);
-    line("boundary components", s.boundary_components);
-    line("components", s.components);
-    line("isolated vertices", s.isolated_vertices);
-    line("euler characteristic", s.euler_characteristic);
-    line("orientable", yes(s.orientable));
-    line("manifold", yes(s.manifold));
-    print_volume_report(i.report.0);
+    line(out, "file", i.file)?;
+    line(out, "structure", format!("CHF level {}", i.level))?;
+    line(out, "vertices", s.vertices)?;
+    line(out, "edges", s.edges)?;
+    line(out, "faces", s.faces)?;
+    line(out, "tetrahedra", s.tetrahedra)?;
+    line(out, "boundary faces", s.boundary_faces)?;
+    line(out, "boundary edges", s.boundary_edges)?;
+    line(out, "boundary vertices", s.boundary_vertices)?;
+    line(out, "boundary components", s.boundary_components)?;
+    line(out, "components", s.components)?;
+    line(out, "isolated vertices", s.isolated_vertices)?;
+    line(out, "euler characteristic", s.euler_characteristic)?;
+    line(out, "orientable", yes(s.orientable))?;
+    line(out, "manifold", yes(s.manifold))?;
+    report::volume(out, i.report.0)?;
     let st = &i.structure;
-    line(
-        "structure counts",
-        format!(
-            "{} vertices, {} edges, {} faces, {} half-faces",
-            st.vertices, st.edges, st.faces, st.half_faces
-        ),
-    );
-    memory_line(i.memory.0.topology, s.tetrahedra, "tetrahedron");
-    line("time", format!("build {:.3} s", i.build_seconds));
-}
-
-fn print_volume_report(r: &topomesh::chf::BuildReport) {
-    println!("build report");
-    report_line(
-        "dropped degenerate",
-        r.dropped_degenerate,
-        &r.degenerate_examples,
-    );
-    report_line("zero volume (kept)", r.zero_volume, &r.zero_volume_examples);
-    report_line(
-        "inverted (kept)",
-        r.inverted_tetrahedra,
-        &r.inverted_examples,
-    );
-    report_line(
-        "duplicate pairs",
-        r.duplicate_tetrahedra,
-        &r.duplicate_examples,
-    );
-    report_line(
-        "non-manifold faces",
-        r.non_manifold_faces,
-        &r.non_manifold_face_examples,
-    );
-    report_line(
-        "non-manifold edges",
-        r.non_manifold_edges,
-        &r.non_manifold_edge_examples,
-    );
-    report_line("split vertices", r.split_vertices, &r.split_vertex_examples);
-    report_line::<u32>("flipped tetrahedra", r.flipped_tetrahedra, &[]);
-    report_line(
-        "non-orientable components",
-        r.non_orientable_components,
-        &r.non_orientable_examples,
-    );
+    let counts = [
+        count(st.vertices as u64, "vertex", "vertices"),
+        count(st.edges as u64, "edge", "edges"),
+        count(st.faces as u64, "face", "faces"),
+        count(st.half_faces as u64, "half-face", "half-faces"),
+    ];
+    line(out, "structure counts", counts.join(", "))?;
+    memory_lines(out, i.memory.0.topology, s.tetrahedra, "tetrahedron")?;
+    if verbose() {
+        crate::json::memory_table(out, &i.memory)?;
+    }
+    line(out, "time", format!("build {:.3} s", i.build_seconds))
 }

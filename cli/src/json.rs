@@ -1,15 +1,50 @@
-//! The JSON of `info --json`: the library's summary, build report and memory types carry no
-//! serde derives, so the command names their fields here, in the order they are printed.
+//! The JSON of `info`, `check` and `bench --json`. Each document starts with `"schema"`, an
+//! integer raised whenever a field is renamed, removed or changes meaning (adding a field
+//! keeps it); an undefined value is `null`, never a sentinel. The library's summary, build
+//! report and memory types carry no serde derives, so their fields are named here, in the
+//! order they are printed.
 
+use crate::output::Out;
 use serde::Serialize;
 use serde::ser::SerializeStruct;
+use std::io::{self, Write};
 use topomesh::{che, chf};
 
+/// `info --json`. 2: the schema field, and `genus` `null` where it was -1.
+pub const INFO_SCHEMA: u32 = 2;
+/// `check --json`.
+pub const CHECK_SCHEMA: u32 = 1;
+/// `bench --json`.
+pub const BENCH_SCHEMA: u32 = 1;
+
+/// A document: its schema version first, then the command's fields.
+#[derive(Serialize)]
+pub struct Versioned<T> {
+    pub schema: u32,
+    #[serde(flatten)]
+    pub body: T,
+}
+
+/// Pretty-printed JSON and a newline on `out`.
+pub fn write(out: &mut Out, schema: u32, body: &impl Serialize) -> io::Result<()> {
+    serde_json::to_writer_pretty(&mut *out, &Versioned { schema, body })?;
+    writeln!(out)
+}
+
+/// The genus, which the library gives as -1 where it is undefined (a non-manifold or
+/// non-orientable surface).
+fn defined(genus: &i64) -> Option<i64> {
+    (*genus >= 0).then_some(*genus)
+}
+
 /// A borrowed view of a core type that serialises the listed fields, in order, as a JSON
-/// object. The fields are destructured without `..`, so a field added to the core type is a
-/// compile error here rather than a silent gap in the JSON.
+/// object; `field as f` writes `f(&field)` instead. The fields are destructured without `..`,
+/// so a field added to the core type is a compile error here rather than a silent gap in
+/// the JSON.
 macro_rules! json_fields {
-    ($wrapper:ident($($ty:ident)::+) { $($field:ident),* $(,)? }) => {
+    (@value $field:ident) => { $field };
+    (@value $field:ident $conv:ident) => { &$conv($field) };
+    ($wrapper:ident($($ty:ident)::+) { $($field:ident $(as $conv:ident)?),* $(,)? }) => {
         pub struct $wrapper<'a>(pub &'a $($ty)::+);
 
         impl Serialize for $wrapper<'_> {
@@ -17,7 +52,7 @@ macro_rules! json_fields {
                 let $($ty)::+ { $($field),* } = self.0;
                 let names = [$(stringify!($field)),*];
                 let mut s = serializer.serialize_struct(stringify!($wrapper), names.len())?;
-                $(s.serialize_field(stringify!($field), $field)?;)*
+                $(s.serialize_field(stringify!($field), json_fields!(@value $field $($conv)?))?;)*
                 s.end()
             }
         }
@@ -26,7 +61,7 @@ macro_rules! json_fields {
 
 json_fields!(SurfaceSummary(che::Summary) {
     vertices, edges, triangles, boundary_edges, boundary_curves, components,
-    isolated_vertices, euler_characteristic, genus, orientable, manifold, dropped_degenerate,
+    isolated_vertices, euler_characteristic, genus as defined, orientable, manifold, dropped_degenerate,
     non_manifold_edges, split_vertices, flipped_triangles, non_orientable_components,
 });
 
@@ -64,10 +99,13 @@ json_fields!(VolumeMemory(chf::Memory) {
     positions, maps,
 });
 
-/// Pretty-printed JSON on stdout.
-pub fn print(value: &impl Serialize) {
-    println!(
-        "{}",
-        serde_json::to_string_pretty(value).expect("plain data serialises")
-    );
+/// The fields of a memory breakdown as `  name  bytes` lines, for `info --verbose`.
+pub fn memory_table(out: &mut Out, memory: &impl Serialize) -> io::Result<()> {
+    writeln!(out, "memory by container")?;
+    if let serde_json::Value::Object(fields) = serde_json::to_value(memory)? {
+        for (name, bytes) in fields {
+            writeln!(out, "  {name:<26}{bytes} bytes")?;
+        }
+    }
+    Ok(())
 }

@@ -80,7 +80,13 @@ impl Format {
 
 /// Reads a mesh file, the format chosen by its extension.
 pub fn read(path: &Path) -> Result<MeshData> {
-    match Format::from_path(path)? {
+    let format = Format::from_path(path);
+    // A missing file is reported as missing before its extension is judged; TetGen names
+    // both of its files itself.
+    if format != Ok(Format::TetGen) {
+        std::fs::metadata(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))?;
+    }
+    match format? {
         Format::Off => off::read(path),
         Format::Obj => obj::read(path),
         Format::Ply => ply::read(path),

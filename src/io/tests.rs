@@ -112,3 +112,18 @@ fn prefixes_and_hostile_tokens_never_panic() {
         });
     }
 }
+
+#[test]
+#[cfg(unix)]
+fn a_missing_file_is_missing_whatever_its_extension() {
+    for name in ["no-such-mesh.off", "no-such-mesh.xyz", "no-such-mesh"] {
+        let path = std::env::temp_dir().join(name);
+        let e = super::read(&path).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Io, "{name}: {}", e.message);
+        assert!(
+            e.message.contains(name) && e.message.contains("No such file or directory"),
+            "{}",
+            e.message
+        );
+    }
+}

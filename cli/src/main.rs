@@ -30,7 +30,7 @@ enum Command {
     Info(info::InfoOptions),
     /// Exit 0 when the mesh is a clean manifold, 1 and a list of problems otherwise.
     Check(check::CheckOptions),
-    /// Convert between formats (read: off obj ply stl node/ele mesh msh vtk; write: off mesh vtk).
+    /// Write the built (repaired) mesh in another format (off obj ply stl node/ele mesh msh vtk).
     Convert(convert::ConvertOptions),
     /// Time the build of every level and full sweeps of the relations.
     Bench(bench::BenchOptions),

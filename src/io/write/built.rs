@@ -87,31 +87,41 @@ impl Chf {
     /// surface file; the origin of each of its vertices is the input vertex of the volume
     /// mesh it lies on.
     pub fn write_boundary_with(&self, path: &Path, options: &WriteOptions) -> Result<()> {
-        let surface = self.boundary_surface()?;
-        let origin = self.boundary_origins(&surface)?;
-        let mesh = Mesh {
-            origin: Some(&origin),
-            ..surface.to_write(path)?
-        };
-        write_mesh(path, &mesh, options)
+        write_mesh(path, &self.boundary_to_write()?.mesh(path)?, options)
     }
 
-    /// The input vertex of each vertex of `surface`, this mesh's boundary surface.
-    fn boundary_origins(&self, surface: &Che) -> Result<Vec<u32>> {
+    /// The boundary surface and the input vertex of the volume each of its vertices lies
+    /// on: what [`Chf::write_boundary_with`] writes.
+    pub fn boundary_to_write(&self) -> Result<BoundaryMesh> {
+        let surface = self.boundary_surface()?;
         let volume_vertex = self.boundary_vertices();
+        let n = surface.num_vertices();
         let mut origin = Vec::new();
-        origin
-            .try_reserve_exact(surface.num_vertices())
-            .map_err(|_| {
-                Error::too_large(format!(
-                    "{} boundary vertex origins do not fit in memory",
-                    surface.num_vertices()
-                ))
-            })?;
-        origin.extend((0..surface.num_vertices() as u32).map(|b| {
+        origin.try_reserve_exact(n).map_err(|_| {
+            Error::too_large(format!("{n} boundary vertex origins do not fit in memory"))
+        })?;
+        origin.extend((0..n as u32).map(|b| {
             let v = volume_vertex[surface.vertex_origin(b) as usize];
             self.vertex_origin(v)
         }));
-        Ok(origin)
+        Ok(BoundaryMesh { surface, origin })
+    }
+}
+
+/// The boundary surface of a volume mesh, with the input vertex of the volume for each of
+/// its vertices.
+pub struct BoundaryMesh {
+    pub surface: Che,
+    pub origin: Vec<u32>,
+}
+
+impl BoundaryMesh {
+    /// The surface as a [`Mesh`] to write, its origins those of the volume; `path` names
+    /// it in the error for a mesh without positions.
+    pub fn mesh(&self, path: &Path) -> Result<Mesh<'_>> {
+        Ok(Mesh {
+            origin: Some(&self.origin),
+            ..self.surface.to_write(path)?
+        })
     }
 }

@@ -26,6 +26,8 @@ mod tetgen;
 mod text;
 mod vtk;
 
+pub use built::BoundaryMesh;
+
 use super::{Format, MeshData};
 use crate::error::{Error, Result};
 use crate::util::origin::origin;

@@ -1,6 +1,6 @@
-//! Shared by the ASCII readers and writers of tetgen, medit, gmsh and vtk: a zero-copy token
-//! reader that knows its line and reads counts, points and ids; the lines every writer (OFF's
-//! too) writes; and the readers' test helpers (error tables, round trips, robustness).
+//! Shared by the ASCII readers of tetgen, medit, gmsh and vtk: a zero-copy token reader that
+//! knows its line and reads counts, points and ids; and the readers' test helpers (error
+//! tables, robustness). The writers' lines are in `write/text.rs`.
 
 #[cfg(test)]
 use super::MeshData;

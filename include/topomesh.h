@@ -31,6 +31,17 @@
 #include "topomesh_inline.h"
 
 /**
+ * A `*_write` flag: PLY in binary little-endian instead of ASCII.
+ */
+#define TOPOMESH_WRITE_BINARY 1
+
+/**
+ * A `*_write` flag: leave out the input vertex of each vertex, which is otherwise written
+ * where the format has a vertex attribute (PLY, VTK, Medit, TetGen).
+ */
+#define TOPOMESH_WRITE_NO_ORIGIN 2
+
+/**
  * What a call did. `TOPOMESH_STATUS_OK` (0) is success; every other value is an error
  * whose detail (file, line, element id, sizes) `topomesh_last_error` gives.
  */
@@ -898,6 +909,23 @@ topomesh_status che_mesh_memory(const struct che_mesh *m, struct che_memory *out
  */
 topomesh_status che_mesh_validate(const struct che_mesh *m);
 
+/* ---- CHE: writing files ---- */
+
+/**
+ * Writes the built surface to `path`, the format from its extension: .off .obj .ply
+ * .stl (binary, `float` positions) .vtk .mesh .msh (4.1). What is written is the structure:
+ * the oriented triangles (degenerate ones dropped) over its vertices, the copies made by
+ * splitting non-manifold vertices as vertices of their own; where the format has a vertex
+ * attribute (PLY `origin`, VTK `POINT_DATA origin`, the Medit vertex reference) the input
+ * vertex each comes from, unless `TOPOMESH_WRITE_NO_ORIGIN`. `flags` is 0 or an OR of
+ * `TOPOMESH_WRITE_BINARY` (binary PLY) and `TOPOMESH_WRITE_NO_ORIGIN`; another bit gives
+ * `TOPOMESH_STATUS_INVALID_INPUT`. The file is written whole or not at all (a temporary
+ * file renamed over it); a failure to write gives `TOPOMESH_STATUS_IO` naming the path,
+ * a mesh built without positions, an unknown extension or a format that cannot hold a
+ * surface (.node) `TOPOMESH_STATUS_INVALID_INPUT`.
+ */
+topomesh_status che_mesh_write(const struct che_mesh *m, const char *path, uint32_t flags);
+
 /* ---- CHE: zero-copy views of the structure's arrays ---- */
 
 /**
@@ -1511,6 +1539,30 @@ topomesh_status chf_mesh_memory(const struct chf_mesh *m, struct chf_memory *out
  * wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
  */
 topomesh_status chf_mesh_validate(const struct chf_mesh *m);
+
+/* ---- CHF: writing files ---- */
+
+/**
+ * Writes the built volume to `path`, the format from its extension: .mesh .msh (4.1)
+ * .vtk, or .node/.ele (TetGen: both files, beside each other, whichever is named). What is
+ * written is the structure: the oriented tetrahedra (degenerate ones dropped) over its
+ * vertices, the copies made by splitting non-manifold vertices as vertices of their own;
+ * where the format has a vertex attribute (VTK `POINT_DATA origin`, the Medit vertex
+ * reference, a TetGen point attribute) the input vertex each comes from, unless
+ * `TOPOMESH_WRITE_NO_ORIGIN`. `flags` is 0 or `TOPOMESH_WRITE_NO_ORIGIN`
+ * (`TOPOMESH_WRITE_BINARY` is refused: no volume format here is binary); another bit gives
+ * `TOPOMESH_STATUS_INVALID_INPUT`. Written whole or not at all; a failure to write gives
+ * `TOPOMESH_STATUS_IO` naming the path, a mesh built without positions, an unknown
+ * extension or a surface format `TOPOMESH_STATUS_INVALID_INPUT`.
+ */
+topomesh_status chf_mesh_write(const struct chf_mesh *m, const char *path, uint32_t flags);
+
+/**
+ * Writes the boundary surface (`chf_mesh_boundary`, built at any level) to `path` as a
+ * surface file, as `che_mesh_write` does; the origin of each of its vertices is the input
+ * vertex of the volume mesh it lies on. The same flags and statuses as `che_mesh_write`.
+ */
+topomesh_status chf_mesh_write_boundary(const struct chf_mesh *m, const char *path, uint32_t flags);
 
 /* ---- CHF: zero-copy views of the structure's arrays ---- */
 

@@ -246,6 +246,14 @@ public:
     /// violation (element and rule). For tests and for data from untrusted code.
     void validate() const;
 
+    // Writing.
+    /// Writes the built surface to `path`, the format from its extension (.off .obj .ply
+    /// .stl .vtk .mesh .msh): its oriented triangles, split copies as vertices of their own,
+    /// and the input vertex of each where the format has an attribute. `flags`: 0 or an OR
+    /// of TOPOMESH_WRITE_BINARY and TOPOMESH_WRITE_NO_ORIGIN. Whole or not at all; throws
+    /// Error on failure.
+    void write(const std::string &path, std::uint32_t flags = 0) const;
+
     // Old names, kept for one release.
     [[deprecated("use vertex_vertices")]] Ids<VertexId> vertices_around(VertexId v) const {
         return vertex_vertices(v);
@@ -399,6 +407,14 @@ public:
     /// Checks every invariant of the structure at its level; throws Error naming the first
     /// violation (element and rule). For tests and for data from untrusted code.
     void validate() const;
+
+    // Writing.
+    /// Writes the built volume to `path`, the format from its extension (.mesh .msh .vtk
+    /// .node/.ele), as Surface::write does. Throws Error on failure.
+    void write(const std::string &path, std::uint32_t flags = 0) const;
+    /// Writes boundary() to `path` as a surface file, as Surface::write does; the origins
+    /// are the input vertices of the volume. Throws Error on failure.
+    void write_boundary(const std::string &path, std::uint32_t flags = 0) const;
 
 private:
     chf_mesh *m_ = nullptr;

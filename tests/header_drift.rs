@@ -45,6 +45,7 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHE: summary, build report, memory and validation", &[
         "che_mesh_summary", "che_mesh_report*", "che_mesh_memory", "che_mesh_validate",
     ]),
+    ("CHE: writing files", &["che_mesh_write"]),
     ("CHE: zero-copy views of the structure's arrays", &["che_mesh_*"]),
     ("CHF: create, load, build levels and free", &[
         "chf_build_options_default", "chf_mesh_from_*", "chf_mesh_load*", "chf_mesh_free",
@@ -70,6 +71,7 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHF: summary, build report, memory and validation", &[
         "chf_mesh_summary", "chf_mesh_report*", "chf_mesh_memory", "chf_mesh_validate",
     ]),
+    ("CHF: writing files", &["chf_mesh_write", "chf_mesh_write_boundary"]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),
     ("Status, errors and version", &["topomesh_*"]),
 ];

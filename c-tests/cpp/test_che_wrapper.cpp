@@ -1,6 +1,7 @@
 // The C++17 wrapper: RAII, moves, strong ids, ranges, spans, CSR, errors.
 #include "check.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstring>
@@ -382,6 +383,19 @@ static void test_views_csr_summary() {
     CHECK(version() == topomesh_version());
 }
 
+static void test_write() {
+    Surface s = Surface::from_triangles(STRIP, 4, STRIP_POS);
+    s.write("che-wrapper-write.ply", TOPOMESH_WRITE_BINARY);
+    Surface back = Surface::load("che-wrapper-write.ply");
+    CHECK(back.num_vertices() == 4 && back.num_triangles() == 2);
+    CHECK(std::equal(back.half_edge_vertices().begin(), back.half_edge_vertices().end(),
+                     s.half_edge_vertices().begin()));
+    CHECK_THROWS(s.write("che-wrapper-write.off", 64), TOPOMESH_STATUS_INVALID_INPUT,
+                 "unknown bits");
+    CHECK_THROWS(s.write("no-such-folder/s.off"), TOPOMESH_STATUS_IO, "no-such-folder/s.off");
+    CHECK(!std::ifstream("che-wrapper-write.off").good());
+}
+
 int main() {
     return run_tests("test_che_wrapper", [] {
         test_build_and_counts();
@@ -392,5 +406,6 @@ int main() {
         test_star_range_iterators();
         test_deprecated_names();
         test_ids();
+        test_write();
     });
 }

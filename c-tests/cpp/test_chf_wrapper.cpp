@@ -211,11 +211,25 @@ static void test_views_csr_boundary_summary() {
     CHECK(split.num_boundary_components() == 2);
 }
 
+static void test_write() {
+    Volume v = Volume::from_tetrahedra(PAIR, 5, PAIR_POS);
+    v.write("chf-wrapper-write.msh");
+    Volume back = Volume::load("chf-wrapper-write.msh");
+    CHECK(back.num_vertices() == 5 && back.num_tetrahedra() == 2 && back.num_faces() == 7);
+    v.write_boundary("chf-wrapper-skin.obj", TOPOMESH_WRITE_NO_ORIGIN);
+    Surface skin = Surface::load("chf-wrapper-skin.obj");
+    CHECK(skin.num_vertices() == 5 && skin.num_triangles() == 6 && skin.num_boundary_curves() == 0);
+    CHECK_THROWS(v.write("chf-wrapper-write.off"), TOPOMESH_STATUS_INVALID_INPUT, "surfaces only");
+    CHECK_THROWS(v.write_boundary("chf-wrapper-skin.node"), TOPOMESH_STATUS_INVALID_INPUT,
+                 "tetrahedra only");
+}
+
 int main() {
     return run_tests("test_chf_wrapper", [] {
         test_build_and_counts();
         test_moves();
         test_relations();
         test_views_csr_boundary_summary();
+        test_write();
     });
 }

@@ -15,7 +15,7 @@ mod progress;
 mod report;
 
 use clap::{Parser, Subcommand};
-use exit::{Failure, exit_code_table};
+use exit::exit_code_table;
 use output::Verbosity;
 use std::process::ExitCode;
 
@@ -61,10 +61,12 @@ enum Command {
         exit_code_table!()
     ))]
     Check(check::CheckOptions),
-    /// Convert between formats (read: off obj ply stl node/ele mesh msh vtk; write: off mesh vtk).
+    /// Write the built (repaired) mesh in another format (off obj ply stl node/ele mesh msh vtk).
     #[command(after_help = concat!(
         "Examples:
-  topomesh convert scan.ply scan.off
+  topomesh convert scan.ply scan.off     the repaired mesh
+  topomesh convert --as-read a.stl a.off the input as read
+  topomesh convert part.node - --format vtk  to standard output
   topomesh convert part.node part.vtk    a TetGen pair (part.node and part.ele)\n\n",
         exit_code_table!()
     ))]
@@ -95,7 +97,7 @@ fn main() -> ExitCode {
     exit::code(match command {
         Command::Info(options) => info::run(&options),
         Command::Check(options) => check::run(&options),
-        Command::Convert(options) => convert::run(&options).map_err(Failure::from),
+        Command::Convert(options) => convert::run(&options),
         Command::Bench(options) => bench::run(&options),
     })
 }

@@ -3,6 +3,8 @@
 mod common;
 
 use common::{temp, text, topomesh};
+use std::path::PathBuf;
+use std::process::Command;
 
 #[test]
 fn info_on_the_embedded_torus() {
@@ -153,4 +155,118 @@ fn volumes_info_check_and_convert() {
     );
     let out = topomesh(&["info", "--strict", three.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(1));
+}
+
+/// `convert` on a surface with a flipped triangle, a degenerate one and a pinched vertex:
+/// the built mesh by default, the input with `--as-read`.
+#[test]
+fn convert_writes_the_built_mesh_or_the_input() {
+    // A tetrahedron surface with its last triangle flipped, a degenerate triangle, and two
+    // triangles meeting the tetrahedron at vertex 0 only (two copies of 0 once built).
+    let src = temp(
+        "flipped.off",
+        "OFF\n8 7 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n-1 0 0\n-1 -1 0\n-2 0 1\n-2 1 1\n\
+         3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n3 0 0 1\n3 0 4 5\n3 0 6 7\n",
+    );
+    let built = src.with_file_name("built.ply");
+    let out = topomesh(&["convert", src.to_str().unwrap(), built.to_str().unwrap()]);
+    let (stdout, stderr) = text(&out);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stdout.ends_with("built.ply: 10 vertices, 6 triangles, 0 tetrahedra\n"),
+        "{stdout}"
+    );
+    let info = |path: &PathBuf| {
+        let out = topomesh(&["info", "--json", path.to_str().unwrap()]);
+        serde_json::from_slice::<serde_json::Value>(&out.stdout).unwrap()
+    };
+    let json = info(&built);
+    assert_eq!(json["report"]["flipped_triangles"], 0, "{json}");
+    assert_eq!(json["report"]["split_vertices"], 0, "{json}");
+    assert_eq!(json["report"]["dropped_degenerate"], 0, "{json}");
+    assert!(
+        std::fs::read_to_string(&built)
+            .unwrap()
+            .contains("property uint origin")
+    );
+    let soup = src.with_file_name("soup.off");
+    let out = topomesh(&[
+        "convert",
+        "--as-read",
+        src.to_str().unwrap(),
+        soup.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", text(&out).1);
+    assert!(
+        text(&out)
+            .0
+            .ends_with("soup.off: 8 vertices, 7 triangles, 0 tetrahedra\n")
+    );
+    let json = info(&soup);
+    assert_eq!(json["report"]["dropped_degenerate"], 1, "{json}");
+    assert_eq!(json["report"]["split_vertices"], 1, "{json}");
+    // A surface has no boundary surface to write.
+    let out = topomesh(&[
+        "convert",
+        "--boundary",
+        src.to_str().unwrap(),
+        soup.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(
+        text(&out).1.contains("--boundary needs a volume mesh"),
+        "{}",
+        text(&out).1
+    );
+}
+
+#[test]
+fn convert_writes_a_boundary_and_uses_standard_streams() {
+    let mesh = temp(
+        "pair.mesh",
+        "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n\
+         Tetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nEnd\n",
+    );
+    let skin = mesh.with_file_name("skin.obj");
+    let out = topomesh(&[
+        "convert",
+        "--boundary",
+        mesh.to_str().unwrap(),
+        skin.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", text(&out).1);
+    assert!(
+        text(&out)
+            .0
+            .ends_with("skin.obj: 5 vertices, 6 triangles, 0 tetrahedra\n")
+    );
+    let out = topomesh(&["check", skin.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", text(&out).0);
+    // Standard input to standard output: the summary goes to stderr, the mesh to stdout.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_topomesh"))
+        .args(["convert", "-", "-", "--from", "mesh", "--format", "vtk"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let input = std::fs::read(&mesh).unwrap();
+    std::io::Write::write_all(&mut child.stdin.take().unwrap(), &input).unwrap();
+    let out = child.wait_with_output().unwrap();
+    let (stdout, stderr) = text(&out);
+    assert!(out.status.success(), "{stderr}");
+    assert_eq!(
+        stderr,
+        "<stdin> -> <stdout>: 5 vertices, 0 triangles, 2 tetrahedra\n"
+    );
+    assert!(
+        stdout.starts_with("# vtk DataFile Version 3.0\n"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("CELL_TYPES 2\n10\n10\n"), "{stdout}");
+    // A stream has no extension: without --format it is refused.
+    let out = topomesh(&["convert", mesh.to_str().unwrap(), "-"]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(text(&out).1.contains("--format EXT"), "{}", text(&out).1);
+    assert!(out.stdout.is_empty());
 }

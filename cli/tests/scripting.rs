@@ -129,9 +129,9 @@ fn unreadable_or_invalid_input_exits_3_for_every_subcommand() {
             assert!(stderr.contains(input), "{args:?}: {stderr}");
         }
     }
-    // An output format that cannot be written is invalid input too.
+    // An output format that does not exist is invalid input too.
     let torus = torus_file();
-    assert_eq!(code(&["convert", &torus, "/tmp/x.ply"]), Some(3));
+    assert_eq!(code(&["convert", &torus, "/tmp/x.xyz"]), Some(3));
 }
 
 #[test]

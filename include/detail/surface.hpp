@@ -259,6 +259,10 @@ inline Csr Surface::triangle_triangles_csr() const {
 
 inline void Surface::validate() const { detail::check(che_mesh_validate(m_)); }
 
+inline void Surface::write(const std::string &path, std::uint32_t flags) const {
+    detail::check(che_mesh_write(m_, path.c_str(), flags));
+}
+
 inline che_summary Surface::raw_summary() const {
     che_summary s{};
     detail::check(che_mesh_summary(m_, &s));

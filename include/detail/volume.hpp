@@ -205,6 +205,13 @@ TOPOMESH_VOLUME_CSR(tetrahedron_tetrahedra)
 
 inline void Volume::validate() const { detail::check(chf_mesh_validate(m_)); }
 
+inline void Volume::write(const std::string &path, std::uint32_t flags) const {
+    detail::check(chf_mesh_write(m_, path.c_str(), flags));
+}
+inline void Volume::write_boundary(const std::string &path, std::uint32_t flags) const {
+    detail::check(chf_mesh_write_boundary(m_, path.c_str(), flags));
+}
+
 inline chf_summary Volume::raw_summary() const {
     chf_summary s{};
     detail::check(chf_mesh_summary(m_, &s));

@@ -137,6 +137,23 @@ pub(crate) fn level_arg(level: u32) -> Result<u8> {
     }
 }
 
+/// The `TOPOMESH_WRITE_*` flags as write options, or INVALID_INPUT naming the unknown
+/// bits.
+pub(crate) fn write_flags_arg(flags: u32) -> Result<crate::io::WriteOptions> {
+    use super::{TOPOMESH_WRITE_BINARY, TOPOMESH_WRITE_NO_ORIGIN};
+    let unknown = flags & !(TOPOMESH_WRITE_BINARY | TOPOMESH_WRITE_NO_ORIGIN);
+    if unknown != 0 {
+        return Err(Error::invalid(format!(
+            "flags {flags:#x}: unknown bits {unknown:#x} (known: TOPOMESH_WRITE_BINARY, TOPOMESH_WRITE_NO_ORIGIN)"
+        )));
+    }
+    Ok(crate::io::WriteOptions {
+        format: None,
+        binary: flags & TOPOMESH_WRITE_BINARY != 0,
+        no_origin: flags & TOPOMESH_WRITE_NO_ORIGIN != 0,
+    })
+}
+
 /// The examples of report kind `kind` (`all` in the C enum's order), or OUT_OF_RANGE.
 pub(crate) fn report_kind<const N: usize>(
     all: [Vec<u32>; N], kind: u32, name: &str,

@@ -35,3 +35,8 @@ pub use status::Status;
 
 /// `TOPOMESH_NONE` in C: no element (boundary, none, invalid).
 pub const TOPOMESH_NONE: u32 = crate::NONE;
+/// A `*_write` flag: PLY in binary little-endian instead of ASCII.
+pub const TOPOMESH_WRITE_BINARY: u32 = 1;
+/// A `*_write` flag: leave out the input vertex of each vertex, which is otherwise written
+/// where the format has a vertex attribute (PLY, VTK, Medit, TetGen).
+pub const TOPOMESH_WRITE_NO_ORIGIN: u32 = 2;

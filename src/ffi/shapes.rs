@@ -156,6 +156,25 @@ macro_rules! load {
     };
 }
 
+/// A file written from a handle, with `TOPOMESH_WRITE_*` flags:
+/// `save!(m, path, flags => |c, path, options| c.write_with(path, &options))`.
+macro_rules! save {
+    ($m:ident, $path:ident, $flags:ident => |$c:ident, $p:ident, $o:ident| $call:expr) => {
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or a live handle and a NUL-terminated
+            // path.
+            let ($c, $p) = unsafe {
+                (
+                    $crate::ffi::boundary::core($m)?,
+                    $crate::ffi::boundary::path_arg($path, "path")?,
+                )
+            };
+            let $o = $crate::ffi::boundary::write_flags_arg($flags)?;
+            $call
+        })
+    };
+}
+
 /// Raises or lowers the level of a handle in place (exclusive access).
 macro_rules! relevel {
     ($m:ident, $level:ident) => {
@@ -223,4 +242,6 @@ macro_rules! mirror {
     };
 }
 
-pub(crate) use {build, count, csr, handle, ids, load, make, mirror, relevel, status, value, view};
+pub(crate) use {
+    build, count, csr, handle, ids, load, make, mirror, relevel, save, status, value, view,
+};

@@ -5,7 +5,6 @@ use super::MeshData;
 use super::text::{self, Lexer};
 use crate::error::Result;
 use glam::DVec3;
-use std::io::Write;
 use std::path::Path;
 
 /// Tokens per entry of the sections that are skipped, for a mesh of dimension `dim`
@@ -209,34 +208,11 @@ pub fn read(path: &Path) -> Result<MeshData> {
     parse(&text, &path.display().to_string())
 }
 
-/// Writes `data` as Medit ASCII (refs 0), coordinates in full precision.
-pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()> {
-    writeln!(w, "MeshVersionFormatted 2\n\nDimension 3\n")?;
-    writeln!(w, "Vertices\n{}", data.positions.len())?;
-    text::write_points(w, &data.positions, " 0")?;
-    write_section(w, "Triangles", &data.triangles)?;
-    write_section(w, "Tetrahedra", &data.tetrahedra)?;
-    writeln!(w, "\nEnd")
-}
-
-/// A section of elements (1-based ids, ref 0), if there are any.
-fn write_section<const K: usize>(
-    w: &mut dyn Write, keyword: &str, elements: &[[u32; K]],
-) -> std::io::Result<()> {
-    if elements.is_empty() {
-        return Ok(());
-    }
-    writeln!(w, "\n{keyword}\n{}", elements.len())?;
-    text::write_elements(w, elements, ("", 1, " 0"))
-}
-
 #[cfg(test)]
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::{
-        assert_errors, assert_round_trip, assert_write_refused, awkward_mesh, utf8,
-    };
+    use crate::io::text::{assert_errors, utf8};
 
     pub(in crate::io) const CUBE_CORNER: &str = "\
 MeshVersionFormatted 2
@@ -301,30 +277,5 @@ End
             |b| parse(utf8(b), "m.mesh"),
             [(t, Parse, "m.mesh:31: vertex id 6 out of range 1..=5")],
         );
-    }
-
-    #[test]
-    fn round_trip() {
-        let data = awkward_mesh();
-        assert_round_trip("mesh", &data);
-        let surface = MeshData {
-            tetrahedra: vec![],
-            ..data
-        };
-        let mut buf = Vec::new();
-        write_to(&mut buf, &surface).unwrap();
-        let s = String::from_utf8(buf).unwrap();
-        assert!(!s.contains("Tetrahedra"));
-        assert_eq!(parse(&s, "s.mesh").unwrap(), surface);
-    }
-
-    #[test]
-    fn write_rejects_bad_ids() {
-        let data = MeshData {
-            positions: vec![DVec3::ZERO; 3],
-            triangles: vec![[0, 1, 3]],
-            tetrahedra: vec![],
-        };
-        assert_write_refused("mesh", &data, "triangle 0 names vertex 3");
     }
 }

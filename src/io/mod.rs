@@ -13,6 +13,9 @@ mod tests;
 mod tetgen;
 mod text;
 mod vtk;
+pub mod write;
+
+pub use write::{Mesh, WriteOptions, write, write_mesh, write_to};
 
 use crate::error::{Error, Result};
 use glam::DVec3;
@@ -95,19 +98,6 @@ pub fn read(path: &Path) -> Result<MeshData> {
         Format::Medit => medit::read(path),
         Format::Gmsh => gmsh::read(path),
         Format::Vtk => vtk::read(path),
-    }
-}
-
-/// Writes a mesh file, the format chosen by its extension.
-pub fn write(path: &Path, data: &MeshData) -> Result<()> {
-    match Format::from_path(path)? {
-        Format::Off => off::write(path, data),
-        Format::Medit => text::write_checked(path, data, medit::write_to),
-        Format::Vtk => text::write_checked(path, data, vtk::write_to),
-        other => Err(Error::invalid(format!(
-            "{}: writing {other:?} is not supported (write .off, .mesh or .vtk)",
-            path.display()
-        ))),
     }
 }
 

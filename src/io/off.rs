@@ -18,64 +18,12 @@
 use super::MeshData;
 use crate::error::{Error, Result};
 use glam::DVec3;
-use std::io::Write;
 use std::path::Path;
 
 /// Reads an OFF file.
 pub fn read(path: &Path) -> Result<MeshData> {
     let bytes = super::read_bytes(path)?;
     parse(&bytes, &path.display().to_string())
-}
-
-/// Writes positions and triangles as an ASCII OFF file (`OFF`, `nv nf 0`, vertices, `3 a b c`).
-/// Coordinates are written with the shortest text that reads back to the same `f64`.
-pub fn write(path: &Path, data: &MeshData) -> Result<()> {
-    let name = path.display().to_string();
-    check_writable(data, &name)?;
-    let io_err = |e: std::io::Error| Error::io(format!("{name}: {e}"));
-    let file = std::fs::File::create(path).map_err(io_err)?;
-    let mut out = std::io::BufWriter::with_capacity(1 << 16, file);
-    write_to(&mut out, data, &name)?;
-    out.flush().map_err(io_err)
-}
-
-/// Writes `data` as OFF to any writer; `name` is used in error messages.
-pub(crate) fn write_to<W: Write>(out: &mut W, data: &MeshData, name: &str) -> Result<()> {
-    check_writable(data, name)?;
-    let io_err = |e: std::io::Error| Error::io(format!("{name}: {e}"));
-    writeln!(
-        out,
-        "OFF\n{} {} 0",
-        data.positions.len(),
-        data.triangles.len()
-    )
-    .map_err(io_err)?;
-    super::text::write_points(out, &data.positions, "").map_err(io_err)?;
-    super::text::write_elements(out, &data.triangles, ("3 ", 0, "")).map_err(io_err)
-}
-
-fn check_writable(data: &MeshData, name: &str) -> Result<()> {
-    if data.positions.is_empty() {
-        return Err(Error::invalid(format!("{name}: no vertices to write")));
-    }
-    if !data.tetrahedra.is_empty() {
-        return Err(Error::invalid(format!(
-            "{name}: OFF holds surfaces only, but the mesh has {} tetrahedra (write .mesh or .vtk)",
-            data.tetrahedra.len()
-        )));
-    }
-    let nv = data.positions.len();
-    if let Some((f, t)) = data
-        .triangles
-        .iter()
-        .enumerate()
-        .find(|(_, t)| t.iter().any(|&v| v as usize >= nv))
-    {
-        return Err(Error::invalid(format!(
-            "{name}: triangle {f} {t:?} refers to a vertex >= {nv} (the number of vertices)"
-        )));
-    }
-    Ok(())
 }
 
 /// Parses OFF text from memory; `name` (usually the file name) prefixes every error.
@@ -342,7 +290,7 @@ impl<'a> Tokens<'a> {
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind;
-    use crate::io::text::{assert_round_trip, awkward_mesh, parse_error};
+    use crate::io::text::parse_error;
 
     fn p(bytes: &[u8]) -> Result<MeshData> {
         parse(bytes, "t.off")
@@ -447,40 +395,6 @@ pub(super) mod tests {
         let m = p(b"OFF\n2 0 0\n0 0 0\n1 1 1\n").unwrap();
         assert_eq!(m.positions.len(), 2);
         assert!(m.triangles.is_empty());
-    }
-
-    #[test]
-    fn write_then_read_round_trips_exactly() {
-        let data = MeshData {
-            tetrahedra: vec![],
-            ..awkward_mesh()
-        };
-        let mut buf = Vec::new();
-        write_to(&mut buf, &data, "mem").unwrap();
-        assert!(buf.starts_with(b"OFF\n4 2 0\n"));
-        assert_eq!(parse(&buf, "mem").unwrap(), data);
-        assert_round_trip("off", &data);
-    }
-
-    #[test]
-    fn writer_refuses_bad_meshes() {
-        let mut buf = Vec::new();
-        let e = write_to(&mut buf, &MeshData::default(), "w.off").unwrap_err();
-        assert!(e.message.starts_with("w.off: no vertices"), "{}", e.message);
-        let data = MeshData {
-            positions: vec![DVec3::ZERO; 3],
-            triangles: vec![[0, 1, 3]],
-            tetrahedra: vec![],
-        };
-        let e = write_to(&mut buf, &data, "w.off").unwrap_err();
-        assert!(e.message.contains("triangle 0"), "{}", e.message);
-        let data = MeshData {
-            positions: vec![DVec3::ZERO; 4],
-            triangles: vec![],
-            tetrahedra: vec![[0, 1, 2, 3]],
-        };
-        assert!(write_to(&mut buf, &data, "w.off").is_err());
-        assert!(buf.is_empty());
     }
 
     #[test]

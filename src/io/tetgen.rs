@@ -74,7 +74,7 @@ pub(crate) fn parse(node: &str, node_name: &str, ele: &str, ele_name: &str) -> R
 }
 
 /// The `.node` and `.ele` paths next to `path` (extension case kept: `.NODE` -> `.ELE`).
-fn sibling_paths(path: &Path) -> (PathBuf, PathBuf) {
+pub(super) fn sibling_paths(path: &Path) -> (PathBuf, PathBuf) {
     let upper = path
         .extension()
         .and_then(|e| e.to_str())

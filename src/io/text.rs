@@ -1,12 +1,12 @@
-//! Shared by the ASCII readers and writers of tetgen, medit, gmsh and vtk: a zero-copy token
-//! reader that knows its line and reads counts, points and ids; the lines every writer (OFF's
-//! too) writes; and the readers' test helpers (error tables, round trips, robustness).
+//! Shared by the ASCII readers of tetgen, medit, gmsh and vtk: a zero-copy token reader that
+//! knows its line and reads counts, points and ids; and the readers' test helpers (error
+//! tables, robustness). The writers' lines are in `write/text.rs`.
 
+#[cfg(test)]
 use super::MeshData;
 use crate::error::{Error, Result};
 use glam::DVec3;
 use std::fmt::Display;
-use std::io::Write;
 use std::path::Path;
 
 /// Longest piece of a bad token quoted in an error message.
@@ -264,73 +264,6 @@ pub(in crate::io) fn read_text(path: &Path) -> Result<String> {
     })
 }
 
-/// Errors if a triangle or tetrahedron names a point that does not exist.
-fn check_ids(path: &Path, data: &MeshData) -> Result<()> {
-    let n = data.positions.len();
-    let bad = |kind: &str, i: usize, id: u32| {
-        Error::out_of_range(format!(
-            "{}: {kind} {i} names vertex {id}, but there are {n} vertices",
-            path.display()
-        ))
-    };
-    for (i, t) in data.triangles.iter().enumerate() {
-        if let Some(&id) = t.iter().find(|&&v| v as usize >= n) {
-            return Err(bad("triangle", i, id));
-        }
-    }
-    for (i, t) in data.tetrahedra.iter().enumerate() {
-        if let Some(&id) = t.iter().find(|&&v| v as usize >= n) {
-            return Err(bad("tetrahedron", i, id));
-        }
-    }
-    Ok(())
-}
-
-/// Writes one line per point, `x y z` and then `suffix`, in the shortest text that reads back
-/// to the same `f64`s.
-pub(in crate::io) fn write_points(
-    w: &mut dyn Write, points: &[DVec3], suffix: &str,
-) -> std::io::Result<()> {
-    for p in points {
-        writeln!(w, "{} {} {}{suffix}", p.x, p.y, p.z)?;
-    }
-    Ok(())
-}
-
-/// Writes one line per element: `prefix`, its ids plus `add` (1 for 1-based formats), then
-/// `suffix`.
-pub(in crate::io) fn write_elements<const K: usize>(
-    w: &mut dyn Write, elements: &[[u32; K]], (prefix, add, suffix): (&str, u32, &str),
-) -> std::io::Result<()> {
-    for e in elements {
-        w.write_all(prefix.as_bytes())?;
-        for (i, id) in e.iter().enumerate() {
-            let sep = if i == 0 { "" } else { " " };
-            write!(w, "{sep}{}", id + add)?;
-        }
-        writeln!(w, "{suffix}")?;
-    }
-    Ok(())
-}
-
-/// Writes `data` to `path` with a format's `write_to`, once every element is checked to name
-/// an existing point.
-pub(in crate::io) fn write_checked(
-    path: &Path, data: &MeshData, write_to: fn(&mut dyn Write, &MeshData) -> std::io::Result<()>,
-) -> Result<()> {
-    check_ids(path, data)?;
-    write_file(path, |w| write_to(w, data))
-}
-
-/// Creates `path` and writes it through a buffer with `body`, naming the file in errors.
-fn write_file(path: &Path, body: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<()> {
-    let io = |e: std::io::Error| Error::io(format!("{}: {e}", path.display()));
-    let file = std::fs::File::create(path).map_err(io)?;
-    let mut w = std::io::BufWriter::new(file);
-    body(&mut w).map_err(io)?;
-    w.flush().map_err(io)
-}
-
 /// A path under the temp dir, unique to this process and call.
 #[cfg(test)]
 pub(in crate::io) fn temp_path(tag: &str, ext: &str) -> std::path::PathBuf {
@@ -351,42 +284,6 @@ pub(in crate::io) fn read_temp(ext: &str, bytes: impl AsRef<[u8]>) -> Result<Mes
     let read = crate::io::read(&path);
     let _ = std::fs::remove_file(&path);
     read
-}
-
-/// Writes `data` to a temporary `.ext` file and reads it back: the same mesh.
-#[cfg(test)]
-pub(in crate::io) fn assert_round_trip(ext: &str, data: &MeshData) {
-    let path = temp_path("round-trip", ext);
-    let written = crate::io::write(&path, data);
-    let back = crate::io::read(&path);
-    let _ = std::fs::remove_file(&path);
-    written.unwrap();
-    assert_eq!(&back.unwrap(), data);
-}
-
-/// A mesh whose coordinates are hard to print exactly (thirds, sums that round, -0.0, tiny and
-/// huge magnitudes): writers must read back to the same `f64`s.
-#[cfg(test)]
-pub(in crate::io) fn awkward_mesh() -> MeshData {
-    MeshData {
-        positions: vec![
-            DVec3::new(0.1, -2.5e-300, 1.0 / 3.0),
-            DVec3::new(1e20, 0.0, -0.0),
-            DVec3::new(f64::MIN_POSITIVE, 7.0, 0.1 + 0.2),
-            DVec3::new(std::f64::consts::PI, 12345.678901234567, -2.5e-7),
-        ],
-        triangles: vec![[0, 1, 2], [3, 2, 1]],
-        tetrahedra: vec![[0, 1, 2, 3], [3, 2, 1, 0]],
-    }
-}
-
-/// Writing `data` as a `.ext` file fails with a message holding `words`, and leaves no file.
-#[cfg(test)]
-pub(in crate::io) fn assert_write_refused(ext: &str, data: &MeshData, words: &str) {
-    let path = temp_path("refused", ext);
-    let e = crate::io::write(&path, data).unwrap_err();
-    assert!(!path.exists());
-    assert!(e.message.contains(words), "{}", e.message);
 }
 
 /// Test input as text.

@@ -6,7 +6,6 @@
 use super::MeshData;
 use super::text::{self, Lexer};
 use crate::error::Result;
-use std::io::Write;
 use std::path::Path;
 
 /// A cell array: cell `i` is `conn[offsets[i]..offsets[i + 1]]`.
@@ -330,37 +329,11 @@ pub fn read(path: &Path) -> Result<MeshData> {
     parse(&text, &path.display().to_string())
 }
 
-/// Writes `data` as a legacy 3.0 ASCII unstructured grid (triangles: type 5, tetrahedra: 10).
-pub(crate) fn write_to(w: &mut dyn Write, data: &MeshData) -> std::io::Result<()> {
-    writeln!(
-        w,
-        "# vtk DataFile Version 3.0\ntopomesh\nASCII\nDATASET UNSTRUCTURED_GRID"
-    )?;
-    writeln!(w, "POINTS {} double", data.positions.len())?;
-    text::write_points(w, &data.positions, "")?;
-    let (nt, nk) = (data.triangles.len(), data.tetrahedra.len());
-    if nt + nk > 0 {
-        writeln!(w, "CELLS {} {}", nt + nk, 4 * nt + 5 * nk)?;
-        text::write_elements(w, &data.triangles, ("3 ", 0, ""))?;
-        text::write_elements(w, &data.tetrahedra, ("4 ", 0, ""))?;
-        writeln!(w, "CELL_TYPES {}", nt + nk)?;
-        for _ in 0..nt {
-            writeln!(w, "5")?;
-        }
-        for _ in 0..nk {
-            writeln!(w, "10")?;
-        }
-    }
-    Ok(())
-}
-
 #[cfg(test)]
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::{
-        assert_errors, assert_round_trip, assert_write_refused, awkward_mesh, utf8,
-    };
+    use crate::io::text::{assert_errors, utf8};
     use glam::DVec3;
 
     /// A tet, a triangle, a quadratic tet and triangle, and a vertex, a line and a hex to skip;
@@ -477,28 +450,6 @@ TRIANGLE_STRIPS 1 5
             d.triangles,
             vec![[0, 1, 2], [0, 2, 3], [1, 4, 5], [0, 1, 3], [3, 1, 2]]
         );
-    }
-
-    #[test]
-    fn round_trip() {
-        assert_round_trip("vtk", &awkward_mesh());
-        let empty = MeshData::default();
-        let mut buf = Vec::new();
-        write_to(&mut buf, &empty).unwrap();
-        assert_eq!(
-            parse(std::str::from_utf8(&buf).unwrap(), "e.vtk").unwrap(),
-            empty
-        );
-    }
-
-    #[test]
-    fn write_rejects_bad_ids() {
-        let data = MeshData {
-            positions: vec![DVec3::ZERO; 4],
-            triangles: vec![],
-            tetrahedra: vec![[0, 1, 2, 4]],
-        };
-        assert_write_refused("vtk", &data, "tetrahedron 0 names vertex 4");
     }
 
     #[test]

@@ -9,8 +9,9 @@ mod star;
 #[cfg(test)]
 mod tests;
 mod views;
+mod write;
 
-pub use {build::*, csr::*, info::*, relations::*, star::*, views::*};
+pub use {build::*, csr::*, info::*, relations::*, star::*, views::*, write::*};
 
 use super::shapes::handle;
 use crate::che::{BuildOptions, Che};

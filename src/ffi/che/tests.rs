@@ -128,3 +128,24 @@ fn validate_passes_at_every_level_and_names_a_null_handle() {
     let meshes = |level| vec![build(&STRIP, 4, level), build(&tetra, 4, level)];
     crate::ffi::tests::validates(meshes, che_mesh_validate, che_mesh_free);
 }
+
+#[test]
+fn write_checks_the_handle_the_flags_and_the_positions() {
+    let m = build(&STRIP, 4, 2);
+    let path = c"/nonexistent-topomesh-folder/strip.off";
+    let detail = |words: &str| with_last_error(|e| assert!(e.contains(words), "{e}"));
+    // SAFETY: `m` is live until freed; the path is NUL-terminated.
+    unsafe {
+        assert_eq!(
+            che_mesh_write(std::ptr::null(), path.as_ptr(), 0),
+            Status::NullArgument
+        );
+        assert_eq!(che_mesh_write(m, std::ptr::null(), 0), Status::NullArgument);
+        detail("'path'");
+        assert_eq!(che_mesh_write(m, path.as_ptr(), 4), Status::InvalidInput);
+        detail("unknown bits 0x4");
+        assert_eq!(che_mesh_write(m, path.as_ptr(), 0), Status::InvalidInput);
+        detail("no positions");
+        che_mesh_free(m);
+    }
+}

@@ -10,8 +10,9 @@ mod surface;
 #[cfg(test)]
 mod tests;
 mod views;
+mod write;
 
-pub use {build::*, csr::*, half_faces::*, info::*, relations::*, surface::*, views::*};
+pub use {build::*, csr::*, half_faces::*, info::*, relations::*, surface::*, views::*, write::*};
 
 use super::shapes::handle;
 use crate::chf::{BuildOptions, Chf};

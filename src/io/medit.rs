@@ -324,6 +324,7 @@ End
             positions: vec![DVec3::ZERO; 3],
             triangles: vec![[0, 1, 3]],
             tetrahedra: vec![],
+            warnings: vec![],
         };
         assert_write_refused("mesh", &data, "triangle 0 names vertex 3");
     }

@@ -13,6 +13,9 @@ mod tests;
 mod tetgen;
 mod text;
 mod vtk;
+mod warning;
+
+pub use warning::{Warning, non_finite_vertices};
 
 use crate::error::{Error, Result};
 use glam::DVec3;
@@ -24,6 +27,9 @@ pub struct MeshData {
     pub positions: Vec<DVec3>,
     pub triangles: Vec<[u32; 3]>,
     pub tetrahedra: Vec<[u32; 4]>,
+    /// What the reader read past or found odd (`file:line: ...` when shown), in file order,
+    /// then the checks every format shares (non-finite coordinates, no elements).
+    pub warnings: Vec<Warning>,
 }
 
 impl MeshData {
@@ -80,7 +86,7 @@ impl Format {
 
 /// Reads a mesh file, the format chosen by its extension.
 pub fn read(path: &Path) -> Result<MeshData> {
-    match Format::from_path(path)? {
+    let mut data = match Format::from_path(path)? {
         Format::Off => off::read(path),
         Format::Obj => obj::read(path),
         Format::Ply => ply::read(path),
@@ -89,7 +95,9 @@ pub fn read(path: &Path) -> Result<MeshData> {
         Format::Medit => medit::read(path),
         Format::Gmsh => gmsh::read(path),
         Format::Vtk => vtk::read(path),
-    }
+    }?;
+    warning::add_common(&mut data, &path.display().to_string());
+    Ok(data)
 }
 
 /// Writes a mesh file, the format chosen by its extension.
@@ -117,7 +125,7 @@ pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
         std::str::from_utf8(bytes)
             .map_err(|e| Error::parse(format!("{name}: not UTF-8 text (byte {})", e.valid_up_to())))
     };
-    match format {
+    let mut data = match format {
         Format::Off => off::parse(bytes, name),
         Format::Obj => obj::parse(bytes, name),
         Format::Ply => ply::parse(bytes, name),
@@ -128,5 +136,7 @@ pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
         Format::TetGen => Err(Error::invalid(format!(
             "{name}: TetGen meshes are two files (.node and .ele): read them from a path"
         ))),
-    }
+    }?;
+    warning::add_common(&mut data, name);
+    Ok(data)
 }

@@ -84,7 +84,7 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
     Ok(MeshData {
         positions,
         triangles,
-        tetrahedra: Vec::new(),
+        ..MeshData::default()
     })
 }
 

@@ -47,7 +47,7 @@ fn bad_input_names_the_file_and_line() {
         (off, "# only a comment\n\nPLY\n", Parse, "t.off:3: missing OFF header"),
         (off, "", Parse, "t.off: empty file"),
         (off, "  \n# c\n", Parse, "t.off: empty file"),
-        (off, "OFF BINARY\n3 1 0\n", Parse, "t.off:1: binary OFF"),
+        (off, "OFF BINARY\n3 1 0\n", Parse, "t.off: at byte 15: unexpected end of file (truncated?): expected the number of faces"),
         (off, "4OFF\n3 1 0\n", Parse, "t.off:1: '4OFF': 4D"),
         (off, "OFF\n4294967296 0 0\n", OutOfRange, "t.off:2: 4294967296 vertices declared"),
         (obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\nf 1 3 4\n", OutOfRange, "t.obj:6: face vertex 4"),

@@ -68,8 +68,8 @@ pub(crate) fn parse(node: &str, node_name: &str, ele: &str, ele_name: &str) -> R
     let tetrahedra = parse_ele(ele, ele_name, positions.len(), base)?;
     Ok(MeshData {
         positions,
-        triangles: Vec::new(),
         tetrahedra,
+        ..MeshData::default()
     })
 }
 

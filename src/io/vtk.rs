@@ -497,6 +497,7 @@ TRIANGLE_STRIPS 1 5
             positions: vec![DVec3::ZERO; 4],
             triangles: vec![],
             tetrahedra: vec![[0, 1, 2, 4]],
+            warnings: vec![],
         };
         assert_write_refused("vtk", &data, "tetrahedron 0 names vertex 4");
     }

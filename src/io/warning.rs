@@ -1,0 +1,124 @@
+//! What a reader read past or found odd without refusing the file: every reader reports it
+//! here instead of dropping it silently, and `io::read` adds the checks all formats share
+//! (non-finite coordinates, a file of points only).
+
+use super::MeshData;
+use std::fmt;
+
+/// One thing a reader read past or found odd, with the place it was found.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Warning {
+    /// The file (or the name given to `io::parse`).
+    pub file: String,
+    /// The 1-based line (text formats), when the warning has one place.
+    pub line: Option<usize>,
+    pub message: String,
+}
+
+impl Warning {
+    pub fn new(file: &str, line: Option<usize>, message: impl Into<String>) -> Self {
+        Warning {
+            file: file.to_string(),
+            line,
+            message: message.into(),
+        }
+    }
+}
+
+/// `file:line: message`, or `file: message` without a line.
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(line) => write!(f, "{}:{line}: {}", self.file, self.message),
+            None => write!(f, "{}: {}", self.file, self.message),
+        }
+    }
+}
+
+/// The input vertices with a NaN or infinite coordinate: how many, and the first
+/// [`crate::REPORT_EXAMPLES`] ids.
+pub fn non_finite_vertices(positions: &[glam::DVec3]) -> (u64, Vec<u32>) {
+    let mut examples = Vec::new();
+    let mut count = 0u64;
+    for (v, p) in positions.iter().enumerate() {
+        if !p.is_finite() {
+            count += 1;
+            crate::util::push_example(&mut examples, v as u32);
+        }
+    }
+    (count, examples)
+}
+
+/// `0, 1, 5` (and `, ...` when `count` is more than the examples).
+pub(crate) fn list_examples(examples: &[u32], count: u64) -> String {
+    let mut s = examples
+        .iter()
+        .map(u32::to_string)
+        .collect::<Vec<_>>()
+        .join(", ");
+    if count > examples.len() as u64 {
+        s.push_str(", ...");
+    }
+    s
+}
+
+/// The checks every format shares, appended to what the reader found: non-finite
+/// coordinates, and a file of vertices with no element (read as a point set).
+pub(super) fn add_common(data: &mut MeshData, file: &str) {
+    let (count, examples) = non_finite_vertices(&data.positions);
+    if count > 0 {
+        let msg = format!(
+            "{count} vertices have a NaN or infinite coordinate (0-based ids {}); geometric \
+             checks skip them",
+            list_examples(&examples, count)
+        );
+        data.warnings.push(Warning::new(file, None, msg));
+    }
+    if !data.positions.is_empty() && data.triangles.is_empty() && data.tetrahedra.is_empty() {
+        let msg = format!(
+            "no faces or cells: read as a point set of {} vertices",
+            data.positions.len()
+        );
+        data.warnings.push(Warning::new(file, None, msg));
+    }
+}
+
+/// A noun with its plural: `("quadrangle ignored", "quadrangles ignored")`.
+pub(super) type Noun = (&'static str, &'static str);
+
+/// `{n} {noun}`, singular or plural as `n` asks.
+pub(super) fn count(n: u64, (one, many): Noun) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
+/// Counts of things read past or changed, by kind, turned into one warning per kind at
+/// the end, at the line of the first.
+#[derive(Default)]
+pub(super) struct Tally {
+    /// (what, count, line of the first)
+    kinds: Vec<(Noun, u64, Option<usize>)>,
+}
+
+impl Tally {
+    /// One more `what`, seen at `line`.
+    pub(super) fn add(&mut self, what: Noun, line: Option<usize>) {
+        self.add_n(what, 1, line);
+    }
+
+    pub(super) fn add_n(&mut self, what: Noun, n: u64, line: Option<usize>) {
+        if n == 0 {
+            return;
+        }
+        match self.kinds.iter_mut().find(|(w, _, _)| *w == what) {
+            Some((_, total, _)) => *total += n,
+            None => self.kinds.push((what, n, line)),
+        }
+    }
+
+    /// One warning per kind, in the order the kinds were first seen.
+    pub(super) fn into_warnings(self, file: &str, out: &mut Vec<Warning>) {
+        for (what, n, line) in self.kinds {
+            out.push(Warning::new(file, line, count(n, what)));
+        }
+    }
+}

@@ -111,3 +111,49 @@ fn prefixes_and_hostile_tokens_never_panic() {
         });
     }
 }
+
+/// The one rule for files of vertices and no elements: every format reads them as a point
+/// set, with the same warning.
+#[test]
+fn every_format_reads_a_point_set() {
+    #[rustfmt::skip]
+    let cases: &[(Format, &str, &str)] = &[
+        (Format::Off, "t.off", "OFF\n2 0 0\n1 2 3\n4 5 6\n"),
+        (Format::Obj, "t.obj", "v 1 2 3\nv 4 5 6\n"),
+        (Format::Ply, "t.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n1 2 3\n4 5 6\n"),
+        (Format::Medit, "t.mesh", "Dimension 3\nVertices 2\n1 2 3 0\n4 5 6 0\nTriangles 0\nEnd\n"),
+        (Format::Gmsh, "t.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 1 2 3\n2 4 5 6\n$EndNodes\n"),
+        (Format::Vtk, "t.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n1 2 3 4 5 6\n"),
+    ];
+    let mut read: Vec<(&str, Result<MeshData>)> = cases
+        .iter()
+        .map(|&(format, name, text)| (name, parse(text.as_bytes(), format, name)))
+        .collect();
+    let mut tetgen = tetgen::parse("2 3 0 0\n0 1 2 3\n1 4 5 6\n", "t.node", "0 4 0\n", "t.ele");
+    if let Ok(data) = &mut tetgen {
+        super::warning::add_common(data, "t.node");
+    }
+    read.push(("t.node", tetgen));
+    for (name, data) in read {
+        let data = data.unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(
+            data.positions,
+            [
+                glam::DVec3::new(1.0, 2.0, 3.0),
+                glam::DVec3::new(4.0, 5.0, 6.0)
+            ],
+            "{name}"
+        );
+        assert!(
+            data.triangles.is_empty() && data.tetrahedra.is_empty(),
+            "{name}"
+        );
+        let warnings: Vec<String> = data.warnings.iter().map(|w| w.to_string()).collect();
+        assert_eq!(
+            warnings,
+            [format!(
+                "{name}: no faces or cells: read as a point set of 2 vertices"
+            )]
+        );
+    }
+}

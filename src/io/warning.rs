@@ -122,3 +122,30 @@ impl Tally {
         }
     }
 }
+
+/// Elements skipped by type (Gmsh and VTK number their element types): how many of each
+/// type, and the line of the first.
+#[derive(Default)]
+pub(super) struct SkippedTypes {
+    /// (type, count, line of the first), in the order the types were first met.
+    types: Vec<(u64, u64, usize)>,
+}
+
+impl SkippedTypes {
+    pub(super) fn add(&mut self, ty: u64, line: usize) {
+        match self.types.iter_mut().find(|(t, _, _)| *t == ty) {
+            Some((_, n, _)) => *n += 1,
+            None => self.types.push((ty, 1, line)),
+        }
+    }
+
+    /// One warning per type: `{n} {what} ignored (type {ty})`, `what` naming the type.
+    pub(super) fn into_warnings(
+        self, file: &str, what: impl Fn(u64) -> Noun, out: &mut Vec<Warning>,
+    ) {
+        for (ty, n, line) in self.types {
+            let msg = format!("{} ignored (type {ty})", count(n, what(ty)));
+            out.push(Warning::new(file, Some(line), msg));
+        }
+    }
+}

@@ -118,6 +118,10 @@ enum che_report_kind
      * One input triangle of each non-orientable component (one id each).
      */
     CHE_REPORT_KIND_NON_ORIENTABLE = 4,
+    /**
+     * Input vertices with a NaN or infinite coordinate (one id each).
+     */
+    CHE_REPORT_KIND_NON_FINITE_VERTEX = 5,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -172,6 +176,10 @@ enum chf_report_kind
      * One input tetrahedron of each non-orientable component (one id each).
      */
     CHF_REPORT_KIND_NON_ORIENTABLE = 8,
+    /**
+     * Input vertices with a NaN or infinite coordinate (one id each).
+     */
+    CHF_REPORT_KIND_NON_FINITE_VERTEX = 9,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -308,6 +316,10 @@ typedef struct che_build_report {
      * Edges left unpaired on the seams of non-orientable components.
      */
     uint64_t seam_edges;
+    /**
+     * Input vertices with a NaN or infinite coordinate (kept).
+     */
+    uint64_t non_finite_vertices;
 } che_build_report;
 
 /**
@@ -501,6 +513,11 @@ typedef struct chf_build_report {
      * Faces left unpaired because their two tetrahedra could not agree on an orientation.
      */
     uint64_t seam_faces;
+    /**
+     * Input vertices with a NaN or infinite coordinate (their tetrahedra are oriented by
+     * their neighbours).
+     */
+    uint64_t non_finite_vertices;
 } chf_build_report;
 
 /**

@@ -79,6 +79,11 @@ fn check_surface(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
         "non-orientable components",
         &r.non_orientable_examples,
     );
+    problems.note(
+        r.non_finite_vertices as usize,
+        "vertices with a NaN or infinite coordinate",
+        &r.non_finite_vertex_examples,
+    );
     problems.note::<u32>(
         r.flipped_triangles,
         "triangles oriented against their neighbours",
@@ -142,6 +147,11 @@ fn check_volume(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
         r.non_orientable_components,
         "non-orientable components",
         &r.non_orientable_examples,
+    );
+    problems.note(
+        r.non_finite_vertices as usize,
+        "vertices with a NaN or infinite coordinate",
+        &r.non_finite_vertex_examples,
     );
     problems.note::<u32>(
         r.flipped_tetrahedra,

@@ -118,6 +118,7 @@ fn surface_info(
         memory: SurfaceMemory(&memory),
         read_seconds,
         build_seconds,
+        warnings: warning_lines(data),
     };
     emit(options, progress, &out, print_surface);
     Ok(ExitCode::SUCCESS)
@@ -135,6 +136,23 @@ struct SurfaceInfo<'a> {
     memory: SurfaceMemory<'a>,
     read_seconds: f64,
     build_seconds: f64,
+    /// What the reader read past or found odd, `file:line: message` each.
+    warnings: Vec<String>,
+}
+
+/// The reader's warnings, one line each.
+fn warning_lines(data: &MeshData) -> Vec<String> {
+    data.warnings.iter().map(|w| w.to_string()).collect()
+}
+
+/// The reader's warnings, under their heading, when there are any.
+fn print_warnings(warnings: &[String]) {
+    if !warnings.is_empty() {
+        println!("reader warnings");
+        for w in warnings {
+            println!("  {w}");
+        }
+    }
 }
 
 #[derive(Serialize)]
@@ -193,6 +211,7 @@ fn print_surface(i: &SurfaceInfo) {
             i.read_seconds, i.build_seconds
         ),
     );
+    print_warnings(&i.warnings);
 }
 
 /// The topology's bytes, in all and per element.
@@ -232,6 +251,11 @@ fn print_surface_report(r: &topomesh::BuildReport) {
     );
     report_line::<u32>("seam edges left unpaired", r.seam_edges, &[]);
     report_line::<u32>("vertices added by splits", r.added_vertices, &[]);
+    report_line(
+        "non-finite vertices",
+        r.non_finite_vertices as usize,
+        &r.non_finite_vertex_examples,
+    );
 }
 
 #[derive(Serialize)]
@@ -245,6 +269,8 @@ struct VolumeInfo<'a> {
     report: VolumeReport<'a>,
     memory: VolumeMemory<'a>,
     build_seconds: f64,
+    /// What the reader read past or found odd, `file:line: message` each.
+    warnings: Vec<String>,
 }
 
 #[derive(Serialize)]
@@ -286,6 +312,7 @@ fn volume_info(
         report: VolumeReport(chf.report()),
         memory: VolumeMemory(&memory),
         build_seconds,
+        warnings: warning_lines(data),
     };
     emit(options, progress, &out, print_volume);
     Ok(ExitCode::SUCCESS)
@@ -319,6 +346,7 @@ fn print_volume(i: &VolumeInfo) {
     );
     memory_line(i.memory.0.topology, s.tetrahedra, "tetrahedron");
     line("time", format!("build {:.3} s", i.build_seconds));
+    print_warnings(&i.warnings);
 }
 
 fn print_volume_report(r: &topomesh::chf::BuildReport) {
@@ -355,5 +383,10 @@ fn print_volume_report(r: &topomesh::chf::BuildReport) {
         "non-orientable components",
         r.non_orientable_components,
         &r.non_orientable_examples,
+    );
+    report_line(
+        "non-finite vertices",
+        r.non_finite_vertices as usize,
+        &r.non_finite_vertex_examples,
     );
 }

@@ -15,7 +15,7 @@ mod text;
 mod vtk;
 mod warning;
 
-pub use warning::{Warning, non_finite_vertices};
+pub use warning::Warning;
 
 use crate::error::{Error, Result};
 use glam::DVec3;

@@ -35,20 +35,6 @@ impl fmt::Display for Warning {
     }
 }
 
-/// The input vertices with a NaN or infinite coordinate: how many, and the first
-/// [`crate::REPORT_EXAMPLES`] ids.
-pub fn non_finite_vertices(positions: &[glam::DVec3]) -> (u64, Vec<u32>) {
-    let mut examples = Vec::new();
-    let mut count = 0u64;
-    for (v, p) in positions.iter().enumerate() {
-        if !p.is_finite() {
-            count += 1;
-            crate::util::push_example(&mut examples, v as u32);
-        }
-    }
-    (count, examples)
-}
-
 /// `0, 1, 5` (and `, ...` when `count` is more than the examples).
 pub(crate) fn list_examples(examples: &[u32], count: u64) -> String {
     let mut s = examples
@@ -65,19 +51,19 @@ pub(crate) fn list_examples(examples: &[u32], count: u64) -> String {
 /// The checks every format shares, appended to what the reader found: non-finite
 /// coordinates, and a file of vertices with no element (read as a point set).
 pub(super) fn add_common(data: &mut MeshData, file: &str) {
-    let (count, examples) = non_finite_vertices(&data.positions);
-    if count > 0 {
+    let (n, examples) = crate::util::non_finite_vertices(&data.positions);
+    if n > 0 {
         let msg = format!(
-            "{count} vertices have a NaN or infinite coordinate (0-based ids {}); geometric \
-             checks skip them",
-            list_examples(&examples, count)
+            "{} a NaN or infinite coordinate (0-based ids {}); geometric checks skip them",
+            count(n, ("vertex has", "vertices have")),
+            list_examples(&examples, n)
         );
         data.warnings.push(Warning::new(file, None, msg));
     }
     if !data.positions.is_empty() && data.triangles.is_empty() && data.tetrahedra.is_empty() {
         let msg = format!(
-            "no faces or cells: read as a point set of {} vertices",
-            data.positions.len()
+            "no faces or cells: read as a point set of {}",
+            count(data.positions.len() as u64, ("vertex", "vertices"))
         );
         data.warnings.push(Warning::new(file, None, msg));
     }

@@ -5,7 +5,7 @@
 
 use super::MeshData;
 use super::text::{self, Lexer};
-use super::warning::{Noun, SkippedTypes};
+use super::warning::{Noun, SkippedTypes, Warning};
 use crate::error::Result;
 use glam::DVec3;
 use std::collections::HashMap;
@@ -212,16 +212,26 @@ fn read_elements(lx: &mut Lexer, version: Version, map: &TagMap, read: &mut Read
         }
         Version::V41 => {
             let blocks = lx.usize("the number of entity blocks")?;
-            lx.usize("the number of elements")?;
+            let declared = lx.usize("the number of elements")?;
+            let line = lx.line();
             skip_tag_range(lx, "element")?;
+            let mut held = 0usize;
             for _ in 0..blocks {
                 entity_dimension(lx)?;
                 let ty = lx.u64("an element type")?;
                 let count = lx.usize("the number of elements in the block")?;
+                held = held.saturating_add(count);
                 for _ in 0..count {
                     lx.u64("an element tag")?;
                     read_element(lx, ty, map, read)?;
                 }
+            }
+            if held != declared {
+                let msg =
+                    format!("the blocks hold {held} elements, {declared} declared (all read)");
+                read.data
+                    .warnings
+                    .push(Warning::new(lx.name(), Some(line), msg));
             }
         }
     }
@@ -440,6 +450,16 @@ $EndElements
         assert_eq!(
             w(parse(&t, "g.msh").unwrap())[0],
             "g.msh:20: 1 element of another type ignored (type 99)"
+        );
+    }
+
+    #[test]
+    fn a_wrong_element_total_is_reported() {
+        let d = parse(&V41.replace("4 5 1 5", "4 6 1 5"), "g.msh").unwrap();
+        assert_eq!(d.tetrahedra.len(), 2);
+        assert_eq!(
+            d.warnings[0].to_string(),
+            "g.msh:28: the blocks hold 5 elements, 6 declared (all read)"
         );
     }
 

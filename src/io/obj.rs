@@ -155,6 +155,11 @@ const ELEMENTS: &[(&[u8], Noun)] = &[
     ),
 ];
 
+const LONG_VERTEX: Noun = (
+    "'v' line with values other than 'w' or 'r g b' after the position (ignored)",
+    "'v' lines with values other than 'w' or 'r g b' after the position (ignored)",
+);
+
 const UNKNOWN: Noun = ("unknown statement ignored", "unknown statements ignored");
 
 /// Polygons of more than 3 vertices, fan-triangulated.
@@ -204,11 +209,19 @@ impl Statements<'_> {
                 )
             })?;
         }
-        if let Some(w) = words.find(|w| number(w).is_none()) {
-            return Err(self.err(
-                line_no,
-                format!("expected a number after the position, found '{}'", quote(w)),
-            ));
+        let mut extra = 0;
+        for w in words {
+            if number(w).is_none() {
+                return Err(self.err(
+                    line_no,
+                    format!("expected a number after the position, found '{}'", quote(w)),
+                ));
+            }
+            extra += 1;
+        }
+        // After the position: nothing, `w`, or a colour `r g b`; anything else is unknown.
+        if ![0, 1, 3].contains(&extra) {
+            self.tally.add(LONG_VERTEX, Some(line_no));
         }
         if self.data.positions.len() == u32::MAX as usize {
             return Err(Error::too_large(format!(
@@ -410,6 +423,18 @@ pub(super) mod tests {
                 "t.obj:4: 2 unknown statements ignored",
                 "t.obj:5: 2 'p' statements (points) ignored",
                 "t.obj:8: 1 'surf' statement (surface) ignored",
+            ]
+        );
+    }
+
+    #[test]
+    fn vertex_lines_with_unknown_values_are_reported() {
+        let m = p(b"v 0 0 0 1\nv 1 0 0 1 0 0\nv 0 1 0 1 2\nv 0 0 1 1 2 3 4 5\nf 1 2 3\n").unwrap();
+        assert_eq!(m.positions[3], DVec3::new(0.0, 0.0, 1.0));
+        assert_eq!(
+            warnings(&m),
+            [
+                "t.obj:3: 2 'v' lines with values other than 'w' or 'r g b' after the position (ignored)"
             ]
         );
     }

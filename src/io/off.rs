@@ -253,11 +253,19 @@ fn read_faces(
             triangles.push([first, prev, v]);
             prev = v;
         }
-        // Whatever follows the last index on its line is the face's colour.
-        tk.skip_rest_of_line();
+        // Whatever follows the last index on its line is the face's colour: 0 to 4 values.
+        if tk.rest_of_line_tokens() > 4 {
+            polygons.add(LONG_FACE, Some(line));
+        }
     }
     Ok(triangles)
 }
+
+/// Face lines with more values after their indices than a colour has.
+const LONG_FACE: Noun = (
+    "face line with more than 4 values after its indices (not a colour; ignored)",
+    "face lines with more than 4 values after their indices (not a colour; ignored)",
+);
 
 /// Lines holding tokens after the declared faces: read past, with a warning at the first.
 fn trailing_lines(tk: &mut Tokens, name: &str, faces: u64, warnings: &mut Vec<Warning>) {
@@ -357,6 +365,17 @@ impl<'a> Tokens<'a> {
             self.pos += 1;
         }
         Some((&b[start..self.pos], self.line))
+    }
+
+    /// Moves to the end of the current line, counting the tokens on the way.
+    fn rest_of_line_tokens(&mut self) -> usize {
+        let mut n = 0;
+        while self.token_on_this_line() {
+            self.next();
+            n += 1;
+        }
+        self.skip_rest_of_line();
+        n
     }
 
     /// Bytes not read yet.
@@ -623,6 +642,17 @@ pub(super) mod tests {
         assert_eq!(
             m.warnings[0].to_string(),
             "t.off:6: 1 face line after the 0 declared (ignored)"
+        );
+    }
+
+    #[test]
+    fn face_lines_longer_than_a_colour_are_reported() {
+        let m =
+            p(b"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 1 0 0 1\n3 0 2 1 7 7 7 7 7\n").unwrap();
+        assert_eq!(m.triangles, vec![[0, 1, 2], [0, 2, 1]]);
+        assert_eq!(
+            m.warnings[0].to_string(),
+            "t.off:7: 1 face line with more than 4 values after its indices (not a colour; ignored)"
         );
     }
 

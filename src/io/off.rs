@@ -559,7 +559,7 @@ pub(super) mod tests {
 
     /// A binary OFF (big-endian) of the keyword `head`: a square as one quad and a
     /// triangle, with `extra` floats after each position and one RGBA face colour.
-    fn binary(head: &str, extra: usize) -> Vec<u8> {
+    pub(in crate::io) fn binary(head: &str, extra: usize) -> Vec<u8> {
         let mut b = format!("{head} BINARY\n").into_bytes();
         let int = |b: &mut Vec<u8>, x: i32| b.extend(x.to_be_bytes());
         [5, 2, 0].iter().for_each(|&n| int(&mut b, n));

@@ -599,7 +599,7 @@ impl PropertyAccess for Face {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::{OutOfRange, Parse};
     use crate::io::text::{self, assert_errors, parse_error};
@@ -608,7 +608,7 @@ mod tests {
         parse(bytes, "t.ply")
     }
 
-    const ASCII: &str = "ply\nformat ascii 1.0\ncomment a square and a triangle\n\
+    pub(in crate::io) const ASCII: &str = "ply\nformat ascii 1.0\ncomment a square and a triangle\n\
         element vertex 5\nproperty float x\nproperty float y\nproperty double z\nproperty uchar red\n\
         element face 2\nproperty list uchar int vertex_indices\nproperty float quality\nend_header\n\
         0 0 0 255\n1 0 0 0\n1 1 0 0\n0 1 0.5 0\n\n2 2 -2 7\n4 0 1 2 3 0.5\n3 1 4 2 1\n";

@@ -266,12 +266,12 @@ fn sort_by_position(keys: &mut Vec<u128>) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind;
 
     /// A unit cube as 12 triangles, each with its own corners, as in an STL file.
-    fn cube() -> Vec<[[f32; 3]; 3]> {
+    pub(in crate::io) fn cube() -> Vec<[[f32; 3]; 3]> {
         let c = |i: usize| [(i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32];
         let quads = [
             [0, 2, 3, 1],
@@ -287,7 +287,7 @@ mod tests {
             .collect()
     }
 
-    fn ascii(tris: &[[[f32; 3]; 3]]) -> String {
+    pub(in crate::io) fn ascii(tris: &[[[f32; 3]; 3]]) -> String {
         let mut s = String::from("solid cube\n");
         for t in tris {
             s += "  facet normal 0 0 0\n    outer loop\n";

@@ -2,7 +2,7 @@
 //! and says what was wrong or missing.
 
 use super::text::{assert_errors, assert_robust, utf8};
-use super::{Format, MeshData, gmsh, medit, obj, off, parse, tetgen, vtk};
+use super::{Format, MeshData, gmsh, medit, obj, off, parse, ply, stl, tetgen, vtk};
 use crate::error::ErrorKind::{self, OutOfRange, Parse, TooLarge};
 use crate::error::Result;
 
@@ -104,11 +104,38 @@ fn prefixes_and_hostile_tokens_never_panic() {
         (Format::Vtk, vtk::tests::LEGACY, "t.vtk"),
         (Format::Vtk, vtk::tests::V51, "t.vtk"),
         (Format::Vtk, vtk::tests::POLY, "t.vtk"),
+        (Format::Ply, ply::tests::ASCII, "t.ply"),
     ];
     for (format, src, name) in fixtures {
         assert_robust(src, &format!("{name}:"), |t| {
             parse(t.as_bytes(), format, name)
         });
+    }
+    let stl = stl::tests::ascii(&stl::tests::cube()[..2]);
+    assert_robust(&stl, "t.stl:", |t| {
+        parse(t.as_bytes(), Format::Stl, "t.stl")
+    });
+}
+
+/// Every prefix of a binary OFF, and the file with each byte in turn set to 0x00, 0x7f and
+/// 0xff: no panic, and every error names the file.
+#[test]
+fn binary_off_prefixes_and_damaged_bytes_never_panic() {
+    let src = off::tests::binary("COFF", 4);
+    let check = |bytes: &[u8]| {
+        if let Err(e) = parse(bytes, Format::Off, "t.off") {
+            assert!(e.message.starts_with("t.off"), "{}", e.message);
+        }
+    };
+    for end in 0..=src.len() {
+        check(&src[..end]);
+    }
+    for i in 0..src.len() {
+        for b in [0x00, 0x7f, 0xff] {
+            let mut damaged = src.clone();
+            damaged[i] = b;
+            check(&damaged);
+        }
     }
 }
 

@@ -638,6 +638,25 @@ topomesh_status che_mesh_build_level(struct che_mesh *m, uint32_t level);
  */
 uint32_t che_mesh_level(const struct che_mesh *m);
 
+/**
+ * How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
+ * from arrays, and for NULL). O(1).
+ */
+size_t che_mesh_num_warnings(const struct che_mesh *m);
+
+/**
+ * Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
+ * `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
+ * `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
+ * and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
+ * `TOPOMESH_STATUS_OUT_OF_RANGE`.
+ */
+topomesh_status che_mesh_warning(const struct che_mesh *m,
+                                 size_t i,
+                                 char *buf,
+                                 size_t cap,
+                                 size_t *out_len);
+
 /* ---- CHE: counts ---- */
 
 /**
@@ -1053,6 +1072,25 @@ topomesh_status chf_mesh_build_level(struct chf_mesh *m, uint32_t level);
  * The current level (0..3); 0 for NULL.
  */
 uint32_t chf_mesh_level(const struct chf_mesh *m);
+
+/**
+ * How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
+ * from arrays, and for NULL). O(1).
+ */
+size_t chf_mesh_num_warnings(const struct chf_mesh *m);
+
+/**
+ * Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
+ * `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
+ * `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
+ * and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
+ * `TOPOMESH_STATUS_OUT_OF_RANGE`.
+ */
+topomesh_status chf_mesh_warning(const struct chf_mesh *m,
+                                 size_t i,
+                                 char *buf,
+                                 size_t cap,
+                                 size_t *out_len);
 
 /* ---- CHF: counts ---- */
 

@@ -1,6 +1,7 @@
 //! Reading a file as the kind of mesh the caller asked for: a surface file for CHE, a
 //! volume file for CHF (the C API's load calls and any host that wants the same checks).
 
+use super::warning::count;
 use super::{MeshData, Warning, read};
 use crate::che::{BuildOptions, Che};
 use crate::chf::Chf;
@@ -33,10 +34,9 @@ pub fn read_volume(path: &Path) -> Result<MeshData> {
     }
     if !data.triangles.is_empty() {
         let msg = format!(
-            "{} triangles beside the {} tetrahedra ignored (a volume is built from its \
-             tetrahedra)",
-            data.triangles.len(),
-            data.tetrahedra.len()
+            "{} beside the {} ignored (a volume is built from its tetrahedra)",
+            count(data.triangles.len() as u64, ("triangle", "triangles")),
+            count(data.tetrahedra.len() as u64, ("tetrahedron", "tetrahedra"))
         );
         data.warnings
             .push(Warning::new(&path.display().to_string(), None, msg));
@@ -44,26 +44,50 @@ pub fn read_volume(path: &Path) -> Result<MeshData> {
     Ok(data)
 }
 
+/// A structure built from a file, with what the reader warned of.
+pub struct Loaded<T> {
+    pub mesh: T,
+    pub warnings: Vec<Warning>,
+}
+
 /// Reads a surface file and builds its CHE.
 pub fn che(path: &Path, options: BuildOptions) -> Result<Che> {
+    che_loaded(path, options).map(|l| l.mesh)
+}
+
+/// [`che`], with the reader's warnings.
+pub fn che_loaded(path: &Path, options: BuildOptions) -> Result<Loaded<Che>> {
     let data = read_surface(path)?;
-    Che::from_triangles(
+    let mesh = Che::from_triangles(
         &data.triangles,
         data.num_vertices(),
         &data.positions,
         options,
-    )
+    )?;
+    Ok(Loaded {
+        mesh,
+        warnings: data.warnings,
+    })
 }
 
 /// Reads a volume file and builds its CHF; triangles the file also holds are ignored.
 pub fn chf(path: &Path, options: BuildOptions) -> Result<Chf> {
+    chf_loaded(path, options).map(|l| l.mesh)
+}
+
+/// [`chf`], with the reader's warnings.
+pub fn chf_loaded(path: &Path, options: BuildOptions) -> Result<Loaded<Chf>> {
     let data = read_volume(path)?;
-    Chf::from_tetrahedra(
+    let mesh = Chf::from_tetrahedra(
         &data.tetrahedra,
         data.num_vertices(),
         &data.positions,
         options,
-    )
+    )?;
+    Ok(Loaded {
+        mesh,
+        warnings: data.warnings,
+    })
 }
 
 #[cfg(test)]

@@ -238,6 +238,29 @@ fn read_elements(lx: &mut Lexer, version: Version, map: &TagMap, read: &mut Read
     Ok(())
 }
 
+/// Reads a `$MeshFormat` section body and its end: the version, in ASCII.
+fn read_format(lx: &mut Lexer) -> Result<Version> {
+    let v = lx.expect("the format version")?;
+    let version = if v == "2" || v.starts_with("2.") {
+        Version::V2
+    } else if v == "4.1" {
+        Version::V41
+    } else {
+        return Err(lx.error(format!(
+            "unsupported .msh version {} (2.x and 4.1 are read)",
+            text::quote(v)
+        )));
+    };
+    match lx.u64("the file type (0 = ASCII)")? {
+        0 => {}
+        1 => return Err(lx.error("binary .msh not supported (save as ASCII)")),
+        t => return Err(lx.error(format!("unknown file type {t}"))),
+    }
+    lx.expect("the data size")?;
+    lx.keyword("$EndMeshFormat")?;
+    Ok(version)
+}
+
 /// Parses the text of a `.msh` file; `name` is used in error messages.
 pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     let mut lx = Lexer::new(text, name, false);
@@ -250,26 +273,7 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     while let Some(tok) = lx.next() {
         let start = lx.line();
         match tok {
-            "$MeshFormat" => {
-                let v = lx.expect("the format version")?;
-                version = Some(if v == "2" || v.starts_with("2.") {
-                    Version::V2
-                } else if v == "4.1" {
-                    Version::V41
-                } else {
-                    return Err(lx.error(format!(
-                        "unsupported .msh version {} (2.x and 4.1 are read)",
-                        text::quote(v)
-                    )));
-                });
-                match lx.u64("the file type (0 = ASCII)")? {
-                    0 => {}
-                    1 => return Err(lx.error("binary .msh not supported (save as ASCII)")),
-                    t => return Err(lx.error(format!("unknown file type {t}"))),
-                }
-                lx.expect("the data size")?;
-                lx.keyword("$EndMeshFormat")?;
-            }
+            "$MeshFormat" => version = Some(read_format(&mut lx)?),
             "$Nodes" => {
                 let Some(v) = version else {
                     return Err(lx.error("$Nodes before $MeshFormat"));

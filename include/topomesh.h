@@ -129,6 +129,10 @@ enum che_report_kind
      * One input triangle of each non-orientable component (one id each).
      */
     CHE_REPORT_KIND_NON_ORIENTABLE = 4,
+    /**
+     * Input vertices with a NaN or infinite coordinate (one id each).
+     */
+    CHE_REPORT_KIND_NON_FINITE_VERTEX = 5,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -183,6 +187,10 @@ enum chf_report_kind
      * One input tetrahedron of each non-orientable component (one id each).
      */
     CHF_REPORT_KIND_NON_ORIENTABLE = 8,
+    /**
+     * Input vertices with a NaN or infinite coordinate (one id each).
+     */
+    CHF_REPORT_KIND_NON_FINITE_VERTEX = 9,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -319,6 +327,10 @@ typedef struct che_build_report {
      * Edges left unpaired on the seams of non-orientable components.
      */
     uint64_t seam_edges;
+    /**
+     * Input vertices with a NaN or infinite coordinate (kept).
+     */
+    uint64_t non_finite_vertices;
 } che_build_report;
 
 /**
@@ -512,6 +524,11 @@ typedef struct chf_build_report {
      * Faces left unpaired because their two tetrahedra could not agree on an orientation.
      */
     uint64_t seam_faces;
+    /**
+     * Input vertices with a NaN or infinite coordinate (their tetrahedra are oriented by
+     * their neighbours).
+     */
+    uint64_t non_finite_vertices;
 } chf_build_report;
 
 /**
@@ -631,6 +648,25 @@ topomesh_status che_mesh_build_level(struct che_mesh *m, uint32_t level);
  * The current level (0..3); 0 for NULL.
  */
 uint32_t che_mesh_level(const struct che_mesh *m);
+
+/**
+ * How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
+ * from arrays, and for NULL). O(1).
+ */
+size_t che_mesh_num_warnings(const struct che_mesh *m);
+
+/**
+ * Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
+ * `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
+ * `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
+ * and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
+ * `TOPOMESH_STATUS_OUT_OF_RANGE`.
+ */
+topomesh_status che_mesh_warning(const struct che_mesh *m,
+                                 size_t i,
+                                 char *buf,
+                                 size_t cap,
+                                 size_t *out_len);
 
 /* ---- CHE: counts ---- */
 
@@ -1064,6 +1100,25 @@ topomesh_status chf_mesh_build_level(struct chf_mesh *m, uint32_t level);
  * The current level (0..3); 0 for NULL.
  */
 uint32_t chf_mesh_level(const struct chf_mesh *m);
+
+/**
+ * How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
+ * from arrays, and for NULL). O(1).
+ */
+size_t chf_mesh_num_warnings(const struct chf_mesh *m);
+
+/**
+ * Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
+ * `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
+ * `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
+ * and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
+ * `TOPOMESH_STATUS_OUT_OF_RANGE`.
+ */
+topomesh_status chf_mesh_warning(const struct chf_mesh *m,
+                                 size_t i,
+                                 char *buf,
+                                 size_t cap,
+                                 size_t *out_len);
 
 /* ---- CHF: counts ---- */
 

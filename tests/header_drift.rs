@@ -27,7 +27,8 @@ fn generate() -> String {
 #[rustfmt::skip]
 const SECTIONS: &[(&str, &[&str])] = &[
     ("CHE: create, load, build levels and free", &[
-        "che_build_options_default", "che_mesh_from_*", "che_mesh_load*", "che_mesh_free",
+        "che_build_options_default", "che_mesh_from_*", "che_mesh_load*",
+        "che_mesh_num_warnings", "che_mesh_warning", "che_mesh_free",
         "che_mesh_build_level", "che_mesh_level",
     ]),
     ("CHE: counts", &["che_mesh_num_*"]),
@@ -48,7 +49,8 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHE: writing files", &["che_mesh_write"]),
     ("CHE: zero-copy views of the structure's arrays", &["che_mesh_*"]),
     ("CHF: create, load, build levels and free", &[
-        "chf_build_options_default", "chf_mesh_from_*", "chf_mesh_load*", "chf_mesh_free",
+        "chf_build_options_default", "chf_mesh_from_*", "chf_mesh_load*",
+        "chf_mesh_num_warnings", "chf_mesh_warning", "chf_mesh_free",
         "chf_mesh_build_level", "chf_mesh_level",
     ]),
     ("CHF: counts", &["chf_mesh_num_*"]),

@@ -184,8 +184,11 @@ static void test_non_manifold_vertex(void) {
     CHECK_IDS(ex, len, 0);
     CHECK_OK(che_mesh_report_examples(m, CHE_REPORT_KIND_DEGENERATE, ex, 32, &len));
     CHECK_EMPTY(len);
-    CHECK_STATUS(che_mesh_report_examples(m, 5, ex, 32, &len), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("5");
+    CHECK_OK(che_mesh_report_examples(m, CHE_REPORT_KIND_NON_FINITE_VERTEX, ex, 32, &len));
+    CHECK_EMPTY(len);
+    CHECK(r.non_finite_vertices == 0);
+    CHECK_STATUS(che_mesh_report_examples(m, 6, ex, 32, &len), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_DETAIL("6");
     CHECK_STATUS(che_mesh_report_examples(NULL, 0, ex, 32, &len), TOPOMESH_STATUS_NULL_ARGUMENT);
     che_mesh_free(m);
 

@@ -35,8 +35,30 @@ static void test_readers(void) {
         che_summary s;
         CHECK_OK(che_mesh_summary(m, &s));
         CHECK(s.genus == 0 && s.euler_characteristic == 2 && s.manifold && s.orientable);
+        CHECK(che_mesh_num_warnings(m) == 0);
         che_mesh_free(m);
     }
+
+    /* The reader's warnings: a face line after the declared one. */
+    write_file("extra-face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n");
+    m = NULL;
+    CHECK_OK(che_mesh_load("extra-face.off", 2, &m));
+    if (m) {
+        const char *want = "extra-face.off:7: 1 face line after the 1 declared (ignored)";
+        char w[256];
+        size_t wl = 0;
+        CHECK(che_mesh_num_warnings(m) == 1 && che_mesh_num_triangles(m) == 1);
+        CHECK_OK(che_mesh_warning(m, 0, NULL, 0, &wl));
+        CHECK(wl == strlen(want) + 1);
+        CHECK_OK(che_mesh_warning(m, 0, w, sizeof w, &wl));
+        CHECK(strcmp(w, want) == 0);
+        CHECK_STATUS(che_mesh_warning(m, 0, w, 4, &wl), TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+        CHECK(strcmp(w, "ext") == 0);
+        CHECK_STATUS(che_mesh_warning(m, 1, w, sizeof w, &wl), TOPOMESH_STATUS_OUT_OF_RANGE);
+        CHECK_STATUS(che_mesh_warning(NULL, 0, w, sizeof w, &wl), TOPOMESH_STATUS_NULL_ARGUMENT);
+        che_mesh_free(m);
+    }
+
     che_build_options o = {1, true, 0};
     m = NULL;
     CHECK_OK(che_mesh_load_ex("tetra.off", &o, &m));

@@ -202,8 +202,11 @@ static void test_split_vertex(void) {
     CHECK_IDS(ex, len, 0);
     CHECK_OK(chf_mesh_report_examples(m, CHF_REPORT_KIND_DEGENERATE, ex, 64, &len));
     CHECK_EMPTY(len);
-    CHECK_STATUS(chf_mesh_report_examples(m, 9, ex, 64, &len), TOPOMESH_STATUS_OUT_OF_RANGE);
-    CHECK_DETAIL("9");
+    CHECK_OK(chf_mesh_report_examples(m, CHF_REPORT_KIND_NON_FINITE_VERTEX, ex, 64, &len));
+    CHECK_EMPTY(len);
+    CHECK(r.non_finite_vertices == 0);
+    CHECK_STATUS(chf_mesh_report_examples(m, 10, ex, 64, &len), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_DETAIL("10");
     CHECK_STATUS(chf_mesh_report_examples(NULL, 0, ex, 64, &len), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(chf_mesh_report_examples(m, 0, NULL, 4, &len), TOPOMESH_STATUS_NULL_ARGUMENT);
     chf_mesh_free(m);

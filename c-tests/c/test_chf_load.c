@@ -47,6 +47,15 @@ static void test_readers(void) {
         CHECK_OK(chf_mesh_summary(m, &s));
         CHECK(s.euler_characteristic == 1 && s.boundary_faces == 6 && s.manifold);
         CHECK(s.flipped_tetrahedra == 0 && s.inverted_tetrahedra == 0);
+        /* The reader's warning: the triangles are ignored. */
+        char w[256];
+        size_t wl = 0;
+        CHECK(chf_mesh_num_warnings(m) == 1);
+        CHECK_OK(chf_mesh_warning(m, 0, w, sizeof w, &wl));
+        CHECK(strcmp(w, "chf-pair.mesh: 2 triangles beside the 2 tetrahedra ignored "
+                        "(a volume is built from its tetrahedra)") == 0);
+        CHECK(wl == strlen(w) + 1);
+        CHECK_STATUS(chf_mesh_warning(m, 1, w, sizeof w, &wl), TOPOMESH_STATUS_OUT_OF_RANGE);
         chf_mesh_free(m);
     }
     chf_build_options o = {1, true, 0};

@@ -168,6 +168,16 @@ fn check_surface(file: String, data: &MeshData) -> Result<Checked, Error> {
         "non-orientable components",
     );
     p.note(r.non_orientable_components, no, &r.non_orientable_examples);
+    let nf = (
+        "non_finite_vertices",
+        "vertex with a NaN or infinite coordinate",
+        "vertices with a NaN or infinite coordinate",
+    );
+    p.note(
+        r.non_finite_vertices as usize,
+        nf,
+        &r.non_finite_vertex_examples,
+    );
     let flip = (
         "flipped_triangles",
         "triangle oriented against its neighbours",
@@ -243,6 +253,16 @@ fn check_volume(file: String, data: &MeshData) -> Result<Checked, Error> {
         "non-orientable components",
     );
     p.note(r.non_orientable_components, no, &r.non_orientable_examples);
+    let nf = (
+        "non_finite_vertices",
+        "vertex with a NaN or infinite coordinate",
+        "vertices with a NaN or infinite coordinate",
+    );
+    p.note(
+        r.non_finite_vertices as usize,
+        nf,
+        &r.non_finite_vertex_examples,
+    );
     let flip = (
         "flipped_tetrahedra",
         "tetrahedron oriented against its neighbours",

@@ -12,7 +12,7 @@ use crate::print::{count, line, yes};
 use crate::progress::Progress;
 use crate::report;
 use serde::Serialize;
-use std::io;
+use std::io::{self, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -130,6 +130,7 @@ fn surface_info(
         memory: SurfaceMemory(&memory),
         read_seconds,
         build_seconds,
+        warnings: warning_lines(data),
     };
     emit(options, progress, &out, print_surface)
 }
@@ -146,6 +147,24 @@ struct SurfaceInfo<'a> {
     memory: SurfaceMemory<'a>,
     read_seconds: f64,
     build_seconds: f64,
+    /// What the reader read past or found odd, `file:line: message` each.
+    warnings: Vec<String>,
+}
+
+/// The reader's warnings, one line each.
+fn warning_lines(data: &MeshData) -> Vec<String> {
+    data.warnings.iter().map(|w| w.to_string()).collect()
+}
+
+/// The reader's warnings, under their heading, when there are any.
+fn print_warnings(out: &mut Out, warnings: &[String]) -> io::Result<()> {
+    if !warnings.is_empty() {
+        writeln!(out, "reader warnings")?;
+        for w in warnings {
+            writeln!(out, "  {w}")?;
+        }
+    }
+    Ok(())
 }
 
 #[derive(Serialize)]
@@ -208,7 +227,8 @@ fn print_surface(out: &mut Out, i: &SurfaceInfo) -> io::Result<()> {
         "read {:.3} s, build {:.3} s",
         i.read_seconds, i.build_seconds
     );
-    line(out, "time", time)
+    line(out, "time", time)?;
+    print_warnings(out, &i.warnings)
 }
 
 /// The topology's bytes, in all and per element.
@@ -232,6 +252,8 @@ struct VolumeInfo<'a> {
     report: VolumeReport<'a>,
     memory: VolumeMemory<'a>,
     build_seconds: f64,
+    /// What the reader read past or found odd, `file:line: message` each.
+    warnings: Vec<String>,
 }
 
 #[derive(Serialize)]
@@ -274,6 +296,7 @@ fn volume_info(
         report: VolumeReport(chf.report()),
         memory: VolumeMemory(&memory),
         build_seconds,
+        warnings: warning_lines(data),
     };
     emit(options, progress, &out, print_volume)
 }
@@ -308,5 +331,6 @@ fn print_volume(out: &mut Out, i: &VolumeInfo) -> io::Result<()> {
     if verbose() {
         crate::json::memory_table(out, &i.memory)?;
     }
-    line(out, "time", format!("build {:.3} s", i.build_seconds))
+    line(out, "time", format!("build {:.3} s", i.build_seconds))?;
+    print_warnings(out, &i.warnings)
 }

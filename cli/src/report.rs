@@ -39,7 +39,12 @@ pub fn surface(out: &mut Out, r: &BuildReport) -> io::Result<()> {
         &r.non_orientable_examples,
     )?;
     report_line::<u32>(out, "seam edges left unpaired", r.seam_edges, &[])?;
-    report_line::<u32>(out, "vertices added by splits", r.added_vertices, &[])
+    report_line::<u32>(out, "vertices added by splits", r.added_vertices, &[])?;
+    non_finite(out, r.non_finite_vertices, &r.non_finite_vertex_examples)
+}
+
+fn non_finite(out: &mut Out, n: u64, examples: &[u32]) -> io::Result<()> {
+    report_line(out, "non-finite vertices", n as usize, examples)
 }
 
 pub fn volume(out: &mut Out, r: &chf::BuildReport) -> io::Result<()> {
@@ -100,5 +105,6 @@ pub fn volume(out: &mut Out, r: &chf::BuildReport) -> io::Result<()> {
         &r.kept_non_manifold_edge_examples,
     )?;
     report_line::<u32>(out, "seam faces left unpaired", r.seam_faces, &[])?;
-    report_line::<u32>(out, "vertices added by splits", r.added_vertices, &[])
+    report_line::<u32>(out, "vertices added by splits", r.added_vertices, &[])?;
+    non_finite(out, r.non_finite_vertices, &r.non_finite_vertex_examples)
 }

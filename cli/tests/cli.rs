@@ -270,3 +270,36 @@ fn convert_writes_a_boundary_and_uses_standard_streams() {
     assert!(text(&out).1.contains("--format EXT"), "{}", text(&out).1);
     assert!(out.stdout.is_empty());
 }
+
+#[test]
+fn reader_warnings_and_non_finite_vertices_reach_the_user() {
+    let mesh = temp(
+        "nan.off",
+        "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n",
+    );
+    let path = mesh.to_str().unwrap();
+    let out = topomesh(&["check", path]);
+    assert_eq!(out.status.code(), Some(1));
+    let want = format!("{path}: 1 vertex with a NaN or infinite coordinate: 1");
+    assert!(text(&out).0.contains(&want), "{}", text(&out).0);
+    let out = topomesh(&["info", "--json", path]);
+    assert!(out.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["report"]["non_finite_vertices"], 1);
+    assert_eq!(
+        json["warnings"],
+        serde_json::json!([
+            format!("{path}:7: 1 face line after the 1 declared (ignored)"),
+            format!(
+                "{path}: 1 vertex has a NaN or infinite coordinate (0-based ids 1); \
+                 geometric checks skip them"
+            ),
+        ])
+    );
+    let out = topomesh(&["info", path]);
+    assert!(
+        text(&out).0.contains("reader warnings\n  "),
+        "{}",
+        text(&out).0
+    );
+}

@@ -187,6 +187,58 @@ pub(crate) trait Handle {
     type Core;
     fn core(&self) -> &Self::Core;
     fn core_mut(&mut self) -> &mut Self::Core;
+    /// The reader's warnings, `file:line: message` each (none for a mesh built from arrays).
+    fn warnings(&self) -> &[String];
+}
+
+/// Copies `text` into `buf` NUL-terminated, truncated to `cap` bytes (`buf` NULL is a size
+/// query); `*out_len` gets the capacity needed, NUL included. False when it did not fit.
+/// `buf` is NULL or valid for `cap` byte writes (caller contract).
+pub(crate) unsafe fn text_out(
+    text: &str, buf: *mut c_char, cap: usize, out_len: &Out<usize>,
+) -> bool {
+    let bytes = text.as_bytes();
+    out_len.set(bytes.len() + 1);
+    match (buf.is_null(), cap.checked_sub(1)) {
+        (true, _) => true,
+        (false, None) => false,
+        (false, Some(room)) => {
+            let n = bytes.len().min(room);
+            // SAFETY: `buf` is valid for `cap > n` byte writes (caller contract), and
+            // `bytes` is a Rust string that cannot overlap the caller's buffer.
+            unsafe {
+                std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
+                *buf.add(n) = 0;
+            }
+            n == bytes.len()
+        }
+    }
+}
+
+/// Warning `i` of handle `m` into `buf` (the buffer rules of `topomesh_last_error`).
+pub(crate) unsafe fn warning_out<H: Handle>(
+    m: *const H, i: usize, buf: *mut c_char, cap: usize, out_len: *mut usize,
+) -> Result<()> {
+    // SAFETY: forwarded contract.
+    let (h, out_len) = unsafe { (handle(m, "m")?, out_arg(out_len, "out_len")?) };
+    if buf.is_null() && cap != 0 {
+        return Err(null("buf"));
+    }
+    let warnings = h.warnings();
+    let text = warnings.get(i).ok_or_else(|| {
+        let n = warnings.len();
+        Error::out_of_range(format!(
+            "warning {i} out of range (the mesh has {n} warnings)"
+        ))
+    })?;
+    // SAFETY: forwarded contract.
+    if unsafe { text_out(text, buf, cap, &out_len) } {
+        return Ok(());
+    }
+    Err(Error::new(
+        ErrorKind::BufferTooSmall,
+        format!("buffer 'buf' holds {cap} bytes, {} needed", text.len() + 1),
+    ))
 }
 
 /// Boxes a new handle into `*out`, which is NULL on every failure of `made`.

@@ -200,6 +200,18 @@ macro_rules! handle {
             fn core_mut(&mut self) -> &mut $core {
                 &mut self.$field
             }
+            fn warnings(&self) -> &[String] {
+                &self.warnings
+            }
+        }
+
+        /// A handle from a loaded file: the structure and the reader's warnings.
+        impl From<$crate::io::load::Loaded<$core>> for $h {
+            fn from(loaded: $crate::io::load::Loaded<$core>) -> Self {
+                let mut h = $h::from(loaded.mesh);
+                h.warnings = loaded.warnings.iter().map(|w| w.to_string()).collect();
+                h
+            }
         }
 
         impl From<$core> for $h {

@@ -74,25 +74,11 @@ pub unsafe extern "C" fn topomesh_last_error(
             return Status::NullArgument;
         };
         boundary::with_last_error(|msg| {
-            let bytes = msg.as_bytes();
-            out_len.set(bytes.len() + 1);
-            match (buf.is_null(), cap.checked_sub(1)) {
-                (true, _) => Status::Ok,
-                (false, None) => Status::BufferTooSmall,
-                (false, Some(room)) => {
-                    let n = bytes.len().min(room);
-                    // SAFETY: `buf` is valid for `cap > n` byte writes (caller contract), and
-                    // `bytes` is a Rust string that cannot overlap the caller's buffer.
-                    unsafe {
-                        std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
-                        *buf.add(n) = 0;
-                    }
-                    if n < bytes.len() {
-                        Status::BufferTooSmall
-                    } else {
-                        Status::Ok
-                    }
-                }
+            // SAFETY: `buf` is NULL or valid for `cap` byte writes (caller contract).
+            if unsafe { boundary::text_out(msg, buf, cap, &out_len) } {
+                Status::Ok
+            } else {
+                Status::BufferTooSmall
             }
         })
     };

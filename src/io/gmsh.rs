@@ -1,9 +1,11 @@
 //! Gmsh `.msh`, ASCII versions 2.x and 4.1: nodes, triangles and tetrahedra (corner nodes of
-//! the higher-order ones); other elements and sections are skipped. Node tags may be sparse:
+//! the higher-order ones); other elements are skipped with a warning per type, other
+//! sections (physical names, data) without one. Node tags may be sparse:
 //! they are numbered 0.. in order of appearance.
 
 use super::MeshData;
 use super::text::{self, Lexer};
+use super::warning::{Noun, SkippedTypes, Warning};
 use crate::error::Result;
 use glam::DVec3;
 use std::collections::HashMap;
@@ -26,6 +28,19 @@ fn nodes_per_element(ty: u64) -> Option<usize> {
         92 => Some(64),
         93 => Some(125),
         _ => None,
+    }
+}
+
+/// What an element type we skip is, for its warning.
+fn type_noun(ty: u64) -> Noun {
+    match ty {
+        15 => ("point element", "point elements"),
+        1 | 8 | 26..=28 => ("line element", "line elements"),
+        3 | 10 | 16 => ("quadrangle", "quadrangles"),
+        5 | 12 | 17 => ("hexahedron", "hexahedra"),
+        6 | 13 | 18 => ("prism", "prisms"),
+        7 | 14 | 19 => ("pyramid", "pyramids"),
+        _ => ("element of another type", "elements of another type"),
     }
 }
 
@@ -146,15 +161,26 @@ fn entity_dimension(lx: &mut Lexer) -> Result<u64> {
     Ok(dim)
 }
 
+/// The mesh read so far, and the element types skipped.
+struct Read {
+    data: MeshData,
+    skipped: SkippedTypes,
+}
+
 /// Reads the nodes of one element of type `ty`, keeping its corners if it is a triangle or
-/// a tetrahedron; an unknown type is skipped to the end of its line.
+/// a tetrahedron; an unknown type is skipped to the end of its line. Skipped elements are
+/// counted.
 #[inline]
-fn read_element(lx: &mut Lexer, ty: u64, map: &TagMap, data: &mut MeshData) -> Result<()> {
+fn read_element(lx: &mut Lexer, ty: u64, map: &TagMap, read: &mut Read) -> Result<()> {
+    let k = corners(ty);
+    if k == 0 {
+        read.skipped.add(ty, lx.line());
+    }
     let Some(n) = nodes_per_element(ty) else {
         lx.skip_line();
         return Ok(());
     };
-    let k = corners(ty);
+    let data = &mut read.data;
     let mut ids = [0u32; 4];
     for id in ids.iter_mut().take(k) {
         let tag = lx.u64("a node tag")?;
@@ -172,9 +198,7 @@ fn read_element(lx: &mut Lexer, ty: u64, map: &TagMap, data: &mut MeshData) -> R
 }
 
 /// Reads an `$Elements` section body.
-fn read_elements(
-    lx: &mut Lexer, version: Version, map: &TagMap, data: &mut MeshData,
-) -> Result<()> {
+fn read_elements(lx: &mut Lexer, version: Version, map: &TagMap, read: &mut Read) -> Result<()> {
     match version {
         Version::V2 => {
             let n = lx.usize("the number of elements")?;
@@ -183,25 +207,58 @@ fn read_elements(
                 let ty = lx.u64("an element type")?;
                 let ntags = lx.usize("the number of element tags")?;
                 lx.skip(ntags, "an element tag")?;
-                read_element(lx, ty, map, data)?;
+                read_element(lx, ty, map, read)?;
             }
         }
         Version::V41 => {
             let blocks = lx.usize("the number of entity blocks")?;
-            lx.usize("the number of elements")?;
+            let declared = lx.usize("the number of elements")?;
+            let line = lx.line();
             skip_tag_range(lx, "element")?;
+            let mut held = 0usize;
             for _ in 0..blocks {
                 entity_dimension(lx)?;
                 let ty = lx.u64("an element type")?;
                 let count = lx.usize("the number of elements in the block")?;
+                held = held.saturating_add(count);
                 for _ in 0..count {
                     lx.u64("an element tag")?;
-                    read_element(lx, ty, map, data)?;
+                    read_element(lx, ty, map, read)?;
                 }
+            }
+            if held != declared {
+                let msg =
+                    format!("the blocks hold {held} elements, {declared} declared (all read)");
+                read.data
+                    .warnings
+                    .push(Warning::new(lx.name(), Some(line), msg));
             }
         }
     }
     Ok(())
+}
+
+/// Reads a `$MeshFormat` section body and its end: the version, in ASCII.
+fn read_format(lx: &mut Lexer) -> Result<Version> {
+    let v = lx.expect("the format version")?;
+    let version = if v == "2" || v.starts_with("2.") {
+        Version::V2
+    } else if v == "4.1" {
+        Version::V41
+    } else {
+        return Err(lx.error(format!(
+            "unsupported .msh version {} (2.x and 4.1 are read)",
+            text::quote(v)
+        )));
+    };
+    match lx.u64("the file type (0 = ASCII)")? {
+        0 => {}
+        1 => return Err(lx.error("binary .msh not supported (save as ASCII)")),
+        t => return Err(lx.error(format!("unknown file type {t}"))),
+    }
+    lx.expect("the data size")?;
+    lx.keyword("$EndMeshFormat")?;
+    Ok(version)
 }
 
 /// Parses the text of a `.msh` file; `name` is used in error messages.
@@ -209,30 +266,14 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     let mut lx = Lexer::new(text, name, false);
     let mut version = None;
     let mut map = None;
-    let mut data = MeshData::default();
+    let mut read = Read {
+        data: MeshData::default(),
+        skipped: SkippedTypes::default(),
+    };
     while let Some(tok) = lx.next() {
         let start = lx.line();
         match tok {
-            "$MeshFormat" => {
-                let v = lx.expect("the format version")?;
-                version = Some(if v == "2" || v.starts_with("2.") {
-                    Version::V2
-                } else if v == "4.1" {
-                    Version::V41
-                } else {
-                    return Err(lx.error(format!(
-                        "unsupported .msh version {} (2.x and 4.1 are read)",
-                        text::quote(v)
-                    )));
-                });
-                match lx.u64("the file type (0 = ASCII)")? {
-                    0 => {}
-                    1 => return Err(lx.error("binary .msh not supported (save as ASCII)")),
-                    t => return Err(lx.error(format!("unknown file type {t}"))),
-                }
-                lx.expect("the data size")?;
-                lx.keyword("$EndMeshFormat")?;
-            }
+            "$MeshFormat" => version = Some(read_format(&mut lx)?),
             "$Nodes" => {
                 let Some(v) = version else {
                     return Err(lx.error("$Nodes before $MeshFormat"));
@@ -243,13 +284,13 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
                 let (positions, tags) = read_nodes(&mut lx, v)?;
                 lx.keyword("$EndNodes")?;
                 map = Some(TagMap::new(&tags, &lx, start)?);
-                data.positions = positions;
+                read.data.positions = positions;
             }
             "$Elements" => {
                 let (Some(v), Some(m)) = (version, &map) else {
                     return Err(lx.error("$Elements before $MeshFormat and $Nodes"));
                 };
-                read_elements(&mut lx, v, m, &mut data)?;
+                read_elements(&mut lx, v, m, &mut read)?;
                 lx.keyword("$EndElements")?;
             }
             _ if tok.starts_with('$') && version.is_some() => {
@@ -280,6 +321,9 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     if version.is_none() {
         return Err(lx.error("no $MeshFormat: not a Gmsh file"));
     }
+    let mut data = read.data;
+    read.skipped
+        .into_warnings(name, type_noun, &mut data.warnings);
     Ok(data)
 }
 
@@ -386,6 +430,41 @@ $EndElements
         assert_eq!(v22.triangles, vec![[0, 1, 2], [0, 2, 3]]);
         assert_eq!(v41.positions[1], DVec3::new(1.0, 0.0, 0.0));
         assert_eq!(v41.triangles, vec![[0, 1, 2]]);
+    }
+
+    #[test]
+    fn skipped_element_types_are_reported() {
+        let w = |d: MeshData| d.warnings.iter().map(|w| w.to_string()).collect::<Vec<_>>();
+        assert_eq!(
+            w(parse(V22, "g.msh").unwrap()),
+            [
+                "g.msh:20: 1 point element ignored (type 15)",
+                "g.msh:21: 1 line element ignored (type 1)",
+                "g.msh:23: 1 quadrangle ignored (type 3)",
+            ]
+        );
+        assert_eq!(
+            w(parse(V41, "g.msh").unwrap()),
+            [
+                "g.msh:30: 1 point element ignored (type 15)",
+                "g.msh:37: 1 pyramid ignored (type 7)",
+            ]
+        );
+        let t = V22.replace("1 15 2 0 1 10\n", "1 99 2 0 1 10 20 30\n");
+        assert_eq!(
+            w(parse(&t, "g.msh").unwrap())[0],
+            "g.msh:20: 1 element of another type ignored (type 99)"
+        );
+    }
+
+    #[test]
+    fn a_wrong_element_total_is_reported() {
+        let d = parse(&V41.replace("4 5 1 5", "4 6 1 5"), "g.msh").unwrap();
+        assert_eq!(d.tetrahedra.len(), 2);
+        assert_eq!(
+            d.warnings[0].to_string(),
+            "g.msh:28: the blocks hold 5 elements, 6 declared (all read)"
+        );
     }
 
     #[test]

@@ -1,8 +1,10 @@
 //! Medit / INRIA `.mesh` (ASCII): vertices, triangles and tetrahedra (1-based ids); every
-//! other section the library knows the entry size of is skipped.
+//! other section the library knows the entry size of is skipped, with a warning when it
+//! holds elements (edges, quadrilaterals, hexahedra, ...). Text after `End` is reported.
 
 use super::MeshData;
 use super::text::{self, Lexer};
+use super::warning::Warning;
 use crate::error::Result;
 use glam::DVec3;
 use std::path::Path;
@@ -49,6 +51,20 @@ fn entry_tokens(keyword: &str, dim: usize) -> Option<usize> {
         .find(|(k, _)| k.eq_ignore_ascii_case(keyword))
         .map(|&(_, n)| n)
 }
+
+/// The skipped sections that hold elements (the others hold attributes of what is read):
+/// skipping them is reported.
+const IGNORED_ELEMENTS: &[&str] = &[
+    "Edges",
+    "Quadrilaterals",
+    "Prisms",
+    "Pentahedra",
+    "Hexahedra",
+    "Pyramids",
+    "EdgesP2",
+    "QuadrilateralsQ2",
+    "HexahedraQ2",
+];
 
 /// A section of elements that start with their vertex ids.
 struct Elements {
@@ -118,6 +134,10 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     };
     while let Some(kw) = lx.next() {
         if kw.eq_ignore_ascii_case("End") {
+            if let Some(t) = lx.next() {
+                let msg = format!("text after 'End', from '{}' (ignored)", text::quote(t));
+                sections.data.warnings.push(lx.warning(msg));
+            }
             break;
         }
         sections.read(&mut lx, kw)?;
@@ -181,16 +201,23 @@ impl Sections {
     }
 
     /// Skips a section the library knows the size of; any other keyword is an error.
-    fn skip(&self, lx: &mut Lexer, kw: &str) -> Result<()> {
+    fn skip(&mut self, lx: &mut Lexer, kw: &str) -> Result<()> {
         let is = |k: &str| kw.eq_ignore_ascii_case(k);
         if is("AngleOfCornerBound") || is("Iterations") || is("Time") {
             lx.expect("a value")?;
         } else if is("BoundingBox") {
             lx.skip(2 * self.dim, "a bounding box coordinate")?;
         } else if let Some(k) = entry_tokens(kw, self.dim) {
+            let line = lx.line();
             let n = lx.usize(&format!("the number of {kw}"))?;
             for _ in 0..n {
                 lx.skip(k, kw)?;
+            }
+            if n > 0 && IGNORED_ELEMENTS.iter().any(|e| e.eq_ignore_ascii_case(kw)) {
+                let msg = format!("{n} {kw} ignored (only Triangles and Tetrahedra are read)");
+                self.data
+                    .warnings
+                    .push(Warning::new(lx.name(), Some(line), msg));
             }
         } else {
             return Err(lx.error(format!(
@@ -268,6 +295,23 @@ End
         assert_eq!(d.positions[2], DVec3::new(0.0, 2.0, 0.0));
         assert_eq!(d.triangles, vec![[0, 1, 2]]);
         assert!(d.tetrahedra.is_empty());
+    }
+
+    #[test]
+    fn skipped_elements_and_text_after_end_are_reported() {
+        let t = CUBE_CORNER.replace("End\n", "End\n\nVertices 1\n0 0 0 0\n");
+        let d = parse(&t, "m.mesh").unwrap();
+        assert_eq!(d.tetrahedra.len(), 2);
+        let w: Vec<String> = d.warnings.iter().map(|w| w.to_string()).collect();
+        assert_eq!(
+            w,
+            [
+                "m.mesh:12: 2 Edges ignored (only Triangles and Tetrahedra are read)",
+                "m.mesh:27: 1 Quadrilaterals ignored (only Triangles and Tetrahedra are read)",
+                "m.mesh:32: 1 Hexahedra ignored (only Triangles and Tetrahedra are read)",
+                "m.mesh:36: text after 'End', from 'Vertices' (ignored)",
+            ]
+        );
     }
 
     #[test]

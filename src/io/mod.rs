@@ -13,8 +13,10 @@ mod tests;
 mod tetgen;
 mod text;
 mod vtk;
+mod warning;
 pub mod write;
 
+pub use warning::Warning;
 pub use write::{Mesh, WriteOptions, write, write_mesh, write_to};
 
 use crate::error::{Error, Result};
@@ -27,6 +29,9 @@ pub struct MeshData {
     pub positions: Vec<DVec3>,
     pub triangles: Vec<[u32; 3]>,
     pub tetrahedra: Vec<[u32; 4]>,
+    /// What the reader read past or found odd (`file:line: ...` when shown), in file order,
+    /// then the checks every format shares (non-finite coordinates, no elements).
+    pub warnings: Vec<Warning>,
 }
 
 impl MeshData {
@@ -89,7 +94,7 @@ pub fn read(path: &Path) -> Result<MeshData> {
     if format != Ok(Format::TetGen) {
         std::fs::metadata(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))?;
     }
-    match format? {
+    let mut data = match format? {
         Format::Off => off::read(path),
         Format::Obj => obj::read(path),
         Format::Ply => ply::read(path),
@@ -98,7 +103,9 @@ pub fn read(path: &Path) -> Result<MeshData> {
         Format::Medit => medit::read(path),
         Format::Gmsh => gmsh::read(path),
         Format::Vtk => vtk::read(path),
-    }
+    }?;
+    warning::add_common(&mut data, &path.display().to_string());
+    Ok(data)
 }
 
 /// Reads a whole file, naming it in the error.
@@ -113,7 +120,7 @@ pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
         std::str::from_utf8(bytes)
             .map_err(|e| Error::parse(format!("{name}: not UTF-8 text (byte {})", e.valid_up_to())))
     };
-    match format {
+    let mut data = match format {
         Format::Off => off::parse(bytes, name),
         Format::Obj => obj::parse(bytes, name),
         Format::Ply => ply::parse(bytes, name),
@@ -124,5 +131,7 @@ pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
         Format::TetGen => Err(Error::invalid(format!(
             "{name}: TetGen meshes are two files (.node and .ele): read them from a path"
         ))),
-    }
+    }?;
+    warning::add_common(&mut data, name);
+    Ok(data)
 }

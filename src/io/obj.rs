@@ -7,12 +7,16 @@
 //!
 //! Accepted: `v x y z [w]` and `v x y z r g b` (the first three numbers are the position);
 //! `f` with corners `v`, `v/vt`, `v//vn`, `v/vt/vn`, negative (relative) indices, polygons
-//! fan-triangulated (i1,i2,i3), (i1,i3,i4), ...; `\` at the end of a line continues it;
-//! `#` comments; a UTF-8 byte order mark. Every other statement (`vt`, `vn`, `o`, `g`, `s`,
-//! `usemtl`, `mtllib`, `l`, `p`, free-form geometry) carries nothing we store and is
-//! skipped; groups therefore never cut the surface apart. Errors name the file and line.
+//! fan-triangulated (i1,i2,i3), (i1,i3,i4), ... (counted in a warning); `\` at the end of a
+//! line continues it; `#` comments; a UTF-8 byte order mark. The statements that carry
+//! nothing we store (`vt`, `vn`, `vp`, `o`, `g`, `s`, `usemtl`, `mtllib`, the free-form
+//! attributes) are skipped; groups therefore never cut the surface apart. Elements we do not
+//! store (`l`, `p`, `curv`, `curv2`, `surf`) and unknown statements are skipped with a
+//! warning. A file of vertices and no faces is a point set; a file with neither is refused
+//! (nothing in it shows it is OBJ). Errors name the file and line.
 
 use super::MeshData;
+use super::warning::{Noun, Tally};
 use crate::error::{Error, ErrorKind, Result};
 use glam::DVec3;
 use std::path::Path;
@@ -31,6 +35,7 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
         data: MeshData::default(),
         forward: Vec::new(),
         corners: Vec::new(),
+        tally: Tally::default(),
     };
     let mut joined: Vec<u8> = Vec::new();
     let mut lines = bytes.split(|&c| c == b'\n').enumerate();
@@ -73,7 +78,95 @@ struct Statements<'a> {
     forward: Vec<(usize, u64)>,
     /// The corners of the face being read.
     corners: Vec<u32>,
+    /// What was skipped or fan-triangulated.
+    tally: Tally,
 }
+
+/// Statements that carry nothing we store: skipped without a word.
+const ATTRIBUTES: &[&[u8]] = &[
+    b"vt",
+    b"vn",
+    b"vp",
+    b"o",
+    b"g",
+    b"s",
+    b"usemtl",
+    b"mtllib",
+    b"cstype",
+    b"deg",
+    b"bmat",
+    b"step",
+    b"parm",
+    b"trim",
+    b"hole",
+    b"scrv",
+    b"sp",
+    b"end",
+    b"con",
+    b"mg",
+    b"bevel",
+    b"c_interp",
+    b"d_interp",
+    b"lod",
+    b"shadow_obj",
+    b"trace_obj",
+    b"ctech",
+    b"stech",
+    b"maplib",
+    b"usemap",
+];
+
+/// Elements we do not store, each with its warning.
+const ELEMENTS: &[(&[u8], Noun)] = &[
+    (
+        b"l",
+        (
+            "'l' statement (polyline) ignored",
+            "'l' statements (polylines) ignored",
+        ),
+    ),
+    (
+        b"p",
+        (
+            "'p' statement (points) ignored",
+            "'p' statements (points) ignored",
+        ),
+    ),
+    (
+        b"curv",
+        (
+            "'curv' statement (curve) ignored",
+            "'curv' statements (curves) ignored",
+        ),
+    ),
+    (
+        b"curv2",
+        (
+            "'curv2' statement (curve) ignored",
+            "'curv2' statements (curves) ignored",
+        ),
+    ),
+    (
+        b"surf",
+        (
+            "'surf' statement (surface) ignored",
+            "'surf' statements (surfaces) ignored",
+        ),
+    ),
+];
+
+const LONG_VERTEX: Noun = (
+    "'v' line with values other than 'w' or 'r g b' after the position (ignored)",
+    "'v' lines with values other than 'w' or 'r g b' after the position (ignored)",
+);
+
+const UNKNOWN: Noun = ("unknown statement ignored", "unknown statements ignored");
+
+/// Polygons of more than 3 vertices, fan-triangulated.
+const FANNED: Noun = (
+    "polygon of more than 3 vertices fan-triangulated",
+    "polygons of more than 3 vertices fan-triangulated",
+);
 
 impl Statements<'_> {
     /// Reads the statement on line `line_no` (comments included); keeps `v` and `f`.
@@ -85,7 +178,15 @@ impl Statements<'_> {
         match words.next() {
             Some(b"v") => self.vertex(line_no, words),
             Some(b"f") => self.face(line_no, words),
-            _ => Ok(()),
+            Some(word) => {
+                if let Some(&(_, noun)) = ELEMENTS.iter().find(|(k, _)| *k == word) {
+                    self.tally.add(noun, Some(line_no));
+                } else if !ATTRIBUTES.contains(&word) {
+                    self.tally.add(UNKNOWN, Some(line_no));
+                }
+                Ok(())
+            }
+            None => Ok(()),
         }
     }
 
@@ -108,11 +209,19 @@ impl Statements<'_> {
                 )
             })?;
         }
-        if let Some(w) = words.find(|w| number(w).is_none()) {
-            return Err(self.err(
-                line_no,
-                format!("expected a number after the position, found '{}'", quote(w)),
-            ));
+        let mut extra = 0;
+        for w in words {
+            if number(w).is_none() {
+                return Err(self.err(
+                    line_no,
+                    format!("expected a number after the position, found '{}'", quote(w)),
+                ));
+            }
+            extra += 1;
+        }
+        // After the position: nothing, `w`, or a colour `r g b`; anything else is unknown.
+        if ![0, 1, 3].contains(&extra) {
+            self.tally.add(LONG_VERTEX, Some(line_no));
         }
         if self.data.positions.len() == u32::MAX as usize {
             return Err(Error::too_large(format!(
@@ -146,6 +255,9 @@ impl Statements<'_> {
                 ),
             ));
         }
+        if corners.len() > 3 {
+            self.tally.add(FANNED, Some(line_no));
+        }
         for k in 1..corners.len() - 1 {
             self.data
                 .triangles
@@ -154,8 +266,8 @@ impl Statements<'_> {
         Ok(())
     }
 
-    /// Checks the forward references and that there is a face.
-    fn finish(self) -> Result<MeshData> {
+    /// Checks the forward references and that there is a vertex.
+    fn finish(mut self) -> Result<MeshData> {
         let name = self.name;
         let n = self.data.positions.len() as u64;
         if let Some(&(line_no, index)) = self.forward.iter().find(|&&(_, index)| index >= n) {
@@ -167,11 +279,12 @@ impl Statements<'_> {
                 ),
             ));
         }
-        if self.data.triangles.is_empty() {
+        if self.data.positions.is_empty() {
             return Err(Error::parse(format!(
-                "{name}: no faces ('f' lines): empty, not an OBJ file, or only points and lines"
+                "{name}: no vertices ('v' lines) and no faces: empty, or not an OBJ file"
             )));
         }
+        self.tally.into_warnings(name, &mut self.data.warnings);
         Ok(self.data)
     }
 }
@@ -285,6 +398,67 @@ pub(super) mod tests {
         assert_eq!(m.triangles, vec![[0, 1, 2]]);
         assert_eq!(m.positions[1], DVec3::new(1.0, 0.0, 0.0));
         assert_eq!(m.positions[2], DVec3::new(0.0, 1.0, 0.0));
+    }
+
+    fn warnings(m: &MeshData) -> Vec<String> {
+        m.warnings.iter().map(|w| w.to_string()).collect()
+    }
+
+    #[test]
+    fn skipped_elements_unknown_statements_and_polygons_are_reported() {
+        let m = p(CUBE.as_bytes()).unwrap();
+        assert_eq!(
+            warnings(&m),
+            [
+                "t.obj:16: 6 polygons of more than 3 vertices fan-triangulated",
+                "t.obj:29: 1 'l' statement (polyline) ignored",
+            ]
+        );
+        let m =
+            p(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nfo 1 2 3\np 1\nf 1 2 3\np 2 3\nsurf 0 1\nfo\n").unwrap();
+        assert_eq!(m.triangles, vec![[0, 1, 2]]);
+        assert_eq!(
+            warnings(&m),
+            [
+                "t.obj:4: 2 unknown statements ignored",
+                "t.obj:5: 2 'p' statements (points) ignored",
+                "t.obj:8: 1 'surf' statement (surface) ignored",
+            ]
+        );
+    }
+
+    #[test]
+    fn vertex_lines_with_unknown_values_are_reported() {
+        let m = p(b"v 0 0 0 1\nv 1 0 0 1 0 0\nv 0 1 0 1 2\nv 0 0 1 1 2 3 4 5\nf 1 2 3\n").unwrap();
+        assert_eq!(m.positions[3], DVec3::new(0.0, 0.0, 1.0));
+        assert_eq!(
+            warnings(&m),
+            [
+                "t.obj:3: 2 'v' lines with values other than 'w' or 'r g b' after the position (ignored)"
+            ]
+        );
+    }
+
+    #[test]
+    fn vertices_without_faces_are_a_point_set() {
+        let m = crate::io::parse(
+            b"v 1 2 3\nv 4 5 6\nl 1 2\n",
+            crate::io::Format::Obj,
+            "t.obj",
+        )
+        .unwrap();
+        assert_eq!(
+            m.positions,
+            vec![DVec3::new(1.0, 2.0, 3.0), DVec3::new(4.0, 5.0, 6.0)]
+        );
+        assert!(m.triangles.is_empty());
+        assert_eq!(
+            warnings(&m),
+            [
+                "t.obj:3: 1 'l' statement (polyline) ignored",
+                "t.obj: no faces or cells: read as a point set of 2 vertices",
+            ]
+        );
     }
 
     #[test]

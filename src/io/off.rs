@@ -15,8 +15,12 @@
 //! Every error names the file and the line of the offending token. Declared counts only cap
 //! the memory reserved up front by the input's size, so a lying header costs nothing.
 
+mod binary;
+
 use super::MeshData;
+use super::warning::{Noun, Tally, Warning, count};
 use crate::error::{Error, Result};
+use binary::Binary;
 use glam::DVec3;
 use std::path::Path;
 
@@ -34,84 +38,146 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
         pos: 0,
         line: 1,
     };
+    let mut data = MeshData::default();
     let header = read_header(&mut tk, name)?;
-    let positions = read_vertices(&mut tk, name, &header)?;
-    let triangles = read_faces(&mut tk, name, &header)?;
-    Ok(MeshData {
-        positions,
-        triangles,
-        tetrahedra: Vec::new(),
-    })
+    if header.binary {
+        let mut bin = Binary {
+            b: bytes,
+            pos: tk.pos,
+            name,
+        };
+        binary::read(&mut bin, &header, &mut data)?;
+    } else {
+        let header = read_counts(&mut tk, name, header)?;
+        data.positions = read_vertices(&mut tk, name, &header)?;
+        let mut polygons = Tally::default();
+        data.triangles = read_faces(&mut tk, name, &header, &mut polygons)?;
+        polygons.into_warnings(name, &mut data.warnings);
+        trailing_lines(&mut tk, name, header.faces, &mut data.warnings);
+    }
+    Ok(data)
 }
 
-/// What the header keyword and the counts line announce.
+/// What the header keyword and the counts announce.
 struct Header {
-    /// A prefix (`ST`, `C`, `N`) announces extra columns after each vertex's position.
-    prefixed: bool,
+    /// Extra columns after each vertex's position: `ST` (2), `C` (4 in binary), `N` (3).
+    prefixes: Prefixes,
+    binary: bool,
     vertices: u64,
     faces: u64,
 }
 
-/// Reads the header keyword and the counts `nv nf [ne]`.
+/// The prefixes of the header keyword.
+#[derive(Clone, Copy, Default)]
+struct Prefixes {
+    st: bool,
+    c: bool,
+    n: bool,
+}
+
+impl Prefixes {
+    fn any(self) -> bool {
+        self.st || self.c || self.n
+    }
+    /// `f32`s per vertex after its position in binary OFF: normal, colour (RGBA), texture.
+    fn binary_extra(self) -> usize {
+        3 * usize::from(self.n) + 4 * usize::from(self.c) + 2 * usize::from(self.st)
+    }
+}
+
+/// Reads the header keyword and, when `BINARY` follows it, the end of its line.
 fn read_header(tk: &mut Tokens, name: &str) -> Result<Header> {
     let Some((head, line)) = tk.next() else {
         return Err(Error::parse(format!(
             "{name}: empty file (no OFF header; expected 'OFF')"
         )));
     };
-    let prefixed = parse_header(head).map_err(|msg| tk.err_at(name, line, &msg))?;
+    let prefixes = parse_header(head).map_err(|msg| tk.err_at(name, line, &msg))?;
+    let mut binary = false;
     if tk.token_on_this_line() {
         let save = (tk.pos, tk.line);
-        if let Some((word, line)) = tk.next()
-            && word.eq_ignore_ascii_case(b"BINARY")
-        {
-            return Err(tk.err_at(name, line, "binary OFF ('OFF BINARY') is not supported"));
+        match tk.next() {
+            Some((word, _)) if word.eq_ignore_ascii_case(b"BINARY") => {
+                // The binary data starts after the keyword line's newline.
+                tk.skip_rest_of_line();
+                tk.pos = (tk.pos + 1).min(tk.b.len());
+                binary = true;
+            }
+            _ => (tk.pos, tk.line) = save,
         }
-        (tk.pos, tk.line) = save;
     }
+    Ok(Header {
+        prefixes,
+        binary,
+        vertices: 0,
+        faces: 0,
+    })
+}
+
+/// Reads the ASCII counts `nv nf [ne]`.
+fn read_counts(tk: &mut Tokens, name: &str, header: Header) -> Result<Header> {
     let vertices = tk.count(name, "the number of vertices")?;
-    if vertices > u64::from(u32::MAX) {
-        return Err(Error::out_of_range(format!(
-            "{name}:{}: {vertices} vertices declared; at most {} are supported",
-            tk.line,
-            u32::MAX
-        )));
-    }
+    check_vertex_count(vertices, name, Some(tk.line))?;
     let faces = tk.count(name, "the number of faces")?;
     if tk.token_on_this_line() {
         tk.count(name, "the number of edges")?;
     }
     Ok(Header {
-        prefixed,
         vertices,
         faces,
+        ..header
     })
+}
+
+/// Vertex ids are `u32`.
+fn check_vertex_count(vertices: u64, name: &str, line: Option<usize>) -> Result<()> {
+    if vertices > u64::from(u32::MAX) {
+        let place = line.map_or(String::new(), |l| format!(":{l}"));
+        return Err(Error::out_of_range(format!(
+            "{name}{place}: {vertices} vertices declared; at most {} are supported",
+            u32::MAX
+        )));
+    }
+    Ok(())
+}
+
+/// Room for `count` items of at least `min_bytes` each in what is left of the input:
+/// declared counts are never trusted for allocation.
+fn capacity(count: u64, left: usize, min_bytes: usize) -> usize {
+    (count.min(usize::MAX as u64) as usize).min(left / min_bytes)
 }
 
 /// Reads the vertices: 3 numbers each, plus the rest of the line when prefixed.
 fn read_vertices(tk: &mut Tokens, name: &str, header: &Header) -> Result<Vec<DVec3>> {
     let nv = header.vertices;
-    // At least "0 0 0\n" (6 bytes) each, so the input bounds the reservation.
-    let mut positions = Vec::with_capacity((nv as usize).min(tk.b.len() / 6));
+    // At least "0 0 0\n" (6 bytes) each.
+    let mut positions = Vec::with_capacity(capacity(nv, tk.left(), 6));
     for i in 0..nv {
         let mut p = [0.0f64; 3];
         for (c, axis) in p.iter_mut().zip(["x", "y", "z"]) {
             *c = tk.number(name, || format!("coordinate {axis} of vertex {i}"))?;
         }
         positions.push(DVec3::from_array(p));
-        if header.prefixed {
+        if header.prefixes.any() {
             tk.skip_rest_of_line();
         }
     }
     Ok(positions)
 }
 
-/// Reads the faces `k i1 .. ik [colour]`, fan-triangulated.
-fn read_faces(tk: &mut Tokens, name: &str, header: &Header) -> Result<Vec<[u32; 3]>> {
+/// Polygons of more than 3 vertices, fan-triangulated.
+const FANNED: Noun = (
+    "polygon of more than 3 vertices fan-triangulated",
+    "polygons of more than 3 vertices fan-triangulated",
+);
+
+/// Reads the faces `k i1 .. ik [colour]`, fan-triangulated (counted in `polygons`).
+fn read_faces(
+    tk: &mut Tokens, name: &str, header: &Header, polygons: &mut Tally,
+) -> Result<Vec<[u32; 3]>> {
     let (nv, nf) = (header.vertices as u32, header.faces);
     // At least "3 0 1 2\n" (8 bytes) each.
-    let mut triangles =
-        Vec::with_capacity((nf.min(usize::MAX as u64) as usize).min(tk.b.len() / 8));
+    let mut triangles = Vec::with_capacity(capacity(nf, tk.left(), 8));
     for f in 0..nf {
         let (tok, line) = tk.expect(name, || format!("the vertex count of face {f}"))?;
         let k: u64 = parse_tok(tok).ok_or_else(|| {
@@ -124,6 +190,9 @@ fn read_faces(tk: &mut Tokens, name: &str, header: &Header) -> Result<Vec<[u32; 
                 &format!("face {f} has {k} vertices; a face needs at least 3"),
             ));
         }
+        if k > 3 {
+            polygons.add(FANNED, Some(line));
+        }
         let first = tk.index(name, f, nv)?;
         let mut prev = tk.index(name, f, nv)?;
         for _ in 2..k {
@@ -131,21 +200,50 @@ fn read_faces(tk: &mut Tokens, name: &str, header: &Header) -> Result<Vec<[u32; 
             triangles.push([first, prev, v]);
             prev = v;
         }
-        // Whatever follows the last index on its line is the face's colour.
-        tk.skip_rest_of_line();
+        // Whatever follows the last index on its line is the face's colour: 0 to 4 values.
+        if tk.rest_of_line_tokens() > 4 {
+            polygons.add(LONG_FACE, Some(line));
+        }
     }
     Ok(triangles)
 }
 
-/// Checks the header keyword `[ST][C][N][4][n]OFF`; returns whether a prefix announces extra
-/// per-vertex columns.
-fn parse_header(tok: &[u8]) -> std::result::Result<bool, String> {
+/// Face lines with more values after their indices than a colour has.
+const LONG_FACE: Noun = (
+    "face line with more than 4 values after its indices (not a colour; ignored)",
+    "face lines with more than 4 values after their indices (not a colour; ignored)",
+);
+
+/// Lines holding tokens after the declared faces: read past, with a warning at the first.
+fn trailing_lines(tk: &mut Tokens, name: &str, faces: u64, warnings: &mut Vec<Warning>) {
+    let mut first = None;
+    let mut lines = 0u64;
+    while let Some((_, line)) = tk.next() {
+        first.get_or_insert(line);
+        lines += 1;
+        tk.skip_rest_of_line();
+    }
+    if let Some(line) = first {
+        let msg = format!(
+            "{} after the {faces} declared (ignored)",
+            count(lines, ("face line", "face lines"))
+        );
+        warnings.push(Warning::new(name, Some(line), msg));
+    }
+}
+
+/// Checks the header keyword `[ST][C][N][4][n]OFF`; returns its prefixes.
+fn parse_header(tok: &[u8]) -> std::result::Result<Prefixes, String> {
     let mut rest = tok;
-    let mut prefixed = false;
-    for p in [&b"ST"[..], b"C", b"N"] {
+    let mut prefixes = Prefixes::default();
+    for (p, flag) in [
+        (&b"ST"[..], &mut prefixes.st),
+        (b"C", &mut prefixes.c),
+        (b"N", &mut prefixes.n),
+    ] {
         if let Some(r) = rest.strip_prefix(p) {
             rest = r;
-            prefixed = true;
+            *flag = true;
         }
     }
     let mut unsupported = false;
@@ -167,7 +265,7 @@ fn parse_header(tok: &[u8]) -> std::result::Result<bool, String> {
             show(tok)
         ));
     }
-    Ok(prefixed)
+    Ok(prefixes)
 }
 
 /// The token as text for an error message (lossy, shortened).
@@ -214,6 +312,22 @@ impl<'a> Tokens<'a> {
             self.pos += 1;
         }
         Some((&b[start..self.pos], self.line))
+    }
+
+    /// Moves to the end of the current line, counting the tokens on the way.
+    fn rest_of_line_tokens(&mut self) -> usize {
+        let mut n = 0;
+        while self.token_on_this_line() {
+            self.next();
+            n += 1;
+        }
+        self.skip_rest_of_line();
+        n
+    }
+
+    /// Bytes not read yet.
+    fn left(&self) -> usize {
+        self.b.len().saturating_sub(self.pos)
     }
 
     /// Moves to the end of the current line (its `\n` is left for `skip_blank` to count).
@@ -388,6 +502,105 @@ pub(super) mod tests {
                 format!("t.off:{line}: unexpected end of file (truncated?): expected {what}")
             );
         }
+    }
+
+    /// A binary OFF (big-endian) of the keyword `head`: a square as one quad and a
+    /// triangle, with `extra` floats after each position and one RGBA face colour.
+    pub(in crate::io) fn binary(head: &str, extra: usize) -> Vec<u8> {
+        let mut b = format!("{head} BINARY\n").into_bytes();
+        let int = |b: &mut Vec<u8>, x: i32| b.extend(x.to_be_bytes());
+        [5, 2, 0].iter().for_each(|&n| int(&mut b, n));
+        for p in [
+            [0.0f32, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.5],
+            [2.0, 2.0, 2.0],
+        ] {
+            p.iter().for_each(|x| b.extend(x.to_be_bytes()));
+            (0..extra).for_each(|_| b.extend(9.0f32.to_be_bytes()));
+        }
+        [4, 0, 1, 2, 3, 4].iter().for_each(|&n| int(&mut b, n));
+        [1.0f32, 0.0, 0.0, 1.0]
+            .iter()
+            .for_each(|x| b.extend(x.to_be_bytes()));
+        [3, 1, 4, 2, 0].iter().for_each(|&n| int(&mut b, n));
+        b
+    }
+
+    #[test]
+    fn binary_off_is_read_as_ascii_is() {
+        for (head, extra) in [("OFF", 0), ("COFF", 4), ("NOFF", 3), ("STCNOFF", 9)] {
+            let m = p(&binary(head, extra)).unwrap();
+            assert_eq!(m.positions.len(), 5, "{head}");
+            assert_eq!(m.positions[3], DVec3::new(0.0, 1.0, 0.5), "{head}");
+            assert_eq!(m.positions[4], DVec3::splat(2.0), "{head}");
+            assert_eq!(m.triangles, vec![[0, 1, 2], [0, 2, 3], [1, 4, 2]], "{head}");
+            let w: Vec<String> = m.warnings.iter().map(|w| w.to_string()).collect();
+            assert_eq!(
+                w,
+                ["t.off: 1 polygon of more than 3 vertices fan-triangulated"]
+            );
+        }
+        let mut b = binary("OFF", 0);
+        b.extend([0, 0, 0, 7, 1]);
+        let w = p(&b).unwrap().warnings;
+        assert_eq!(
+            w[1].to_string(),
+            "t.off: 5 bytes after the 2 declared faces, from byte 143 (ignored)"
+        );
+    }
+
+    #[test]
+    fn bad_binary_off_names_the_byte() {
+        let b = binary("OFF", 0);
+        let with = |at: usize, x: i32| {
+            let mut b = b.clone();
+            b[at..at + 4].copy_from_slice(&x.to_be_bytes());
+            b
+        };
+        // The faces start at byte 11 + 12 + 5 * 12 = 83.
+        #[rustfmt::skip]
+        let cases = [
+            (b[..110].to_vec(), "t.off: at byte 110: unexpected end of file (truncated?): expected a colour component of face 0"),
+            (b[..100].to_vec(), "t.off: at byte 99: unexpected end of file (truncated?): expected a vertex index of face 0"),
+            (b[..50].to_vec(), "t.off: at byte 47: unexpected end of file (truncated?): expected coordinate x of vertex 2"),
+            (with(87, 5), "t.off: at byte 87: face 0: vertex index 5 is out of range (the file has 5 vertices)"),
+            (with(87, -1), "t.off: at byte 87: face 0: vertex index -1 is out of range (the file has 5 vertices)"),
+            (with(83, 2), "t.off: at byte 83: face 0 has 2 vertices; a face needs at least 3"),
+            (with(103, 5), "t.off: at byte 103: face 0 has 5 colour components (0 to 4)"),
+            (with(15, -3), "t.off: at byte 15: the number of faces is -3, negative"),
+            // A huge count is read as far as the input goes, never allocated.
+            (with(11, i32::MAX), "t.off: at byte 143: unexpected end of file (truncated?): expected coordinate x of vertex 10"),
+        ];
+        for (input, want) in cases {
+            assert_eq!(parse_error(p, input).message, want);
+        }
+    }
+
+    #[test]
+    fn face_lines_after_the_declared_ones_are_reported() {
+        let m =
+            p(b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# c\n\n3 0 2 1\n3 1 2 0 # x\n").unwrap();
+        assert_eq!(m.triangles, vec![[0, 1, 2]]);
+        let w: Vec<String> = m.warnings.iter().map(|w| w.to_string()).collect();
+        assert_eq!(w, ["t.off:9: 2 face lines after the 1 declared (ignored)"]);
+        let m = p(b"OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").unwrap();
+        assert_eq!(
+            m.warnings[0].to_string(),
+            "t.off:6: 1 face line after the 0 declared (ignored)"
+        );
+    }
+
+    #[test]
+    fn face_lines_longer_than_a_colour_are_reported() {
+        let m =
+            p(b"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 1 0 0 1\n3 0 2 1 7 7 7 7 7\n").unwrap();
+        assert_eq!(m.triangles, vec![[0, 1, 2], [0, 2, 1]]);
+        assert_eq!(
+            m.warnings[0].to_string(),
+            "t.off:7: 1 face line with more than 4 values after its indices (not a colour; ignored)"
+        );
     }
 
     #[test]

@@ -1,17 +1,21 @@
-//! PLY (Stanford), ASCII and binary little/big endian, decoded by the `ply-rs-bw` crate.
-//!
-//! The crate parses the header and decodes one element at a time into our own small element
-//! types (no per-vertex property map). Needed: a `vertex` element with scalar `x`, `y`, `z`
+//! PLY (Stanford), ASCII and binary little/big endian. The `ply-rs-bw` crate parses the
+//! header and decodes binary elements into our own small element types (no per-vertex
+//! property map); ASCII element lines are decoded by our own reader, so that an error names
+//! the element, its line and the property, and `nan` and `inf` read as numbers (reported,
+//! as in every format, by `io::read`). Needed: a `vertex` element with scalar `x`, `y`, `z`
 //! of any numeric type; a `face` element (optional: without it the file is a point set)
 //! with an integer list property `vertex_indices` or `vertex_index`, with any count type.
-//! Other elements and properties are read past and ignored. Polygons are fan-triangulated.
+//! Other elements are read past with a warning, other properties ignored. Polygons are
+//! fan-triangulated (counted in a warning); values after an element's properties on its
+//! line, and data after the declared elements, are read past with a warning.
 //!
-//! Errors name the file and, for ASCII, the line; for binary, the byte offset of the
-//! element that failed. Declared counts only bound the memory reserved up front by the
-//! input's size. The crate's ASCII number grammar has no `nan`, `inf`, `.5` or `5.`: such
-//! tokens are parse errors (binary NaN/inf are read as is).
+//! Errors are in our words and name the file and, for ASCII, the line; for binary, the
+//! byte offset of the element that failed. Declared counts only bound the memory reserved
+//! up front by the input's size.
 
 use super::MeshData;
+use super::text::quote;
+use super::warning::{Noun, Tally, Warning, count};
 use crate::error::{Error, ErrorKind, Result};
 use glam::DVec3;
 use ply_rs_bw::parser::{ParseError, Parser, Reader};
@@ -43,7 +47,7 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
     let mut reader = Reader::new(Cursor::new(bytes));
     let header = Parser::<Skip>::new()
         .read_header(&mut reader)
-        .map_err(|e| crate_error(name, &e, reader.line()))?;
+        .map_err(|e| header_error(name, bytes, &e, reader.line()))?;
     let cursor = reader.into_inner();
     let nv = check_header(&header, name)?;
 
@@ -58,35 +62,57 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
 
     let remaining = bytes.len() - input.pos;
     let ascii = header.encoding == Encoding::Ascii;
-    let mut positions = Vec::new();
-    let mut triangles = Vec::new();
+    let mut data = MeshData::default();
+    let mut tally = Tally::default();
     for (element, def) in &header.elements {
         match element.as_str() {
             "vertex" => {
                 // A vertex takes at least "0 0 0\n" in ASCII, 3 bytes in binary.
+                let positions = &mut data.positions;
                 positions.reserve(def.count.min(remaining / if ascii { 6 } else { 3 }));
-                input.elements::<Vertex>(def, |v, _, _| {
+                input.elements::<Vertex>(def, &mut tally, |v, _, _| {
                     positions.push(DVec3::from_array(v.0));
                     Ok(())
                 })?;
             }
             "face" => {
                 // A triangle takes at least "3 0 1 2\n" in ASCII, 4 bytes in binary.
+                let triangles = &mut data.triangles;
                 triangles.reserve(def.count.min(remaining / if ascii { 8 } else { 4 }));
-                input.elements::<Face>(def, |f, i, at| {
-                    triangulate(&f.0, nv, &mut triangles)
+                let fanned = &mut 0u64;
+                input.elements::<Face>(def, &mut tally, |f, i, at| {
+                    *fanned += u64::from(f.0.len() > 3);
+                    triangulate(&f.0, nv, triangles)
                         .map_err(|msg| at.error(msg.kind, &format!("face {i}: {}", msg.message)))
                 })?;
+                tally.add_n(FANNED, *fanned, None);
             }
-            _ => input.elements::<Skip>(def, |_, _, _| Ok(()))?,
+            other => {
+                input.elements::<Skip>(def, &mut tally, |_, _, _| Ok(()))?;
+                let msg = format!(
+                    "{} of element '{other}' ignored (only 'vertex' and 'face' are read)",
+                    count(def.count as u64, ("entry", "entries"))
+                );
+                data.warnings.push(Warning::new(name, None, msg));
+            }
         }
     }
-    Ok(MeshData {
-        positions,
-        triangles,
-        tetrahedra: Vec::new(),
-    })
+    tally.into_warnings(name, &mut data.warnings);
+    input.trailing(&mut data.warnings);
+    Ok(data)
 }
+
+/// Polygons of more than 3 vertices, fan-triangulated.
+const FANNED: Noun = (
+    "polygon of more than 3 vertices fan-triangulated",
+    "polygons of more than 3 vertices fan-triangulated",
+);
+
+/// ASCII element lines with more values than their element's properties.
+const LONG_LINE: Noun = (
+    "line with values after its element's properties (ignored)",
+    "lines with values after their element's properties (ignored)",
+);
 
 /// Checks the header has what we need; returns the vertex count.
 fn check_header(header: &Header, name: &str) -> Result<u32> {
@@ -147,9 +173,28 @@ fn check_header(header: &Header, name: &str) -> Result<u32> {
             Ok(nv)
         }
         other => Err(Error::parse(format!(
-            "{name}: face property '{}' has type {other:?}; a list of integers is expected",
-            list.name
+            "{name}: face property '{}' is {}; a list of integers is expected",
+            list.name,
+            type_name(other)
         ))),
+    }
+}
+
+/// A property type as the PLY header writes it: `float`, `list uchar int`, ...
+fn type_name(t: &PropertyType) -> String {
+    let scalar = |t: &ScalarType| match t {
+        ScalarType::Char => "char",
+        ScalarType::UChar => "uchar",
+        ScalarType::Short => "short",
+        ScalarType::UShort => "ushort",
+        ScalarType::Int => "int",
+        ScalarType::UInt => "uint",
+        ScalarType::Float => "float",
+        ScalarType::Double => "double",
+    };
+    match t {
+        PropertyType::Scalar(t) => format!("a scalar {}", scalar(t)),
+        PropertyType::List(n, t) => format!("a 'list {} {}'", scalar(n), scalar(t)),
     }
 }
 
@@ -181,24 +226,35 @@ fn triangulate(idx: &Indices, nv: u32, out: &mut Vec<[u32; 3]>) -> Result<()> {
     Ok(())
 }
 
-/// A header error from the crate, at its line if it gives one, else at the reader's line.
-fn crate_error(name: &str, e: &ParseError, reader_line: usize) -> Error {
-    let text = e.to_string();
-    let text = match e.line() {
-        Some(line) => text
-            .strip_prefix(&format!("Line {line}: "))
-            .unwrap_or(&text)
-            .to_string(),
-        None => text,
-    };
-    let msg = text
-        .replace("\n'", "'")
-        .replace("\r'", "'")
-        .replace("\n\t", "; ");
-    match e.line().or((reader_line > 0).then_some(reader_line)) {
-        Some(line) => Error::parse(format!("{name}:{line}: {msg}")),
-        None => Error::parse(format!("{name}: {msg}")),
+/// A header the crate could not read, in our words: at its line when known.
+fn header_error(name: &str, bytes: &[u8], e: &ParseError, reader_line: usize) -> Error {
+    // The crate gives a line for every error but the missing or bad format line.
+    let line = e.line();
+    if e.kind() == std::io::ErrorKind::UnexpectedEof {
+        let line = line.or((reader_line > 0).then_some(reader_line));
+        let at = line.map_or(String::new(), |l| format!(":{l}"));
+        return Error::parse(format!(
+            "{name}{at}: unexpected end of file in the header (no 'end_header' line)"
+        ));
     }
+    if line.is_none() && e.kind() == std::io::ErrorKind::InvalidData {
+        return Error::parse(format!(
+            "{name}:{reader_line}: the header holds bytes that are not UTF-8 text"
+        ));
+    }
+    let Some(line) = line else {
+        return Error::parse(format!(
+            "{name}: the header has no valid 'format' line ('format ascii 1.0', \
+             'format binary_little_endian 1.0' or 'format binary_big_endian 1.0')"
+        ));
+    };
+    let text = bytes.split(|&c| c == b'\n').nth(line - 1).unwrap_or(&[]);
+    let text = String::from_utf8_lossy(text);
+    Error::parse(format!(
+        "{name}:{line}: header line '{}' cannot be read (expected 'format', 'comment', \
+         'obj_info', 'element', 'property' or 'end_header', in that grammar)",
+        quote(text.trim_end())
+    ))
 }
 
 /// Where an element starts, for its error messages.
@@ -239,8 +295,9 @@ struct Payload<'a> {
 impl<'a> Payload<'a> {
     /// Decodes the `def.count` elements of `def` as `E`, handing each to `sink` with its
     /// number and location.
-    fn elements<E: PropertyAccess>(
-        &mut self, def: &ElementDef, mut sink: impl FnMut(E, usize, &Located<'a>) -> Result<()>,
+    fn elements<E: Ascii>(
+        &mut self, def: &ElementDef, tally: &mut Tally,
+        mut sink: impl FnMut(E, usize, &Located<'a>) -> Result<()>,
     ) -> Result<()> {
         if def.properties.is_empty() {
             return Ok(()); // nothing stored per element; an empty ASCII line is blank anyway
@@ -248,7 +305,7 @@ impl<'a> Payload<'a> {
         let parser = Parser::<E>::new();
         for i in 0..def.count {
             let (value, at) = if self.encoding == Encoding::Ascii {
-                self.ascii_element(&parser, def, i)?
+                self.ascii_element(def, i, tally)?
             } else {
                 self.binary_element(&parser, def, i)?
             };
@@ -265,8 +322,8 @@ impl<'a> Payload<'a> {
     }
 
     /// Element `i` of `def`: the next line that is not blank.
-    fn ascii_element<E: PropertyAccess>(
-        &mut self, parser: &Parser<E>, def: &ElementDef, i: usize,
+    fn ascii_element<E: Ascii>(
+        &mut self, def: &ElementDef, i: usize, tally: &mut Tally,
     ) -> Result<(E, Located<'a>)> {
         let element = &def.name;
         let (text, line) = self.next_line().ok_or_else(|| {
@@ -282,9 +339,12 @@ impl<'a> Payload<'a> {
         let text = std::str::from_utf8(text)
             .map_err(|_| at.error(ErrorKind::Parse, &format!("{element} {i}: not UTF-8 text")))?;
         let text = text.strip_suffix('\r').unwrap_or(text);
-        let value = parser
-            .read_ascii_element(text, def)
-            .map_err(|e| at.error(ErrorKind::Parse, &format!("{element} {i}: {e}")))?;
+        let mut tokens = text.split_ascii_whitespace();
+        let value = decode_ascii::<E>(&mut tokens, def)
+            .map_err(|msg| at.error(ErrorKind::Parse, &format!("{element} {i}: {msg}")))?;
+        if tokens.next().is_some() {
+            tally.add(LONG_LINE, Some(line));
+        }
         Ok((value, at))
     }
 
@@ -325,12 +385,96 @@ impl<'a> Payload<'a> {
                     def.count
                 )
             } else {
-                format!("{element} {i}: {e}")
+                format!("{element} {i} cannot be decoded as its declared properties")
             };
             at.error(ErrorKind::Parse, &msg)
         })?;
         self.pos = cursor.position() as usize;
         Ok((value, at))
+    }
+}
+
+impl Payload<'_> {
+    /// What follows the declared elements: read past, with a warning.
+    fn trailing(&mut self, warnings: &mut Vec<Warning>) {
+        if self.encoding == Encoding::Ascii {
+            let Some((_, first)) = self.next_line() else {
+                return;
+            };
+            let mut lines = 1;
+            while self.next_line().is_some() {
+                lines += 1;
+            }
+            let msg = format!(
+                "{} after the declared elements (ignored)",
+                count(lines, ("line", "lines"))
+            );
+            warnings.push(Warning::new(self.name, Some(first), msg));
+        } else if self.pos < self.bytes.len() {
+            let msg = format!(
+                "{} after the declared elements, from byte {} (ignored)",
+                count((self.bytes.len() - self.pos) as u64, ("byte", "bytes")),
+                self.pos
+            );
+            warnings.push(Warning::new(self.name, None, msg));
+        }
+    }
+}
+
+/// An element decoded from an ASCII line by our own reader: scalars through the
+/// `PropertyAccess` setters as `f64`, integer lists through `list`.
+trait Ascii: PropertyAccess {
+    /// An integer list property; only faces keep one.
+    fn list(&mut self, _name: &str, _items: Vec<i64>) {}
+}
+
+/// Decodes the properties of `def` from `tokens`, in order: a scalar is one number, a list
+/// its count and that many numbers. `Err` says which property is missing or malformed.
+fn decode_ascii<'t, E: Ascii>(
+    tokens: &mut impl Iterator<Item = &'t str>, def: &ElementDef,
+) -> std::result::Result<E, String> {
+    let mut value = E::new();
+    for (name, p) in &def.properties {
+        let mut number = |what: &str| -> std::result::Result<f64, String> {
+            let tok = tokens
+                .next()
+                .ok_or_else(|| format!("property '{name}' is missing ({what} expected)"))?;
+            tok.parse()
+                .map_err(|_| format!("property '{name}': expected {what}, found '{}'", quote(tok)))
+        };
+        match &p.data_type {
+            PropertyType::Scalar(_) => {
+                let v = number("a number")?;
+                value.set_double(name, v);
+            }
+            PropertyType::List(..) => {
+                let n = number("a list length")?;
+                if n < 0.0 || n.fract() != 0.0 {
+                    return Err(format!("property '{name}': list length {n}"));
+                }
+                // Every item takes a token: the line bounds what is reserved.
+                let mut items = Vec::new();
+                for _ in 0..n as u64 {
+                    let v = number("a list item")?;
+                    if v.fract() != 0.0 || v.abs() > 9.0e15 {
+                        return Err(format!("property '{name}': expected an integer, found {v}"));
+                    }
+                    items.push(v as i64);
+                }
+                value.list(name, items);
+            }
+        }
+    }
+    Ok(value)
+}
+
+impl Ascii for Skip {}
+impl Ascii for Vertex {}
+impl Ascii for Face {
+    fn list(&mut self, name: &str, items: Vec<i64>) {
+        if INDEX_NAMES.contains(&name) {
+            self.0 = Indices::I64(items);
+        }
     }
 }
 
@@ -393,6 +537,8 @@ enum Indices {
     U16(Vec<u16>),
     I32(Vec<i32>),
     U32(Vec<u32>),
+    /// Read by our own ASCII decoder.
+    I64(Vec<i64>),
 }
 
 impl Indices {
@@ -405,6 +551,7 @@ impl Indices {
             Indices::U16(v) => v.len(),
             Indices::I32(v) => v.len(),
             Indices::U32(v) => v.len(),
+            Indices::I64(v) => v.len(),
         }
     }
     /// Index `j < len()`.
@@ -417,6 +564,7 @@ impl Indices {
             Indices::U16(v) => v[j].into(),
             Indices::I32(v) => v[j].into(),
             Indices::U32(v) => v[j].into(),
+            Indices::I64(v) => v[j],
         }
     }
 }
@@ -451,7 +599,7 @@ impl PropertyAccess for Face {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::{OutOfRange, Parse};
     use crate::io::text::{self, assert_errors, parse_error};
@@ -460,7 +608,7 @@ mod tests {
         parse(bytes, "t.ply")
     }
 
-    const ASCII: &str = "ply\nformat ascii 1.0\ncomment a square and a triangle\n\
+    pub(in crate::io) const ASCII: &str = "ply\nformat ascii 1.0\ncomment a square and a triangle\n\
         element vertex 5\nproperty float x\nproperty float y\nproperty double z\nproperty uchar red\n\
         element face 2\nproperty list uchar int vertex_indices\nproperty float quality\nend_header\n\
         0 0 0 255\n1 0 0 0\n1 1 0 0\n0 1 0.5 0\n\n2 2 -2 7\n4 0 1 2 3 0.5\n3 1 4 2 1\n";
@@ -577,7 +725,7 @@ mod tests {
             (edit("1 1 0 0", "1 x 0 0"), Parse, "t.ply:15: vertex 2"),
             (edit("property float y", "property flaot y"), Parse, "t.ply:6: "),
             (edit("vertex_indices", "corners"), Parse, "t.ply: the 'face' element has no list property 'vertex_indices'"),
-            (edit("uchar int vertex_indices", "uchar float vertex_indices"), Parse, "t.ply: face property 'vertex_indices' has type"),
+            (edit("uchar int vertex_indices", "uchar float vertex_indices"), Parse, "t.ply: face property 'vertex_indices' is a 'list uchar float'"),
             ("".into(), Parse, "t.ply: empty file"),
             ("OFF\n3 1 0\n".into(), Parse, "t.ply:1: not a PLY file"),
             ("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n".into(), Parse, "t.ply:5: "),
@@ -599,6 +747,87 @@ mod tests {
             e.message.ends_with("a list of integers is expected"),
             "{}",
             e.message
+        );
+    }
+
+    #[test]
+    fn errors_are_in_our_words() {
+        let edit = |from: &str, to: &str| ASCII.replace(from, to);
+        #[rustfmt::skip]
+        let cases = [
+            (edit("1 1 0 0", "1 x 0 0"), "t.ply:15: vertex 2: property 'y': expected a number, found 'x'"),
+            (edit("1 1 0 0", "1 1"), "t.ply:15: vertex 2: property 'z' is missing (a number expected)"),
+            (edit("3 1 4 2 1", "3 1 4"), "t.ply:20: face 1: property 'vertex_indices' is missing (a list item expected)"),
+            (edit("3 1 4 2 1", "3 1 4.5 2 1"), "t.ply:20: face 1: property 'vertex_indices': expected an integer, found 4.5"),
+            (edit("3 1 4 2 1", "-3 1 4 2 1"), "t.ply:20: face 1: property 'vertex_indices': list length -3"),
+            (edit("property float y", "property flaot y"), "t.ply:6: header line 'property flaot y' cannot be read (expected 'format', 'comment', 'obj_info', 'element', 'property' or 'end_header', in that grammar)"),
+            ("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n".into(), "t.ply:5: unexpected end of file in the header (no 'end_header' line)"),
+            ("ply\nelement vertex 1\nproperty float x\nend_header\n".into(), "t.ply: the header has no valid 'format' line ('format ascii 1.0', 'format binary_little_endian 1.0' or 'format binary_big_endian 1.0')"),
+        ];
+        for (input, want) in cases {
+            assert_eq!(parse_error(p, input).message, want);
+        }
+        let mut b = binary(false);
+        let n = b.len();
+        // Face 1's count byte says 200 indices: it runs past the end.
+        b[n - 13] = 200;
+        assert_eq!(
+            parse_error(p, b).message,
+            format!(
+                "t.ply: at byte {}: unexpected end of file (truncated?) in face 1 of 2",
+                n - 13
+            )
+        );
+    }
+
+    fn warnings(m: &MeshData) -> Vec<String> {
+        m.warnings.iter().map(|w| w.to_string()).collect()
+    }
+
+    #[test]
+    fn skipped_elements_long_lines_and_trailing_data_are_reported() {
+        let m = p(ASCII.as_bytes()).unwrap();
+        assert_eq!(
+            warnings(&m),
+            ["t.ply: 1 polygon of more than 3 vertices fan-triangulated"]
+        );
+        let text = ASCII.replace("1 0 0 0\n", "1 0 0 0 7 7\n") + "3 0 1 2\n\n3 0 2 1\n";
+        let m = p(text.as_bytes()).unwrap();
+        assert_eq!(m.triangles, vec![[0, 1, 2], [0, 2, 3], [1, 4, 2]]);
+        assert_eq!(
+            warnings(&m),
+            [
+                "t.ply:14: 1 line with values after its element's properties (ignored)",
+                "t.ply: 1 polygon of more than 3 vertices fan-triangulated",
+                "t.ply:21: 2 lines after the declared elements (ignored)",
+            ]
+        );
+        let mut b = binary(true);
+        let n = b.len();
+        b.extend([0, 0]);
+        let m = p(&b).unwrap();
+        assert_eq!(
+            warnings(&m),
+            [
+                "t.ply: 1 entry of element 'edge' ignored (only 'vertex' and 'face' are read)",
+                "t.ply: 1 polygon of more than 3 vertices fan-triangulated",
+                &format!("t.ply: 2 bytes after the declared elements, from byte {n} (ignored)"),
+            ]
+        );
+    }
+
+    #[test]
+    fn ascii_nan_and_inf_are_read_and_reported() {
+        let text = ASCII
+            .replace("1 0 0 0\n", "nan 0 0 0\n")
+            .replace("1 1 0 0", "1 -inf 0 0");
+        let m = crate::io::parse(text.as_bytes(), crate::io::Format::Ply, "t.ply").unwrap();
+        assert!(m.positions[1].x.is_nan());
+        assert_eq!(m.positions[2].y, f64::NEG_INFINITY);
+        assert_eq!(
+            m.warnings[1].to_string(),
+            "t.ply: 2 vertices have a NaN or infinite coordinate (0-based ids 1, 2); geometric \
+             checks skip them"
         );
     }
 
@@ -631,6 +860,13 @@ mod tests {
                 (kind, format!("t.ply: at byte {byte}: {words}"))
             );
         }
-        assert_errors(p, [(garbage, Parse, "t.ply:2: ")]);
+        assert_errors(
+            p,
+            [(
+                garbage,
+                Parse,
+                "t.ply:2: the header holds bytes that are not UTF-8 text",
+            )],
+        );
     }
 }

@@ -2,7 +2,7 @@
 //! and says what was wrong or missing.
 
 use super::text::{assert_errors, assert_robust, utf8};
-use super::{Format, MeshData, gmsh, medit, obj, off, parse, tetgen, vtk};
+use super::{Format, MeshData, gmsh, medit, obj, off, parse, ply, stl, tetgen, vtk};
 use crate::error::ErrorKind::{self, OutOfRange, Parse, TooLarge};
 use crate::error::Result;
 
@@ -47,7 +47,7 @@ fn bad_input_names_the_file_and_line() {
         (off, "# only a comment\n\nPLY\n", Parse, "t.off:3: missing OFF header"),
         (off, "", Parse, "t.off: empty file"),
         (off, "  \n# c\n", Parse, "t.off: empty file"),
-        (off, "OFF BINARY\n3 1 0\n", Parse, "t.off:1: binary OFF"),
+        (off, "OFF BINARY\n3 1 0\n", Parse, "t.off: at byte 15: unexpected end of file (truncated?): expected the number of faces"),
         (off, "4OFF\n3 1 0\n", Parse, "t.off:1: '4OFF': 4D"),
         (off, "OFF\n4294967296 0 0\n", OutOfRange, "t.off:2: 4294967296 vertices declared"),
         (obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\nf 1 3 4\n", OutOfRange, "t.obj:6: face vertex 4"),
@@ -62,9 +62,8 @@ fn bad_input_names_the_file_and_line() {
         (obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nv 1 1", Parse, "t.obj:5: a vertex needs 3"),
         (obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2", Parse, "t.obj:4: face has 2"),
         (obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\", Parse, "t.obj:4: face has 2"),
-        (obj, "", Parse, "t.obj: no faces"),
-        (obj, "hello\nworld\n", Parse, "t.obj: no faces"),
-        (obj, "v 0 0 0\nl 1 1 1\n", Parse, "t.obj: no faces"),
+        (obj, "", Parse, "t.obj: no vertices ('v' lines) and no faces"),
+        (obj, "hello\nworld\n", Parse, "t.obj: no vertices ('v' lines) and no faces"),
         (medit, "Dimension 3 Vertices 1 0 0 0 0 Triangles 1\n1 1 0 0", Parse, "t.mesh:2: vertex id 0 out of range"),
         (medit, "Dimension 3\nVertices 2\n0 0 0 0\n1 0", Parse, "t.mesh:4: unexpected end of file"),
         (medit, "Dimension 3\nVertices 1\n0 0 zero 0\n", Parse, "t.mesh:3: expected a coordinate, found 'zero'"),
@@ -105,11 +104,84 @@ fn prefixes_and_hostile_tokens_never_panic() {
         (Format::Vtk, vtk::tests::LEGACY, "t.vtk"),
         (Format::Vtk, vtk::tests::V51, "t.vtk"),
         (Format::Vtk, vtk::tests::POLY, "t.vtk"),
+        (Format::Ply, ply::tests::ASCII, "t.ply"),
     ];
     for (format, src, name) in fixtures {
         assert_robust(src, &format!("{name}:"), |t| {
             parse(t.as_bytes(), format, name)
         });
+    }
+    let stl = stl::tests::ascii(&stl::tests::cube()[..2]);
+    assert_robust(&stl, "t.stl:", |t| {
+        parse(t.as_bytes(), Format::Stl, "t.stl")
+    });
+}
+
+/// Every prefix of a binary OFF, and the file with each byte in turn set to 0x00, 0x7f and
+/// 0xff: no panic, and every error names the file.
+#[test]
+fn binary_off_prefixes_and_damaged_bytes_never_panic() {
+    let src = off::tests::binary("COFF", 4);
+    let check = |bytes: &[u8]| {
+        if let Err(e) = parse(bytes, Format::Off, "t.off") {
+            assert!(e.message.starts_with("t.off"), "{}", e.message);
+        }
+    };
+    for end in 0..=src.len() {
+        check(&src[..end]);
+    }
+    for i in 0..src.len() {
+        for b in [0x00, 0x7f, 0xff] {
+            let mut damaged = src.clone();
+            damaged[i] = b;
+            check(&damaged);
+        }
+    }
+}
+
+/// The one rule for files of vertices and no elements: every format reads them as a point
+/// set, with the same warning.
+#[test]
+fn every_format_reads_a_point_set() {
+    #[rustfmt::skip]
+    let cases: &[(Format, &str, &str)] = &[
+        (Format::Off, "t.off", "OFF\n2 0 0\n1 2 3\n4 5 6\n"),
+        (Format::Obj, "t.obj", "v 1 2 3\nv 4 5 6\n"),
+        (Format::Ply, "t.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n1 2 3\n4 5 6\n"),
+        (Format::Medit, "t.mesh", "Dimension 3\nVertices 2\n1 2 3 0\n4 5 6 0\nTriangles 0\nEnd\n"),
+        (Format::Gmsh, "t.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 1 2 3\n2 4 5 6\n$EndNodes\n"),
+        (Format::Vtk, "t.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n1 2 3 4 5 6\n"),
+    ];
+    let mut read: Vec<(&str, Result<MeshData>)> = cases
+        .iter()
+        .map(|&(format, name, text)| (name, parse(text.as_bytes(), format, name)))
+        .collect();
+    let mut tetgen = tetgen::parse("2 3 0 0\n0 1 2 3\n1 4 5 6\n", "t.node", "0 4 0\n", "t.ele");
+    if let Ok(data) = &mut tetgen {
+        super::warning::add_common(data, "t.node");
+    }
+    read.push(("t.node", tetgen));
+    for (name, data) in read {
+        let data = data.unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(
+            data.positions,
+            [
+                glam::DVec3::new(1.0, 2.0, 3.0),
+                glam::DVec3::new(4.0, 5.0, 6.0)
+            ],
+            "{name}"
+        );
+        assert!(
+            data.triangles.is_empty() && data.tetrahedra.is_empty(),
+            "{name}"
+        );
+        let warnings: Vec<String> = data.warnings.iter().map(|w| w.to_string()).collect();
+        assert_eq!(
+            warnings,
+            [format!(
+                "{name}: no faces or cells: read as a point set of 2 vertices"
+            )]
+        );
     }
 }
 

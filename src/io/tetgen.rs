@@ -3,12 +3,14 @@
 
 use super::MeshData;
 use super::text::{self, Lexer};
+use super::warning::Warning;
 use crate::error::{Error, Result};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 
 /// Parses a `.node` file: the points, and the id base (the first point's id, 0 or 1).
-pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64)> {
+/// A warning comes with them when text follows the declared points.
+pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64, Option<Warning>)> {
     let mut lx = Lexer::new(text, name, true);
     let n = lx.point_count("the number of points")?;
     let dim = lx.u64("the dimension")?;
@@ -36,13 +38,23 @@ pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64)> {
         positions.push(lx.point()?);
         lx.skip(extra, "a point attribute or marker")?;
     }
-    Ok((positions, base))
+    Ok((positions, base, trailing(&mut lx, "points")))
 }
 
-/// Parses an `.ele` file over `num_points` points numbered from `base`.
+/// A warning for any token after the `count` declared (`what`: points or tetrahedra).
+fn trailing(lx: &mut Lexer, what: &str) -> Option<Warning> {
+    let t = lx.next()?;
+    Some(lx.warning(format!(
+        "text after the declared {what}, from '{}' (ignored)",
+        text::quote(t)
+    )))
+}
+
+/// Parses an `.ele` file over `num_points` points numbered from `base`; a warning comes
+/// with the tetrahedra when text follows the declared ones.
 pub(crate) fn parse_ele(
     text: &str, name: &str, num_points: usize, base: u64,
-) -> Result<Vec<[u32; 4]>> {
+) -> Result<(Vec<[u32; 4]>, Option<Warning>)> {
     let mut lx = Lexer::new(text, name, true);
     let n = lx.usize("the number of tetrahedra")?;
     let per = lx.usize("the number of nodes per tetrahedron (4 or 10)")?;
@@ -59,17 +71,18 @@ pub(crate) fn parse_ele(
         tets.push(lx.ids("a node id", (base, num_points), out_of_range)?);
         lx.skip(extra, "a node id or attribute")?;
     }
-    Ok(tets)
+    Ok((tets, trailing(&mut lx, "tetrahedra")))
 }
 
 /// Parses a `.node` and an `.ele` text (names for error messages).
 pub(crate) fn parse(node: &str, node_name: &str, ele: &str, ele_name: &str) -> Result<MeshData> {
-    let (positions, base) = parse_node(node, node_name)?;
-    let tetrahedra = parse_ele(ele, ele_name, positions.len(), base)?;
+    let (positions, base, node_warning) = parse_node(node, node_name)?;
+    let (tetrahedra, ele_warning) = parse_ele(ele, ele_name, positions.len(), base)?;
     Ok(MeshData {
         positions,
-        triangles: Vec::new(),
         tetrahedra,
+        warnings: node_warning.into_iter().chain(ele_warning).collect(),
+        ..MeshData::default()
     })
 }
 
@@ -161,6 +174,27 @@ mod tests {
         let d = parse(&node, "a.node", ele, "a.ele").unwrap();
         assert_eq!(d.positions.len(), 10);
         assert_eq!(d.tetrahedra, vec![[3, 2, 1, 0]]);
+    }
+
+    #[test]
+    fn text_after_the_declared_points_and_tetrahedra_is_reported() {
+        let d = parse(
+            &(NODE1.to_string() + "6 2 2 2 0\n"),
+            "a.node",
+            &(ELE1.to_string() + "\n3 1 2 3 5 -1\n"),
+            "a.ele",
+        )
+        .unwrap();
+        assert_eq!(d.positions.len(), 5);
+        assert_eq!(d.tetrahedra.len(), 2);
+        let w: Vec<String> = d.warnings.iter().map(|w| w.to_string()).collect();
+        assert_eq!(
+            w,
+            [
+                "a.node:8: text after the declared points, from '6' (ignored)",
+                "a.ele:6: text after the declared tetrahedra, from '3' (ignored)",
+            ]
+        );
     }
 
     #[test]

@@ -120,6 +120,16 @@ impl<'a> Lexer<'a> {
         Some(line.strip_suffix('\r').unwrap_or(line))
     }
 
+    /// The file name used in error messages.
+    pub(in crate::io) fn name(&self) -> &'a str {
+        self.name
+    }
+
+    /// A warning at the last token's line.
+    pub(in crate::io) fn warning(&self, msg: impl Into<String>) -> super::Warning {
+        super::Warning::new(self.name, Some(self.tok_line), msg)
+    }
+
     /// Line of the last token (or of the end of the input, once met).
     pub(in crate::io) fn line(&self) -> usize {
         self.tok_line

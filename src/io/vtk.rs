@@ -1,10 +1,13 @@
 //! VTK legacy ASCII `.vtk`: `UNSTRUCTURED_GRID` (triangles and tetrahedra, linear or
 //! quadratic; other cells skipped) and `POLYDATA` (polygons fan-triangulated, triangle strips
 //! split). Cell arrays in the classic form (`k i1 .. ik`) and the 5.1 form (`OFFSETS` +
-//! `CONNECTIVITY`) are both read; point and cell data are ignored.
+//! `CONNECTIVITY`) are both read; point and cell data are ignored. Cells skipped (other
+//! types, `VERTICES`, `LINES`, polygons of fewer than 3 points) and polygons
+//! fan-triangulated are counted in warnings.
 
 use super::MeshData;
 use super::text::{self, Lexer};
+use super::warning::{Noun, SkippedTypes, Tally};
 use crate::error::Result;
 use std::path::Path;
 
@@ -91,7 +94,9 @@ fn read_cells(lx: &mut Lexer, num_points: usize) -> Result<Cells> {
 }
 
 /// Reads `CELL_TYPES` (after the keyword) and keeps the triangles and tetrahedra of `cells`.
-fn read_cell_types(lx: &mut Lexer, cells: &Cells, data: &mut MeshData) -> Result<()> {
+fn read_cell_types(
+    lx: &mut Lexer, cells: &Cells, data: &mut MeshData, skipped: &mut SkippedTypes,
+) -> Result<()> {
     let n = lx.usize("the number of cell types")?;
     if n != cells.len() {
         return Err(lx.error(format!("{n} cell types for {} cells", cells.len())));
@@ -103,7 +108,10 @@ fn read_cell_types(lx: &mut Lexer, cells: &Cells, data: &mut MeshData) -> Result
             22 => (6, 3),
             10 => (4, 4),
             24 => (10, 4),
-            _ => continue,
+            _ => {
+                skipped.add(ty, lx.line());
+                continue;
+            }
         };
         let c = cells.cell(i);
         if c.len() != want {
@@ -176,6 +184,8 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
         have_points: false,
         have_cells: false,
         pending: None,
+        skipped: SkippedTypes::default(),
+        tally: Tally::default(),
     };
     while let Some(kw) = lx.next() {
         if kw.eq_ignore_ascii_case("POINT_DATA") || kw.eq_ignore_ascii_case("CELL_DATA") {
@@ -186,7 +196,12 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     if let Some((_, line)) = sections.pending {
         return Err(lx.error_at(line, "CELLS without CELL_TYPES"));
     }
-    Ok(sections.data)
+    let mut data = sections.data;
+    sections
+        .skipped
+        .into_warnings(name, cell_noun, &mut data.warnings);
+    sections.tally.into_warnings(name, &mut data.warnings);
+    Ok(data)
 }
 
 /// Reads the magic line, the title, the encoding and the dataset type.
@@ -230,6 +245,10 @@ struct Sections {
     have_cells: bool,
     /// CELLS read, waiting for their CELL_TYPES (with the line of the keyword).
     pending: Option<(Cells, usize)>,
+    /// Cell types skipped (unstructured grid).
+    skipped: SkippedTypes,
+    /// Polydata cells skipped or fan-triangulated.
+    tally: Tally,
 }
 
 impl Sections {
@@ -250,7 +269,7 @@ impl Sections {
             let Some((cells, _)) = self.pending.take() else {
                 return Err(lx.error("CELL_TYPES before CELLS"));
             };
-            read_cell_types(lx, &cells, &mut self.data)
+            read_cell_types(lx, &cells, &mut self.data, &mut self.skipped)
         } else if is("METADATA") {
             skip_metadata(lx);
             Ok(())
@@ -288,31 +307,68 @@ impl Sections {
         self.have_cells = true;
         let line = lx.line();
         let cells = read_cells(lx, self.data.positions.len())?;
+        let tally = &mut self.tally;
         if grid {
             self.pending = Some((cells, line));
         } else if kw.eq_ignore_ascii_case("POLYGONS") {
-            fan_polygons(&cells, &mut self.data.triangles);
+            fan_polygons(&cells, &mut self.data.triangles, (tally, line));
         } else if kw.eq_ignore_ascii_case("TRIANGLE_STRIPS") {
-            split_strips(&cells, &mut self.data.triangles);
+            split_strips(&cells, &mut self.data.triangles, (tally, line));
+        } else if kw.eq_ignore_ascii_case("VERTICES") {
+            tally.add_n(VERTEX_CELLS, cells.len() as u64, Some(line));
+        } else {
+            tally.add_n(LINE_CELLS, cells.len() as u64, Some(line));
         }
         Ok(())
     }
 }
 
-/// Fan-triangulates every polygon: (c0, c1, c2), (c0, c2, c3), ...
-fn fan_polygons(cells: &Cells, out: &mut Vec<[u32; 3]>) {
+/// What a skipped unstructured-grid cell type is, for its warning.
+fn cell_noun(ty: u64) -> Noun {
+    match ty {
+        1 | 2 => ("vertex cell", "vertex cells"),
+        3 | 4 | 21 => ("line cell", "line cells"),
+        6..=9 | 23 => ("polygon or quad cell", "polygon or quad cells"),
+        11 | 12 | 25 => ("hexahedron", "hexahedra"),
+        13 | 26 => ("wedge", "wedges"),
+        14 | 27 => ("pyramid", "pyramids"),
+        _ => ("cell of another type", "cells of another type"),
+    }
+}
+
+const VERTEX_CELLS: Noun = ("VERTICES cell ignored", "VERTICES cells ignored");
+const LINE_CELLS: Noun = ("LINES cell ignored", "LINES cells ignored");
+const SHORT: Noun = (
+    "polygon or strip of fewer than 3 points ignored",
+    "polygons or strips of fewer than 3 points ignored",
+);
+const FANNED: Noun = (
+    "polygon of more than 3 vertices fan-triangulated",
+    "polygons of more than 3 vertices fan-triangulated",
+);
+
+/// Fan-triangulates every polygon: (c0, c1, c2), (c0, c2, c3), ...; counts the polygons
+/// fanned and those too short, at the line of their section.
+fn fan_polygons(cells: &Cells, out: &mut Vec<[u32; 3]>, (tally, line): (&mut Tally, usize)) {
     for i in 0..cells.len() {
         let c = cells.cell(i);
+        if c.len() != 3 {
+            tally.add(if c.len() < 3 { SHORT } else { FANNED }, Some(line));
+        }
         for j in 2..c.len() {
             out.push([c[0], c[j - 1], c[j]]);
         }
     }
 }
 
-/// Splits every triangle strip, every other triangle turned to keep one orientation.
-fn split_strips(cells: &Cells, out: &mut Vec<[u32; 3]>) {
+/// Splits every triangle strip, every other triangle turned to keep one orientation;
+/// counts the strips too short.
+fn split_strips(cells: &Cells, out: &mut Vec<[u32; 3]>, (tally, line): (&mut Tally, usize)) {
     for i in 0..cells.len() {
         let c = cells.cell(i);
+        if c.len() < 3 {
+            tally.add(SHORT, Some(line));
+        }
         for j in 2..c.len() {
             out.push(if j % 2 == 0 {
                 [c[j - 2], c[j - 1], c[j]]
@@ -449,6 +505,28 @@ TRIANGLE_STRIPS 1 5
         assert_eq!(
             d.triangles,
             vec![[0, 1, 2], [0, 2, 3], [1, 4, 5], [0, 1, 3], [3, 1, 2]]
+        );
+    }
+
+    #[test]
+    fn skipped_cells_and_polygons_are_reported() {
+        let w = |d: MeshData| d.warnings.iter().map(|w| w.to_string()).collect::<Vec<_>>();
+        assert_eq!(
+            w(parse(LEGACY, "v.vtk").unwrap()),
+            [
+                "v.vtk:25: 1 vertex cell ignored (type 1)",
+                "v.vtk:26: 1 line cell ignored (type 3)",
+                "v.vtk:27: 1 hexahedron ignored (type 12)",
+            ]
+        );
+        assert_eq!(
+            w(parse(POLY, "v.vtk").unwrap()),
+            [
+                "v.vtk:7: 1 VERTICES cell ignored",
+                "v.vtk:9: 1 LINES cell ignored",
+                "v.vtk:11: 1 polygon of more than 3 vertices fan-triangulated",
+                "v.vtk:11: 1 polygon or strip of fewer than 3 points ignored",
+            ]
         );
     }
 

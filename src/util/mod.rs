@@ -19,6 +19,20 @@ pub(crate) mod structure;
 /// How many offending ids a build report keeps of each kind.
 pub const REPORT_EXAMPLES: usize = 16;
 
+/// The vertices with a NaN or infinite coordinate: how many, and the first
+/// [`REPORT_EXAMPLES`] ids. The readers warn of them and the build reports count them.
+pub fn non_finite_vertices(positions: &[glam::DVec3]) -> (u64, Vec<u32>) {
+    let mut examples = Vec::new();
+    let mut count = 0u64;
+    for (v, p) in positions.iter().enumerate() {
+        if !p.is_finite() {
+            count += 1;
+            push_example(&mut examples, v as u32);
+        }
+    }
+    (count, examples)
+}
+
 /// Keeps the first [`REPORT_EXAMPLES`] examples of a kind in a build report.
 pub(crate) fn push_example<T>(list: &mut Vec<T>, item: T) {
     if list.len() < REPORT_EXAMPLES {

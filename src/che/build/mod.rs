@@ -30,9 +30,13 @@ pub(crate) fn build(
 ) -> Result<Che> {
     let too_many = too_many_triangles(triangles.len());
     check_input(&options, n_vertices, positions.len(), too_many)?;
+    let (non_finite_vertices, non_finite_vertex_examples) =
+        crate::util::non_finite_vertices(positions);
     let mut report = BuildReport {
         input_triangles: triangles.len(),
         input_vertices: n_vertices,
+        non_finite_vertices,
+        non_finite_vertex_examples,
         ..BuildReport::default()
     };
     let threads = crate::util::par::build_threads(options.threads, triangles.len());
@@ -242,4 +246,27 @@ pub(crate) fn change_level(che: &mut Che, level: u8) -> Result<()> {
         che.level = 3;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn non_finite_vertices_are_reported() {
+        let positions = [
+            DVec3::ZERO,
+            DVec3::new(f64::NEG_INFINITY, 0.0, 0.0),
+            DVec3::new(0.0, 1.0, f64::NAN),
+        ];
+        let che = Che::from_triangles(&[[0, 1, 2]], 3, &positions, BuildOptions::level(1)).unwrap();
+        let r = che.report();
+        assert_eq!(
+            (r.non_finite_vertices, &r.non_finite_vertex_examples[..]),
+            (2, &[1, 2][..])
+        );
+        let che = Che::from_triangles(&[[0, 1, 2]], 3, &[DVec3::ZERO; 3], BuildOptions::level(1))
+            .unwrap();
+        assert_eq!(che.report().non_finite_vertices, 0);
+    }
 }

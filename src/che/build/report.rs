@@ -34,6 +34,10 @@ pub struct BuildReport {
     pub non_orientable_examples: Vec<u32>,
     /// Half-edges left unpaired on the seams of non-orientable components.
     pub seam_edges: usize,
+    /// Input vertices with a NaN or infinite coordinate (kept: the CHE build uses no
+    /// positions, but a host computing geometry must skip them).
+    pub non_finite_vertices: u64,
+    pub non_finite_vertex_examples: Vec<u32>,
 }
 
 impl BuildReport {

@@ -41,6 +41,10 @@ pub(crate) fn build(
         too_many_tetrahedra(tets.len()),
     )?;
     let mut report = BuildReport::of_input(tets.len(), n_vertices);
+    (
+        report.non_finite_vertices,
+        report.non_finite_vertex_examples,
+    ) = crate::util::non_finite_vertices(positions);
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
     let Oriented {
@@ -392,5 +396,44 @@ mod tests {
         assert_eq!(e.kind, ErrorKind::TooLarge);
         assert_eq!(check(1, 4, 3, 2).unwrap_err().kind, ErrorKind::InvalidInput);
         assert_eq!(check(1, 4, 0, 4).unwrap_err().kind, ErrorKind::OutOfRange);
+    }
+
+    #[test]
+    fn non_finite_vertices_are_reported_and_give_no_determinant_sign() {
+        // Two tetrahedra on a shared face, the second given inverted; vertex 4 is NaN in
+        // one coordinate, vertex 5 infinite, and unused.
+        let p = |x, y, z| DVec3::new(x, y, z);
+        let positions = [
+            p(0.0, 0.0, 0.0),
+            p(1.0, 0.0, 0.0),
+            p(0.0, 1.0, 0.0),
+            p(0.0, 0.0, 1.0),
+            p(f64::NAN, 1.0, 1.0),
+            p(0.0, f64::INFINITY, 0.0),
+        ];
+        let tets = [[0, 1, 2, 3], [1, 2, 3, 4]];
+        let chf = Chf::from_tetrahedra(&tets, 6, &positions, BuildOptions::level(1)).unwrap();
+        let r = chf.report();
+        assert_eq!(
+            (r.non_finite_vertices, &r.non_finite_vertex_examples[..]),
+            (2, &[4, 5][..])
+        );
+        // The NaN tetrahedron is neither zero-volume nor inverted: it has no sign, and its
+        // neighbour orients it.
+        assert_eq!(
+            (r.zero_volume, r.inverted_tetrahedra, r.seam_faces),
+            (0, 0, 0)
+        );
+        chf.validate().unwrap();
+        let finite = [
+            p(0.0, 0.0, 0.0),
+            p(1.0, 0.0, 0.0),
+            p(0.0, 1.0, 0.0),
+            p(0.0, 0.0, 1.0),
+            p(1.0, 1.0, 1.0),
+        ];
+        let clean = Chf::from_tetrahedra(&tets, 5, &finite, BuildOptions::level(1)).unwrap();
+        assert_eq!(clean.report().non_finite_vertices, 0);
+        assert!(clean.report().non_finite_vertex_examples.is_empty());
     }
 }

@@ -55,6 +55,11 @@ pub struct BuildReport {
     pub non_orientable_examples: Vec<u32>,
     /// Faces left unpaired because their two tetrahedra could not agree on an orientation.
     pub seam_faces: usize,
+    /// Input vertices with a NaN or infinite coordinate. Their tetrahedra have no
+    /// determinant sign: they are oriented by their neighbours, and counted neither as
+    /// zero-volume nor as inverted.
+    pub non_finite_vertices: u64,
+    pub non_finite_vertex_examples: Vec<u32>,
 }
 
 impl BuildReport {

@@ -116,7 +116,12 @@ fn run(
         }
         let [p0, p1, p2, p3] = tet.map(|x| positions[x as usize]);
         let det = (p1 - p0).dot((p2 - p0).cross(p3 - p0));
-        let s = if det > 0.0 {
+        // A non-finite corner makes the determinant NaN or infinite; it has no sign then
+        // (the report counts those vertices), while finite corners whose determinant
+        // overflows keep the sign of the overflow.
+        let s = if !det.is_finite() && [p0, p1, p2, p3].iter().any(|p| !p.is_finite()) {
+            0
+        } else if det > 0.0 {
             1
         } else if det < 0.0 {
             -1

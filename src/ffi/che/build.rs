@@ -63,7 +63,7 @@ pub unsafe extern "C" fn che_mesh_load(
 pub unsafe extern "C" fn che_mesh_load_ex(
     path: *const c_char, options: *const CheBuildOptions, out: *mut *mut CheMesh,
 ) -> Status {
-    load!(out, path, options => crate::io::load::che)
+    load!(out, path, options => crate::io::load::che_loaded)
 }
 
 /// Frees a mesh; NULL is a no-op. Needs exclusive access.

@@ -78,12 +78,14 @@ pub struct CheBuildReport {
     pub non_orientable_components: u64,
     /// Edges left unpaired on the seams of non-orientable components.
     pub seam_edges: u64,
+    /// Input vertices with a NaN or infinite coordinate (kept).
+    pub non_finite_vertices: u64,
 }
 
 mirror!(BuildReport => CheBuildReport {
     input_triangles, input_vertices, dropped_degenerate, duplicate_triangles, input_edges,
     boundary_edges, non_manifold_edges, split_vertices, seam_split_vertices, added_vertices,
-    flipped_triangles, non_orientable_components, seam_edges,
+    flipped_triangles, non_orientable_components, seam_edges, non_finite_vertices,
 });
 
 /// The build report into `*out`. O(1).
@@ -107,6 +109,8 @@ pub enum CheReportKind {
     SplitVertex = 3,
     /// One input triangle of each non-orientable component (one id each).
     NonOrientable = 4,
+    /// Input vertices with a NaN or infinite coordinate (one id each).
+    NonFiniteVertex = 5,
 }
 
 /// The report's examples of kind `kind`, flattened.
@@ -121,6 +125,7 @@ fn examples(r: &BuildReport, kind: u32) -> Result<Vec<u32>> {
         edges,
         r.split_vertex_examples.clone(),
         r.non_orientable_examples.clone(),
+        r.non_finite_vertex_examples.clone(),
     ];
     report_kind(all, kind, "che_report_kind")
 }

@@ -9,9 +9,10 @@ mod star;
 #[cfg(test)]
 mod tests;
 mod views;
+mod warnings;
 mod write;
 
-pub use {build::*, csr::*, info::*, relations::*, star::*, views::*, write::*};
+pub use {build::*, csr::*, info::*, relations::*, star::*, views::*, warnings::*, write::*};
 
 use super::shapes::handle;
 use crate::che::{BuildOptions, Che};
@@ -23,9 +24,11 @@ pub struct CheMesh {
     pub(crate) che: Che,
     vertex_origins: OnceLock<Box<[u32]>>,
     triangle_origins: OnceLock<Box<[u32]>>,
+    /// The reader's warnings, `file:line: message` each (empty unless loaded from a file).
+    warnings: Vec<String>,
 }
 
-handle!(CheMesh { che: Che, vertex_origins, triangle_origins }, CheBuildOptions => BuildOptions);
+handle!(CheMesh { che: Che, vertex_origins, triangle_origins, warnings }, CheBuildOptions => BuildOptions);
 
 /// How to build a CHE.
 #[repr(C)]

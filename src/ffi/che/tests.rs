@@ -149,3 +149,58 @@ fn write_checks_the_handle_the_flags_and_the_positions() {
         che_mesh_free(m);
     }
 }
+
+#[test]
+fn a_loaded_mesh_lends_the_reader_warnings() {
+    let path =
+        std::env::temp_dir().join(format!("topomesh-ffi-warnings-{}.off", std::process::id()));
+    std::fs::write(&path, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n").unwrap();
+    let c_path = std::ffi::CString::new(path.to_str().unwrap()).unwrap();
+    let mut m = null_mut();
+    // SAFETY: a valid path and out-pointer.
+    let status = unsafe { che_mesh_load(c_path.as_ptr(), 2, &mut m) };
+    let _ = std::fs::remove_file(&path);
+    assert_eq!(status, Status::Ok);
+    let want = format!(
+        "{}:7: 1 face line after the 1 declared (ignored)",
+        path.display()
+    );
+    let (mut buf, mut len) = ([0 as std::ffi::c_char; 256], 0usize);
+    // SAFETY: `m` is live, the buffers valid for the sizes given.
+    unsafe {
+        assert_eq!(che_mesh_num_warnings(m), 1);
+        assert_eq!(che_mesh_warning(m, 0, null_mut(), 0, &mut len), Status::Ok);
+        assert_eq!(len, want.len() + 1);
+        assert_eq!(
+            che_mesh_warning(m, 0, buf.as_mut_ptr(), 256, &mut len),
+            Status::Ok
+        );
+        let text = std::ffi::CStr::from_ptr(buf.as_ptr()).to_str().unwrap();
+        assert_eq!(text, want);
+        assert_eq!(
+            che_mesh_warning(m, 0, buf.as_mut_ptr(), 5, &mut len),
+            Status::BufferTooSmall
+        );
+        assert_eq!(
+            std::ffi::CStr::from_ptr(buf.as_ptr()).to_bytes(),
+            &want.as_bytes()[..4]
+        );
+        assert_eq!(
+            che_mesh_warning(m, 1, buf.as_mut_ptr(), 256, &mut len),
+            Status::OutOfRange
+        );
+        with_last_error(|e| assert_eq!(e, "warning 1 out of range (the mesh has 1 warnings)"));
+        assert_eq!(
+            che_mesh_warning(m, 0, null_mut(), 8, &mut len),
+            Status::NullArgument
+        );
+        assert_eq!(che_mesh_num_warnings(std::ptr::null()), 0);
+        che_mesh_free(m);
+    }
+    let built = build(&STRIP, 4, 2);
+    // SAFETY: a live handle.
+    unsafe {
+        assert_eq!(che_mesh_num_warnings(built), 0);
+        che_mesh_free(built);
+    }
+}

@@ -67,7 +67,7 @@ pub unsafe extern "C" fn chf_mesh_load(
 pub unsafe extern "C" fn chf_mesh_load_ex(
     path: *const c_char, options: *const ChfBuildOptions, out: *mut *mut ChfMesh,
 ) -> Status {
-    load!(out, path, options => crate::io::load::chf)
+    load!(out, path, options => crate::io::load::chf_loaded)
 }
 
 /// Frees a mesh; NULL is a no-op. Needs exclusive access.

@@ -101,6 +101,9 @@ pub struct ChfBuildReport {
     pub non_orientable_components: u64,
     /// Faces left unpaired because their two tetrahedra could not agree on an orientation.
     pub seam_faces: u64,
+    /// Input vertices with a NaN or infinite coordinate (their tetrahedra are oriented by
+    /// their neighbours).
+    pub non_finite_vertices: u64,
 }
 
 mirror!(Report => ChfBuildReport {
@@ -108,6 +111,7 @@ mirror!(Report => ChfBuildReport {
     duplicate_tetrahedra, input_faces, boundary_faces, non_manifold_faces, input_edges,
     non_manifold_edges, kept_non_manifold_edges, split_vertices, seam_split_vertices,
     added_vertices, flipped_tetrahedra, non_orientable_components, seam_faces,
+    non_finite_vertices,
 });
 
 /// The build report into `*out`. O(1).
@@ -139,6 +143,8 @@ pub enum ChfReportKind {
     SplitVertex = 7,
     /// One input tetrahedron of each non-orientable component (one id each).
     NonOrientable = 8,
+    /// Input vertices with a NaN or infinite coordinate (one id each).
+    NonFiniteVertex = 9,
 }
 
 /// The report's examples of kind `kind`, flattened.
@@ -153,6 +159,7 @@ fn examples(r: &Report, kind: u32) -> Result<Vec<u32>> {
         flat(&r.kept_non_manifold_edge_examples),
         r.split_vertex_examples.clone(),
         r.non_orientable_examples.clone(),
+        r.non_finite_vertex_examples.clone(),
     ];
     report_kind(all, kind, "chf_report_kind")
 }

@@ -10,9 +10,13 @@ mod surface;
 #[cfg(test)]
 mod tests;
 mod views;
+mod warnings;
 mod write;
 
-pub use {build::*, csr::*, half_faces::*, info::*, relations::*, surface::*, views::*, write::*};
+pub use {
+    build::*, csr::*, half_faces::*, info::*, relations::*, surface::*, views::*, warnings::*,
+    write::*,
+};
 
 use super::shapes::handle;
 use crate::chf::{BuildOptions, Chf};
@@ -24,9 +28,11 @@ pub struct ChfMesh {
     pub(crate) chf: Chf,
     vertex_origins: OnceLock<Box<[u32]>>,
     tetrahedron_origins: OnceLock<Box<[u32]>>,
+    /// The reader's warnings, `file:line: message` each (empty unless loaded from a file).
+    warnings: Vec<String>,
 }
 
-handle!(ChfMesh { chf: Chf, vertex_origins, tetrahedron_origins }, ChfBuildOptions => BuildOptions);
+handle!(ChfMesh { chf: Chf, vertex_origins, tetrahedron_origins, warnings }, ChfBuildOptions => BuildOptions);
 
 /// How to build a CHF.
 #[repr(C)]

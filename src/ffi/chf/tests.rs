@@ -8,6 +8,7 @@ use super::info::chf_mesh_validate;
 use super::relations::*;
 use super::surface::*;
 use super::views::*;
+use super::warnings::*;
 use crate::NONE;
 use crate::ffi::boundary::with_last_error;
 use crate::ffi::che::{che_mesh_free, che_mesh_num_triangles};
@@ -92,4 +93,50 @@ fn relations_and_bulk_rows_agree_at_every_level() {
 fn validate_passes_on_a_build_and_rejects_null() {
     let meshes = |level| vec![build(&PAIR, 5, level)];
     crate::ffi::tests::validates(meshes, chf_mesh_validate, chf_mesh_free);
+}
+
+#[test]
+fn a_loaded_mesh_lends_the_reader_warnings() {
+    let path =
+        std::env::temp_dir().join(format!("topomesh-ffi-warnings-{}.mesh", std::process::id()));
+    let text = "Dimension 3\nVertices 4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n\
+                Triangles 1\n1 2 3 0\nTetrahedra 1\n1 2 3 4 0\nEnd\n";
+    std::fs::write(&path, text).unwrap();
+    let c_path = std::ffi::CString::new(path.to_str().unwrap()).unwrap();
+    let mut m = null_mut();
+    // SAFETY: a valid path and out-pointer.
+    let status = unsafe { chf_mesh_load(c_path.as_ptr(), 2, &mut m) };
+    let _ = std::fs::remove_file(&path);
+    assert_eq!(status, Status::Ok);
+    let want = format!(
+        "{}: 1 triangle beside the 1 tetrahedron ignored (a volume is built from its tetrahedra)",
+        path.display()
+    );
+    let (mut buf, mut len) = ([0 as std::ffi::c_char; 256], 0usize);
+    // SAFETY: `m` is live, the buffers valid for the sizes given.
+    unsafe {
+        assert_eq!(chf_mesh_num_warnings(m), 1);
+        assert_eq!(
+            chf_mesh_warning(m, 0, buf.as_mut_ptr(), 256, &mut len),
+            Status::Ok
+        );
+        assert_eq!(len, want.len() + 1);
+        let got = std::ffi::CStr::from_ptr(buf.as_ptr()).to_str().unwrap();
+        assert_eq!(got, want);
+        assert_eq!(
+            chf_mesh_warning(m, 1, buf.as_mut_ptr(), 256, &mut len),
+            Status::OutOfRange
+        );
+        assert_eq!(
+            chf_mesh_warning(std::ptr::null(), 0, buf.as_mut_ptr(), 256, &mut len),
+            Status::NullArgument
+        );
+        chf_mesh_free(m);
+    }
+    let built = build(&PAIR, 5, 1);
+    // SAFETY: a live handle.
+    unsafe {
+        assert_eq!(chf_mesh_num_warnings(built), 0);
+        chf_mesh_free(built);
+    }
 }

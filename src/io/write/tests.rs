@@ -21,6 +21,7 @@ fn awkward_mesh() -> MeshData {
         ],
         triangles: vec![[0, 1, 2], [3, 2, 1]],
         tetrahedra: vec![[0, 1, 2, 3], [3, 2, 1, 0]],
+        warnings: vec![],
     }
 }
 
@@ -107,6 +108,7 @@ fn stl_is_binary_and_rounds_to_f32() {
         ],
         triangles: vec![[0, 1, 2], [2, 1, 3]],
         tetrahedra: vec![],
+        warnings: vec![],
     };
     let mut buf = Vec::new();
     write_to(
@@ -209,6 +211,7 @@ fn writers_refuse_what_the_format_cannot_hold() {
         positions: vec![DVec3::ZERO; 3],
         triangles: vec![[0, 1, 3]],
         tetrahedra: vec![],
+        warnings: vec![],
     };
     assert_write_refused(
         "mesh",
@@ -219,6 +222,7 @@ fn writers_refuse_what_the_format_cannot_hold() {
         positions: vec![DVec3::ZERO; 4],
         triangles: vec![],
         tetrahedra: vec![[0, 1, 2, 4]],
+        warnings: vec![],
     };
     assert_write_refused("vtk", &bad, "tetrahedron 0 names vertex 4");
     let path = temp_path("binary", "off");

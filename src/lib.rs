@@ -20,6 +20,7 @@ pub use chf::Chf;
 pub use chf::{ChfBuildOptions, ChfBuildReport, ChfSummary};
 pub use error::{Error, ErrorKind};
 pub use util::REPORT_EXAMPLES;
+pub use util::par::planned_threads;
 pub use util::small_ids::Ids;
 
 /// "No element": the opposite of a boundary half-edge, the start of an isolated vertex, ...

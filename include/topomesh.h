@@ -204,12 +204,15 @@ typedef struct che_build_options {
     /**
      * Reject non-manifold edges, non-manifold vertices and duplicate triangles with
      * `TOPOMESH_STATUS_NON_MANIFOLD` (detail: the offending ids) instead of repairing them
-     * (default false).
+     * (default 0). Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the
+     * size and offset of the `bool` it was: a C `bool` field can hold other values, which
+     * Rust may not read as a `bool`.)
      */
-    bool strict;
+    uint8_t strict;
     /**
      * Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
-     * the calling thread alone. The mesh is the same whatever the number.
+     * the calling thread alone; a larger number is capped at what the machine runs at once
+     * and at one thread per 8192 elements. The mesh is the same whatever the number.
      */
     uint32_t threads;
 } che_build_options;
@@ -359,12 +362,15 @@ typedef struct chf_build_options {
     /**
      * Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
      * and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
-     * the offending ids) instead of keeping them (default false).
+     * the offending ids) instead of keeping them (default 0). Any non-zero value is true.
+     * (A `uint8_t` rather than a `bool`, with the size and offset of the `bool` it was: a C
+     * `bool` field can hold other values, which Rust may not read as a `bool`.)
      */
-    bool strict;
+    uint8_t strict;
     /**
      * Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
-     * the calling thread alone. The mesh is the same whatever the number.
+     * the calling thread alone; a larger number is capped at what the machine runs at once
+     * and at one thread per 8192 elements. The mesh is the same whatever the number.
      */
     uint32_t threads;
 } chf_build_options;
@@ -1561,10 +1567,11 @@ const uint32_t *chf_mesh_tetrahedron_origins(const struct chf_mesh *m, size_t *l
 /* ---- Status, errors and version ---- */
 
 /**
- * A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
- * the `topomesh_status` values.
+ * A static, NUL-terminated English description of `s`, a `topomesh_status` value (never
+ * NULL): "unknown status" for any other value. The parameter is a plain `uint32_t` so
+ * that any value a C caller passes is defined behaviour.
  */
-const char *topomesh_status_str(topomesh_status s);
+const char *topomesh_status_str(uint32_t s);
 
 /**
  * The detail of the last failed call on this thread (for example

@@ -47,11 +47,13 @@ pub(crate) const STATUSES: [(Status, &std::ffi::CStr); 10] = [
     (Status::Panic, c"internal error (panic caught)"),
 ];
 
-/// A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
-/// the `topomesh_status` values.
+/// A static, NUL-terminated English description of `s`, a `topomesh_status` value (never
+/// NULL): "unknown status" for any other value. The parameter is a plain `uint32_t` so
+/// that any value a C caller passes is defined behaviour.
 #[unsafe(no_mangle)]
-pub extern "C" fn topomesh_status_str(s: Status) -> *const c_char {
-    STATUSES[s as usize].1.as_ptr()
+pub extern "C" fn topomesh_status_str(s: u32) -> *const c_char {
+    let known = STATUSES.get(s as usize).map(|(_, text)| *text);
+    known.unwrap_or(c"unknown status").as_ptr()
 }
 
 /// The detail of the last failed call on this thread (for example

@@ -573,8 +573,9 @@ struct che_build_options che_build_options_default(void);
  * component is oriented consistently; `che_mesh_report` says what was changed.
  * Non-manifold input is repaired (see `che_mesh_from_triangles_ex` for strict mode).
  * A triangle naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`; more
- * than 2^32 - 2 vertices or 1431655765 triangles `TOPOMESH_STATUS_TOO_LARGE`. `*out` is
- * NULL on failure.
+ * than 2^32 - 2 vertices, more than 1431655765 triangles, or more than 2^26 vertices
+ * beyond the `3 * n_triangles` the triangles can name `TOPOMESH_STATUS_TOO_LARGE`, before
+ * anything is allocated or read. `*out` is NULL on failure.
  */
 topomesh_status che_mesh_from_triangles(const uint32_t *triangles,
                                         size_t n_triangles,
@@ -987,8 +988,9 @@ struct chf_build_options chf_build_options_default(void);
  * `chf_mesh_report` says what was changed. Non-manifold input is kept (faces of three or
  * more tetrahedra stay unpaired; see `chf_mesh_from_tetrahedra_ex` for strict mode).
  * A tetrahedron naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`;
- * more than 2^32 - 2 vertices or 1073741823 tetrahedra `TOPOMESH_STATUS_TOO_LARGE`.
- * `*out` is NULL on failure.
+ * more than 2^32 - 2 vertices, more than 1073741823 tetrahedra, or more than 2^26
+ * vertices beyond the `4 * n_tets` the tetrahedra can name `TOPOMESH_STATUS_TOO_LARGE`,
+ * before anything is allocated or read. `*out` is NULL on failure.
  */
 topomesh_status chf_mesh_from_tetrahedra(const uint32_t *tetrahedra,
                                          size_t n_tets,

@@ -2,7 +2,6 @@
 
 use super::boundary;
 use std::ffi::c_char;
-use std::panic::{AssertUnwindSafe, catch_unwind};
 
 /// What a call did. `TOPOMESH_STATUS_OK` (0) is success; every other value is an error
 /// whose detail (file, line, element id, sizes) `topomesh_last_error` gives.
@@ -98,7 +97,7 @@ pub unsafe extern "C" fn topomesh_last_error(
             }
         })
     };
-    catch_unwind(AssertUnwindSafe(run)).unwrap_or(Status::Panic)
+    boundary::catch(run).unwrap_or(Status::Panic)
 }
 
 /// The library version, "MAJOR.MINOR.PATCH" (static, NUL-terminated).

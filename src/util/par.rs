@@ -53,12 +53,16 @@ pub(crate) fn run_all<J: Send, T: Send>(jobs: Vec<J>, f: impl Fn(J) -> T + Sync)
     // the threads have stopped is a job whose thread could not start.
     let slots: Vec<Mutex<Option<J>>> = jobs.map(|j| Mutex::new(Some(j))).collect();
     let take = |slot: &Mutex<Option<J>>| slot.lock().unwrap_or_else(|e| e.into_inner()).take();
+    // A panic on a job's thread comes back to the caller, which may report it itself.
+    let silenced = super::panics::is_quiet();
     let mut out: Vec<Option<T>> = std::thread::scope(|s| {
         let handles: Vec<_> = slots
             .iter()
             .map(|slot| {
                 std::thread::Builder::new()
-                    .spawn_scoped(s, move || take(slot).map(f))
+                    .spawn_scoped(s, move || {
+                        super::panics::quiet_if(silenced, || take(slot).map(f))
+                    })
                     .ok()
             })
             .collect();

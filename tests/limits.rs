@@ -97,3 +97,74 @@ fn counts_beyond_the_ids_or_the_used_vertices_are_refused_from_the_counts_alone(
         &limit,
     );
 }
+
+/// The queries below level 2 on a mesh of about 200k triangles answer as level 3 does, in
+/// O(T) each: the test runs tens of them at levels 0 and 1, which a query quadratic in T
+/// (a scan of `V` per step of a walk) would not finish in the test's time.
+#[test]
+fn queries_below_level_2_are_linear_on_a_large_mesh() {
+    let s = topomesh::generate::grid(300, 330);
+    assert!(s.triangles.len() > 190_000);
+    let build = |level| {
+        Che::from_triangles(
+            &s.triangles,
+            s.positions.len(),
+            &s.positions,
+            BuildOptions::level(level),
+        )
+        .unwrap()
+    };
+    let top = build(3);
+    let n_half_edges = 3 * top.num_triangles() as u32;
+    let boundary: Vec<u32> = (0..n_half_edges)
+        .filter(|&h| top.opposite(h) == topomesh::NONE)
+        .step_by(300)
+        .collect();
+    let vertices = [0, 301, 45_000, s.positions.len() as u32 - 1];
+    for level in [0, 1, 2] {
+        let che = build(level);
+        let curve = che.boundary_curve_vertices(0).unwrap();
+        assert!(
+            curve.len() == 2 * (300 + 330),
+            "level {level}: {}",
+            curve.len()
+        );
+        assert_eq!(
+            curve,
+            top.boundary_curve_vertices(0).unwrap(),
+            "level {level}"
+        );
+        assert_eq!(che.num_boundary_curves(), 1);
+        for &h in &boundary {
+            assert_eq!(che.curve_of(h), 0, "level {level}, half-edge {h}");
+        }
+        for &v in &vertices {
+            let same = |a: Vec<u32>, b: Vec<u32>| assert_eq!(a, b, "level {level}, vertex {v}");
+            same(
+                che.vertex_vertices(v).collect(),
+                top.vertex_vertices(v).collect(),
+            );
+            same(che.vertex_edges(v).collect(), top.vertex_edges(v).collect());
+            same(
+                che.vertex_triangles(v).collect(),
+                top.vertex_triangles(v).collect(),
+            );
+            assert_eq!(che.vertex_half_edge(v), top.vertex_half_edge(v));
+            assert_eq!(che.is_boundary_vertex(v), top.is_boundary_vertex(v));
+        }
+        for e in [7, top.num_edges() as u32 - 1] {
+            assert_eq!(
+                che.edge_edges(e),
+                top.edge_edges(e),
+                "level {level}, edge {e}"
+            );
+        }
+        for t in [99, top.num_triangles() as u32 - 1] {
+            assert_eq!(
+                che.triangle_edges(t),
+                top.triangle_edges(t),
+                "level {level}"
+            );
+        }
+    }
+}

@@ -657,7 +657,8 @@ size_t che_mesh_num_edges(const struct che_mesh *m);
 size_t che_mesh_num_half_edges(const struct che_mesh *m);
 
 /**
- * Boundary curves of the structure (O(1) at level 3, O(T) below).
+ * Boundary curves of the structure: O(1) at level 3, O(T) at levels 1-2, O(T) time and
+ * memory at level 0.
  */
 size_t che_mesh_num_boundary_curves(const struct che_mesh *m);
 
@@ -667,7 +668,7 @@ size_t che_mesh_num_boundary_curves(const struct che_mesh *m);
  * VV: the vertices around `v`, counter-clockwise seen from outside. On a boundary vertex
  * the list starts at the far end of its outgoing boundary edge and ends at the near end of
  * its incoming one (d + 1 vertices for d triangles). Empty for an isolated vertex.
- * O(d) from level 2; scans below.
+ * O(d) at levels 2-3; O(T) at level 1 (a scan of `V` for the start); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_vertex_vertices(const struct che_mesh *m,
                                     uint32_t v,
@@ -677,7 +678,9 @@ topomesh_status che_vertex_vertices(const struct che_mesh *m,
 
 /**
  * VE: the edges around `v`, the edge to each vertex of `che_vertex_vertices`, in the same
- * order. O(d) from level 2.
+ * order. O(d) at levels 2-3; O(T) at level 1 (a scan of `V` for the start; edge ids
+ * from the level-1 directory, computed in O(T) by the first request and kept); O(T) time
+ * and memory at level 0.
  */
 topomesh_status che_vertex_edges(const struct che_mesh *m,
                                  uint32_t v,
@@ -687,7 +690,7 @@ topomesh_status che_vertex_edges(const struct che_mesh *m,
 
 /**
  * VF: the triangles around `v`, counter-clockwise, from the boundary on a boundary vertex.
- * O(d) from level 2.
+ * O(d) at levels 2-3; O(T) at level 1 (a scan of `V` for the start); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_vertex_triangles(const struct che_mesh *m,
                                      uint32_t v,
@@ -697,7 +700,8 @@ topomesh_status che_vertex_triangles(const struct che_mesh *m,
 
 /**
  * EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (the boundary
- * half-edge on a boundary edge). O(1) from level 2.
+ * half-edge on a boundary edge). O(1) at levels 2-3; O(T) at level 1 (a count of the
+ * canonical half-edges); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_vertices(const struct che_mesh *m,
                                   uint32_t e,
@@ -707,7 +711,9 @@ topomesh_status che_edge_vertices(const struct che_mesh *m,
 
 /**
  * EE: the wings of edge `e` (4 entries, 2 on a boundary edge): the next and previous edges
- * in the canonical half-edge's triangle, then in the opposite triangle.
+ * in the canonical half-edge's triangle, then in the opposite triangle. O(1) at levels
+ * 2-3; O(T) at level 1 (finding the canonical half-edge; edge ids from the level-1
+ * directory); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_edges(const struct che_mesh *m,
                                uint32_t e,
@@ -717,7 +723,8 @@ topomesh_status che_edge_edges(const struct che_mesh *m,
 
 /**
  * EF: the triangles of edge `e` (2 entries, 1 on a boundary edge), the canonical
- * half-edge's first.
+ * half-edge's first. O(1) at levels 2-3; O(T) at level 1 (finding the canonical
+ * half-edge); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_triangles(const struct che_mesh *m,
                                    uint32_t e,
@@ -727,7 +734,7 @@ topomesh_status che_edge_triangles(const struct che_mesh *m,
 
 /**
  * FV: the 3 corners of triangle `t`, counter-clockwise (corner i is the origin of
- * half-edge 3t + i).
+ * half-edge 3t + i). O(1) at every level.
  */
 topomesh_status che_triangle_vertices(const struct che_mesh *m,
                                       uint32_t t,
@@ -736,7 +743,9 @@ topomesh_status che_triangle_vertices(const struct che_mesh *m,
                                       size_t *out_len);
 
 /**
- * FE: the 3 edges of triangle `t`; edge i runs from corner i to corner i + 1.
+ * FE: the 3 edges of triangle `t`; edge i runs from corner i to corner i + 1. O(1) at
+ * levels 2-3; O(1) at level 1 once the level-1 edge-id directory exists (the first
+ * request computes it, O(T), and keeps it); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_triangle_edges(const struct che_mesh *m,
                                    uint32_t t,
@@ -747,7 +756,8 @@ topomesh_status che_triangle_edges(const struct che_mesh *m,
 /**
  * FF: always 3 entries, the triangle across edge i of `t` (see `che_triangle_edges`), or
  * `TOPOMESH_NONE` across a boundary edge (also across non-manifold and non-orientable
- * seam edges, which the structure keeps unpaired).
+ * seam edges, which the structure keeps unpaired). O(1) at levels 1-3; O(T) at level 0
+ * (a scan of `V` per edge).
  */
 topomesh_status che_triangle_triangles(const struct che_mesh *m,
                                        uint32_t t,
@@ -758,7 +768,8 @@ topomesh_status che_triangle_triangles(const struct che_mesh *m,
 /**
  * The vertices of boundary curve `curve` (0..che_mesh_num_boundary_curves), in order, the
  * interior on the left; curves are numbered by their smallest half-edge. O(length) at
- * level 3; O(T) (level 2) or more below.
+ * level 3; O(T) at level 2 (finding the curves' starts) and level 1 (the walk rotates
+ * around each boundary vertex); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_boundary_curve_vertices(const struct che_mesh *m,
                                             uint32_t curve,
@@ -770,40 +781,48 @@ topomesh_status che_boundary_curve_vertices(const struct che_mesh *m,
 
 /**
  * The opposite of half-edge `h` into `*out` (`TOPOMESH_NONE` on the boundary).
- * O(1) from level 1.
+ * O(1) at levels 1-3; O(T) at level 0 (a scan of `V`).
  */
 topomesh_status che_half_edge_opposite(const struct che_mesh *m, uint32_t h, uint32_t *out);
 
 /**
- * The edge of half-edge `h` into `*out`. O(1) from level 2.
+ * The edge of half-edge `h` into `*out`. O(1) at levels 2-3; O(1) at level 1 once the
+ * level-1 edge-id directory exists (the first request computes it, O(T), and keeps it);
+ * O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_half_edge_edge(const struct che_mesh *m, uint32_t h, uint32_t *out);
 
 /**
  * The boundary curve of half-edge `h` into `*out` (`TOPOMESH_NONE` when `h` is not on the
- * boundary). O(1) at level 3.
+ * boundary). O(1) at level 3; O(T) at levels 1-2 (the curves are walked); O(T) time and memory at level 0 (`O` computed for the call).
  */
-topomesh_status che_half_edge_curve(const struct che_mesh *m, uint32_t h, uint32_t *out);
+topomesh_status che_half_edge_curve(const struct che_mesh *m,
+                                    uint32_t h,
+                                    uint32_t *out);
 
 /**
  * The outgoing half-edge of vertex `v` a rotation starts at into `*out`: the boundary one
- * on a boundary vertex, `TOPOMESH_NONE` for an isolated vertex. O(1) from level 2.
+ * on a boundary vertex, `TOPOMESH_NONE` for an isolated vertex. O(1) at levels 2-3; O(T)
+ * at level 1 (a scan of `V`); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_vertex_half_edge(const struct che_mesh *m, uint32_t v, uint32_t *out);
 
 /**
  * The canonical half-edge of edge `e` into `*out` (the boundary one on a boundary edge,
- * else the smaller of the two). O(1) from level 2.
+ * else the smaller of the two). O(1) at levels 2-3; O(T) at level 1 (a count of the
+ * canonical half-edges); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_half_edge(const struct che_mesh *m, uint32_t e, uint32_t *out);
 
 /**
- * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2.
+ * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) at levels 2-3;
+ * O(T) at level 1 (a scan of `V`); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_vertex_is_boundary(const struct che_mesh *m, uint32_t v, bool *out);
 
 /**
- * Is edge `e` on the boundary (one triangle)? O(1) from level 2.
+ * Is edge `e` on the boundary (one triangle)? O(1) at levels 2-3; O(T) at level 1
+ * (finding the canonical half-edge); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_is_boundary(const struct che_mesh *m, uint32_t e, bool *out);
 
@@ -812,20 +831,27 @@ topomesh_status che_edge_is_boundary(const struct che_mesh *m, uint32_t e, bool 
 /**
  * Starts a rotation around vertex `v` in `*it` (an isolated vertex has no steps). From
  * level 2 the iterator holds the zero-copy arrays, so that `che_star_next` steps inline.
+ * O(1) at levels 2-3; O(T) at level 1 (a scan of `V` for the start); O(T) time and
+ * memory at level 0.
  */
 topomesh_status che_star_begin(const struct che_mesh *m, uint32_t v, struct che_star_iter *it);
 
 /**
  * The library's step of `che_star_next` (which calls it when it cannot step inline):
  * writes the next step into `*step` and returns true, or returns false at the end (also
- * when `it` or `step` is NULL). O(1) per step from level 2 (edge ids are O(T) below).
+ * when `it` or `step` is NULL). O(1) per step at levels 2-3; O(1) per step at level 1
+ * once the level-1 edge-id directory exists (the first request computes it, O(T), and
+ * keeps it); O(T) time and memory per step at level 0 (the opposite and the edge id are
+ * found by scans: O(d T) for a rotation, so at level 0 prefer `che_vertex_vertices`
+ * and the other relations, O(T) each, or raise the level).
  */
 bool che_star_advance(struct che_star_iter *it, struct che_star_step *step);
 
 /* ---- CHE: bulk relations as CSR arrays ---- */
 
 /**
- * VV for every vertex (rows as `che_vertex_vertices`).
+ * VV for every vertex (rows as `che_vertex_vertices`). O(T) at every level
+ * (O(T) memory at level 0).
  */
 topomesh_status che_mesh_vertex_vertices_csr(const struct che_mesh *m,
                                              uint32_t *offsets,
@@ -836,7 +862,8 @@ topomesh_status che_mesh_vertex_vertices_csr(const struct che_mesh *m,
                                              size_t *n_indices);
 
 /**
- * VE for every vertex (rows as `che_vertex_edges`).
+ * VE for every vertex (rows as `che_vertex_edges`). O(T) at every level
+ * (O(T) memory at level 0).
  */
 topomesh_status che_mesh_vertex_edges_csr(const struct che_mesh *m,
                                           uint32_t *offsets,
@@ -847,7 +874,8 @@ topomesh_status che_mesh_vertex_edges_csr(const struct che_mesh *m,
                                           size_t *n_indices);
 
 /**
- * VF for every vertex (rows as `che_vertex_triangles`).
+ * VF for every vertex (rows as `che_vertex_triangles`). O(T) at every level
+ * (O(T) memory at level 0).
  */
 topomesh_status che_mesh_vertex_triangles_csr(const struct che_mesh *m,
                                               uint32_t *offsets,
@@ -1127,8 +1155,10 @@ size_t chf_mesh_num_boundary_components(const struct chf_mesh *m);
 /**
  * VV: the vertices sharing an edge with `v`, each once, in increasing order (found by a
  * walk over its star, the tetrahedra reached across the faces holding `v`; there is no
- * rotation order around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
- * each call also computes the missing tables, O(T).
+ * rotation order around a vertex in 3D). Empty for an isolated vertex. O(star) at levels
+ * 2-3; O(T) time and memory at levels 0-1 (the start found by a scan of `V`, and the
+ * tables the level lacks, such as `O` at level 0 and the edge or face ranks, computed for
+ * the call).
  */
 topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
                                     uint32_t v,
@@ -1137,7 +1167,8 @@ topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
                                     size_t *out_len);
 
 /**
- * VE: the edges holding `v`, each once, in increasing order. O(star) from level 2.
+ * VE: the edges holding `v`, each once, in increasing order. O(star) at levels 2-3; O(T)
+ * time and memory at levels 0-1, as `chf_vertex_vertices`.
  */
 topomesh_status chf_vertex_edges(const struct chf_mesh *m,
                                  uint32_t v,
@@ -1146,7 +1177,8 @@ topomesh_status chf_vertex_edges(const struct chf_mesh *m,
                                  size_t *out_len);
 
 /**
- * VF: the faces holding `v`, each once, in increasing order. O(star) from level 2.
+ * VF: the faces holding `v`, each once, in increasing order. O(star) at levels 2-3; O(T)
+ * time and memory at levels 0-1, as `chf_vertex_vertices`.
  */
 topomesh_status chf_vertex_faces(const struct chf_mesh *m,
                                  uint32_t v,
@@ -1156,7 +1188,8 @@ topomesh_status chf_vertex_faces(const struct chf_mesh *m,
 
 /**
  * VT: the tetrahedra holding `v`, each once, in increasing order (a walk over its star
- * from the half-face `chf_vertex_half_face` gives). O(star) from level 2.
+ * from the half-face `chf_vertex_half_face` gives). O(star) at levels 2-3; O(T) time and
+ * memory at levels 0-1, as `chf_vertex_vertices`.
  */
 topomesh_status chf_vertex_tetrahedra(const struct chf_mesh *m,
                                       uint32_t v,
@@ -1166,7 +1199,8 @@ topomesh_status chf_vertex_tetrahedra(const struct chf_mesh *m,
 
 /**
  * EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (where its
- * rotation starts: on a boundary face for a boundary edge). O(1) from level 2.
+ * rotation starts: on a boundary face for a boundary edge). O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_edge_vertices(const struct chf_mesh *m,
                                   uint32_t e,
@@ -1177,7 +1211,8 @@ topomesh_status chf_edge_vertices(const struct chf_mesh *m,
 /**
  * EE: the edges sharing a face with `e`, each once: for each face of `chf_edge_faces`, in
  * that order, its two other edges (next, then previous in the face's order). O(k) walks
- * from level 2 (k: tetrahedra around each edge).
+ * at levels 2-3 (k: tetrahedra around each edge); O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call), plus the walks.
  */
 topomesh_status chf_edge_edges(const struct chf_mesh *m,
                                uint32_t e,
@@ -1187,7 +1222,8 @@ topomesh_status chf_edge_edges(const struct chf_mesh *m,
 
 /**
  * EF: the faces around edge `e` in rotation order; on a boundary edge from one boundary
- * face to the other (one more face than tetrahedra). O(k) from level 2.
+ * face to the other (one more face than tetrahedra). O(k) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_edge_faces(const struct chf_mesh *m,
                                uint32_t e,
@@ -1197,7 +1233,8 @@ topomesh_status chf_edge_faces(const struct chf_mesh *m,
 
 /**
  * ET: the tetrahedra around edge `e` in rotation order, from the boundary on a boundary
- * edge. O(k) from level 2.
+ * edge. O(k) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_edge_tetrahedra(const struct chf_mesh *m,
                                     uint32_t e,
@@ -1208,7 +1245,8 @@ topomesh_status chf_edge_tetrahedra(const struct chf_mesh *m,
 /**
  * FV: the 3 vertices of face `f` in the order of its canonical half-face (the boundary
  * one on a boundary face, else the smaller of the two), outward for that half-face's
- * tetrahedron. O(1) from level 2.
+ * tetrahedron. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_face_vertices(const struct chf_mesh *m,
                                   uint32_t f,
@@ -1218,7 +1256,8 @@ topomesh_status chf_face_vertices(const struct chf_mesh *m,
 
 /**
  * FE: the 3 edges of face `f`; edge `j` runs from vertex `j` to vertex `j + 1` of
- * `chf_face_vertices`. O(k) per edge from level 2.
+ * `chf_face_vertices`. O(k) per edge at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_face_edges(const struct chf_mesh *m,
                                uint32_t f,
@@ -1229,7 +1268,8 @@ topomesh_status chf_face_edges(const struct chf_mesh *m,
 /**
  * FF: the faces sharing a tetrahedron with `f` (hence an edge), each once: the other three
  * faces of the canonical half-face's tetrahedron, then of its twin's (3 on a boundary
- * face, 6 inside). O(1) from level 2.
+ * face, 6 inside). O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_face_faces(const struct chf_mesh *m,
                                uint32_t f,
@@ -1239,7 +1279,8 @@ topomesh_status chf_face_faces(const struct chf_mesh *m,
 
 /**
  * FT: the tetrahedra of face `f` (2 entries, 1 on a boundary face), the canonical
- * half-face's first. O(1) from level 2.
+ * half-face's first. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_face_tetrahedra(const struct chf_mesh *m,
                                     uint32_t f,
@@ -1259,7 +1300,8 @@ topomesh_status chf_tetrahedron_vertices(const struct chf_mesh *m,
 
 /**
  * TE: the 6 edges of tetrahedron `t`, in local-pair order (0,1) (0,2) (0,3) (1,2) (1,3)
- * (2,3). O(k) per edge from level 2.
+ * (2,3). O(k) per edge at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_tetrahedron_edges(const struct chf_mesh *m,
                                       uint32_t t,
@@ -1269,7 +1311,8 @@ topomesh_status chf_tetrahedron_edges(const struct chf_mesh *m,
 
 /**
  * TF: the 4 faces of tetrahedron `t`; face `i` (half-face `4t + i`) is opposite vertex
- * `i`. O(1) from level 2.
+ * `i`. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_tetrahedron_faces(const struct chf_mesh *m,
                                       uint32_t t,
@@ -1280,7 +1323,8 @@ topomesh_status chf_tetrahedron_faces(const struct chf_mesh *m,
 /**
  * TT: always 4 entries, the tetrahedron across face `i` of `t`, or `TOPOMESH_NONE` on
  * the boundary (also across the faces of a non-manifold face and orientation seams,
- * which the structure keeps unpaired). O(1) from level 1.
+ * which the structure keeps unpaired). O(1) at levels 1-3; O(T) at level 0 (a scan of
+ * `V` per face).
  */
 topomesh_status chf_tetrahedron_tetrahedra(const struct chf_mesh *m,
                                            uint32_t t,
@@ -1291,47 +1335,62 @@ topomesh_status chf_tetrahedron_tetrahedra(const struct chf_mesh *m,
 /* ---- CHF: half-faces and boundary tests ---- */
 
 /**
- * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2, a
- * scan below.
+ * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) at levels 2-3;
+ * O(T) at level 1 (a scan of `V`); O(T) time and memory at level 0 (`O` computed).
  */
 topomesh_status chf_vertex_is_boundary(const struct chf_mesh *m, uint32_t v, bool *out);
 
 /**
- * Is edge `e` on the boundary (on a boundary face)? O(1) from level 2.
+ * Is edge `e` on the boundary (on a boundary face)? O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
-topomesh_status chf_edge_is_boundary(const struct chf_mesh *m, uint32_t e, bool *out);
+topomesh_status chf_edge_is_boundary(const struct chf_mesh *m,
+                                     uint32_t e,
+                                     bool *out);
 
 /**
- * Is face `f` on the boundary (one tetrahedron)? O(1) from level 2.
+ * Is face `f` on the boundary (one tetrahedron)? O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
-topomesh_status chf_face_is_boundary(const struct chf_mesh *m, uint32_t f, bool *out);
+topomesh_status chf_face_is_boundary(const struct chf_mesh *m,
+                                     uint32_t f,
+                                     bool *out);
 
 /**
  * The twin of half-face `hf` (the same face seen from the neighbouring tetrahedron) into
- * `*out`, `TOPOMESH_NONE` on the boundary. O(1) from level 1, a scan at level 0.
+ * `*out`, `TOPOMESH_NONE` on the boundary. O(1) at levels 1-3; O(T) at level 0 (a scan
+ * of `V`).
  */
 topomesh_status chf_half_face_opposite(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
 
 /**
- * The face of half-face `hf` into `*out`. O(1) from level 2.
+ * The face of half-face `hf` into `*out`. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
-topomesh_status chf_half_face_face(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
+topomesh_status chf_half_face_face(const struct chf_mesh *m,
+                                   uint32_t hf,
+                                   uint32_t *out);
 
 /**
  * The canonical half-face of face `f` into `*out`: the boundary one on a boundary face,
- * else the smaller of the two. O(1) from level 2.
+ * else the smaller of the two. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
-topomesh_status chf_face_half_face(const struct chf_mesh *m, uint32_t f, uint32_t *out);
+topomesh_status chf_face_half_face(const struct chf_mesh *m,
+                                   uint32_t f,
+                                   uint32_t *out);
 
 /**
  * A half-face holding vertex `v` into `*out`, where its star starts: a boundary one on a
- * boundary vertex, `TOPOMESH_NONE` for an isolated vertex (`VH[v]`). O(1) from level 2.
+ * boundary vertex, `TOPOMESH_NONE` for an isolated vertex (`VH[v]`). O(1) at levels 2-3;
+ * O(T) at level 1 (a scan of `V`); O(T) time and memory at level 0 (`O` computed).
  */
 topomesh_status chf_vertex_half_face(const struct chf_mesh *m, uint32_t v, uint32_t *out);
 
 /**
  * The half-face of boundary triangle `k` into `*out`; `k` out of range (see
- * `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE.
+ * `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE. O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call).
  */
 topomesh_status chf_boundary_triangle_half_face(const struct chf_mesh *m,
                                                 uint32_t k,
@@ -1349,20 +1408,23 @@ topomesh_status chf_mesh_boundary(const struct chf_mesh *m, struct che_mesh **ou
 
 /**
  * The boundary-surface vertex of volume vertex `v` into `*out`, `TOPOMESH_NONE` off the
- * boundary.
+ * boundary. O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call).
  */
 topomesh_status chf_vertex_boundary_vertex(const struct chf_mesh *m, uint32_t v, uint32_t *out);
 
 /**
  * The volume vertex of vertex `b` of `chf_mesh_boundary`'s surface into `*out` (copies
  * the surface split map to the vertex they come from); `b` out of range gives
- * OUT_OF_RANGE.
+ * OUT_OF_RANGE. O(1) at level 3; O(T) time and memory below (the boundary surface built
+ * for the call).
  */
 topomesh_status chf_boundary_vertex_vertex(const struct chf_mesh *m, uint32_t b, uint32_t *out);
 
 /**
  * The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is
- * paired (interior).
+ * paired (interior). O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call).
  */
 topomesh_status chf_half_face_boundary_triangle(const struct chf_mesh *m,
                                                 uint32_t hf,
@@ -1370,19 +1432,26 @@ topomesh_status chf_half_face_boundary_triangle(const struct chf_mesh *m,
 
 /**
  * The boundary triangle of face `f` into `*out`, `TOPOMESH_NONE` for an interior face.
+ * O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call)
  */
 topomesh_status chf_face_boundary_triangle(const struct chf_mesh *m, uint32_t f, uint32_t *out);
 
 /**
  * The face of boundary triangle `k` into `*out`; `k` out of range gives OUT_OF_RANGE.
+ * O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call)
  */
 topomesh_status chf_boundary_triangle_face(const struct chf_mesh *m, uint32_t k, uint32_t *out);
 
 /**
  * The boundary component of vertex `v` into `*out` (`TOPOMESH_NONE` off the boundary;
- * see `chf_mesh_boundary_vertex_components` for the array at level 3).
+ * see `chf_mesh_boundary_vertex_components` for the array at level 3). O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call).
  */
-topomesh_status chf_vertex_boundary_component(const struct chf_mesh *m, uint32_t v, uint32_t *out);
+topomesh_status chf_vertex_boundary_component(const struct chf_mesh *m,
+                                              uint32_t v,
+                                              uint32_t *out);
 
 /**
  * The boundary half-faces in increasing order: triangle `k` of `chf_mesh_boundary`'s
@@ -1408,7 +1477,7 @@ const uint32_t *chf_mesh_boundary_vertex_components(const struct chf_mesh *m, si
 /* ---- CHF: bulk relations as CSR arrays ---- */
 
 /**
- * VV for every vertex (rows as `chf_vertex_vertices`).
+ * VV for every vertex (rows as `chf_vertex_vertices`). O(T) at every level.
  */
 topomesh_status chf_mesh_vertex_vertices_csr(const struct chf_mesh *m,
                                              uint32_t *offsets,
@@ -1419,7 +1488,7 @@ topomesh_status chf_mesh_vertex_vertices_csr(const struct chf_mesh *m,
                                              size_t *n_indices);
 
 /**
- * VE for every vertex (rows as `chf_vertex_edges`).
+ * VE for every vertex (rows as `chf_vertex_edges`). O(T) at every level.
  */
 topomesh_status chf_mesh_vertex_edges_csr(const struct chf_mesh *m,
                                           uint32_t *offsets,
@@ -1430,7 +1499,7 @@ topomesh_status chf_mesh_vertex_edges_csr(const struct chf_mesh *m,
                                           size_t *n_indices);
 
 /**
- * VF for every vertex (rows as `chf_vertex_faces`).
+ * VF for every vertex (rows as `chf_vertex_faces`). O(T) at every level.
  */
 topomesh_status chf_mesh_vertex_faces_csr(const struct chf_mesh *m,
                                           uint32_t *offsets,
@@ -1441,7 +1510,7 @@ topomesh_status chf_mesh_vertex_faces_csr(const struct chf_mesh *m,
                                           size_t *n_indices);
 
 /**
- * VT for every vertex (rows as `chf_vertex_tetrahedra`).
+ * VT for every vertex (rows as `chf_vertex_tetrahedra`). O(T) at every level.
  */
 topomesh_status chf_mesh_vertex_tetrahedra_csr(const struct chf_mesh *m,
                                                uint32_t *offsets,
@@ -1452,7 +1521,7 @@ topomesh_status chf_mesh_vertex_tetrahedra_csr(const struct chf_mesh *m,
                                                size_t *n_indices);
 
 /**
- * EF for every edge (rows as `chf_edge_faces`, in rotation order).
+ * EF for every edge (rows as `chf_edge_faces`, in rotation order). O(T) at every level.
  */
 topomesh_status chf_mesh_edge_faces_csr(const struct chf_mesh *m,
                                         uint32_t *offsets,
@@ -1463,7 +1532,7 @@ topomesh_status chf_mesh_edge_faces_csr(const struct chf_mesh *m,
                                         size_t *n_indices);
 
 /**
- * ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order).
+ * ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order). O(T) at every level.
  */
 topomesh_status chf_mesh_edge_tetrahedra_csr(const struct chf_mesh *m,
                                              uint32_t *offsets,
@@ -1476,7 +1545,7 @@ topomesh_status chf_mesh_edge_tetrahedra_csr(const struct chf_mesh *m,
 /**
  * TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
  * tetrahedron across face `i`, `TOPOMESH_NONE` on the boundary, as
- * `chf_tetrahedron_tetrahedra`.
+ * `chf_tetrahedron_tetrahedra`. O(T) at every level.
  */
 topomesh_status chf_mesh_tetrahedron_tetrahedra_csr(const struct chf_mesh *m,
                                                     uint32_t *offsets,

@@ -76,7 +76,8 @@ impl Che {
         self.boundary_curve_starts().len()
     }
 
-    /// The curve of boundary half-edge `h` (`NONE` when `h` is interior). O(1) at level 3.
+    /// The curve of boundary half-edge `h` (`NONE` when `h` is interior). O(1) at level 3;
+    /// O(T) below (the curves are walked), and O(T) memory at level 0.
     pub fn curve_of(&self, h: u32) -> u32 {
         if self.level >= 3 {
             if self.o[h as usize] != NONE {

@@ -107,7 +107,8 @@ impl Che {
         any
     }
 
-    /// Is `v` on the boundary? O(1) at level 2. An isolated vertex is not.
+    /// Is `v` on the boundary? O(1) at level 2, O(T) below (see
+    /// [`Che::vertex_half_edge`]). An isolated vertex is not.
     pub fn is_boundary_vertex(&self, v: u32) -> bool {
         let h = self.vertex_half_edge(v);
         h != NONE && self.opposite(h) == NONE
@@ -175,7 +176,8 @@ impl Che {
     }
 
     /// The canonical half-edge of edge `e` (the boundary one on a boundary edge).
-    /// O(1) at level 2; a scan below.
+    /// O(1) at level 2; O(T) at level 1 (a count of the canonical half-edges), and O(T)
+    /// memory at level 0.
     pub fn edge_half_edge(&self, e: u32) -> u32 {
         if self.level >= 2 {
             return self.eh[e as usize];

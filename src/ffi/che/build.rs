@@ -118,7 +118,8 @@ pub unsafe extern "C" fn che_mesh_num_half_edges(m: *const CheMesh) -> usize {
     count!(m, |c| c.num_half_edges())
 }
 
-/// Boundary curves of the structure (O(1) at level 3, O(T) below).
+/// Boundary curves of the structure: O(1) at level 3, O(T) at levels 1-2, O(T) time and
+/// memory at level 0.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_boundary_curves(m: *const CheMesh) -> usize {
     count!(m, |c| c.num_boundary_curves())

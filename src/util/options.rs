@@ -13,7 +13,9 @@ pub struct BuildOptions {
     /// repairing or keeping it.
     pub strict: bool,
     /// Threads for the build: 0 (the default) for as many as the machine runs at once, 1
-    /// for the calling thread alone. The structure is the same whatever the number.
+    /// for the calling thread alone; more than the machine runs at once, or than one per
+    /// 8192 elements, are not started (see [`planned_threads`](crate::planned_threads)).
+    /// The structure is the same whatever the number.
     pub threads: usize,
 }
 

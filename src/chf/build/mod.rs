@@ -361,7 +361,7 @@ pub(crate) const TETRAHEDRA: Cells = Cells {
 /// Whether a build of `n_tets` tetrahedra on `n_vertices` vertices fits, checked from the
 /// counts alone (the build checks this first, before it allocates or reads anything): at
 /// most [`MAX_TETRAHEDRA`] tetrahedra, fewer than 2^32 - 1 vertices, and at most
-/// [`MAX_UNUSED_VERTICES`](crate::che::MAX_UNUSED_VERTICES) vertices beyond the
+/// [`MAX_UNUSED_VERTICES`](crate::chf::MAX_UNUSED_VERTICES) vertices beyond the
 /// `4 * n_tets` the tetrahedra can name. A failure is `ErrorKind::TooLarge`, naming the
 /// limit.
 pub fn check_counts(n_tets: usize, n_vertices: usize) -> Result<()> {

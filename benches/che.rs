@@ -1,4 +1,5 @@
-//! CHE build and sweeps: levels 1, 2 and 3 from arrays, and full VV, VF, FF and EF sweeps,
+//! CHE build and sweeps: levels 1, 2 and 3 from arrays, full VV, VF, FF and EF sweeps, and
+//! the queries below level 2 that compute what their level lacks,
 //! on a generated torus of 1.2M triangles and on real meshes found in
 //! $TOPOMESH_MESH_DIR or the default mesh cache (see scripts/fetch-meshes.sh). Prints bytes per triangle per level.
 
@@ -162,5 +163,26 @@ fn sweeps(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, build, sweeps);
+/// The queries below level 2 that compute what their level lacks (each O(T)): a boundary
+/// curve, a vertex star and its edges, at levels 0 and 1, on a grid of about 200k
+/// triangles (one boundary curve).
+fn below_level_2(c: &mut Criterion) {
+    let grid = topomesh::generate::grid(300, 330);
+    let n = grid.positions.len();
+    let mut group = c.benchmark_group("below-level-2/grid-198k");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(grid.triangles.len() as u64));
+    for level in [0u8, 1] {
+        let che = Che::from_triangles(&grid.triangles, n, &[], BuildOptions::level(level)).unwrap();
+        group.bench_function(BenchmarkId::new("boundary curve", level), |b| {
+            b.iter(|| black_box(che.boundary_curve_vertices(0).unwrap().len()))
+        });
+        group.bench_function(BenchmarkId::new("VE", level), |b| {
+            b.iter(|| black_box(che.vertex_edges(black_box(45_000)).count()))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, build, sweeps, below_level_2);
 criterion_main!(benches);

@@ -223,12 +223,15 @@ typedef struct che_build_options {
     /**
      * Reject non-manifold edges, non-manifold vertices and duplicate triangles with
      * `TOPOMESH_STATUS_NON_MANIFOLD` (detail: the offending ids) instead of repairing them
-     * (default false).
+     * (default 0). Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the
+     * size and offset of the `bool` it was: a C `bool` field can hold other values, which
+     * Rust may not read as a `bool`.)
      */
-    bool strict;
+    uint8_t strict;
     /**
      * Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
-     * the calling thread alone. The mesh is the same whatever the number.
+     * the calling thread alone; a larger number is capped at what the machine runs at once
+     * and at one thread per 8192 elements. The mesh is the same whatever the number.
      */
     uint32_t threads;
 } che_build_options;
@@ -382,12 +385,15 @@ typedef struct chf_build_options {
     /**
      * Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
      * and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
-     * the offending ids) instead of keeping them (default false).
+     * the offending ids) instead of keeping them (default 0). Any non-zero value is true.
+     * (A `uint8_t` rather than a `bool`, with the size and offset of the `bool` it was: a C
+     * `bool` field can hold other values, which Rust may not read as a `bool`.)
      */
-    bool strict;
+    uint8_t strict;
     /**
      * Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
-     * the calling thread alone. The mesh is the same whatever the number.
+     * the calling thread alone; a larger number is capped at what the machine runs at once
+     * and at one thread per 8192 elements. The mesh is the same whatever the number.
      */
     uint32_t threads;
 } chf_build_options;
@@ -595,8 +601,9 @@ struct che_build_options che_build_options_default(void);
  * component is oriented consistently; `che_mesh_report` says what was changed.
  * Non-manifold input is repaired (see `che_mesh_from_triangles_ex` for strict mode).
  * A triangle naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`; more
- * than 2^32 - 2 vertices or 1431655765 triangles `TOPOMESH_STATUS_TOO_LARGE`. `*out` is
- * NULL on failure.
+ * than 2^32 - 2 vertices, more than 1431655765 triangles, or more than 2^26 vertices
+ * beyond the `3 * n_triangles` the triangles can name `TOPOMESH_STATUS_TOO_LARGE`, before
+ * anything is allocated or read. `*out` is NULL on failure.
  */
 topomesh_status che_mesh_from_triangles(const uint32_t *triangles,
                                         size_t n_triangles,
@@ -697,7 +704,8 @@ size_t che_mesh_num_edges(const struct che_mesh *m);
 size_t che_mesh_num_half_edges(const struct che_mesh *m);
 
 /**
- * Boundary curves of the structure (O(1) at level 3, O(T) below).
+ * Boundary curves of the structure: O(1) at level 3, O(T) at levels 1-2, O(T) time and
+ * memory at level 0.
  */
 size_t che_mesh_num_boundary_curves(const struct che_mesh *m);
 
@@ -707,7 +715,7 @@ size_t che_mesh_num_boundary_curves(const struct che_mesh *m);
  * VV: the vertices around `v`, counter-clockwise seen from outside. On a boundary vertex
  * the list starts at the far end of its outgoing boundary edge and ends at the near end of
  * its incoming one (d + 1 vertices for d triangles). Empty for an isolated vertex.
- * O(d) from level 2; scans below.
+ * O(d) at levels 2-3; O(T) at level 1 (a scan of `V` for the start); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_vertex_vertices(const struct che_mesh *m,
                                     uint32_t v,
@@ -717,7 +725,9 @@ topomesh_status che_vertex_vertices(const struct che_mesh *m,
 
 /**
  * VE: the edges around `v`, the edge to each vertex of `che_vertex_vertices`, in the same
- * order. O(d) from level 2.
+ * order. O(d) at levels 2-3; O(T) at level 1 (a scan of `V` for the start; edge ids
+ * from the level-1 directory, computed in O(T) by the first request and kept); O(T) time
+ * and memory at level 0.
  */
 topomesh_status che_vertex_edges(const struct che_mesh *m,
                                  uint32_t v,
@@ -727,7 +737,7 @@ topomesh_status che_vertex_edges(const struct che_mesh *m,
 
 /**
  * VF: the triangles around `v`, counter-clockwise, from the boundary on a boundary vertex.
- * O(d) from level 2.
+ * O(d) at levels 2-3; O(T) at level 1 (a scan of `V` for the start); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_vertex_triangles(const struct che_mesh *m,
                                      uint32_t v,
@@ -737,7 +747,8 @@ topomesh_status che_vertex_triangles(const struct che_mesh *m,
 
 /**
  * EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (the boundary
- * half-edge on a boundary edge). O(1) from level 2.
+ * half-edge on a boundary edge). O(1) at levels 2-3; O(T) at level 1 (a count of the
+ * canonical half-edges); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_vertices(const struct che_mesh *m,
                                   uint32_t e,
@@ -747,7 +758,9 @@ topomesh_status che_edge_vertices(const struct che_mesh *m,
 
 /**
  * EE: the wings of edge `e` (4 entries, 2 on a boundary edge): the next and previous edges
- * in the canonical half-edge's triangle, then in the opposite triangle.
+ * in the canonical half-edge's triangle, then in the opposite triangle. O(1) at levels
+ * 2-3; O(T) at level 1 (finding the canonical half-edge; edge ids from the level-1
+ * directory); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_edges(const struct che_mesh *m,
                                uint32_t e,
@@ -757,7 +770,8 @@ topomesh_status che_edge_edges(const struct che_mesh *m,
 
 /**
  * EF: the triangles of edge `e` (2 entries, 1 on a boundary edge), the canonical
- * half-edge's first.
+ * half-edge's first. O(1) at levels 2-3; O(T) at level 1 (finding the canonical
+ * half-edge); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_triangles(const struct che_mesh *m,
                                    uint32_t e,
@@ -767,7 +781,7 @@ topomesh_status che_edge_triangles(const struct che_mesh *m,
 
 /**
  * FV: the 3 corners of triangle `t`, counter-clockwise (corner i is the origin of
- * half-edge 3t + i).
+ * half-edge 3t + i). O(1) at every level.
  */
 topomesh_status che_triangle_vertices(const struct che_mesh *m,
                                       uint32_t t,
@@ -776,7 +790,9 @@ topomesh_status che_triangle_vertices(const struct che_mesh *m,
                                       size_t *out_len);
 
 /**
- * FE: the 3 edges of triangle `t`; edge i runs from corner i to corner i + 1.
+ * FE: the 3 edges of triangle `t`; edge i runs from corner i to corner i + 1. O(1) at
+ * levels 2-3; O(1) at level 1 once the level-1 edge-id directory exists (the first
+ * request computes it, O(T), and keeps it); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_triangle_edges(const struct che_mesh *m,
                                    uint32_t t,
@@ -787,7 +803,8 @@ topomesh_status che_triangle_edges(const struct che_mesh *m,
 /**
  * FF: always 3 entries, the triangle across edge i of `t` (see `che_triangle_edges`), or
  * `TOPOMESH_NONE` across a boundary edge (also across non-manifold and non-orientable
- * seam edges, which the structure keeps unpaired).
+ * seam edges, which the structure keeps unpaired). O(1) at levels 1-3; O(T) at level 0
+ * (a scan of `V` per edge).
  */
 topomesh_status che_triangle_triangles(const struct che_mesh *m,
                                        uint32_t t,
@@ -798,7 +815,8 @@ topomesh_status che_triangle_triangles(const struct che_mesh *m,
 /**
  * The vertices of boundary curve `curve` (0..che_mesh_num_boundary_curves), in order, the
  * interior on the left; curves are numbered by their smallest half-edge. O(length) at
- * level 3; O(T) (level 2) or more below.
+ * level 3; O(T) at level 2 (finding the curves' starts) and level 1 (the walk rotates
+ * around each boundary vertex); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_boundary_curve_vertices(const struct che_mesh *m,
                                             uint32_t curve,
@@ -810,40 +828,48 @@ topomesh_status che_boundary_curve_vertices(const struct che_mesh *m,
 
 /**
  * The opposite of half-edge `h` into `*out` (`TOPOMESH_NONE` on the boundary).
- * O(1) from level 1.
+ * O(1) at levels 1-3; O(T) at level 0 (a scan of `V`).
  */
 topomesh_status che_half_edge_opposite(const struct che_mesh *m, uint32_t h, uint32_t *out);
 
 /**
- * The edge of half-edge `h` into `*out`. O(1) from level 2.
+ * The edge of half-edge `h` into `*out`. O(1) at levels 2-3; O(1) at level 1 once the
+ * level-1 edge-id directory exists (the first request computes it, O(T), and keeps it);
+ * O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_half_edge_edge(const struct che_mesh *m, uint32_t h, uint32_t *out);
 
 /**
  * The boundary curve of half-edge `h` into `*out` (`TOPOMESH_NONE` when `h` is not on the
- * boundary). O(1) at level 3.
+ * boundary). O(1) at level 3; O(T) at levels 1-2 (the curves are walked); O(T) time and memory at level 0 (`O` computed for the call).
  */
-topomesh_status che_half_edge_curve(const struct che_mesh *m, uint32_t h, uint32_t *out);
+topomesh_status che_half_edge_curve(const struct che_mesh *m,
+                                    uint32_t h,
+                                    uint32_t *out);
 
 /**
  * The outgoing half-edge of vertex `v` a rotation starts at into `*out`: the boundary one
- * on a boundary vertex, `TOPOMESH_NONE` for an isolated vertex. O(1) from level 2.
+ * on a boundary vertex, `TOPOMESH_NONE` for an isolated vertex. O(1) at levels 2-3; O(T)
+ * at level 1 (a scan of `V`); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_vertex_half_edge(const struct che_mesh *m, uint32_t v, uint32_t *out);
 
 /**
  * The canonical half-edge of edge `e` into `*out` (the boundary one on a boundary edge,
- * else the smaller of the two). O(1) from level 2.
+ * else the smaller of the two). O(1) at levels 2-3; O(T) at level 1 (a count of the
+ * canonical half-edges); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_half_edge(const struct che_mesh *m, uint32_t e, uint32_t *out);
 
 /**
- * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2.
+ * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) at levels 2-3;
+ * O(T) at level 1 (a scan of `V`); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_vertex_is_boundary(const struct che_mesh *m, uint32_t v, bool *out);
 
 /**
- * Is edge `e` on the boundary (one triangle)? O(1) from level 2.
+ * Is edge `e` on the boundary (one triangle)? O(1) at levels 2-3; O(T) at level 1
+ * (finding the canonical half-edge); O(T) time and memory at level 0 (`O` computed for the call).
  */
 topomesh_status che_edge_is_boundary(const struct che_mesh *m, uint32_t e, bool *out);
 
@@ -852,20 +878,27 @@ topomesh_status che_edge_is_boundary(const struct che_mesh *m, uint32_t e, bool 
 /**
  * Starts a rotation around vertex `v` in `*it` (an isolated vertex has no steps). From
  * level 2 the iterator holds the zero-copy arrays, so that `che_star_next` steps inline.
+ * O(1) at levels 2-3; O(T) at level 1 (a scan of `V` for the start); O(T) time and
+ * memory at level 0.
  */
 topomesh_status che_star_begin(const struct che_mesh *m, uint32_t v, struct che_star_iter *it);
 
 /**
  * The library's step of `che_star_next` (which calls it when it cannot step inline):
  * writes the next step into `*step` and returns true, or returns false at the end (also
- * when `it` or `step` is NULL). O(1) per step from level 2 (edge ids are O(T) below).
+ * when `it` or `step` is NULL). O(1) per step at levels 2-3; O(1) per step at level 1
+ * once the level-1 edge-id directory exists (the first request computes it, O(T), and
+ * keeps it); O(T) time and memory per step at level 0 (the opposite and the edge id are
+ * found by scans: O(d T) for a rotation, so at level 0 prefer `che_vertex_vertices`
+ * and the other relations, O(T) each, or raise the level).
  */
 bool che_star_advance(struct che_star_iter *it, struct che_star_step *step);
 
 /* ---- CHE: bulk relations as CSR arrays ---- */
 
 /**
- * VV for every vertex (rows as `che_vertex_vertices`).
+ * VV for every vertex (rows as `che_vertex_vertices`). O(T) at every level
+ * (O(T) memory at level 0).
  */
 topomesh_status che_mesh_vertex_vertices_csr(const struct che_mesh *m,
                                              uint32_t *offsets,
@@ -876,7 +909,8 @@ topomesh_status che_mesh_vertex_vertices_csr(const struct che_mesh *m,
                                              size_t *n_indices);
 
 /**
- * VE for every vertex (rows as `che_vertex_edges`).
+ * VE for every vertex (rows as `che_vertex_edges`). O(T) at every level
+ * (O(T) memory at level 0).
  */
 topomesh_status che_mesh_vertex_edges_csr(const struct che_mesh *m,
                                           uint32_t *offsets,
@@ -887,7 +921,8 @@ topomesh_status che_mesh_vertex_edges_csr(const struct che_mesh *m,
                                           size_t *n_indices);
 
 /**
- * VF for every vertex (rows as `che_vertex_triangles`).
+ * VF for every vertex (rows as `che_vertex_triangles`). O(T) at every level
+ * (O(T) memory at level 0).
  */
 topomesh_status che_mesh_vertex_triangles_csr(const struct che_mesh *m,
                                               uint32_t *offsets,
@@ -1045,8 +1080,9 @@ struct chf_build_options chf_build_options_default(void);
  * `chf_mesh_report` says what was changed. Non-manifold input is kept (faces of three or
  * more tetrahedra stay unpaired; see `chf_mesh_from_tetrahedra_ex` for strict mode).
  * A tetrahedron naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`;
- * more than 2^32 - 2 vertices or 1073741823 tetrahedra `TOPOMESH_STATUS_TOO_LARGE`.
- * `*out` is NULL on failure.
+ * more than 2^32 - 2 vertices, more than 1073741823 tetrahedra, or more than 2^26
+ * vertices beyond the `4 * n_tets` the tetrahedra can name `TOPOMESH_STATUS_TOO_LARGE`,
+ * before anything is allocated or read. `*out` is NULL on failure.
  */
 topomesh_status chf_mesh_from_tetrahedra(const uint32_t *tetrahedra,
                                          size_t n_tets,
@@ -1202,8 +1238,10 @@ size_t chf_mesh_num_boundary_components(const struct chf_mesh *m);
 /**
  * VV: the vertices sharing an edge with `v`, each once, in increasing order (found by a
  * walk over its star, the tetrahedra reached across the faces holding `v`; there is no
- * rotation order around a vertex in 3D). Empty for an isolated vertex. O(star) from level 2; below,
- * each call also computes the missing tables, O(T).
+ * rotation order around a vertex in 3D). Empty for an isolated vertex. O(star) at levels
+ * 2-3; O(T) time and memory at levels 0-1 (the start found by a scan of `V`, and the
+ * tables the level lacks, such as `O` at level 0 and the edge or face ranks, computed for
+ * the call).
  */
 topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
                                     uint32_t v,
@@ -1212,7 +1250,8 @@ topomesh_status chf_vertex_vertices(const struct chf_mesh *m,
                                     size_t *out_len);
 
 /**
- * VE: the edges holding `v`, each once, in increasing order. O(star) from level 2.
+ * VE: the edges holding `v`, each once, in increasing order. O(star) at levels 2-3; O(T)
+ * time and memory at levels 0-1, as `chf_vertex_vertices`.
  */
 topomesh_status chf_vertex_edges(const struct chf_mesh *m,
                                  uint32_t v,
@@ -1221,7 +1260,8 @@ topomesh_status chf_vertex_edges(const struct chf_mesh *m,
                                  size_t *out_len);
 
 /**
- * VF: the faces holding `v`, each once, in increasing order. O(star) from level 2.
+ * VF: the faces holding `v`, each once, in increasing order. O(star) at levels 2-3; O(T)
+ * time and memory at levels 0-1, as `chf_vertex_vertices`.
  */
 topomesh_status chf_vertex_faces(const struct chf_mesh *m,
                                  uint32_t v,
@@ -1231,7 +1271,8 @@ topomesh_status chf_vertex_faces(const struct chf_mesh *m,
 
 /**
  * VT: the tetrahedra holding `v`, each once, in increasing order (a walk over its star
- * from the half-face `chf_vertex_half_face` gives). O(star) from level 2.
+ * from the half-face `chf_vertex_half_face` gives). O(star) at levels 2-3; O(T) time and
+ * memory at levels 0-1, as `chf_vertex_vertices`.
  */
 topomesh_status chf_vertex_tetrahedra(const struct chf_mesh *m,
                                       uint32_t v,
@@ -1241,7 +1282,8 @@ topomesh_status chf_vertex_tetrahedra(const struct chf_mesh *m,
 
 /**
  * EV: the 2 ends of edge `e`, in the direction of its canonical half-edge (where its
- * rotation starts: on a boundary face for a boundary edge). O(1) from level 2.
+ * rotation starts: on a boundary face for a boundary edge). O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_edge_vertices(const struct chf_mesh *m,
                                   uint32_t e,
@@ -1252,7 +1294,8 @@ topomesh_status chf_edge_vertices(const struct chf_mesh *m,
 /**
  * EE: the edges sharing a face with `e`, each once: for each face of `chf_edge_faces`, in
  * that order, its two other edges (next, then previous in the face's order). O(k) walks
- * from level 2 (k: tetrahedra around each edge).
+ * at levels 2-3 (k: tetrahedra around each edge); O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call), plus the walks.
  */
 topomesh_status chf_edge_edges(const struct chf_mesh *m,
                                uint32_t e,
@@ -1262,7 +1305,8 @@ topomesh_status chf_edge_edges(const struct chf_mesh *m,
 
 /**
  * EF: the faces around edge `e` in rotation order; on a boundary edge from one boundary
- * face to the other (one more face than tetrahedra). O(k) from level 2.
+ * face to the other (one more face than tetrahedra). O(k) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_edge_faces(const struct chf_mesh *m,
                                uint32_t e,
@@ -1272,7 +1316,8 @@ topomesh_status chf_edge_faces(const struct chf_mesh *m,
 
 /**
  * ET: the tetrahedra around edge `e` in rotation order, from the boundary on a boundary
- * edge. O(k) from level 2.
+ * edge. O(k) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_edge_tetrahedra(const struct chf_mesh *m,
                                     uint32_t e,
@@ -1283,7 +1328,8 @@ topomesh_status chf_edge_tetrahedra(const struct chf_mesh *m,
 /**
  * FV: the 3 vertices of face `f` in the order of its canonical half-face (the boundary
  * one on a boundary face, else the smaller of the two), outward for that half-face's
- * tetrahedron. O(1) from level 2.
+ * tetrahedron. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_face_vertices(const struct chf_mesh *m,
                                   uint32_t f,
@@ -1293,7 +1339,8 @@ topomesh_status chf_face_vertices(const struct chf_mesh *m,
 
 /**
  * FE: the 3 edges of face `f`; edge `j` runs from vertex `j` to vertex `j + 1` of
- * `chf_face_vertices`. O(k) per edge from level 2.
+ * `chf_face_vertices`. O(k) per edge at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_face_edges(const struct chf_mesh *m,
                                uint32_t f,
@@ -1304,7 +1351,8 @@ topomesh_status chf_face_edges(const struct chf_mesh *m,
 /**
  * FF: the faces sharing a tetrahedron with `f` (hence an edge), each once: the other three
  * faces of the canonical half-face's tetrahedron, then of its twin's (3 on a boundary
- * face, 6 inside). O(1) from level 2.
+ * face, 6 inside). O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_face_faces(const struct chf_mesh *m,
                                uint32_t f,
@@ -1314,7 +1362,8 @@ topomesh_status chf_face_faces(const struct chf_mesh *m,
 
 /**
  * FT: the tetrahedra of face `f` (2 entries, 1 on a boundary face), the canonical
- * half-face's first. O(1) from level 2.
+ * half-face's first. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_face_tetrahedra(const struct chf_mesh *m,
                                     uint32_t f,
@@ -1334,7 +1383,8 @@ topomesh_status chf_tetrahedron_vertices(const struct chf_mesh *m,
 
 /**
  * TE: the 6 edges of tetrahedron `t`, in local-pair order (0,1) (0,2) (0,3) (1,2) (1,3)
- * (2,3). O(k) per edge from level 2.
+ * (2,3). O(k) per edge at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_tetrahedron_edges(const struct chf_mesh *m,
                                       uint32_t t,
@@ -1344,7 +1394,8 @@ topomesh_status chf_tetrahedron_edges(const struct chf_mesh *m,
 
 /**
  * TF: the 4 faces of tetrahedron `t`; face `i` (half-face `4t + i`) is opposite vertex
- * `i`. O(1) from level 2.
+ * `i`. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
 topomesh_status chf_tetrahedron_faces(const struct chf_mesh *m,
                                       uint32_t t,
@@ -1355,7 +1406,8 @@ topomesh_status chf_tetrahedron_faces(const struct chf_mesh *m,
 /**
  * TT: always 4 entries, the tetrahedron across face `i` of `t`, or `TOPOMESH_NONE` on
  * the boundary (also across the faces of a non-manifold face and orientation seams,
- * which the structure keeps unpaired). O(1) from level 1.
+ * which the structure keeps unpaired). O(1) at levels 1-3; O(T) at level 0 (a scan of
+ * `V` per face).
  */
 topomesh_status chf_tetrahedron_tetrahedra(const struct chf_mesh *m,
                                            uint32_t t,
@@ -1366,47 +1418,62 @@ topomesh_status chf_tetrahedron_tetrahedra(const struct chf_mesh *m,
 /* ---- CHF: half-faces and boundary tests ---- */
 
 /**
- * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) from level 2, a
- * scan below.
+ * Is vertex `v` on the boundary? (`false` for an isolated vertex.) O(1) at levels 2-3;
+ * O(T) at level 1 (a scan of `V`); O(T) time and memory at level 0 (`O` computed).
  */
 topomesh_status chf_vertex_is_boundary(const struct chf_mesh *m, uint32_t v, bool *out);
 
 /**
- * Is edge `e` on the boundary (on a boundary face)? O(1) from level 2.
+ * Is edge `e` on the boundary (on a boundary face)? O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
-topomesh_status chf_edge_is_boundary(const struct chf_mesh *m, uint32_t e, bool *out);
+topomesh_status chf_edge_is_boundary(const struct chf_mesh *m,
+                                     uint32_t e,
+                                     bool *out);
 
 /**
- * Is face `f` on the boundary (one tetrahedron)? O(1) from level 2.
+ * Is face `f` on the boundary (one tetrahedron)? O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
-topomesh_status chf_face_is_boundary(const struct chf_mesh *m, uint32_t f, bool *out);
+topomesh_status chf_face_is_boundary(const struct chf_mesh *m,
+                                     uint32_t f,
+                                     bool *out);
 
 /**
  * The twin of half-face `hf` (the same face seen from the neighbouring tetrahedron) into
- * `*out`, `TOPOMESH_NONE` on the boundary. O(1) from level 1, a scan at level 0.
+ * `*out`, `TOPOMESH_NONE` on the boundary. O(1) at levels 1-3; O(T) at level 0 (a scan
+ * of `V`).
  */
 topomesh_status chf_half_face_opposite(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
 
 /**
- * The face of half-face `hf` into `*out`. O(1) from level 2.
+ * The face of half-face `hf` into `*out`. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
-topomesh_status chf_half_face_face(const struct chf_mesh *m, uint32_t hf, uint32_t *out);
+topomesh_status chf_half_face_face(const struct chf_mesh *m,
+                                   uint32_t hf,
+                                   uint32_t *out);
 
 /**
  * The canonical half-face of face `f` into `*out`: the boundary one on a boundary face,
- * else the smaller of the two. O(1) from level 2.
+ * else the smaller of the two. O(1) at levels 2-3; O(T) time and memory at levels 0-1 (the tables the level lacks, such as `O` at level 0
+ * and the face or edge ranks, computed for the call).
  */
-topomesh_status chf_face_half_face(const struct chf_mesh *m, uint32_t f, uint32_t *out);
+topomesh_status chf_face_half_face(const struct chf_mesh *m,
+                                   uint32_t f,
+                                   uint32_t *out);
 
 /**
  * A half-face holding vertex `v` into `*out`, where its star starts: a boundary one on a
- * boundary vertex, `TOPOMESH_NONE` for an isolated vertex (`VH[v]`). O(1) from level 2.
+ * boundary vertex, `TOPOMESH_NONE` for an isolated vertex (`VH[v]`). O(1) at levels 2-3;
+ * O(T) at level 1 (a scan of `V`); O(T) time and memory at level 0 (`O` computed).
  */
 topomesh_status chf_vertex_half_face(const struct chf_mesh *m, uint32_t v, uint32_t *out);
 
 /**
  * The half-face of boundary triangle `k` into `*out`; `k` out of range (see
- * `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE.
+ * `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE. O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call).
  */
 topomesh_status chf_boundary_triangle_half_face(const struct chf_mesh *m,
                                                 uint32_t k,
@@ -1424,20 +1491,23 @@ topomesh_status chf_mesh_boundary(const struct chf_mesh *m, struct che_mesh **ou
 
 /**
  * The boundary-surface vertex of volume vertex `v` into `*out`, `TOPOMESH_NONE` off the
- * boundary.
+ * boundary. O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call).
  */
 topomesh_status chf_vertex_boundary_vertex(const struct chf_mesh *m, uint32_t v, uint32_t *out);
 
 /**
  * The volume vertex of vertex `b` of `chf_mesh_boundary`'s surface into `*out` (copies
  * the surface split map to the vertex they come from); `b` out of range gives
- * OUT_OF_RANGE.
+ * OUT_OF_RANGE. O(1) at level 3; O(T) time and memory below (the boundary surface built
+ * for the call).
  */
 topomesh_status chf_boundary_vertex_vertex(const struct chf_mesh *m, uint32_t b, uint32_t *out);
 
 /**
  * The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is
- * paired (interior).
+ * paired (interior). O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call).
  */
 topomesh_status chf_half_face_boundary_triangle(const struct chf_mesh *m,
                                                 uint32_t hf,
@@ -1445,19 +1515,26 @@ topomesh_status chf_half_face_boundary_triangle(const struct chf_mesh *m,
 
 /**
  * The boundary triangle of face `f` into `*out`, `TOPOMESH_NONE` for an interior face.
+ * O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call)
  */
 topomesh_status chf_face_boundary_triangle(const struct chf_mesh *m, uint32_t f, uint32_t *out);
 
 /**
  * The face of boundary triangle `k` into `*out`; `k` out of range gives OUT_OF_RANGE.
+ * O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call)
  */
 topomesh_status chf_boundary_triangle_face(const struct chf_mesh *m, uint32_t k, uint32_t *out);
 
 /**
  * The boundary component of vertex `v` into `*out` (`TOPOMESH_NONE` off the boundary;
- * see `chf_mesh_boundary_vertex_components` for the array at level 3).
+ * see `chf_mesh_boundary_vertex_components` for the array at level 3). O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+ * call).
  */
-topomesh_status chf_vertex_boundary_component(const struct chf_mesh *m, uint32_t v, uint32_t *out);
+topomesh_status chf_vertex_boundary_component(const struct chf_mesh *m,
+                                              uint32_t v,
+                                              uint32_t *out);
 
 /**
  * The boundary half-faces in increasing order: triangle `k` of `chf_mesh_boundary`'s
@@ -1483,7 +1560,7 @@ const uint32_t *chf_mesh_boundary_vertex_components(const struct chf_mesh *m, si
 /* ---- CHF: bulk relations as CSR arrays ---- */
 
 /**
- * VV for every vertex (rows as `chf_vertex_vertices`).
+ * VV for every vertex (rows as `chf_vertex_vertices`). O(T) at every level.
  */
 topomesh_status chf_mesh_vertex_vertices_csr(const struct chf_mesh *m,
                                              uint32_t *offsets,
@@ -1494,7 +1571,7 @@ topomesh_status chf_mesh_vertex_vertices_csr(const struct chf_mesh *m,
                                              size_t *n_indices);
 
 /**
- * VE for every vertex (rows as `chf_vertex_edges`).
+ * VE for every vertex (rows as `chf_vertex_edges`). O(T) at every level.
  */
 topomesh_status chf_mesh_vertex_edges_csr(const struct chf_mesh *m,
                                           uint32_t *offsets,
@@ -1505,7 +1582,7 @@ topomesh_status chf_mesh_vertex_edges_csr(const struct chf_mesh *m,
                                           size_t *n_indices);
 
 /**
- * VF for every vertex (rows as `chf_vertex_faces`).
+ * VF for every vertex (rows as `chf_vertex_faces`). O(T) at every level.
  */
 topomesh_status chf_mesh_vertex_faces_csr(const struct chf_mesh *m,
                                           uint32_t *offsets,
@@ -1516,7 +1593,7 @@ topomesh_status chf_mesh_vertex_faces_csr(const struct chf_mesh *m,
                                           size_t *n_indices);
 
 /**
- * VT for every vertex (rows as `chf_vertex_tetrahedra`).
+ * VT for every vertex (rows as `chf_vertex_tetrahedra`). O(T) at every level.
  */
 topomesh_status chf_mesh_vertex_tetrahedra_csr(const struct chf_mesh *m,
                                                uint32_t *offsets,
@@ -1527,7 +1604,7 @@ topomesh_status chf_mesh_vertex_tetrahedra_csr(const struct chf_mesh *m,
                                                size_t *n_indices);
 
 /**
- * EF for every edge (rows as `chf_edge_faces`, in rotation order).
+ * EF for every edge (rows as `chf_edge_faces`, in rotation order). O(T) at every level.
  */
 topomesh_status chf_mesh_edge_faces_csr(const struct chf_mesh *m,
                                         uint32_t *offsets,
@@ -1538,7 +1615,7 @@ topomesh_status chf_mesh_edge_faces_csr(const struct chf_mesh *m,
                                         size_t *n_indices);
 
 /**
- * ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order).
+ * ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order). O(T) at every level.
  */
 topomesh_status chf_mesh_edge_tetrahedra_csr(const struct chf_mesh *m,
                                              uint32_t *offsets,
@@ -1551,7 +1628,7 @@ topomesh_status chf_mesh_edge_tetrahedra_csr(const struct chf_mesh *m,
 /**
  * TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
  * tetrahedron across face `i`, `TOPOMESH_NONE` on the boundary, as
- * `chf_tetrahedron_tetrahedra`.
+ * `chf_tetrahedron_tetrahedra`. O(T) at every level.
  */
 topomesh_status chf_mesh_tetrahedron_tetrahedra_csr(const struct chf_mesh *m,
                                                     uint32_t *offsets,
@@ -1668,10 +1745,11 @@ const uint32_t *chf_mesh_tetrahedron_origins(const struct chf_mesh *m, size_t *l
 /* ---- Status, errors and version ---- */
 
 /**
- * A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
- * the `topomesh_status` values.
+ * A static, NUL-terminated English description of `s`, a `topomesh_status` value (never
+ * NULL): "unknown status" for any other value. The parameter is a plain `uint32_t` so
+ * that any value a C caller passes is defined behaviour.
  */
-const char *topomesh_status_str(topomesh_status s);
+const char *topomesh_status_str(uint32_t s);
 
 /**
  * The detail of the last failed call on this thread (for example

@@ -35,10 +35,13 @@ macro_rules! kind_constructors {
 }
 
 impl Error {
+    /// An error of kind `kind`. Control characters in `message` (which may come from a
+    /// file's name or content) are escaped (`\u{1b}`), so that printing the message cannot
+    /// send escape sequences to a terminal.
     pub fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
         Error {
             kind,
-            message: message.into(),
+            message: escape_controls(message.into()),
         }
     }
     kind_constructors! {
@@ -49,6 +52,21 @@ impl Error {
         too_large => TooLarge,
         non_manifold => NonManifold,
     }
+}
+
+/// `message` with every control character written as its Rust escape (`\n`, `\u{1b}`).
+fn escape_controls(message: String) -> String {
+    if !message.chars().any(char::is_control) {
+        return message;
+    }
+    let escape = |c: char| -> String {
+        if c.is_control() {
+            c.escape_default().collect()
+        } else {
+            c.into()
+        }
+    };
+    message.chars().map(escape).collect()
 }
 
 impl fmt::Display for Error {

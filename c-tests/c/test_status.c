@@ -1,5 +1,8 @@
 /* Status codes, their strings, the version and the thread-local last error. */
 #include "check.h"
+#include "chf_fixtures.h"
+
+#include <stddef.h>
 
 #include <pthread.h>
 
@@ -41,6 +44,9 @@ int main(void) {
         for (uint32_t t = 0; t < s; t++) CHECK(strcmp(a, topomesh_status_str((topomesh_status)t)));
     }
     CHECK(strcmp(topomesh_status_str(TOPOMESH_STATUS_OK), "ok") == 0);
+    /* Any other value is defined: "unknown status". */
+    CHECK(strcmp(topomesh_status_str(10), "unknown status") == 0);
+    CHECK(strcmp(topomesh_status_str(UINT32_MAX), "unknown status") == 0);
 
     /* The version is the package's. */
     CHECK(strcmp(topomesh_version(), TOPOMESH_EXPECTED_VERSION) == 0);
@@ -102,5 +108,24 @@ int main(void) {
     CHECK_DETAIL("vertex 77");
 
     che_mesh_free(m);
+
+    /* Option flags are bytes where any non-zero value is true: strict = 2 is strict. */
+    CHECK(sizeof(che_build_options) == 12 && sizeof(chf_build_options) == 12);
+    CHECK(offsetof(che_build_options, strict) == 4 && offsetof(chf_build_options, threads) == 8);
+    che_build_options o = che_build_options_default();
+    o.strict = 2;
+    m = NULL;
+    CHECK_STATUS(che_mesh_from_triangles_ex(BOWTIE, 2, 5, NULL, &o, &m),
+                 TOPOMESH_STATUS_NON_MANIFOLD);
+    CHECK(m == NULL);
+    o.strict = 0;
+    CHECK_OK(che_mesh_from_triangles_ex(BOWTIE, 2, 5, NULL, &o, &m));
+    che_mesh_free(m);
+    chf_build_options vo = chf_build_options_default();
+    vo.strict = 0xff;
+    chf_mesh *v = NULL;
+    CHECK_STATUS(chf_mesh_from_tetrahedra_ex(SPLIT, 2, 7, NULL, &vo, &v),
+                 TOPOMESH_STATUS_NON_MANIFOLD);
+    CHECK(v == NULL);
     return finish("test_status");
 }

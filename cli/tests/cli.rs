@@ -303,3 +303,24 @@ fn reader_warnings_and_non_finite_vertices_reach_the_user() {
         text(&out).0
     );
 }
+
+#[test]
+fn a_huge_thread_count_gives_the_single_threaded_answer() {
+    // Large enough for a build to share its work among threads.
+    let off = topomesh::generate::to_off(&topomesh::generate::grid(200, 100));
+    let path = temp("threads.off", &off);
+    let path = path.to_str().unwrap();
+    let run = |threads: &str| {
+        let out = topomesh(&["info", path, "--json", "--level", "3", "--threads", threads]);
+        let (stdout, stderr) = text(&out);
+        assert!(out.status.success(), "--threads {threads}: {stderr}");
+        let mut json: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        let fields = json.as_object_mut().unwrap();
+        // The timings are the one thing that may differ.
+        fields.retain(|name, _| !name.ends_with("_seconds"));
+        json
+    };
+    let one = run("1");
+    assert_eq!(one["triangles"], 40000);
+    assert_eq!(run("100000"), one);
+}

@@ -45,7 +45,8 @@ mod query;
 mod star_pass;
 
 pub use crate::Ids;
-pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA};
+pub use crate::util::options::MAX_UNUSED_VERTICES;
+pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA, check_counts};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use query::{Csr, EdgeIds, Memory, STAR_INLINE, Summary, VertexIds};
 

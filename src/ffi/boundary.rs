@@ -32,21 +32,43 @@ fn caught(payload: Box<dyn std::any::Any + Send>) -> Status {
     let what = (payload.downcast_ref::<&str>().map(|s| s.to_string()))
         .or_else(|| payload.downcast_ref::<String>().cloned())
         .unwrap_or_else(|| "unknown panic payload".to_string());
+    let at = crate::util::panics::take_location().map_or(String::new(), |l| format!(" at {l}"));
     fail(Error::new(
         ErrorKind::Panic,
-        format!("internal error (please report): {what}"),
+        format!("internal error (please report): {what}{at}"),
     ))
 }
 
+/// `catch_unwind` with the panic hook silent: a panic here is the caller's to report (as
+/// `TOPOMESH_STATUS_PANIC` and its detail), never text on the host's stderr.
+#[inline(always)]
+pub(crate) fn catch<R>(body: impl FnOnce() -> R) -> std::thread::Result<R> {
+    crate::util::panics::quiet(|| catch_unwind(AssertUnwindSafe(body)))
+}
+
 /// Runs an export body: `Ok` -> `TOPOMESH_STATUS_OK`; an error or a panic -> its status,
-/// with the detail recorded for `topomesh_last_error`. Nothing unwinds past this.
+/// with the detail recorded for `topomesh_last_error`. Nothing unwinds past this, and a
+/// panic prints nothing.
 #[inline(always)]
 pub(crate) fn guard(body: impl FnOnce() -> Result<()>) -> Status {
-    match catch_unwind(AssertUnwindSafe(body)) {
+    match catch(body) {
         Ok(Ok(())) => Status::Ok,
         Ok(Err(e)) => fail(e),
         Err(payload) => caught(payload),
     }
+}
+
+/// A panic inside `guard`, in the last of `jobs` jobs run as a build runs them (the first
+/// on the calling thread, each other on a thread of its own), for the tests that check it
+/// prints nothing and gives `TOPOMESH_STATUS_PANIC` (no export panics on purpose).
+#[doc(hidden)]
+pub fn guarded_panic(message: &str, jobs: usize) -> Status {
+    guard(|| {
+        crate::util::par::run_all((0..jobs).collect(), |j| {
+            assert!(j + 1 < jobs, "{message}");
+        });
+        Ok(())
+    })
 }
 
 /// `guard` for a body that returns a value (counts, views): `fallback` on a failure.

@@ -3,7 +3,7 @@
 //! made, and positions handed back as plain doubles.
 
 use super::boundary::slice_arg;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use glam::DVec3;
 
 // Positions arrive as `3 * n` doubles and are viewed as `n` `DVec3` without a copy.
@@ -19,13 +19,15 @@ pub(crate) fn coordinates(points: &[DVec3]) -> &[f64] {
     unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f64>(), 3 * points.len()) }
 }
 
-/// What one build call takes: `(per, max_cells, cells, part)`, `per` vertex ids per cell,
-/// at most `max_cells` cells (`cells` names them, `part` names the ids that must fit).
-pub(crate) type Cells = (usize, usize, &'static str, &'static str);
-pub(crate) const TRIANGLES: Cells = (3, crate::che::MAX_TRIANGLES, "triangles", "half-edge");
-pub(crate) const TETRAHEDRA: Cells = (4, crate::chf::MAX_TETRAHEDRA, "tetrahedra", "half-face");
+/// What one build call takes: `(per, check, cells)`, `per` vertex ids per cell, `check`
+/// the core's check of the counts (`che::check_counts`, `chf::check_counts`), `cells`
+/// the name of the cells.
+pub(crate) type Cells = (usize, fn(usize, usize) -> Result<()>, &'static str);
+pub(crate) const TRIANGLES: Cells = (3, crate::che::check_counts, "triangles");
+pub(crate) const TETRAHEDRA: Cells = (4, crate::chf::check_counts, "tetrahedra");
 
-/// The ids (`per * n_cells`) and positions (empty, or `n_vertices`) of a build call.
+/// The ids (`per * n_cells`) and positions (empty, or `n_vertices`) of a build call, once
+/// the core has checked the counts.
 ///
 /// # Safety
 /// `ids` is NULL or holds `per * n_cells` ids; `positions` is NULL or holds
@@ -33,17 +35,8 @@ pub(crate) const TETRAHEDRA: Cells = (4, crate::chf::MAX_TETRAHEDRA, "tetrahedra
 pub(crate) unsafe fn mesh_arrays<'a>(
     kind: Cells, ids: *const u32, n_cells: usize, n_vertices: usize, positions: *const f64,
 ) -> Result<(&'a [u32], &'a [DVec3])> {
-    let (per, max_cells, cells, part) = kind;
-    if n_cells > max_cells {
-        return Err(Error::too_large(format!(
-            "{n_cells} {cells}: {part} ids must fit below 2^32 - 1 (at most {max_cells} {cells})"
-        )));
-    }
-    if n_vertices >= u32::MAX as usize {
-        return Err(Error::too_large(format!(
-            "{n_vertices} vertices: ids must fit below 2^32 - 1"
-        )));
-    }
+    let (per, check_counts, cells) = kind;
+    check_counts(n_cells, n_vertices)?;
     // SAFETY: sizes bounded above (far below isize::MAX bytes); the caller contract covers
     // the pointers. `DVec3` is `repr(C)` with three `f64` (asserted above).
     unsafe {

@@ -28,6 +28,8 @@ mod shapes;
 #[cfg(test)]
 mod tests;
 
+#[doc(hidden)]
+pub use boundary::guarded_panic;
 pub use che::{CheBuildOptions, CheMesh};
 pub use che::{CheBuildReport, CheMemory, CheReportKind, CheStarIter, CheStarStep, CheSummary};
 pub use chf::{ChfBuildOptions, ChfBuildReport, ChfMemory, ChfMesh, ChfReportKind, ChfSummary};

@@ -2,7 +2,6 @@
 
 use super::boundary;
 use std::ffi::c_char;
-use std::panic::{AssertUnwindSafe, catch_unwind};
 
 /// What a call did. `TOPOMESH_STATUS_OK` (0) is success; every other value is an error
 /// whose detail (file, line, element id, sizes) `topomesh_last_error` gives.
@@ -47,11 +46,13 @@ pub(crate) const STATUSES: [(Status, &std::ffi::CStr); 10] = [
     (Status::Panic, c"internal error (panic caught)"),
 ];
 
-/// A static, NUL-terminated English description of `s` (never NULL). `s` must be one of
-/// the `topomesh_status` values.
+/// A static, NUL-terminated English description of `s`, a `topomesh_status` value (never
+/// NULL): "unknown status" for any other value. The parameter is a plain `uint32_t` so
+/// that any value a C caller passes is defined behaviour.
 #[unsafe(no_mangle)]
-pub extern "C" fn topomesh_status_str(s: Status) -> *const c_char {
-    STATUSES[s as usize].1.as_ptr()
+pub extern "C" fn topomesh_status_str(s: u32) -> *const c_char {
+    let known = STATUSES.get(s as usize).map(|(_, text)| *text);
+    known.unwrap_or(c"unknown status").as_ptr()
 }
 
 /// The detail of the last failed call on this thread (for example
@@ -82,7 +83,7 @@ pub unsafe extern "C" fn topomesh_last_error(
             }
         })
     };
-    catch_unwind(AssertUnwindSafe(run)).unwrap_or(Status::Panic)
+    boundary::catch(run).unwrap_or(Status::Panic)
 }
 
 /// The library version, "MAJOR.MINOR.PATCH" (static, NUL-terminated).

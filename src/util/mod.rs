@@ -10,6 +10,7 @@ pub(crate) mod options;
 pub(crate) mod orient;
 pub(crate) mod origin;
 pub(crate) mod pages;
+pub(crate) mod panics;
 pub(crate) mod par;
 pub(crate) mod rank;
 pub(crate) mod rank_directory;

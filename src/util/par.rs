@@ -6,17 +6,36 @@ use std::sync::Mutex;
 /// threads, several times per build, would cost more than they save on a mesh this small.
 const PARALLEL_MIN_ELEMENTS: usize = 1 << 15;
 
+/// The fewest elements a thread of a build gets: a thread with less work than this costs
+/// more to start than it saves, and a huge `threads` option must not start a thread for
+/// every few elements (the system may refuse, or the process run out of memory for stacks).
+const MIN_ELEMENTS_PER_THREAD: usize = 1 << 13;
+
 /// The threads a build of `n` triangles or tetrahedra takes for its `threads` option (0: as
 /// many as the machine runs at once). Every step of the build shares its work among that
 /// many, or runs alone when it is 1.
 pub(crate) fn build_threads(option: usize, n: usize) -> usize {
-    if n < PARALLEL_MIN_ELEMENTS {
-        1
-    } else if option == 0 {
-        std::thread::available_parallelism().map_or(1, |n| n.get())
-    } else {
-        option
+    planned_threads(option, n)
+}
+
+/// The threads a build of `elements` triangles or tetrahedra starts when asked for
+/// `requested` (0: as many as the machine runs at once): never more than the machine runs
+/// at once (`std::thread::available_parallelism`), never fewer than
+/// `MIN_ELEMENTS_PER_THREAD` elements per thread, and 1 below `PARALLEL_MIN_ELEMENTS`.
+/// The result of a build does not depend on it.
+pub fn planned_threads(requested: usize, elements: usize) -> usize {
+    let available = std::thread::available_parallelism().map_or(1, |n| n.get());
+    plan(requested, elements, available)
+}
+
+/// `planned_threads` for a machine that runs `available` threads at once.
+fn plan(requested: usize, elements: usize, available: usize) -> usize {
+    if elements < PARALLEL_MIN_ELEMENTS {
+        return 1;
     }
+    let wanted = if requested == 0 { available } else { requested };
+    let most = (elements / MIN_ELEMENTS_PER_THREAD).max(1);
+    wanted.min(available).min(most).max(1)
 }
 
 /// Runs `f` on every job, the first on the calling thread and each other one on a thread
@@ -34,12 +53,16 @@ pub(crate) fn run_all<J: Send, T: Send>(jobs: Vec<J>, f: impl Fn(J) -> T + Sync)
     // the threads have stopped is a job whose thread could not start.
     let slots: Vec<Mutex<Option<J>>> = jobs.map(|j| Mutex::new(Some(j))).collect();
     let take = |slot: &Mutex<Option<J>>| slot.lock().unwrap_or_else(|e| e.into_inner()).take();
+    // A panic on a job's thread comes back to the caller, which may report it itself.
+    let silenced = super::panics::is_quiet();
     let mut out: Vec<Option<T>> = std::thread::scope(|s| {
         let handles: Vec<_> = slots
             .iter()
             .map(|slot| {
                 std::thread::Builder::new()
-                    .spawn_scoped(s, move || take(slot).map(f))
+                    .spawn_scoped(s, move || {
+                        super::panics::quiet_if(silenced, || take(slot).map(f))
+                    })
                     .ok()
             })
             .collect();
@@ -59,6 +82,43 @@ pub(crate) fn run_all<J: Send, T: Send>(jobs: Vec<J>, f: impl Fn(J) -> T + Sync)
 
 #[cfg(test)]
 mod tests {
+    use super::{MIN_ELEMENTS_PER_THREAD, PARALLEL_MIN_ELEMENTS, plan};
+
+    #[test]
+    fn the_plan_never_exceeds_the_machine_or_the_work() {
+        for available in [1, 2, 3, 8, 64] {
+            for requested in [0, 1, 2, 5, 64, 100_000, usize::MAX] {
+                for elements in [0, 1, 1000, PARALLEL_MIN_ELEMENTS - 1, PARALLEL_MIN_ELEMENTS]
+                    .into_iter()
+                    .chain([100_000, 1 << 24, usize::MAX])
+                {
+                    let t = plan(requested, elements, available);
+                    let wanted = if requested == 0 { available } else { requested };
+                    let expected = if elements < PARALLEL_MIN_ELEMENTS {
+                        1
+                    } else {
+                        wanted
+                            .min(available)
+                            .min(elements / MIN_ELEMENTS_PER_THREAD)
+                    };
+                    assert_eq!(
+                        t, expected,
+                        "{requested} of {available}, {elements} elements"
+                    );
+                    assert!(t >= 1 && t <= available);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn planned_threads_stay_within_the_machine() {
+        let available = std::thread::available_parallelism().map_or(1, |n| n.get());
+        assert_eq!(super::planned_threads(100_000, 1 << 20), available.min(128));
+        assert_eq!(super::planned_threads(1, 1 << 20), 1);
+        assert_eq!(super::planned_threads(100_000, 10), 1);
+    }
+
     #[test]
     fn answers_come_in_the_jobs_order() {
         for n in 0..6u32 {

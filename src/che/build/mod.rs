@@ -12,7 +12,7 @@ mod report;
 mod soup;
 mod split;
 
-pub use options::{BuildOptions, MAX_TRIANGLES};
+pub use options::{BuildOptions, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts};
 pub use report::BuildReport;
 
 use super::Che;
@@ -28,8 +28,14 @@ use report::push_example;
 pub(crate) fn build(
     triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
 ) -> Result<Che> {
-    let too_many = too_many_triangles(triangles.len());
-    check_input(&options, n_vertices, positions.len(), too_many)?;
+    let n = triangles.len();
+    check_input(
+        &options,
+        &options::TRIANGLES,
+        n,
+        n_vertices,
+        positions.len(),
+    )?;
     let (non_finite_vertices, non_finite_vertex_examples) =
         crate::util::non_finite_vertices(positions);
     let mut report = BuildReport {
@@ -65,15 +71,6 @@ pub(crate) fn build(
     let mut che = assemble(canonical, &split.copies, n_vertices, positions, report);
     finish_level(&mut che, options.level, vh);
     Ok(che)
-}
-
-/// The build's own message when `n_triangles` elements do not fit below `NONE`.
-fn too_many_triangles(n_triangles: usize) -> Option<String> {
-    (n_triangles > MAX_TRIANGLES).then(|| {
-        format!(
-            "{n_triangles} triangles: half-edge ids must fit below 2^32 - 1 (at most {MAX_TRIANGLES} triangles)"
-        )
-    })
 }
 
 /// Step 3: orients only when some pair runs the same way (otherwise the partners are the

@@ -93,7 +93,7 @@ impl Che {
         csr.finish()
     }
 
-    /// One star from the stored `O` (level 1 on; the iterator's scans at level 0).
+    /// One star, over `O` stored (level 1 on) or computed once (level 0).
     #[inline(always)]
     fn star_into(&self, v: u32, out: &mut impl Push, item: impl Fn(StarStep) -> Option<u32>) {
         let each = |s| {
@@ -103,7 +103,10 @@ impl Che {
         };
         match self.opposites() {
             Some(o) => for_each_step(o, self.vertex_half_edge(v), each),
-            None => self.vertex_star(v).for_each(each),
+            None => {
+                let o = self.opposites_or_computed();
+                for_each_step(&o, self.vertex_half_edge_in(&o, v), each);
+            }
         }
     }
 
@@ -115,7 +118,11 @@ impl Che {
 
     /// VE of `v` into `out`, as [`Che::vertex_edges`].
     pub(crate) fn vertex_edges_into(&self, v: u32, out: &mut impl Push) {
-        self.star_into(v, out, |s| Some(self.ve_item(s)));
+        if self.level >= 2 {
+            return self.star_into(v, out, |s| Some(self.ve_item(s)));
+        }
+        let names = self.edge_names();
+        self.star_into(v, out, |s| Some(names.of(s.half_edge())));
     }
 
     /// VF of `v` into `out`, as [`Che::vertex_triangles`].

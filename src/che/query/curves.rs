@@ -11,6 +11,9 @@ use std::borrow::Cow;
 #[derive(Clone, Debug)]
 pub struct BoundaryWalk<'a> {
     che: &'a Che,
+    /// `O`, borrowed from level 1, computed for the walk at level 0: below level 2 the
+    /// next boundary half-edge is found by a rotation around the target.
+    o: Cow<'a, [u32]>,
     start: u32,
     cur: u32,
 }
@@ -22,7 +25,7 @@ impl Iterator for BoundaryWalk<'_> {
         if h == NONE {
             return None;
         }
-        let g = self.che.vertex_half_edge(self.che.target(h));
+        let g = self.che.next_boundary(&self.o, h);
         self.cur = if g == self.start { NONE } else { g };
         Some(h)
     }
@@ -73,7 +76,8 @@ impl Che {
         self.boundary_curve_starts().len()
     }
 
-    /// The curve of boundary half-edge `h` (`NONE` when `h` is interior). O(1) at level 3.
+    /// The curve of boundary half-edge `h` (`NONE` when `h` is interior). O(1) at level 3;
+    /// O(T) below (the curves are walked), and O(T) memory at level 0.
     pub fn curve_of(&self, h: u32) -> u32 {
         if self.level >= 3 {
             if self.o[h as usize] != NONE {
@@ -81,22 +85,31 @@ impl Che {
             }
             return self.curve_of[self.boundary_bits.rank(h as usize)];
         }
-        if self.opposite(h) != NONE {
+        let o = self.opposites_or_computed();
+        if o[h as usize] != NONE {
             return NONE;
         }
         let starts = self.boundary_curve_starts();
         for (c, &s) in starts.iter().enumerate() {
-            if self.boundary_curve(s).any(|g| g == h) {
+            if self.walk(Cow::Borrowed(&o), s).any(|g| g == h) {
                 return c as u32;
             }
         }
         NONE
     }
 
-    /// The half-edges of the curve through boundary half-edge `start`, in order.
+    /// The half-edges of the curve through boundary half-edge `start`, in order. O(L) for
+    /// a curve of L half-edges at level 2, O(T) in all below (a rotation around each
+    /// vertex at level 1; `O` computed first at level 0, O(T) time and memory).
     pub fn boundary_curve(&self, start: u32) -> BoundaryWalk<'_> {
+        self.walk(self.opposites_or_computed(), start)
+    }
+
+    /// The walk from `start` over the opposites `o`.
+    fn walk<'a>(&'a self, o: Cow<'a, [u32]>, start: u32) -> BoundaryWalk<'a> {
         BoundaryWalk {
             che: self,
+            o,
             start,
             cur: start,
         }

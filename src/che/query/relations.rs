@@ -3,7 +3,8 @@
 
 use super::star::{Rotation, vf_item, vv_item};
 use crate::che::ids::{first, next, prev, tri};
-use crate::che::{Che, pairs};
+use crate::che::{Che, edge_directory, pairs};
+use crate::util::rank_directory::RankDirectory;
 use crate::{Ids, NONE};
 use std::borrow::Cow;
 
@@ -76,23 +77,26 @@ impl Che {
     }
 
     /// The outgoing half-edge a rotation around `v` starts at: the boundary one on a
-    /// boundary vertex, `NONE` for an isolated vertex. O(1) at level 2, a scan below.
+    /// boundary vertex, `NONE` for an isolated vertex. O(1) at level 2, O(T) at level 1 (a
+    /// scan of `V`), O(T) time and memory at level 0 (`O` computed, then the scan).
     #[inline]
     pub fn vertex_half_edge(&self, v: u32) -> u32 {
         if self.level >= 2 {
             return self.vh[v as usize];
         }
-        self.vertex_half_edge_by_scan(v)
+        self.vertex_half_edge_in(&self.opposites_or_computed(), v)
     }
 
-    /// [`Che::vertex_half_edge`] below level 2: the first boundary half-edge from `v`, else
-    /// the first.
-    #[cold]
-    fn vertex_half_edge_by_scan(&self, v: u32) -> u32 {
+    /// [`Che::vertex_half_edge`] with `O` at hand (`o`: the stored or computed opposites):
+    /// below level 2, the first boundary half-edge from `v`, else the first.
+    pub(crate) fn vertex_half_edge_in(&self, o: &[u32], v: u32) -> u32 {
+        if self.level >= 2 {
+            return self.vh[v as usize];
+        }
         let mut any = NONE;
         for (h, &x) in self.v.iter().enumerate() {
             if x == v {
-                if self.opposite(h as u32) == NONE {
+                if o[h] == NONE {
                     return h as u32;
                 }
                 if any == NONE {
@@ -103,7 +107,8 @@ impl Che {
         any
     }
 
-    /// Is `v` on the boundary? O(1) at level 2. An isolated vertex is not.
+    /// Is `v` on the boundary? O(1) at level 2, O(T) below (see
+    /// [`Che::vertex_half_edge`]). An isolated vertex is not.
     pub fn is_boundary_vertex(&self, v: u32) -> bool {
         let h = self.vertex_half_edge(v);
         h != NONE && self.opposite(h) == NONE
@@ -114,14 +119,13 @@ impl Che {
         self.vertex_half_edge(v) == NONE
     }
 
-    /// The star of `v` in rotation order; see [`StarStep`](crate::che::StarStep).
+    /// The star of `v` in rotation order; see [`StarStep`](crate::che::StarStep). O(d) at
+    /// level 2, O(T) at level 1 (finding the start), O(T) time and memory at level 0 (`O`
+    /// computed once for the rotation).
     pub fn vertex_star(&self, v: u32) -> Rotation<'_> {
-        let start = self.vertex_half_edge(v);
-        let mut r = Rotation::new(self, start);
-        if start == NONE {
-            r.by_ref().for_each(drop);
-        }
-        r
+        let o = self.opposites_or_computed();
+        let start = self.vertex_half_edge_in(&o, v);
+        Rotation::new(o, start)
     }
 
     /// VV: the vertices around `v`, counter-clockwise, from the boundary on a boundary vertex.
@@ -129,9 +133,11 @@ impl Che {
         self.vertex_star(v).map(|s| vv_item(&self.v, s))
     }
 
-    /// VE: the edges around `v`, in the order of [`Che::vertex_vertices`].
+    /// VE: the edges around `v`, in the order of [`Che::vertex_vertices`]. The cost of
+    /// [`Che::vertex_star`], plus at level 0 the edge ids (O(T) time and memory).
     pub fn vertex_edges(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        self.vertex_star(v).map(|s| self.ve_item(s))
+        let names = self.edge_names();
+        self.vertex_star(v).map(move |s| names.of(s.half_edge()))
     }
 
     /// VF: the triangles around `v`, counter-clockwise.
@@ -146,19 +152,32 @@ impl Che {
         if g != NONE && g < h { g } else { h }
     }
 
-    /// The edge id of half-edge `h`. O(1) at level 2; O(T) at level 1; O(T) time and
-    /// memory at level 0.
+    /// The edge id of half-edge `h`. O(1) at level 2; O(1) at level 1 once the level-1
+    /// edge-id directory is there (the first request computes it, O(T), and keeps it: see
+    /// [`Che::edge_ranks`]); O(T) time and memory at level 0.
     pub fn edge_of(&self, h: u32) -> u32 {
         if self.level >= 2 {
             return self.edge_bits.rank(Self::canonical(&self.o, h) as usize) as u32;
         }
+        self.edge_names().of(h)
+    }
+
+    /// What naming edges takes, borrowed from level 1 (`O` and the edge-id directory, the
+    /// level-1 one computed on the first request) and computed at level 0, once for a
+    /// query that names several edges.
+    pub(crate) fn edge_names(&self) -> EdgeNames<'_> {
         let o = self.opposites_or_computed();
-        let c = Self::canonical(&o, h);
-        (0..c).filter(|&g| Self::canonical(&o, g) == g).count() as u32
+        let ranks = match self.level {
+            0 => Cow::Owned(edge_directory(&o)),
+            1 => Cow::Borrowed(self.lazy_edge_bits.get_or_init(|| edge_directory(&self.o))),
+            _ => Cow::Borrowed(&self.edge_bits),
+        };
+        EdgeNames { o, ranks }
     }
 
     /// The canonical half-edge of edge `e` (the boundary one on a boundary edge).
-    /// O(1) at level 2; a scan below.
+    /// O(1) at level 2; O(T) at level 1 (a count of the canonical half-edges), and O(T)
+    /// memory at level 0.
     pub fn edge_half_edge(&self, e: u32) -> u32 {
         if self.level >= 2 {
             return self.eh[e as usize];
@@ -191,13 +210,14 @@ impl Che {
     /// canonical half-edge's triangle, then in the opposite one.
     pub fn edge_edges(&self, e: u32) -> Ids<4> {
         let h = self.edge_half_edge(e);
+        let names = self.edge_names();
         let mut out = Ids::new();
-        out.push(self.edge_of(next(h)));
-        out.push(self.edge_of(prev(h)));
-        let o = self.opposite(h);
+        out.push(names.of(next(h)));
+        out.push(names.of(prev(h)));
+        let o = names.o[h as usize];
         if o != NONE {
-            out.push(self.edge_of(next(o)));
-            out.push(self.edge_of(prev(o)));
+            out.push(names.of(next(o)));
+            out.push(names.of(prev(o)));
         }
         out
     }
@@ -210,7 +230,11 @@ impl Che {
 
     /// FE: the edges of triangle `t`; edge `i` runs from corner `i` to corner `i + 1`.
     pub fn triangle_edges(&self, t: u32) -> [u32; 3] {
-        [0, 1, 2].map(|i| self.edge_of(first(t) + i))
+        if self.level >= 2 {
+            return [0, 1, 2].map(|i| self.edge_of(first(t) + i));
+        }
+        let names = self.edge_names();
+        [0, 1, 2].map(|i| names.of(first(t) + i))
     }
 
     /// FF: the triangle across each edge of `t` (`NONE` on the boundary).
@@ -222,5 +246,19 @@ impl Che {
             Some(o) => [across(o[0]), across(o[1]), across(o[2])],
             None => [0, 1, 2].map(|i| across(self.opposite(first(t) + i))),
         }
+    }
+}
+
+/// The tables that name edges (see [`Che::edge_names`]).
+pub(crate) struct EdgeNames<'a> {
+    o: Cow<'a, [u32]>,
+    ranks: Cow<'a, RankDirectory>,
+}
+
+impl EdgeNames<'_> {
+    /// The edge id of half-edge `h`: the rank of its canonical half-edge.
+    #[inline]
+    pub(crate) fn of(&self, h: u32) -> u32 {
+        self.ranks.rank(Che::canonical(&self.o, h) as usize) as u32
     }
 }

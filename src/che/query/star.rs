@@ -9,6 +9,7 @@
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{next, prev, tri};
+use std::borrow::Cow;
 
 /// One step of a rotation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -18,6 +19,16 @@ pub enum StarStep {
     /// On a boundary vertex, after the last outgoing half-edge: the incoming boundary
     /// half-edge `u -> v` that ends the fan (its edge and `u` are in the star too).
     LastIn(u32),
+}
+
+impl StarStep {
+    /// The half-edge of the step (outgoing, or the closing incoming one).
+    #[inline(always)]
+    pub fn half_edge(self) -> u32 {
+        match self {
+            StarStep::Out(h) | StarStep::LastIn(h) => h,
+        }
+    }
 }
 
 /// The state of a rotation, independent of where `O` is read from. `repr(C)` because the
@@ -125,17 +136,15 @@ pub(crate) fn vf_item(s: StarStep) -> Option<u32> {
 /// Iterator over the star of a vertex; see [`Che::vertex_star`].
 #[derive(Clone, Debug)]
 pub struct Rotation<'a> {
-    che: &'a Che,
-    /// `O` from level 1 (read directly in the loop); empty at level 0, which scans.
-    o: &'a [u32],
+    /// `O`: borrowed from level 1, computed for this rotation at level 0.
+    o: Cow<'a, [u32]>,
     cursor: StarCursor,
 }
 
 impl<'a> Rotation<'a> {
-    pub(crate) fn new(che: &'a Che, start: u32) -> Self {
+    pub(crate) fn new(o: Cow<'a, [u32]>, start: u32) -> Self {
         Rotation {
-            che,
-            o: che.opposites().unwrap_or(&[]),
+            o,
             cursor: StarCursor::new(start),
         }
     }
@@ -146,11 +155,8 @@ impl Iterator for Rotation<'_> {
 
     #[inline]
     fn next(&mut self) -> Option<StarStep> {
-        let (che, o) = (self.che, self.o);
-        self.cursor.step(|p| match o.get(p as usize) {
-            Some(&g) => g,
-            None => che.opposite(p),
-        })
+        let o: &[u32] = &self.o;
+        self.cursor.step(|p| o[p as usize])
     }
 }
 

@@ -21,7 +21,7 @@ use crate::chf::ids::tet;
 use crate::chf::star_pass::link::FaceCensus;
 use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
 use crate::error::{Error, Result};
-use crate::util::options::check_input;
+use crate::util::options::{Cells, check_input};
 use crate::util::origin::OriginMap;
 use glam::DVec3;
 
@@ -36,9 +36,10 @@ pub(crate) fn build(
 ) -> Result<Chf> {
     check_input(
         &options,
+        &TETRAHEDRA,
+        tets.len(),
         n_vertices,
         positions.len(),
-        too_many_tetrahedra(tets.len()),
     )?;
     let mut report = BuildReport::of_input(tets.len(), n_vertices);
     (
@@ -353,13 +354,22 @@ fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<
     Ok(chf)
 }
 
-/// The build's own message when `n_tets` elements do not fit below `NONE`.
-fn too_many_tetrahedra(n_tets: usize) -> Option<String> {
-    (n_tets > MAX_TETRAHEDRA).then(|| {
-        format!(
-            "tetrahedron {MAX_TETRAHEDRA} (of {n_tets}): half-face ids must fit below 2^32 - 1, so at most {MAX_TETRAHEDRA} tetrahedra"
-        )
-    })
+/// A CHF build's elements, for the size checks.
+pub(crate) const TETRAHEDRA: Cells = Cells {
+    per: 4,
+    max: MAX_TETRAHEDRA,
+    name: "tetrahedra",
+    ids: "half-face",
+};
+
+/// Whether a build of `n_tets` tetrahedra on `n_vertices` vertices fits, checked from the
+/// counts alone (the build checks this first, before it allocates or reads anything): at
+/// most [`MAX_TETRAHEDRA`] tetrahedra, fewer than 2^32 - 1 vertices, and at most
+/// [`MAX_UNUSED_VERTICES`](crate::chf::MAX_UNUSED_VERTICES) vertices beyond the
+/// `4 * n_tets` the tetrahedra can name. A failure is `ErrorKind::TooLarge`, naming the
+/// limit.
+pub fn check_counts(n_tets: usize, n_vertices: usize) -> Result<()> {
+    crate::util::options::check_counts(&TETRAHEDRA, n_tets, n_vertices)
 }
 
 fn record_edges(report: &mut BuildReport, census: &EdgeCensus) {
@@ -379,17 +389,15 @@ mod tests {
     fn sizes_are_checked_before_allocating() {
         let check = |n_tets, n_vertices, n_positions, level| {
             let options = BuildOptions::level(level);
-            check_input(
-                &options,
-                n_vertices,
-                n_positions,
-                too_many_tetrahedra(n_tets),
-            )
+            check_input(&options, &TETRAHEDRA, n_tets, n_vertices, n_positions)
         };
         assert!(check(MAX_TETRAHEDRA, 10, 0, 3).is_ok());
         let e = check(MAX_TETRAHEDRA + 1, 10, 0, 2).unwrap_err();
         assert_eq!(e.kind, ErrorKind::TooLarge);
-        assert!(e.message.contains(&format!("tetrahedron {MAX_TETRAHEDRA}")));
+        assert!(
+            e.message
+                .contains(&format!("at most {MAX_TETRAHEDRA} tetrahedra"))
+        );
         assert!(4 * MAX_TETRAHEDRA < NONE as usize);
         assert!(4 * (MAX_TETRAHEDRA + 1) > NONE as usize);
         let e = check(1, NONE as usize, 0, 2).unwrap_err();

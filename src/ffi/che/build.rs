@@ -18,8 +18,9 @@ use std::ffi::c_char;
 /// component is oriented consistently; `che_mesh_report` says what was changed.
 /// Non-manifold input is repaired (see `che_mesh_from_triangles_ex` for strict mode).
 /// A triangle naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`; more
-/// than 2^32 - 2 vertices or 1431655765 triangles `TOPOMESH_STATUS_TOO_LARGE`. `*out` is
-/// NULL on failure.
+/// than 2^32 - 2 vertices, more than 1431655765 triangles, or more than 2^26 vertices
+/// beyond the `3 * n_triangles` the triangles can name `TOPOMESH_STATUS_TOO_LARGE`, before
+/// anything is allocated or read. `*out` is NULL on failure.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_from_triangles(
     triangles: *const u32, n_triangles: usize, n_vertices: usize, positions: *const f64,
@@ -117,7 +118,8 @@ pub unsafe extern "C" fn che_mesh_num_half_edges(m: *const CheMesh) -> usize {
     count!(m, |c| c.num_half_edges())
 }
 
-/// Boundary curves of the structure (O(1) at level 3, O(T) below).
+/// Boundary curves of the structure: O(1) at level 3, O(T) at levels 1-2, O(T) time and
+/// memory at level 0.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_num_boundary_curves(m: *const CheMesh) -> usize {
     count!(m, |c| c.num_boundary_curves())

@@ -6,7 +6,8 @@ use super::CheMesh;
 use crate::ffi::shapes::csr;
 use crate::ffi::status::Status;
 
-/// VV for every vertex (rows as `che_vertex_vertices`).
+/// VV for every vertex (rows as `che_vertex_vertices`). O(T) at every level
+/// (O(T) memory at level 0).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_vertices_csr(
     m: *const CheMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
@@ -16,7 +17,8 @@ pub unsafe extern "C" fn che_mesh_vertex_vertices_csr(
         => vertex_vertices_rows)
 }
 
-/// VE for every vertex (rows as `che_vertex_edges`).
+/// VE for every vertex (rows as `che_vertex_edges`). O(T) at every level
+/// (O(T) memory at level 0).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_edges_csr(
     m: *const CheMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
@@ -26,7 +28,8 @@ pub unsafe extern "C" fn che_mesh_vertex_edges_csr(
         => vertex_edges_rows)
 }
 
-/// VF for every vertex (rows as `che_vertex_triangles`).
+/// VF for every vertex (rows as `che_vertex_triangles`). O(T) at every level
+/// (O(T) memory at level 0).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_vertex_triangles_csr(
     m: *const CheMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,

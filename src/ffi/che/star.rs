@@ -134,6 +134,8 @@ impl CheStarIter {
 
 /// Starts a rotation around vertex `v` in `*it` (an isolated vertex has no steps). From
 /// level 2 the iterator holds the zero-copy arrays, so that `che_star_next` steps inline.
+/// O(1) at levels 2-3; O(T) at level 1 (a scan of `V` for the start); O(T) time and
+/// memory at level 0.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_star_begin(m: *const CheMesh, v: u32, it: *mut CheStarIter) -> Status {
     guard(|| {
@@ -146,7 +148,11 @@ pub unsafe extern "C" fn che_star_begin(m: *const CheMesh, v: u32, it: *mut CheS
 
 /// The library's step of `che_star_next` (which calls it when it cannot step inline):
 /// writes the next step into `*step` and returns true, or returns false at the end (also
-/// when `it` or `step` is NULL). O(1) per step from level 2 (edge ids are O(T) below).
+/// when `it` or `step` is NULL). O(1) per step at levels 2-3; O(1) per step at level 1
+/// once the level-1 edge-id directory exists (the first request computes it, O(T), and
+/// keeps it); O(T) time and memory per step at level 0 (the opposite and the edge id are
+/// found by scans: O(d T) for a rotation, so at level 0 prefer `che_vertex_vertices`
+/// and the other relations, O(T) each, or raise the level).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_star_advance(it: *mut CheStarIter, step: *mut CheStarStep) -> bool {
     guard_or(false, || {

@@ -21,8 +21,9 @@ use std::ffi::c_char;
 /// `chf_mesh_report` says what was changed. Non-manifold input is kept (faces of three or
 /// more tetrahedra stay unpaired; see `chf_mesh_from_tetrahedra_ex` for strict mode).
 /// A tetrahedron naming a vertex `>= n_vertices` gives `TOPOMESH_STATUS_OUT_OF_RANGE`;
-/// more than 2^32 - 2 vertices or 1073741823 tetrahedra `TOPOMESH_STATUS_TOO_LARGE`.
-/// `*out` is NULL on failure.
+/// more than 2^32 - 2 vertices, more than 1073741823 tetrahedra, or more than 2^26
+/// vertices beyond the `4 * n_tets` the tetrahedra can name `TOPOMESH_STATUS_TOO_LARGE`,
+/// before anything is allocated or read. `*out` is NULL on failure.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_from_tetrahedra(
     tetrahedra: *const u32, n_tets: usize, n_vertices: usize, positions: *const f64, level: u32,

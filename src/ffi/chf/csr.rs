@@ -7,7 +7,7 @@ use super::ChfMesh;
 use crate::ffi::shapes::csr;
 use crate::ffi::status::Status;
 
-/// VV for every vertex (rows as `chf_vertex_vertices`).
+/// VV for every vertex (rows as `chf_vertex_vertices`). O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
     m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
@@ -17,7 +17,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
         => |c, s| s.copy(&c.all_vertex_vertices()))
 }
 
-/// VE for every vertex (rows as `chf_vertex_edges`).
+/// VE for every vertex (rows as `chf_vertex_edges`). O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
     m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
@@ -27,7 +27,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
         => |c, s| s.copy(&c.all_vertex_edges()))
 }
 
-/// VF for every vertex (rows as `chf_vertex_faces`).
+/// VF for every vertex (rows as `chf_vertex_faces`). O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
     m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
@@ -37,7 +37,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
         => |c, s| s.copy(&c.all_vertex_faces()))
 }
 
-/// VT for every vertex (rows as `chf_vertex_tetrahedra`).
+/// VT for every vertex (rows as `chf_vertex_tetrahedra`). O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
     m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
@@ -47,7 +47,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
         => |c, s| s.copy(&c.all_vertex_tetrahedra()))
 }
 
-/// EF for every edge (rows as `chf_edge_faces`, in rotation order).
+/// EF for every edge (rows as `chf_edge_faces`, in rotation order). O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_edge_faces_csr(
     m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
@@ -57,7 +57,7 @@ pub unsafe extern "C" fn chf_mesh_edge_faces_csr(
         => |c, s| c.for_each_edge_faces(|_, row| s.stream(row)))
 }
 
-/// ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order).
+/// ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order). O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_edge_tetrahedra_csr(
     m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
@@ -69,7 +69,7 @@ pub unsafe extern "C" fn chf_mesh_edge_tetrahedra_csr(
 
 /// TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
 /// tetrahedron across face `i`, `TOPOMESH_NONE` on the boundary, as
-/// `chf_tetrahedron_tetrahedra`.
+/// `chf_tetrahedron_tetrahedra`. O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_tetrahedron_tetrahedra_csr(
     m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,

@@ -42,12 +42,22 @@ pub struct ChfBuildOptions {
     pub level: u32,
     /// Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
     /// and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
-    /// the offending ids) instead of keeping them (default false).
-    pub strict: bool,
+    /// the offending ids) instead of keeping them (default 0). Any non-zero value is true.
+    /// (A `uint8_t` rather than a `bool`, with the size and offset of the `bool` it was: a C
+    /// `bool` field can hold other values, which Rust may not read as a `bool`.)
+    pub strict: u8,
     /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
-    /// the calling thread alone. The mesh is the same whatever the number.
+    /// the calling thread alone; a larger number is capped at what the machine runs at once
+    /// and at one thread per 8192 elements. The mesh is the same whatever the number.
     pub threads: u32,
 }
+
+// The layout of the `bool` version, which compiled C hosts still use.
+const _: () = {
+    assert!(core::mem::size_of::<ChfBuildOptions>() == 12);
+    assert!(core::mem::offset_of!(ChfBuildOptions, strict) == 4);
+    assert!(core::mem::offset_of!(ChfBuildOptions, threads) == 8);
+};
 
 /// The default CHF build options: level 2, not strict, every thread of the machine.
 #[unsafe(no_mangle)]

@@ -69,7 +69,8 @@ pub unsafe extern "C" fn chf_mesh_num_boundary_vertices(m: *const ChfMesh) -> us
 }
 
 /// The boundary-surface vertex of volume vertex `v` into `*out`, `TOPOMESH_NONE` off the
-/// boundary.
+/// boundary. O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+/// call).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_boundary_vertex(
     m: *const ChfMesh, v: u32, out: *mut u32,
@@ -79,7 +80,8 @@ pub unsafe extern "C" fn chf_vertex_boundary_vertex(
 
 /// The volume vertex of vertex `b` of `chf_mesh_boundary`'s surface into `*out` (copies
 /// the surface split map to the vertex they come from); `b` out of range gives
-/// OUT_OF_RANGE.
+/// OUT_OF_RANGE. O(1) at level 3; O(T) time and memory below (the boundary surface built
+/// for the call).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_boundary_vertex_vertex(
     m: *const ChfMesh, b: u32, out: *mut u32,
@@ -95,7 +97,8 @@ pub unsafe extern "C" fn chf_mesh_num_boundary_components(m: *const ChfMesh) -> 
 }
 
 /// The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is
-/// paired (interior).
+/// paired (interior). O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+/// call).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_half_face_boundary_triangle(
     m: *const ChfMesh, hf: u32, out: *mut u32,
@@ -104,7 +107,8 @@ pub unsafe extern "C" fn chf_half_face_boundary_triangle(
 }
 
 /// The half-face of boundary triangle `k` into `*out`; `k` out of range (see
-/// `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE.
+/// `chf_mesh_num_boundary_triangles`) gives OUT_OF_RANGE. O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+/// call).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_boundary_triangle_half_face(
     m: *const ChfMesh, k: u32, out: *mut u32,
@@ -113,6 +117,8 @@ pub unsafe extern "C" fn chf_boundary_triangle_half_face(
 }
 
 /// The boundary triangle of face `f` into `*out`, `TOPOMESH_NONE` for an interior face.
+/// O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+/// call)
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_face_boundary_triangle(
     m: *const ChfMesh, f: u32, out: *mut u32,
@@ -121,6 +127,8 @@ pub unsafe extern "C" fn chf_face_boundary_triangle(
 }
 
 /// The face of boundary triangle `k` into `*out`; `k` out of range gives OUT_OF_RANGE.
+/// O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+/// call)
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_boundary_triangle_face(
     m: *const ChfMesh, k: u32, out: *mut u32,
@@ -129,7 +137,8 @@ pub unsafe extern "C" fn chf_boundary_triangle_face(
 }
 
 /// The boundary component of vertex `v` into `*out` (`TOPOMESH_NONE` off the boundary;
-/// see `chf_mesh_boundary_vertex_components` for the array at level 3).
+/// see `chf_mesh_boundary_vertex_components` for the array at level 3). O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
+/// call).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_vertex_boundary_component(
     m: *const ChfMesh, v: u32, out: *mut u32,

@@ -80,6 +80,12 @@ enum topomesh_status
      * An internal error (a Rust panic) was caught at the boundary. Please report it.
      */
     TOPOMESH_STATUS_PANIC = 9,
+    /**
+     * Memory ran out: an allocation failed, or a build's estimate exceeded
+     * `memory_limit_bytes`. The detail names the bytes and what they were for; the
+     * process and every other handle are unharmed.
+     */
+    TOPOMESH_STATUS_OUT_OF_MEMORY = 10,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

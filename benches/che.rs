@@ -156,7 +156,7 @@ fn sweeps(c: &mut Criterion) {
             })
         });
         group.bench_function("VV bulk", |b| {
-            b.iter(|| che.all_vertex_vertices().indices.len())
+            b.iter(|| che.all_vertex_vertices().unwrap().indices.len())
         });
         group.finish();
     }

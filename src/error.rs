@@ -86,6 +86,8 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+pub type Result<T> = std::result::Result<T, Error>;
+
 /// A byte count for people: "1.2 GiB", "512 B".
 pub(crate) struct ByteSize(pub u64);
 
@@ -126,4 +128,3 @@ mod tests {
     }
 }
 
-pub type Result<T> = std::result::Result<T, Error>;

@@ -53,7 +53,7 @@ fn bench_surface(name: &str, data: &MeshData, options: &BenchOptions) -> Result<
         let (che, secs) = timed_builds(repeat, || build_surface(data, build))?;
         build_line(level, secs, n, che.memory_bytes().topology, "triangle");
         if level >= 1 {
-            surface_sweeps(&che, repeat);
+            surface_sweeps(&che, repeat)?;
         }
     }
     Ok(())
@@ -124,17 +124,29 @@ fn sum(ids: impl Iterator<Item = u32>) -> u64 {
     ids.map(u64::from).sum()
 }
 
-fn surface_sweeps(che: &Che, repeat: usize) {
+fn surface_sweeps(che: &Che, repeat: usize) -> Result<(), Error> {
     let nv = che.num_vertices() as u32;
     let nt = che.num_triangles() as u32;
     if che.level() < 2 {
-        // Per-vertex queries scan below level 2: sweep with the bulk calls instead.
-        let csr = |c: topomesh::che::Csr| sum(c.indices.into_iter());
+        // Per-vertex queries scan below level 2: sweep with the bulk calls instead. A bulk
+        // call that runs out of memory ends the benchmark with its error.
+        let failed = std::cell::RefCell::new(None);
+        let ids = |r: Result<Vec<u32>, Error>| match r {
+            Ok(ids) => sum(ids.into_iter()),
+            Err(e) => {
+                failed.borrow_mut().get_or_insert(e);
+                0
+            }
+        };
+        let csr = |r: Result<topomesh::che::Csr, Error>| ids(r.map(|c| c.indices));
         let vv = timed(repeat, &|| csr(che.all_vertex_vertices()));
         let vf = timed(repeat, &|| csr(che.all_vertex_triangles()));
-        let ff = timed(repeat, &|| sum(che.all_triangle_triangles().into_iter()));
+        let ff = timed(repeat, &|| ids(che.all_triangle_triangles()));
+        if let Some(e) = failed.into_inner() {
+            return Err(e);
+        }
         sweep_line("  bulk sweeps", [("VV", vv), ("VF", vf), ("FF", ff)]);
-        return;
+        return Ok(());
     }
     let vv = timed(
         repeat,
@@ -147,6 +159,7 @@ fn surface_sweeps(che: &Che, repeat: usize) {
         sum((0..nt).flat_map(|t| che.triangle_triangles(t)))
     });
     sweep_line("  sweeps", [("VV", vv), ("VF", vf), ("FF", ff)]);
+    Ok(())
 }
 
 fn volume_sweeps(chf: &topomesh::Chf, repeat: usize) {

@@ -123,7 +123,7 @@ impl Che {
             0 => None,
             1 => Some(
                 self.lazy_edge_bits
-                    .get_or_init(|| edge_directory(&self.o))
+                    .get_or_init(|| crate::util::alloc::or_panic(edge_directory(&self.o)))
                     .entries(),
             ),
             _ => Some(self.edge_bits.entries()),

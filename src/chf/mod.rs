@@ -188,11 +188,11 @@ impl Chf {
             return Ok(());
         }
         if self.level < 1 && level >= 1 {
-            self.o = self.opposites_by_rule();
+            self.o = self.try_opposites_by_rule()?;
             self.level = 1;
         }
         if self.level < 2 && level >= 2 {
-            let flagged = stars::merged(&self.non_manifold, &self.seams);
+            let flagged = stars::merged(&self.non_manifold, &self.seams)?;
             let pass = stars::StarPass {
                 pairs: stars::Pairs::No,
                 tables: true,
@@ -202,9 +202,9 @@ impl Chf {
                     self.build_threads(),
                 ),
             };
-            let stars = stars::stars(&self.v, self.n_vertices, &flagged, pass);
+            let stars = stars::stars(&self.v, self.n_vertices, &flagged, pass)?;
             debug_assert!(!stars.split_needed, "the build split every vertex");
-            level2::build(self, stars.edge_bits, stars.vh);
+            level2::build(self, stars.edge_bits, stars.vh)?;
             self.level = 2;
         }
         if self.level < 3 && level >= 3 {

@@ -100,7 +100,7 @@ macro_rules! csr {
                 ($crate::ffi::boundary::core($m)?, sink([($o, $oc, $no), ($i, $ic, $ni)])?)
             };
             let $s = &mut sink;
-            $rows;
+            $crate::util::alloc::Done::done($rows)?;
             sink.finish()
         })
     };

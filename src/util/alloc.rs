@@ -64,13 +64,43 @@ pub(crate) fn try_extend<T>(
         return Ok(());
     }
     for item in items {
-        if v.len() == v.capacity() {
-            v.try_reserve(1)
-                .map_err(|_| Error::out_of_memory(bytes_of::<T>(2 * v.len()), what))?;
-        }
-        v.push(item);
+        try_push(v, item, what)?;
     }
     Ok(())
+}
+
+/// `v.push(item)`, growing by amortised steps.
+pub(crate) fn try_push<T>(v: &mut Vec<T>, item: T, what: &str) -> Result<()> {
+    if v.len() == v.capacity() {
+        v.try_reserve(1)
+            .map_err(|_| Error::out_of_memory(bytes_of::<T>(2 * v.len()), what))?;
+    }
+    v.push(item);
+    Ok(())
+}
+
+/// The value of `r`, for the queries whose signature has no error (one element's relation
+/// at a level that stores no `O`, a summary, a view): running out of memory there is a
+/// panic, which the C boundary catches and reports, never an abort.
+pub(crate) fn or_panic<T>(r: Result<T>) -> T {
+    r.unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// What a fill gives back: nothing, or a result (the C skin's `csr!` takes either).
+pub(crate) trait Done {
+    fn done(self) -> Result<()>;
+}
+
+impl Done for () {
+    fn done(self) -> Result<()> {
+        Ok(())
+    }
+}
+
+impl Done for Result<()> {
+    fn done(self) -> Result<()> {
+        self
+    }
 }
 
 /// `items.collect::<Vec<_>>()`, fallibly.

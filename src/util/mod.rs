@@ -3,10 +3,7 @@
 //! directories, union-find, small id lists, closing the holes of dropped elements, and the
 //! build reports' example lists.
 
-#[allow(
-    dead_code,
-    reason = "the builds adopt the helpers in the commits that follow"
-)]
+#[allow(dead_code)]
 pub(crate) mod alloc;
 pub(crate) mod csr;
 pub(crate) mod dsu;

@@ -4,6 +4,7 @@
 use super::star::{Rotation, vf_item, vv_item};
 use crate::che::ids::{first, next, prev, tri};
 use crate::che::{Che, pairs};
+use crate::error::Result;
 use crate::{Ids, NONE};
 use std::borrow::Cow;
 
@@ -58,16 +59,21 @@ impl Che {
     }
 
     /// Opposites: borrowed from level 1 on, computed (O(T) time and memory) at level 0.
-    pub(crate) fn opposites_or_computed(&self) -> Cow<'_, [u32]> {
-        if self.level >= 1 {
+    pub(crate) fn try_opposites_or_computed(&self) -> Result<Cow<'_, [u32]>> {
+        Ok(if self.level >= 1 {
             Cow::Borrowed(&self.o)
         } else {
             Cow::Owned(pairs::opposites_by_rule(
                 &self.v,
                 self.n_vertices,
                 &self.non_manifold,
-            ))
-        }
+            )?)
+        })
+    }
+
+    /// [`Che::try_opposites_or_computed`] for the queries without an error to return.
+    pub(crate) fn opposites_or_computed(&self) -> Cow<'_, [u32]> {
+        crate::util::alloc::or_panic(self.try_opposites_or_computed())
     }
 
     /// Is `h` on the boundary (no opposite)?

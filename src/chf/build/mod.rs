@@ -21,6 +21,7 @@ use crate::chf::ids::tet;
 use crate::chf::star_pass::link::FaceCensus;
 use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_reserve, try_to_vec, try_vec};
 use crate::util::options::check_input;
 use crate::util::origin::OriginMap;
 use glam::DVec3;
@@ -64,18 +65,18 @@ pub(crate) fn build(
     };
     drop(links);
     let n_total = n_vertices + copies.len();
-    let vertex_origin = OriginMap::with_copies(n_vertices, &copies);
+    let vertex_origin = OriginMap::with_copies(n_vertices, &copies)?;
     // 5. Edges: the census by input vertex pair (after a split, one more star pass).
     let census = if copies.is_empty() {
         std::mem::take(&mut stars.census)
     } else {
         // Every star is one piece now; the census groups by input pair.
-        let flagged = merged(&non_manifold, &seams);
-        stars = stars::stars(&v, n_total, &flagged, pass.with_tables());
+        let flagged = merged(&non_manifold, &seams)?;
+        stars = stars::stars(&v, n_total, &flagged, pass.with_tables())?;
         debug_assert!(!stars.split_needed);
         edges::census(&v, &stars.edge_bits, n_vertices, |x| {
             vertex_origin[x as usize]
-        })
+        })?
     };
     record_edges(&mut report, &census);
     if options.strict {
@@ -93,7 +94,7 @@ pub(crate) fn build(
         n_vertices: n_total,
         num_edges: stars.num_edges,
         num_faces: count_faces(&o, &seams, v.len() - pairs),
-        positions: with_copies(positions, &copies),
+        positions: with_copies(positions, &copies)?,
         vertex_origin,
         tet_origin,
         non_manifold,
@@ -140,7 +141,7 @@ fn oriented(
         tables: options.level >= 2,
         threads: stars::threads_for(soup.v.len() / 4, n_vertices, n_threads),
     };
-    let (mut stars, faces, partner) = first_star_pass(&soup.v, n_vertices, pass, options.level);
+    let (mut stars, faces, partner) = first_star_pass(&soup.v, n_vertices, pass, options.level)?;
     let pairs = faces.pairs();
     let same_direction = faces.same_direction;
     let mut non_manifold = record_faces(report, faces, &origin_of);
@@ -158,8 +159,8 @@ fn oriented(
         report.flipped_tetrahedra = soup.flipped;
         (partner, Vec::new(), Vec::new())
     } else {
-        let oriented = orient_soup(&mut soup, partner, &mut non_manifold, report, origin_of);
-        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, pass);
+        let oriented = orient_soup(&mut soup, partner, &mut non_manifold, report, origin_of)?;
+        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, pass)?;
         (oriented.o, oriented.seams, oriented.links)
     };
     Ok(Oriented {
@@ -180,13 +181,13 @@ fn oriented(
 /// for level 2.
 fn first_star_pass(
     v: &[u32], n_vertices: usize, pass: StarPass, level: u8,
-) -> (Stars, FaceCensus, Vec<u32>) {
+) -> Result<(Stars, FaceCensus, Vec<u32>)> {
     let pairs = if level == 0 {
         Pairs::Census
     } else {
         Pairs::Partners
     };
-    let mut stars = stars::stars(v, n_vertices, &[], StarPass { pairs, ..pass });
+    let mut stars = stars::stars(v, n_vertices, &[], StarPass { pairs, ..pass })?;
     let (faces, mut partner) = stars.faces.take().expect("faces were asked for");
     if partner.is_empty() && (faces.same_direction || stars.split_needed) {
         let pass = StarPass {
@@ -194,12 +195,12 @@ fn first_star_pass(
             tables: false,
             ..pass
         };
-        partner = stars::stars(v, n_vertices, &[], pass)
+        partner = stars::stars(v, n_vertices, &[], pass)?
             .faces
             .expect("faces were asked for")
             .1;
     }
-    (stars, faces, partner)
+    Ok((stars, faces, partner))
 }
 
 /// The face counts into the report; returns the non-manifold half-faces.
@@ -223,7 +224,7 @@ fn record_faces(
 fn orient_soup(
     soup: &mut Soup, partner: Vec<u32>, non_manifold: &mut [u32], report: &mut BuildReport,
     origin_of: impl Fn(u32) -> u32,
-) -> orient::Oriented {
+) -> Result<orient::Oriented> {
     let unflip = |hf: u32| {
         if soup.is_flipped(tet(hf)) {
             flipped_id(hf)
@@ -231,7 +232,7 @@ fn orient_soup(
             hf
         }
     };
-    let mut input_partner = vec![NONE; partner.len()];
+    let mut input_partner = try_vec(partner.len(), NONE, "the partners")?;
     for (h, &g) in partner.iter().enumerate() {
         if g != NONE {
             input_partner[unflip(h as u32) as usize] = unflip(g);
@@ -242,7 +243,7 @@ fn orient_soup(
         *hf = unflip(*hf);
     }
     soup.unflip();
-    let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign);
+    let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign)?;
     drop(input_partner);
     let origins = |ts: &[u32]| ts.iter().map(|&t| origin_of(t)).collect();
     let flips = &oriented.flips;
@@ -257,14 +258,14 @@ fn orient_soup(
             *hf = flipped_id(*hf);
         }
     }
-    oriented
+    Ok(oriented)
 }
 
 /// Splits the non-manifold vertices of `v`; returns the copies' origins.
 fn split_vertices(
     v: &mut [u32], o: &[u32], links: &[u32], n_vertices: usize, report: &mut BuildReport,
 ) -> Result<Vec<u32>> {
-    let split = split::split(v, o, links, n_vertices);
+    let split = split::split(v, o, links, n_vertices)?;
     report.split_vertices = split.split_vertices;
     report.split_vertex_examples = split.split_examples;
     report.seam_split_vertices = split.seam_split_vertices;
@@ -279,14 +280,15 @@ fn split_vertices(
 }
 
 /// The positions, each copy repeating its origin's.
-fn with_copies(positions: &[DVec3], copies: &[u32]) -> Vec<DVec3> {
-    let mut positions = positions.to_vec();
+fn with_copies(positions: &[DVec3], copies: &[u32]) -> Result<Vec<DVec3>> {
+    let mut positions = try_to_vec(positions, "the positions")?;
     if !positions.is_empty() {
+        try_reserve(&mut positions, copies.len(), "the positions")?;
         for &c in copies {
             positions.push(positions[c as usize]);
         }
     }
-    positions
+    Ok(positions)
 }
 
 /// Canonical half-faces: the unpaired ones and one per pair (`unpaired_or_pairs` when
@@ -339,7 +341,7 @@ fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<
         chf.level = 0;
     }
     if level >= 2 {
-        level2::build(&mut chf, edge_bits, std::mem::take(&mut stars.vh));
+        level2::build(&mut chf, edge_bits, std::mem::take(&mut stars.vh))?;
         chf.level = 2;
     }
     if level >= 3 {

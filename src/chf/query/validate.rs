@@ -62,13 +62,13 @@ impl Chf {
         self.validate_tetrahedra()?;
         self.validate_maps()?;
         // The pairs and the edge slots by the rule, from `V` alone.
-        let flagged = star_pass::merged(&self.non_manifold, &self.seams);
+        let flagged = star_pass::merged(&self.non_manifold, &self.seams)?;
         let pass = StarPass {
             pairs: Pairs::Opposites,
             tables: true,
             threads: 1,
         };
-        let rule = star_pass::stars(&self.v, self.n_vertices, &flagged, pass);
+        let rule = star_pass::stars(&self.v, self.n_vertices, &flagged, pass)?;
         let rule_o = rule.faces.as_ref().map_or(&[][..], |(_, o)| &o[..]);
         if self.level >= 1 {
             self.validate_opposites(&flagged, rule_o)?;

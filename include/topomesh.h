@@ -218,6 +218,13 @@ typedef struct che_build_options {
      * the calling thread alone. The mesh is the same whatever the number.
      */
     uint32_t threads;
+    /**
+     * A memory budget for the build, in bytes (0, the default: none). The build
+     * estimates its peak from the input's sizes and, when the estimate exceeds the
+     * budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
+     * estimate and the budget).
+     */
+    uint64_t memory_limit_bytes;
 } che_build_options;
 
 /**
@@ -373,6 +380,13 @@ typedef struct chf_build_options {
      * the calling thread alone. The mesh is the same whatever the number.
      */
     uint32_t threads;
+    /**
+     * A memory budget for the build, in bytes (0, the default: none). The build
+     * estimates its peak from the input's sizes and, when the estimate exceeds the
+     * budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
+     * estimate and the budget).
+     */
+    uint64_t memory_limit_bytes;
 } chf_build_options;
 
 /**

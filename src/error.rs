@@ -64,7 +64,22 @@ impl Error {
         }
     }
 
-    /// The bytes an [`ErrorKind::OutOfMemory`] error asked for (None for other kinds).
+    /// An [`ErrorKind::OutOfMemory`] error: the estimated `bytes` of `what` exceed the
+    /// memory limit `limit`, refused before allocating.
+    pub fn over_limit(bytes: u64, limit: u64, what: &str) -> Self {
+        Error {
+            kind: ErrorKind::OutOfMemory,
+            message: format!(
+                "out of memory: {what} needs an estimated {}, over the limit of {}",
+                ByteSize(bytes),
+                ByteSize(limit)
+            ),
+            bytes: Some(bytes),
+        }
+    }
+
+    /// The bytes an [`ErrorKind::OutOfMemory`] error asked for or estimated (None for
+    /// other kinds).
     pub fn bytes(&self) -> Option<u64> {
         self.bytes
     }
@@ -127,4 +142,3 @@ mod tests {
         );
     }
 }
-

@@ -49,6 +49,7 @@ fn bench_surface(name: &str, data: &MeshData, options: &BenchOptions) -> Result<
             level,
             strict: false,
             threads: options.threads,
+            memory_limit_bytes: 0,
         };
         let (che, secs) = timed_builds(repeat, || build_surface(data, build))?;
         build_line(level, secs, n, che.memory_bytes().topology, "triangle");
@@ -68,6 +69,7 @@ fn bench_volume(name: &str, data: &MeshData, options: &BenchOptions) -> Result<(
             level,
             strict: false,
             threads: options.threads,
+            memory_limit_bytes: 0,
         };
         let (chf, secs) = timed_builds(repeat, || build_volume(data, build))?;
         build_line(level, secs, n, chf.memory_bytes().topology, "tetrahedron");

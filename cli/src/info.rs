@@ -62,6 +62,7 @@ impl InfoOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
+            ..BuildOptions::default()
         }
     }
 
@@ -70,6 +71,7 @@ impl InfoOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
+            ..chf::BuildOptions::default()
         }
     }
 }

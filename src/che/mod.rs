@@ -15,7 +15,7 @@ mod query;
 mod tables;
 
 pub use crate::Ids;
-pub use build::{BuildOptions, BuildReport, MAX_TRIANGLES};
+pub use build::{BuildOptions, BuildReport, MAX_TRIANGLES, estimated_build_bytes};
 pub use ids::{first, next, prev, tri};
 pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
 pub(crate) use query::{Push, Rows};

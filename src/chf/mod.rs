@@ -45,7 +45,7 @@ mod query;
 mod star_pass;
 
 pub use crate::Ids;
-pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA};
+pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA, estimated_build_bytes};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use query::{Csr, EdgeIds, Memory, STAR_INLINE, Summary, VertexIds};
 
@@ -208,7 +208,7 @@ impl Chf {
             self.level = 2;
         }
         if self.level < 3 && level >= 3 {
-            self.boundary = Some(level3::build(self, self.build_threads())?);
+            self.boundary = Some(level3::build(self, self.build_threads(), 0)?);
             self.level = 3;
         }
         Ok(())

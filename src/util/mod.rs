@@ -5,6 +5,7 @@
 
 #[allow(dead_code)]
 pub(crate) mod alloc;
+pub(crate) mod budget;
 pub(crate) mod csr;
 pub(crate) mod dsu;
 pub(crate) mod holes;

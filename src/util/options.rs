@@ -15,6 +15,11 @@ pub struct BuildOptions {
     /// Threads for the build: 0 (the default) for as many as the machine runs at once, 1
     /// for the calling thread alone. The structure is the same whatever the number.
     pub threads: usize,
+    /// A memory budget for the build, in bytes (0, the default: none). The build estimates
+    /// the bytes its arrays will take at their peak from the input's sizes and refuses
+    /// with an [`ErrorKind::OutOfMemory`](crate::ErrorKind::OutOfMemory) error, before
+    /// allocating, when the estimate exceeds it.
+    pub memory_limit_bytes: u64,
 }
 
 impl Default for BuildOptions {
@@ -23,6 +28,7 @@ impl Default for BuildOptions {
             level: 2,
             strict: false,
             threads: 0,
+            memory_limit_bytes: 0,
         }
     }
 }

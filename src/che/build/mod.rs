@@ -3,6 +3,7 @@
 //! split, then (5) the requested level. Every step but the last works on flat arrays; the
 //! `Che` is assembled at level 1 and raised or lowered to the level asked for.
 
+mod budget;
 mod level2;
 mod level3;
 mod matching;
@@ -12,6 +13,7 @@ mod report;
 mod soup;
 mod split;
 
+pub use budget::estimated_build_bytes;
 pub use options::{BuildOptions, MAX_TRIANGLES};
 pub use report::BuildReport;
 
@@ -31,6 +33,19 @@ pub(crate) fn build(
 ) -> Result<Che> {
     let too_many = too_many_triangles(triangles.len());
     check_input(&options, n_vertices, positions.len(), too_many)?;
+    let estimate = budget::estimated_build_bytes(
+        triangles.len(),
+        n_vertices,
+        !positions.is_empty(),
+        options.level,
+    );
+    crate::util::budget::check(&options, estimate, || {
+        format!(
+            "a CHE build of {} triangles at level {}",
+            triangles.len(),
+            options.level
+        )
+    })?;
     let mut report = BuildReport {
         input_triangles: triangles.len(),
         input_vertices: n_vertices,

@@ -92,9 +92,15 @@ fn try_parts(chf: &Chf) -> Result<Parts> {
 }
 
 /// The boundary, its CHE built on up to `threads` threads.
-pub(crate) fn build(chf: &Chf, threads: usize) -> Result<Boundary> {
+pub(crate) fn build(chf: &Chf, threads: usize, memory_limit_bytes: u64) -> Result<Boundary> {
     let p = try_parts(chf)?;
-    let che = surface(chf, &p, 3, threads)?;
+    let options = BuildOptions {
+        level: 3,
+        strict: false,
+        threads,
+        memory_limit_bytes,
+    };
+    let che = surface(chf, &p, options)?;
     let n_hf = chf.v.len();
     let mut words = try_vec(n_hf.div_ceil(64), 0u64, "the boundary half-face bits")?;
     for &hf in &p.half_faces {
@@ -120,7 +126,7 @@ fn flagged_count(chf: &Chf) -> usize {
     or_panic(crate::chf::star_pass::merged(&chf.non_manifold, &chf.seams)).len()
 }
 
-fn surface(chf: &Chf, p: &Parts, level: u8, threads: usize) -> Result<Che> {
+fn surface(chf: &Chf, p: &Parts, options: BuildOptions) -> Result<Che> {
     let local = |x: u32| p.vertex_bits.rank(x as usize) as u32;
     let tris = p
         .half_faces
@@ -133,16 +139,7 @@ fn surface(chf: &Chf, p: &Parts, level: u8, threads: usize) -> Result<Che> {
         let positions = p.vertices.iter().map(|&x| chf.positions[x as usize]);
         try_collect(positions, "the boundary positions")?
     };
-    Che::from_triangles(
-        &tris,
-        p.vertices.len(),
-        &positions,
-        BuildOptions {
-            level,
-            strict: false,
-            threads,
-        },
-    )
+    Che::from_triangles(&tris, p.vertices.len(), &positions, options)
 }
 
 /// Boundary component of every boundary vertex, by union-find over the boundary
@@ -184,7 +181,11 @@ impl Chf {
         if let Some(b) = &self.boundary {
             return Ok(b.che.clone());
         }
-        surface(self, &try_parts(self)?, 3, 1)
+        let options = BuildOptions {
+            threads: 1,
+            ..BuildOptions::level(3)
+        };
+        surface(self, &try_parts(self)?, options)
     }
 
     /// Unpaired half-faces in increasing order: triangle `k` of the boundary surface is the

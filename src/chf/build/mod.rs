@@ -2,6 +2,7 @@
 //! half-faces, orient, split non-manifold vertices, name the edges, then build the
 //! requested level. Everything changed or left unpaired is counted in the report.
 
+mod budget;
 pub(crate) mod level2;
 pub(crate) mod level3;
 mod orient;
@@ -27,6 +28,7 @@ use crate::util::origin::OriginMap;
 use glam::DVec3;
 
 pub use crate::util::options::BuildOptions;
+pub use budget::estimated_build_bytes;
 
 /// Largest tetrahedron count whose half-face ids (`4T`) fit below `NONE`.
 pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
@@ -41,6 +43,7 @@ pub(crate) fn build(
         positions.len(),
         too_many_tetrahedra(tets.len()),
     )?;
+    check_budget(tets.len(), n_vertices, !positions.is_empty(), &options)?;
     let mut report = BuildReport::of_input(tets.len(), n_vertices);
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
@@ -105,7 +108,20 @@ pub(crate) fn build(
         o,
         ..Chf::empty()
     };
-    raise(chf, options.level, stars, n_threads)
+    raise(chf, options, stars, n_threads)
+}
+
+/// Refuses, before allocating, a build whose estimate exceeds the memory limit.
+fn check_budget(
+    tets: usize, n_vertices: usize, positions: bool, options: &BuildOptions,
+) -> Result<()> {
+    let estimate = budget::estimated_build_bytes(tets, n_vertices, positions, options.level);
+    crate::util::budget::check(options, estimate, || {
+        format!(
+            "a CHF build of {tets} tetrahedra at level {}",
+            options.level
+        )
+    })
 }
 
 /// What steps 1 to 3 leave: an oriented `V` with its pairs, before the vertex split.
@@ -334,7 +350,8 @@ impl BuildReport {
 }
 
 /// From level 1 to `level`, with the tables of the last star pass.
-fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<Chf> {
+fn raise(mut chf: Chf, options: BuildOptions, mut stars: Stars, n_threads: usize) -> Result<Chf> {
+    let level = options.level;
     let edge_bits = std::mem::take(&mut stars.edge_bits);
     if level == 0 {
         chf.o = Vec::new();
@@ -345,7 +362,9 @@ fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<
         chf.level = 2;
     }
     if level >= 3 {
-        chf.boundary = Some(level3::build(&chf, n_threads)?);
+        let m = chf.memory_bytes();
+        let limit = crate::util::budget::remaining(&options, m.topology + m.positions + m.maps);
+        chf.boundary = Some(level3::build(&chf, n_threads, limit)?);
         chf.level = 3;
     }
     Ok(chf)

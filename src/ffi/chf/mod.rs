@@ -40,6 +40,11 @@ pub struct ChfBuildOptions {
     /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
     /// the calling thread alone. The mesh is the same whatever the number.
     pub threads: u32,
+    /// A memory budget for the build, in bytes (0, the default: none). The build
+    /// estimates its peak from the input's sizes and, when the estimate exceeds the
+    /// budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
+    /// estimate and the budget).
+    pub memory_limit_bytes: u64,
 }
 
 /// The default CHF build options: level 2, not strict, every thread of the machine.

@@ -31,11 +31,12 @@ int main(void) {
     CHECK(TOPOMESH_STATUS_PARSE == 7);
     CHECK(TOPOMESH_STATUS_TOO_LARGE == 8);
     CHECK(TOPOMESH_STATUS_PANIC == 9);
+    CHECK(TOPOMESH_STATUS_OUT_OF_MEMORY == 10);
     CHECK(sizeof(topomesh_status) == 4);
     CHECK(TOPOMESH_NONE == UINT32_MAX);
 
     /* Every status has a distinct, non-empty static string. */
-    for (uint32_t s = 0; s <= TOPOMESH_STATUS_PANIC; s++) {
+    for (uint32_t s = 0; s <= TOPOMESH_STATUS_OUT_OF_MEMORY; s++) {
         const char *a = topomesh_status_str((topomesh_status)s);
         CHECK(a != NULL && a[0] != 0);
         for (uint32_t t = 0; t < s; t++) CHECK(strcmp(a, topomesh_status_str((topomesh_status)t)));

@@ -11,7 +11,7 @@
 
 use crate::chf::build::report::{BuildReport, push_example};
 use crate::error::{Error, Result};
-use crate::util::alloc::{try_extend, try_vec};
+use crate::util::alloc::{try_extend, try_push, try_vec};
 use glam::DVec3;
 
 pub(crate) struct Soup {
@@ -109,7 +109,10 @@ fn run(
         }
         let [a, b, c, d] = *tet;
         if a == b || a == c || a == d || b == c || b == d || c == d {
-            out.dropped.push(t as u32);
+            if let Err(e) = try_push(&mut out.dropped, t as u32, "the dropped tetrahedra") {
+                out.error = Some(e);
+                return out;
+            }
             continue;
         }
         if positions.is_empty() {

@@ -72,6 +72,7 @@ fn build(c: &mut Criterion) {
                                 level,
                                 strict: false,
                                 threads,
+                                memory_limit_bytes: 0,
                             },
                         )
                         .unwrap()
@@ -157,7 +158,7 @@ fn sweeps(c: &mut Criterion) {
             })
         });
         group.bench_function("VV bulk", |b| {
-            b.iter(|| che.all_vertex_vertices().indices.len())
+            b.iter(|| che.all_vertex_vertices().unwrap().indices.len())
         });
         group.finish();
     }

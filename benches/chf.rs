@@ -78,6 +78,7 @@ fn build_chf(input: &Input, level: u8, threads: usize) -> Chf {
         level,
         strict: false,
         threads,
+        memory_limit_bytes: 0,
     };
     Chf::from_tetrahedra(
         &input.tets,

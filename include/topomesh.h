@@ -91,6 +91,12 @@ enum topomesh_status
      * An internal error (a Rust panic) was caught at the boundary. Please report it.
      */
     TOPOMESH_STATUS_PANIC = 9,
+    /**
+     * Memory ran out: an allocation failed, or a build's estimate exceeded
+     * `memory_limit_bytes`. The detail names the bytes and what they were for; the
+     * process and every other handle are unharmed.
+     */
+    TOPOMESH_STATUS_OUT_OF_MEMORY = 10,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -234,6 +240,13 @@ typedef struct che_build_options {
      * and at one thread per 8192 elements. The mesh is the same whatever the number.
      */
     uint32_t threads;
+    /**
+     * A memory budget for the build, in bytes (0, the default: none). The build
+     * estimates its peak from the input's sizes and, when the estimate exceeds the
+     * budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
+     * estimate and the budget).
+     */
+    uint64_t memory_limit_bytes;
 } che_build_options;
 
 /**
@@ -396,6 +409,13 @@ typedef struct chf_build_options {
      * and at one thread per 8192 elements. The mesh is the same whatever the number.
      */
     uint32_t threads;
+    /**
+     * A memory budget for the build, in bytes (0, the default: none). The build
+     * estimates its peak from the input's sizes and, when the estimate exceeds the
+     * budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
+     * estimate and the budget).
+     */
+    uint64_t memory_limit_bytes;
 } chf_build_options;
 
 /**

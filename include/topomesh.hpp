@@ -115,6 +115,9 @@ struct Options {
     /// Threads for the build (0: as many as the machine runs at once; the mesh is the same
     /// whatever the number).
     std::uint32_t threads = 0;
+    /// A memory budget for the build in bytes (0: none): a build whose estimated peak
+    /// exceeds it throws `Error` with `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating.
+    std::uint64_t memory_limit_bytes = 0;
 };
 
 struct Csr;

@@ -1,4 +1,6 @@
 //! Heap use, counted with a global allocator wrapper in a test binary of its own:
+//! - the memory estimate of both builds bounds their heap peak, and a limit below it
+//!   refuses before allocating;
 //! - at level 2 and up, queries do not allocate (stars of up to 64 tetrahedra);
 //! - the build's heap peak stays within twice the heap the finished structure holds
 //!   (a build peak at most twice the final size), at every level, on a mesh
@@ -156,5 +158,95 @@ fn chf_build_peak_is_at_most_twice_the_structure() {
             "level {level}: build peak {peak} B is {ratio:.2} times the {held} B held"
         );
         drop(chf);
+    }
+}
+
+/// The heap a build allocates (peak above what was held before) and its result.
+fn heap_peak<T>(build: impl FnOnce() -> T) -> (T, isize) {
+    let before = CURRENT.load(SeqCst);
+    PEAK.store(before, SeqCst);
+    let out = build();
+    (out, PEAK.load(SeqCst) - before)
+}
+
+#[test]
+fn chf_build_estimate_bounds_the_heap_peak_and_a_lower_limit_refuses_first() {
+    let _one_at_a_time = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let mesh = chf_common::scramble(&chf_common::cube(24, 24, 24, false), 7, 100);
+    let flat: Vec<u32> = mesh.tets.iter().flatten().copied().collect();
+    let (n, t) = (mesh.n(), mesh.tets.len());
+    for level in 0..=2u8 {
+        let estimate = topomesh::chf::estimated_build_bytes(t, n, true, level);
+        let options = topomesh::chf::BuildOptions {
+            memory_limit_bytes: estimate,
+            ..topomesh::chf::BuildOptions::level(level)
+        };
+        let (chf, peak) =
+            heap_peak(|| topomesh::Chf::from_flat(&flat, n, &mesh.positions, options));
+        assert!(chf.is_ok(), "level {level}: a limit at the estimate builds");
+        assert!(
+            peak as u64 <= estimate,
+            "level {level}: peak {peak} B > estimate {estimate} B"
+        );
+        drop(chf);
+        let below = topomesh::chf::BuildOptions {
+            memory_limit_bytes: estimate - 1,
+            ..options
+        };
+        let (refused, peak) =
+            heap_peak(|| topomesh::Chf::from_flat(&flat, n, &mesh.positions, below));
+        let e = refused.unwrap_err();
+        assert_eq!(
+            (e.kind, e.bytes()),
+            (topomesh::ErrorKind::OutOfMemory, Some(estimate))
+        );
+        assert!(
+            e.message
+                .contains(&format!("{t} tetrahedra at level {level}")),
+            "{}",
+            e.message
+        );
+        // Nothing but the message: refused before allocating.
+        assert!(
+            peak < 1024,
+            "level {level}: the refused build allocated {peak} B"
+        );
+    }
+}
+
+#[test]
+fn che_build_estimate_bounds_the_heap_peak_and_a_lower_limit_refuses_first() {
+    let _one_at_a_time = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let s = topomesh::generate::torus(300, 200);
+    let (n, t) = (s.positions.len(), s.triangles.len());
+    for level in 0..=3u8 {
+        let estimate = topomesh::che::estimated_build_bytes(t, n, true, level);
+        let options = topomesh::BuildOptions {
+            memory_limit_bytes: estimate,
+            ..topomesh::BuildOptions::level(level)
+        };
+        let (che, peak) =
+            heap_peak(|| topomesh::Che::from_triangles(&s.triangles, n, &s.positions, options));
+        assert!(che.is_ok(), "level {level}: a limit at the estimate builds");
+        assert!(
+            peak as u64 <= estimate,
+            "level {level}: peak {peak} B > estimate {estimate} B"
+        );
+        drop(che);
+        let below = topomesh::BuildOptions {
+            memory_limit_bytes: estimate / 2,
+            ..options
+        };
+        let (refused, peak) =
+            heap_peak(|| topomesh::Che::from_triangles(&s.triangles, n, &s.positions, below));
+        let e = refused.unwrap_err();
+        assert_eq!(
+            (e.kind, e.bytes()),
+            (topomesh::ErrorKind::OutOfMemory, Some(estimate))
+        );
+        assert!(
+            peak < 1024,
+            "level {level}: the refused build allocated {peak} B"
+        );
     }
 }

@@ -34,11 +34,12 @@ int main(void) {
     CHECK(TOPOMESH_STATUS_PARSE == 7);
     CHECK(TOPOMESH_STATUS_TOO_LARGE == 8);
     CHECK(TOPOMESH_STATUS_PANIC == 9);
+    CHECK(TOPOMESH_STATUS_OUT_OF_MEMORY == 10);
     CHECK(sizeof(topomesh_status) == 4);
     CHECK(TOPOMESH_NONE == UINT32_MAX);
 
     /* Every status has a distinct, non-empty static string. */
-    for (uint32_t s = 0; s <= TOPOMESH_STATUS_PANIC; s++) {
+    for (uint32_t s = 0; s <= TOPOMESH_STATUS_OUT_OF_MEMORY; s++) {
         const char *a = topomesh_status_str((topomesh_status)s);
         CHECK(a != NULL && a[0] != 0);
         for (uint32_t t = 0; t < s; t++) CHECK(strcmp(a, topomesh_status_str((topomesh_status)t)));
@@ -110,7 +111,7 @@ int main(void) {
     che_mesh_free(m);
 
     /* Option flags are bytes where any non-zero value is true: strict = 2 is strict. */
-    CHECK(sizeof(che_build_options) == 12 && sizeof(chf_build_options) == 12);
+    CHECK(sizeof(che_build_options) == 24 && sizeof(chf_build_options) == 24);
     CHECK(offsetof(che_build_options, strict) == 4 && offsetof(chf_build_options, threads) == 8);
     che_build_options o = che_build_options_default();
     o.strict = 2;

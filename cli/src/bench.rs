@@ -114,13 +114,19 @@ fn bench_surface(
             level,
             strict: false,
             threads: options.threads,
+            memory_limit_bytes: 0,
         };
         let (che, timing) = timed_builds(repeat, progress, || build_surface(data, build))?;
+        let sweeps = if level >= 1 {
+            Some(surface_sweeps(&che, repeat)?)
+        } else {
+            None
+        };
         levels.push(Level {
             level,
             build: timing,
             topology_bytes: che.memory_bytes().topology,
-            sweeps: (level >= 1).then(|| surface_sweeps(&che, repeat)),
+            sweeps,
         });
     }
     Ok(Bench {
@@ -143,6 +149,7 @@ fn bench_volume(
             level,
             strict: false,
             threads: options.threads,
+            memory_limit_bytes: 0,
         };
         let (chf, timing) = timed_builds(repeat, progress, || build_volume(data, build))?;
         levels.push(Level {
@@ -217,16 +224,28 @@ fn sweeps(method: &'static str, times: [(&'static str, Timing); 3]) -> Sweeps {
     Sweeps { method, relations }
 }
 
-fn surface_sweeps(che: &Che, repeat: usize) -> Sweeps {
+fn surface_sweeps(che: &Che, repeat: usize) -> Result<Sweeps, Error> {
     let nv = che.num_vertices() as u32;
     let nt = che.num_triangles() as u32;
     if che.level() < 2 {
-        // Per-vertex queries scan below level 2: sweep with the bulk calls instead.
-        let csr = |c: topomesh::che::Csr| sum(c.indices.into_iter());
+        // Per-vertex queries scan below level 2: sweep with the bulk calls instead. A bulk
+        // call that runs out of memory ends the benchmark with its error.
+        let failed = std::cell::RefCell::new(None);
+        let ids = |r: Result<Vec<u32>, Error>| match r {
+            Ok(ids) => sum(ids.into_iter()),
+            Err(e) => {
+                failed.borrow_mut().get_or_insert(e);
+                0
+            }
+        };
+        let csr = |r: Result<topomesh::che::Csr, Error>| ids(r.map(|c| c.indices));
         let vv = timed(repeat, &|| csr(che.all_vertex_vertices()));
         let vf = timed(repeat, &|| csr(che.all_vertex_triangles()));
-        let ff = timed(repeat, &|| sum(che.all_triangle_triangles().into_iter()));
-        return sweeps("bulk", [("VV", vv), ("VF", vf), ("FF", ff)]);
+        let ff = timed(repeat, &|| ids(che.all_triangle_triangles()));
+        if let Some(e) = failed.into_inner() {
+            return Err(e);
+        }
+        return Ok(sweeps("bulk", [("VV", vv), ("VF", vf), ("FF", ff)]));
     }
     let vv = timed(
         repeat,
@@ -238,7 +257,7 @@ fn surface_sweeps(che: &Che, repeat: usize) -> Sweeps {
     let ff = timed(repeat, &|| {
         sum((0..nt).flat_map(|t| che.triangle_triangles(t)))
     });
-    sweeps("per_element", [("VV", vv), ("VF", vf), ("FF", ff)])
+    Ok(sweeps("per_element", [("VV", vv), ("VF", vf), ("FF", ff)]))
 }
 
 fn volume_sweeps(chf: &topomesh::Chf, repeat: usize) -> Sweeps {

@@ -68,6 +68,7 @@ impl InfoOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
+            ..BuildOptions::default()
         }
     }
 
@@ -76,6 +77,7 @@ impl InfoOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
+            ..chf::BuildOptions::default()
         }
     }
 }

@@ -17,7 +17,8 @@ namespace topomesh {
 inline Surface Surface::from_triangles(const std::uint32_t *triangles, std::size_t n_triangles,
                                        std::size_t n_vertices, const double *positions,
                                        Options options) {
-    che_build_options o{options.level, options.strict, options.threads};
+    che_build_options o{options.level, options.strict, options.threads,
+                        options.memory_limit_bytes};
     che_mesh *m = nullptr;
     detail::check(
         che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &o, &m));
@@ -33,7 +34,8 @@ inline Surface Surface::from_triangles(const std::vector<std::uint32_t> &triangl
 }
 
 inline Surface Surface::load(const std::string &path, Options options) {
-    che_build_options o{options.level, options.strict, options.threads};
+    che_build_options o{options.level, options.strict, options.threads,
+                        options.memory_limit_bytes};
     che_mesh *m = nullptr;
     detail::check(che_mesh_load_ex(path.c_str(), &o, &m));
     return Surface(m);

@@ -18,7 +18,8 @@ namespace topomesh {
 inline Volume Volume::from_tetrahedra(const std::uint32_t *tetrahedra, std::size_t n_tets,
                                       std::size_t n_vertices, const double *positions,
                                       Options options) {
-    chf_build_options o{options.level, options.strict, options.threads};
+    chf_build_options o{options.level, options.strict, options.threads,
+                        options.memory_limit_bytes};
     chf_mesh *m = nullptr;
     detail::check(
         chf_mesh_from_tetrahedra_ex(tetrahedra, n_tets, n_vertices, positions, &o, &m));
@@ -34,7 +35,8 @@ inline Volume Volume::from_tetrahedra(const std::vector<std::uint32_t> &tetrahed
 }
 
 inline Volume Volume::load(const std::string &path, Options options) {
-    chf_build_options o{options.level, options.strict, options.threads};
+    chf_build_options o{options.level, options.strict, options.threads,
+                        options.memory_limit_bytes};
     chf_mesh *m = nullptr;
     detail::check(chf_mesh_load_ex(path.c_str(), &o, &m));
     return Volume(m);

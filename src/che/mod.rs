@@ -15,7 +15,10 @@ mod query;
 mod tables;
 
 pub use crate::Ids;
-pub use build::{BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts};
+pub use build::{
+    BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts,
+    estimated_build_bytes,
+};
 pub use ids::{first, next, prev, tri};
 pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
 pub(crate) use query::{Push, Rows};
@@ -123,7 +126,7 @@ impl Che {
             0 => None,
             1 => Some(
                 self.lazy_edge_bits
-                    .get_or_init(|| edge_directory(&self.o))
+                    .get_or_init(|| crate::util::alloc::or_panic(edge_directory(&self.o)))
                     .entries(),
             ),
             _ => Some(self.edge_bits.entries()),

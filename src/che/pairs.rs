@@ -5,6 +5,8 @@
 
 use super::ids::next;
 use crate::NONE;
+use crate::error::Result;
+use crate::util::alloc::{try_resize, try_vec};
 
 /// Calls `f(min, max, group)` for every unordered vertex pair of `v`, in increasing
 /// (min, max) order; `group` holds packed keys `(max << 32) | h` whose low 32 bits are the
@@ -17,7 +19,9 @@ use crate::NONE;
 /// bits of the smaller vertex (the coarse bucket holds the rest): 8 bytes of fresh memory
 /// per half-edge instead of 12. When those three fields need more than 64 bits (see
 /// `Layout::new`), the fine bits go to a second array.
-pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, f: impl FnMut(u32, u32, &[u64]) + Send) {
+pub(crate) fn for_each_group(
+    v: &[u32], n_vertices: usize, f: impl FnMut(u32, u32, &[u64]) + Send,
+) -> Result<()> {
     let mut f = Some(f);
     let grouping = Grouping {
         threads: 1,
@@ -29,7 +33,8 @@ pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, f: impl FnMut(u32, u3
         grouping,
         || f.take().expect("one thread, one state"),
         |f, a, b, g| f(a, b, g),
-    );
+    )?;
+    Ok(())
 }
 
 /// [`for_each_group`] on up to `threads` threads: each takes the pairs of a range of
@@ -38,7 +43,7 @@ pub(crate) fn for_each_group(v: &[u32], n_vertices: usize, f: impl FnMut(u32, u3
 pub(crate) fn for_each_group_par<S: Send>(
     v: &[u32], n_vertices: usize, threads: usize, state: impl FnMut() -> S,
     f: impl Fn(&mut S, u32, u32, &[u64]) + Sync,
-) -> Vec<S> {
+) -> Result<Vec<S>> {
     let grouping = Grouping {
         threads,
         allow_packed: true,
@@ -59,17 +64,19 @@ struct Grouping {
 fn groups<S: Send>(
     v: &[u32], n_vertices: usize, grouping: Grouping, mut state: impl FnMut() -> S,
     f: impl Fn(&mut S, u32, u32, &[u64]) + Sync,
-) -> Vec<S> {
+) -> Result<Vec<S>> {
     let layout = Layout::new(n_vertices, v.len(), grouping.allow_packed);
     let threads = grouping.threads.clamp(1, layout.n_coarse);
-    let scattered = scatter(v, &layout, threads);
+    let scattered = scatter(v, &layout, threads)?;
     let cuts = cuts(&scattered, &layout, threads, v.len());
     let jobs: Vec<_> = cuts.windows(2).map(|w| (w[0], w[1], state())).collect();
     let (scattered, layout, f) = (&scattered, &layout, &f);
     crate::util::par::run_all(jobs, |(first, last, mut s)| {
-        visit_buckets(scattered, layout, first..last, &mut s, f);
-        s
+        visit_buckets(scattered, layout, first..last, &mut s, f)?;
+        Ok(s)
     })
+    .into_iter()
+    .collect()
 }
 
 /// Where the fields of a key sit, and the sizes of the buckets.
@@ -134,7 +141,7 @@ impl Scattered {
 /// First pass: each thread scatters a contiguous part of the half-edges to a region of its
 /// own of the keys, bucket after bucket; a coarse bucket is then its piece of every region
 /// in turn (in half-edge order).
-fn scatter(v: &[u32], layout: &Layout, threads: usize) -> Scattered {
+fn scatter(v: &[u32], layout: &Layout, threads: usize) -> Result<Scattered> {
     let shift = layout.shift;
     let part_len = v.len().div_ceil(threads).max(1);
     let parts: Vec<(u32, u32)> = (0..v.len())
@@ -151,11 +158,11 @@ fn scatter(v: &[u32], layout: &Layout, threads: usize) -> Scattered {
         }
         start
     });
-    let mut keys: Vec<u64> = crate::util::pages::zeroed(v.len());
+    let mut keys: Vec<u64> = crate::util::pages::zeroed(v.len(), "the half-edge pair keys")?;
     let mut mins: Vec<u32> = if layout.packed {
         Vec::new()
     } else {
-        crate::util::pages::zeroed(v.len())
+        crate::util::pages::zeroed(v.len(), "the half-edge pair keys")?
     };
     {
         let mut min_parts: Vec<&mut [u32]> = if layout.packed {
@@ -169,7 +176,7 @@ fn scatter(v: &[u32], layout: &Layout, threads: usize) -> Scattered {
             .zip(parts.iter().zip(&starts))
             .collect();
         crate::util::par::run_all(jobs, |((keys, mins), (&(a, b), start))| {
-            let mut fill = start.clone();
+            let mut fill = start.clone(); // one entry per coarse bucket: bounded
             for h in a..b {
                 let (min, max) = ends(v, h);
                 let slot = &mut fill[(min >> shift) as usize];
@@ -184,12 +191,12 @@ fn scatter(v: &[u32], layout: &Layout, threads: usize) -> Scattered {
             }
         });
     }
-    Scattered {
+    Ok(Scattered {
         parts,
         starts,
         keys,
         mins,
-    }
+    })
 }
 
 /// Where the threads' runs of coarse buckets begin (and the last ends): about an equal
@@ -214,10 +221,11 @@ fn cuts(scattered: &Scattered, layout: &Layout, threads: usize, total: usize) ->
 fn visit_buckets<S>(
     sc: &Scattered, layout: &Layout, range: std::ops::Range<usize>, s: &mut S,
     f: &impl Fn(&mut S, u32, u32, &[u64]),
-) {
+) -> Result<()> {
     let shift = layout.shift;
     let n_fine = 1usize << shift;
-    let mut fine_start = vec![0u32; n_fine + 1];
+    let mut fine_start = try_vec(n_fine + 1, 0u32, "the pair grouping's fine buckets")?;
+    let mut cursor = try_vec(n_fine + 1, 0u32, "the pair grouping's fine buckets")?;
     let mut local: Vec<u64> = Vec::new();
     let h_mask = (1u64 << layout.max_at) - 1;
     let max_mask = (1u64 << (layout.fine_at - layout.max_at)) - 1;
@@ -246,8 +254,8 @@ fn visit_buckets<S>(
             fine_start[i + 1] += fine_start[i];
         }
         local.clear();
-        local.resize(len, 0);
-        let mut cursor = fine_start.clone();
+        try_resize(&mut local, len, 0, "the pair grouping's bucket")?;
+        cursor.copy_from_slice(&fine_start);
         pieces.each(|fine, k| {
             let slot = &mut cursor[fine as usize];
             // The group format: (max << 32) | h.
@@ -259,6 +267,7 @@ fn visit_buckets<S>(
             visit_fine_bucket(bucket, ((c << shift) | i) as u32, s, f);
         }
     }
+    Ok(())
 }
 
 /// Sorts one fine bucket (the pairs of smaller vertex `min`) and calls `f` per group.
@@ -325,8 +334,10 @@ pub(crate) fn half_edge(key: u64) -> u32 {
 /// Opposites of an already canonical `V` (oriented, split): `h` and `g` are opposite when
 /// they are the only two half-edges on their vertex pair, run opposite ways, and are not
 /// flagged non-manifold. Level 0 queries answer with the same rule by scanning.
-pub(crate) fn opposites_by_rule(v: &[u32], n_vertices: usize, non_manifold: &[u32]) -> Vec<u32> {
-    let mut o = vec![NONE; v.len()];
+pub(crate) fn opposites_by_rule(
+    v: &[u32], n_vertices: usize, non_manifold: &[u32],
+) -> Result<Vec<u32>> {
+    let mut o = try_vec(v.len(), NONE, "the opposites O")?;
     for_each_group(v, n_vertices, |_, _, group| {
         if let [a, b] = *group {
             let (h, g) = (half_edge(a), half_edge(b));
@@ -335,8 +346,8 @@ pub(crate) fn opposites_by_rule(v: &[u32], n_vertices: usize, non_manifold: &[u3
                 o[g as usize] = h;
             }
         }
-    });
-    o
+    })?;
+    Ok(o)
 }
 
 #[cfg(test)]
@@ -350,7 +361,8 @@ mod tests {
         let mut seen = Vec::new();
         for_each_group(&v, 4, |a, b, g| {
             seen.push((a, b, g.iter().map(|&k| half_edge(k)).collect::<Vec<_>>()))
-        });
+        })
+        .unwrap();
         assert_eq!(
             seen,
             vec![
@@ -361,7 +373,7 @@ mod tests {
                 (2, 3, vec![5]),
             ]
         );
-        let o = opposites_by_rule(&v, 4, &[]);
+        let o = opposites_by_rule(&v, 4, &[]).unwrap();
         assert_eq!(o, vec![NONE, 3, NONE, 1, NONE, NONE]);
     }
 
@@ -386,6 +398,7 @@ mod tests {
                     let got: Vec<_> = groups(&v, n, grouping, Vec::new, |got, a, b, g| {
                         got.push(((a, b), g.iter().map(|&k| half_edge(k)).collect::<Vec<_>>()))
                     })
+                    .unwrap()
                     .concat();
                     assert_eq!(got, expected, "n = {n}, packed {packed}, {threads} threads");
                 }

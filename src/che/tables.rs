@@ -2,19 +2,20 @@
 //! the starting half-edge of every vertex, the edge-id directory and edge ids.
 
 use crate::NONE;
+use crate::error::Result;
 use crate::util::rank_directory::RankDirectory;
 
 /// The starting half-edge of every vertex (`VH`: the boundary one on a boundary vertex,
 /// `NONE` for an isolated vertex), from `V` and `O` in one pass.
-pub(crate) fn vertex_half_edges(n_vertices: usize, v: &[u32], o: &[u32]) -> Vec<u32> {
-    let mut vh = crate::util::pages::filled(n_vertices, NONE);
+pub(crate) fn vertex_half_edges(n_vertices: usize, v: &[u32], o: &[u32]) -> Result<Vec<u32>> {
+    let mut vh = crate::util::pages::filled(n_vertices, NONE, "the vertex half-edges VH")?;
     for (h, (&x, &g)) in v.iter().zip(o).enumerate() {
         let slot = &mut vh[x as usize];
         if *slot == NONE || g == NONE {
             *slot = h as u32;
         }
     }
-    vh
+    Ok(vh)
 }
 
 /// Is `h` the canonical half-edge of its edge (`O[h] == NONE || h < O[h]`)?
@@ -25,14 +26,13 @@ pub(crate) fn is_canonical(o: &[u32], h: usize) -> bool {
 }
 
 /// The edge-id directory of the opposites `o`: the rank over the canonical half-edges.
-pub(crate) fn edge_directory(o: &[u32]) -> RankDirectory {
+pub(crate) fn edge_directory(o: &[u32]) -> Result<RankDirectory> {
     RankDirectory::from_fn(o.len(), |h| is_canonical(o, h))
-        .expect("half-edge ids fit 32 bits, so edge counts do")
 }
 
 /// The edge id of every half-edge, as a table.
-pub(crate) fn edge_ids(o: &[u32]) -> Vec<u32> {
-    let mut ids = vec![NONE; o.len()];
+pub(crate) fn edge_ids(o: &[u32]) -> Result<Vec<u32>> {
+    let mut ids = crate::util::alloc::try_vec(o.len(), NONE, "the edge ids")?;
     let mut next_id = 0u32;
     for h in 0..o.len() {
         let g = o[h];
@@ -44,5 +44,5 @@ pub(crate) fn edge_ids(o: &[u32]) -> Vec<u32> {
             next_id += 1;
         }
     }
-    ids
+    Ok(ids)
 }

@@ -90,7 +90,7 @@ pub(crate) fn canonical_slots(v: &[u32], o: &[u32]) -> RankBits {
         };
         set(&mut canonical, slot_of(c));
     }
-    RankBits::from_fn(n_slots, |i| test(&canonical, i as u64))
+    RankBits::from_fn(n_slots, |i| test(&canonical, i as u64)).unwrap()
 }
 
 /// The canonical slot of the fan of `he`, found by walking until a slot marked in `bits`.
@@ -148,7 +148,8 @@ pub(crate) struct EdgeCensus {
 /// input vertex, each bucket sorted), then by structure pair.
 pub(crate) fn census(
     v: &[u32], bits: &RankBits, n_input: usize, origin: impl Fn(u32) -> u32,
-) -> EdgeCensus {
+) -> crate::error::Result<EdgeCensus> {
+    use crate::util::alloc::{try_push, try_to_vec, try_vec};
     let ends = |s: u64| {
         let [p, q] = crate::chf::ids::EDGE[(s % 6) as usize];
         let base = 4 * (s / 6) as usize;
@@ -161,7 +162,7 @@ pub(crate) fn census(
         (x.min(y), x.max(y))
     };
     let n_slots = 6 * (v.len() / 4);
-    let mut start = vec![0u32; n_input + 1];
+    let mut start = try_vec(n_input + 1, 0u32, "the edge census")?;
     let canonical = || (0..n_slots as u64).filter(|&s| bits.get(s as usize));
     for s in canonical() {
         start[input_ends(s).0 as usize + 1] += 1;
@@ -169,8 +170,8 @@ pub(crate) fn census(
     for i in 0..n_input {
         start[i + 1] += start[i];
     }
-    let mut fill = start.clone();
-    let mut slots: Vec<u64> = crate::util::pages::zeroed(bits.ones());
+    let mut fill = try_to_vec(&start, "the edge census")?;
+    let mut slots: Vec<u64> = crate::util::pages::zeroed(bits.ones(), "the edge census")?;
     for s in canonical() {
         let f = &mut fill[input_ends(s).0 as usize];
         slots[*f as usize] = s;
@@ -198,11 +199,12 @@ pub(crate) fn census(
                 if same.len() > 1 {
                     kept = true;
                     let (a, b) = ends(same[0]);
-                    out.multi_fan.push(MultiFan {
+                    let fan = MultiFan {
                         a,
                         b,
                         first_slot: same[0],
-                    });
+                    };
+                    try_push(&mut out.multi_fan, fan, "the multi-fan edges")?;
                 }
             }
             if kept {
@@ -212,5 +214,5 @@ pub(crate) fn census(
         }
     }
     out.multi_fan.sort_unstable();
-    out
+    Ok(out)
 }

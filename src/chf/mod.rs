@@ -46,7 +46,7 @@ mod star_pass;
 
 pub use crate::Ids;
 pub use crate::util::options::MAX_UNUSED_VERTICES;
-pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA, check_counts};
+pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA, check_counts, estimated_build_bytes};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use query::{Csr, EdgeIds, Memory, STAR_INLINE, Summary, VertexIds};
 
@@ -189,11 +189,11 @@ impl Chf {
             return Ok(());
         }
         if self.level < 1 && level >= 1 {
-            self.o = self.opposites_by_rule();
+            self.o = self.try_opposites_by_rule()?;
             self.level = 1;
         }
         if self.level < 2 && level >= 2 {
-            let flagged = stars::merged(&self.non_manifold, &self.seams);
+            let flagged = stars::merged(&self.non_manifold, &self.seams)?;
             let pass = stars::StarPass {
                 pairs: stars::Pairs::No,
                 tables: true,
@@ -203,13 +203,13 @@ impl Chf {
                     self.build_threads(),
                 ),
             };
-            let stars = stars::stars(&self.v, self.n_vertices, &flagged, pass);
+            let stars = stars::stars(&self.v, self.n_vertices, &flagged, pass)?;
             debug_assert!(!stars.split_needed, "the build split every vertex");
-            level2::build(self, stars.edge_bits, stars.vh);
+            level2::build(self, stars.edge_bits, stars.vh)?;
             self.level = 2;
         }
         if self.level < 3 && level >= 3 {
-            self.boundary = Some(level3::build(self, self.build_threads())?);
+            self.boundary = Some(level3::build(self, self.build_threads(), 0)?);
             self.level = 3;
         }
         Ok(())

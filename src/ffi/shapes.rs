@@ -100,7 +100,7 @@ macro_rules! csr {
                 ($crate::ffi::boundary::core($m)?, sink([($o, $oc, $no), ($i, $ic, $ni)])?)
             };
             let $s = &mut sink;
-            $rows;
+            $crate::util::alloc::Done::done($rows)?;
             sink.finish()
         })
     };
@@ -223,7 +223,12 @@ macro_rules! handle {
         impl Default for $opt {
             fn default() -> Self {
                 let d = $core_opt::default();
-                $opt { level: d.level as u32, strict: d.strict.into(), threads: d.threads as u32 }
+                $opt {
+                    level: d.level as u32,
+                    strict: d.strict.into(),
+                    threads: d.threads as u32,
+                    memory_limit_bytes: d.memory_limit_bytes,
+                }
             }
         }
 
@@ -235,7 +240,12 @@ macro_rules! handle {
 
             fn to_core(self) -> $crate::error::Result<$core_opt> {
                 let level = $crate::ffi::boundary::level_arg(self.level)?;
-                Ok($core_opt { level, strict: self.strict != 0, threads: self.threads as usize })
+                Ok($core_opt {
+                    level,
+                    strict: self.strict != 0,
+                    threads: self.threads as usize,
+                    memory_limit_bytes: self.memory_limit_bytes,
+                })
             }
         }
     };

@@ -29,11 +29,15 @@ pub enum Status {
     TooLarge = 8,
     /// An internal error (a Rust panic) was caught at the boundary. Please report it.
     Panic = 9,
+    /// Memory ran out: an allocation failed, or a build's estimate exceeded
+    /// `memory_limit_bytes`. The detail names the bytes and what they were for; the
+    /// process and every other handle are unharmed.
+    OutOfMemory = 10,
 }
 
 /// Every status in order with its description (`STATUSES[s as usize].0 == s`; the error
 /// kinds map one to one onto the statuses after `Ok`).
-pub(crate) const STATUSES: [(Status, &std::ffi::CStr); 10] = [
+pub(crate) const STATUSES: [(Status, &std::ffi::CStr); 11] = [
     (Status::Ok, c"ok"),
     (Status::NullArgument, c"null argument"),
     (Status::OutOfRange, c"out of range"),
@@ -44,6 +48,7 @@ pub(crate) const STATUSES: [(Status, &std::ffi::CStr); 10] = [
     (Status::Parse, c"parse error"),
     (Status::TooLarge, c"too large for 32-bit ids"),
     (Status::Panic, c"internal error (panic caught)"),
+    (Status::OutOfMemory, c"out of memory"),
 ];
 
 /// A static, NUL-terminated English description of `s`, a `topomesh_status` value (never

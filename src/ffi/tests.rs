@@ -129,7 +129,9 @@ fn errors_map_one_to_one() {
         NonManifold,
         BufferTooSmall,
     ];
-    let kinds = kinds.into_iter().chain([Io, Parse, TooLarge, Panic]);
+    let kinds = kinds
+        .into_iter()
+        .chain([Io, Parse, TooLarge, Panic, OutOfMemory]);
     for (i, k) in kinds.into_iter().enumerate() {
         let s = guard(|| Err(Error::new(k, format!("kind {i}"))));
         assert_eq!(s as u32, i as u32 + 1);

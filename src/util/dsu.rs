@@ -4,8 +4,9 @@
 pub(crate) struct Dsu(Vec<u32>);
 
 impl Dsu {
-    pub(crate) fn new(n: usize) -> Self {
-        Dsu((0..n as u32).collect())
+    pub(crate) fn new(n: usize) -> crate::error::Result<Self> {
+        let ids = crate::util::alloc::try_collect(0..n as u32, "the union-find")?;
+        Ok(Dsu(ids))
     }
 
     pub(crate) fn find(&mut self, mut x: u32) -> u32 {
@@ -37,9 +38,9 @@ impl Dsu {
 /// the `n` input vertices, and the vertices of one element are connected.
 pub(crate) fn element_components<const K: usize>(
     v: &[u32], n: usize, origin: impl Fn(u32) -> u32,
-) -> (u64, u64) {
-    let mut used = vec![false; n];
-    let mut dsu = Dsu::new(n);
+) -> crate::error::Result<(u64, u64)> {
+    let mut used = crate::util::alloc::try_vec(n, false, "the used vertices")?;
+    let mut dsu = Dsu::new(n)?;
     for element in v.chunks_exact(K) {
         let a = origin(element[0]);
         used[a as usize] = true;
@@ -51,5 +52,5 @@ pub(crate) fn element_components<const K: usize>(
     }
     let components = dsu.roots_among(&used);
     let isolated = used.iter().filter(|&&u| !u).count() as u64;
-    (components, isolated)
+    Ok((components, isolated))
 }

@@ -6,9 +6,10 @@
 /// element's input id. Gives memory back when much was dropped.
 pub(crate) fn close_holes<T: Copy>(
     v: &mut Vec<u32>, width: usize, per: &mut Vec<T>, dropped: &[u32],
-) -> Vec<u32> {
+) -> crate::error::Result<Vec<u32>> {
     let n = v.len() / width;
-    let mut origin = Vec::with_capacity(n - dropped.len());
+    let mut origin =
+        crate::util::alloc::try_with_capacity(n - dropped.len(), "the map to input elements")?;
     let mut next_dropped = dropped.iter().copied().peekable();
     for t in 0..n {
         if next_dropped.peek() == Some(&(t as u32)) {
@@ -29,7 +30,7 @@ pub(crate) fn close_holes<T: Copy>(
         // The structure keeps `v` for good.
         v.shrink_to_fit();
     }
-    origin
+    Ok(origin)
 }
 
 #[cfg(test)]
@@ -38,13 +39,13 @@ mod tests {
     fn kept_elements_move_down_in_order() {
         let mut v: Vec<u32> = (0..12).collect();
         let mut per = vec![10i8, 11, 12, 13];
-        let origin = super::close_holes(&mut v, 3, &mut per, &[0, 2]);
+        let origin = super::close_holes(&mut v, 3, &mut per, &[0, 2]).unwrap();
         assert_eq!(
             (v, per, origin),
             (vec![3, 4, 5, 9, 10, 11], vec![11, 13], vec![1, 3])
         );
         let mut v: Vec<u32> = (0..8).collect();
-        let origin = super::close_holes(&mut v, 4, &mut Vec::<i8>::new(), &[1]);
+        let origin = super::close_holes(&mut v, 4, &mut Vec::<i8>::new(), &[1]).unwrap();
         assert_eq!((v, origin), (vec![0, 1, 2, 3], vec![0]));
     }
 }

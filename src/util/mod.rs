@@ -3,6 +3,9 @@
 //! directories, union-find, small id lists, closing the holes of dropped elements, and the
 //! build reports' example lists.
 
+#[allow(dead_code)]
+pub(crate) mod alloc;
+pub(crate) mod budget;
 pub(crate) mod csr;
 pub(crate) mod dsu;
 pub(crate) mod holes;

@@ -17,6 +17,11 @@ pub struct BuildOptions {
     /// 8192 elements, are not started (see [`planned_threads`](crate::planned_threads)).
     /// The structure is the same whatever the number.
     pub threads: usize,
+    /// A memory budget for the build, in bytes (0, the default: none). The build estimates
+    /// the bytes its arrays will take at their peak from the input's sizes and refuses
+    /// with an [`ErrorKind::OutOfMemory`](crate::ErrorKind::OutOfMemory) error, before
+    /// allocating, when the estimate exceeds it.
+    pub memory_limit_bytes: u64,
 }
 
 impl Default for BuildOptions {
@@ -25,6 +30,7 @@ impl Default for BuildOptions {
             level: 2,
             strict: false,
             threads: 0,
+            memory_limit_bytes: 0,
         }
     }
 }

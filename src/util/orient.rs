@@ -5,6 +5,8 @@
 //! of the input's.
 
 use crate::NONE;
+use crate::error::Result;
+use crate::util::alloc::{try_push, try_vec, try_with_capacity};
 use crate::util::push_example;
 
 /// The flips the propagation chooses, in the input numbering.
@@ -25,12 +27,13 @@ pub(crate) struct Flips {
 /// or holds the sign of each element's determinant.
 pub(crate) fn choose_flips<const K: usize>(
     partner: &[u32], same_direction: impl Fn(u32, u32) -> bool, sign: &[i8],
-) -> Flips {
+) -> Result<Flips> {
     let n = partner.len() / K;
     let mut out = Flips::default();
-    let mut flipped = vec![false; n];
-    let mut visited = vec![false; n];
-    let mut queue: Vec<u32> = Vec::new();
+    let mut flipped = try_vec(n, false, "the orientation's flips")?;
+    let mut visited = try_vec(n, false, "the orientation's marks")?;
+    // A component has at most `n` elements: the queue never grows past this.
+    let mut queue: Vec<u32> = try_with_capacity(n, "the orientation's queue")?;
     let mut walk = Walk::<K, _> {
         partner,
         same_direction,
@@ -42,7 +45,7 @@ pub(crate) fn choose_flips<const K: usize>(
         if walk.visited[root as usize] {
             continue;
         }
-        let conflict = walk.component(root, &mut queue);
+        let conflict = walk.component(root, &mut queue)?;
         out.flipped_count += settle(&queue, walk.flipped, sign);
         if conflict {
             out.non_orientable_components += 1;
@@ -50,7 +53,7 @@ pub(crate) fn choose_flips<const K: usize>(
         }
     }
     out.flipped = flipped;
-    out
+    Ok(out)
 }
 
 /// The propagation's state over elements of `K` halves each (half `h` of element `h / K`):
@@ -68,7 +71,7 @@ struct Walk<'a, const K: usize, S> {
 impl<const K: usize, S: Fn(u32, u32) -> bool> Walk<'_, K, S> {
     /// Visits the component of `root` breadth first into `queue`, flipping each element to
     /// agree with the one it is reached from; true when some pair disagrees anyway.
-    fn component(&mut self, root: u32, queue: &mut Vec<u32>) -> bool {
+    fn component(&mut self, root: u32, queue: &mut Vec<u32>) -> Result<bool> {
         self.visited[root as usize] = true;
         queue.clear();
         queue.push(root);
@@ -92,12 +95,12 @@ impl<const K: usize, S: Fn(u32, u32) -> bool> Walk<'_, K, S> {
                     queue.push(t2);
                 } else if self.flipped[t2 as usize] != want && h < g {
                     conflict = true;
-                    self.seam_pairs.push(h);
-                    self.seam_pairs.push(g);
+                    try_push(self.seam_pairs, h, "the seams")?;
+                    try_push(self.seam_pairs, g, "the seams")?;
                 }
             }
         }
-        conflict
+        Ok(conflict)
     }
 }
 

@@ -10,15 +10,17 @@ pub(crate) struct OriginMap(Vec<u32>);
 impl OriginMap {
     /// The vertex map after a split: the input vertices map to themselves, and copy
     /// `n_vertices + i` to `copies[i]`; the identity when nothing was copied.
-    pub(crate) fn with_copies(n_vertices: usize, copies: &[u32]) -> OriginMap {
+    pub(crate) fn with_copies(
+        n_vertices: usize, copies: &[u32],
+    ) -> crate::error::Result<OriginMap> {
         if copies.is_empty() {
-            OriginMap::default()
+            Ok(OriginMap::default())
         } else {
-            OriginMap(
-                (0..n_vertices as u32)
-                    .chain(copies.iter().copied())
-                    .collect(),
-            )
+            let ids = (0..n_vertices as u32).chain(copies.iter().copied());
+            Ok(OriginMap(crate::util::alloc::try_collect(
+                ids,
+                "the vertex origins",
+            )?))
         }
     }
 

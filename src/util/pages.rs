@@ -11,27 +11,37 @@ const MIN_BYTES: usize = 8 << 20;
 #[cfg(target_os = "linux")]
 const HUGE_PAGE: usize = 2 << 20;
 
-/// An empty vector with room for `capacity` elements.
-pub(crate) fn with_capacity<T>(capacity: usize) -> Vec<T> {
-    let v = Vec::with_capacity(capacity);
+use super::alloc;
+use crate::error::Result;
+
+/// An empty vector with room for `capacity` elements (`what` names it if memory runs
+/// out, as for every helper here).
+pub(crate) fn with_capacity<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
+    let v = alloc::try_with_capacity(capacity, what)?;
     advise(&v);
-    v
+    Ok(v)
 }
 
 /// `vec![value; len]`, on huge pages where possible.
-pub(crate) fn filled<T: Clone>(len: usize, value: T) -> Vec<T> {
-    let mut v = with_capacity(len);
+pub(crate) fn filled<T: Clone>(len: usize, value: T, what: &str) -> Result<Vec<T>> {
+    let mut v = with_capacity(len, what)?;
     v.resize(len, value);
-    v
+    Ok(v)
 }
 
-/// `vec![0; len]`: fresh pages that the kernel zeroes, not written by us before use.
-pub(crate) fn zeroed<T: Copy + Default>(len: usize) -> Vec<T> {
-    // `vec!` of a zero integer allocates zeroed memory without writing it, so the advice
-    // still comes before the first touch.
-    let v = vec![T::default(); len];
-    advise(&v);
-    v
+/// `vec![0; len]`, on huge pages where possible.
+pub(crate) fn zeroed<T: Copy + Default>(len: usize, what: &str) -> Result<Vec<T>> {
+    // `vec!` would ask the allocator for zeroed memory, unwritten until first use, but it
+    // aborts when memory runs out; a fallible zeroed allocation needs `unsafe`, which
+    // stays in the C skin. So the zeroes are written, after the advice.
+    filled(len, T::default(), what)
+}
+
+/// `len` values of `f()`, for element types without `Clone` (atomics), on huge pages.
+pub(crate) fn from_fn<T>(len: usize, f: impl FnMut() -> T, what: &str) -> Result<Vec<T>> {
+    let mut v = with_capacity(len, what)?;
+    v.extend(std::iter::repeat_with(f).take(len));
+    Ok(v)
 }
 
 #[cfg(target_os = "linux")]
@@ -63,13 +73,19 @@ mod tests {
     #[test]
     fn arrays_hold_what_was_asked() {
         for len in [0usize, 1, 1000, (9 << 20) / 4 + 3] {
-            let v = super::filled(len, 7u32);
+            let v = super::filled(len, 7u32, "v").unwrap();
             assert_eq!(v.len(), len);
             assert!(v.iter().all(|&x| x == 7));
-            let w: Vec<u64> = super::with_capacity(len);
+            let w: Vec<u64> = super::with_capacity(len, "w").unwrap();
             assert!(w.is_empty() && w.capacity() >= len);
-            let z: Vec<u64> = super::zeroed(len);
+            let z: Vec<u64> = super::zeroed(len, "z").unwrap();
             assert!(z.len() == len && z.iter().all(|&x| x == 0));
+            let a = super::from_fn(len, || std::sync::atomic::AtomicU32::new(3), "a").unwrap();
+            assert!(
+                a.len() == len
+                    && a.iter()
+                        .all(|x| x.load(std::sync::atomic::Ordering::Relaxed) == 3)
+            );
         }
     }
 }

@@ -2,6 +2,9 @@
 //! 1.5 bits per element. Used for edge ids (rank over canonical half-edges) and boundary
 //! curve lookup (rank over boundary half-edges) without a full per-element map.
 
+use crate::error::Result;
+use crate::util::alloc::{try_reserve, try_with_capacity};
+
 #[derive(Clone, Debug, Default)]
 pub struct RankBits {
     words: Vec<u64>,
@@ -10,10 +13,10 @@ pub struct RankBits {
 }
 
 impl RankBits {
-    pub fn from_fn(len: usize, mut bit: impl FnMut(usize) -> bool) -> Self {
+    pub fn from_fn(len: usize, mut bit: impl FnMut(usize) -> bool) -> Result<Self> {
         let n_words = len.div_ceil(64);
-        let mut words = Vec::with_capacity(n_words);
-        let mut before = Vec::with_capacity(n_words);
+        let mut words = try_with_capacity(n_words, "a rank directory")?;
+        let mut before = try_with_capacity(n_words, "a rank directory")?;
         let mut ones = 0usize;
         for w in 0..n_words {
             let base = w * 64;
@@ -26,34 +29,36 @@ impl RankBits {
             ones += word.count_ones() as usize;
             words.push(word);
         }
-        RankBits {
+        Ok(RankBits {
             words,
             before,
             ones,
-        }
+        })
     }
 
     /// From `len` bits packed in words (bit `i` is bit `i & 63` of word `i >> 6`); bits
     /// past `len` must be clear.
-    pub fn from_words(words: Vec<u64>, len: usize) -> Self {
+    pub fn from_words(words: Vec<u64>, len: usize) -> Result<Self> {
         assert_eq!(words.len(), len.div_ceil(64));
-        let mut before = Vec::with_capacity(words.len());
+        let mut before = try_with_capacity(words.len(), "a rank directory")?;
         let mut ones = 0usize;
         for w in &words {
             before.push(ones as u32);
             ones += w.count_ones() as usize;
         }
         debug_assert!(len.is_multiple_of(64) || words.last().is_none_or(|w| w >> (len % 64) == 0));
-        RankBits {
+        Ok(RankBits {
             words,
             before,
             ones,
-        }
+        })
     }
 
     /// The positions of the set bits, in increasing order, each mapped by `f`.
-    pub fn ones_map<T>(&self, out: &mut Vec<T>, f: impl Fn(usize) -> T) {
-        out.reserve(self.ones);
+    pub fn ones_map<T>(&self, out: &mut Vec<T>, f: impl Fn(usize) -> T, what: &str) -> Result<()> {
+        if out.capacity() - out.len() < self.ones {
+            try_reserve(out, self.ones, what)?;
+        }
         for (w, &word) in self.words.iter().enumerate() {
             let mut bits = word;
             while bits != 0 {
@@ -61,6 +66,7 @@ impl RankBits {
                 bits &= bits - 1;
             }
         }
+        Ok(())
     }
 
     pub fn ones(&self) -> usize {
@@ -123,11 +129,11 @@ mod tests {
     fn rank_matches_prefix_count() {
         let pattern = |i: usize| (i * 7 + i / 3) % 5 < 2;
         for len in [0usize, 1, 63, 64, 65, 200, 1000] {
-            let bits = RankBits::from_fn(len, pattern);
+            let bits = RankBits::from_fn(len, pattern).unwrap();
             let answers = (|i| bits.get(i), |i| bits.rank(i), bits.ones());
             assert_prefix_counts(len, pattern, answers);
             let words = bits.words.clone();
-            let again = RankBits::from_words(words, len);
+            let again = RankBits::from_words(words, len).unwrap();
             assert_eq!((again.before, again.ones), (bits.before.clone(), bits.ones));
         }
     }

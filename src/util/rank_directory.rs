@@ -4,6 +4,8 @@
 //! entries as they are (`che_mesh_edge_ranks`), so that a C host computes an edge id
 //! inline with the same arithmetic (`che_edge_of` in `topomesh_inline.h`).
 
+use crate::error::{Error, Result};
+
 /// Elements per entry.
 pub const SPAN: usize = 32;
 
@@ -14,9 +16,11 @@ pub struct RankDirectory {
 }
 
 impl RankDirectory {
-    /// Bit `i` is `bit(i)`, for `i < len`; `None` when more than `u32::MAX` bits are set.
-    pub fn from_fn(len: usize, mut bit: impl FnMut(usize) -> bool) -> Option<Self> {
-        let mut entries = crate::util::pages::with_capacity(len.div_ceil(SPAN));
+    /// Bit `i` is `bit(i)`, for `i < len`; an error when more than `u32::MAX` bits are set
+    /// or memory runs out.
+    pub fn from_fn(len: usize, mut bit: impl FnMut(usize) -> bool) -> Result<Self> {
+        let mut entries =
+            crate::util::pages::with_capacity(len.div_ceil(SPAN), "the edge-id directory")?;
         let mut ones = 0u32;
         for base in (0..len).step_by(SPAN) {
             let mut flags = 0u32;
@@ -24,9 +28,10 @@ impl RankDirectory {
                 flags |= u32::from(bit(i)) << (i - base);
             }
             entries.push(u64::from(ones) << 32 | u64::from(flags));
-            ones = ones.checked_add(flags.count_ones())?;
+            ones = (ones.checked_add(flags.count_ones()))
+                .ok_or_else(|| Error::too_large(format!("more than 2^32 - 1 of {len} bits set")))?;
         }
-        Some(RankDirectory {
+        Ok(RankDirectory {
             entries,
             ones: ones as usize,
         })

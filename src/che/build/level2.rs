@@ -5,19 +5,26 @@
 
 use crate::che::Che;
 use crate::che::tables::{edge_directory, vertex_half_edges};
+use crate::error::Result;
 
-pub(crate) fn build(che: &mut Che) {
-    che.vh = vertex_half_edges(che.n_vertices, &che.v, &che.o);
-    build_edges(che);
+pub(crate) fn build(che: &mut Che) -> Result<()> {
+    // Nothing is stored until every table is had: a failure leaves the structure at the
+    // level it had.
+    let vh = vertex_half_edges(che.n_vertices, &che.v, &che.o)?;
+    build_edges(che)?;
+    che.vh = vh;
+    Ok(())
 }
 
 /// Edge ids, with `VH` already in place (the build finds it while splitting vertices).
-pub(crate) fn build_edges(che: &mut Che) {
+pub(crate) fn build_edges(che: &mut Che) -> Result<()> {
     let (v, o) = (&che.v, &che.o);
-    let edge_bits = edge_directory(o);
-    let mut eh = crate::util::pages::with_capacity(edge_bits.ones());
+    let edge_bits = edge_directory(o)?;
+    let mut eh = crate::util::pages::with_capacity(edge_bits.ones(), "the edge half-edges EH")?;
+    // Exactly `ones` half-edges pass the filter: the room asked for above is enough.
     eh.extend((0..v.len() as u32).filter(|&h| edge_bits.get(h as usize)));
     debug_assert_eq!(eh.len(), che.num_edges);
     che.edge_bits = edge_bits;
     che.eh = eh;
+    Ok(())
 }

@@ -5,19 +5,21 @@
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::next;
+use crate::error::Result;
+use crate::util::alloc::{try_push, try_vec};
 use crate::util::rank::RankBits;
 
-pub(crate) fn build(che: &mut Che) {
+pub(crate) fn build(che: &mut Che) -> Result<()> {
     let (v, o, vh) = (&che.v, &che.o, &che.vh);
-    let bits = RankBits::from_fn(v.len(), |h| o[h] == NONE);
-    let mut curve_of = vec![NONE; bits.ones()];
+    let bits = RankBits::from_fn(v.len(), |h| o[h] == NONE)?;
+    let mut curve_of = try_vec(bits.ones(), NONE, "the curve of each boundary half-edge")?;
     let mut ch = Vec::new();
     for h in 0..v.len() as u32 {
         if !bits.get(h as usize) || curve_of[bits.rank(h as usize)] != NONE {
             continue;
         }
         let c = ch.len() as u32;
-        ch.push(h);
+        try_push(&mut ch, h, "the curve half-edges CH")?;
         let mut g = h;
         loop {
             curve_of[bits.rank(g as usize)] = c;
@@ -30,4 +32,5 @@ pub(crate) fn build(che: &mut Che) {
     che.boundary_bits = bits;
     che.curve_of = curve_of;
     che.ch = ch;
+    Ok(())
 }

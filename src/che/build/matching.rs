@@ -7,6 +7,7 @@ use crate::NONE;
 use crate::che::ids::{next, prev};
 use crate::che::pairs::{for_each_group_par, half_edge};
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_collect, try_extend, try_push, try_vec};
 use crate::util::extend_examples;
 use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
@@ -32,6 +33,8 @@ struct Matched {
     non_manifold: Vec<u32>,
     duplicates: Vec<[u32; 2]>,
     same_direction: bool,
+    /// The first allocation that failed; the thread then skips the rest of its pairs.
+    failed: Option<Error>,
 }
 
 /// Matches on unordered vertex pairs; the counts go into `report`. Threads take ranges of
@@ -39,12 +42,11 @@ struct Matched {
 /// conversions in and out are in place and free); the rest is added up in pair order.
 pub(crate) fn match_pairs(
     v: &[u32], n_vertices: usize, threads: usize, report: &mut BuildReport,
-) -> Matching {
-    let partner: Vec<u32> = crate::util::pages::filled(v.len(), NONE);
-    let partner: Vec<AtomicU32> = partner.into_iter().map(AtomicU32::new).collect();
+) -> Result<Matching> {
+    let partner = crate::util::pages::from_fn(v.len(), || AtomicU32::new(NONE), "the partners")?;
     // Direction bits (`V[h] < V[next(h)]`): 1 bit per half-edge stays in cache, where
     // reading `V` at both half-edges of every pair would miss it.
-    let forward = direction_bits(v);
+    let forward = direction_bits(v)?;
     let is_forward = |h: u32| (forward[(h >> 6) as usize] >> (h & 63)) & 1 == 1;
     let found = for_each_group_par(
         v,
@@ -52,6 +54,9 @@ pub(crate) fn match_pairs(
         threads,
         Matched::default,
         |m, a, b, group| {
+            if m.failed.is_some() {
+                return;
+            }
             m.input_edges += 1;
             match group.len() {
                 1 => m.boundary_edges += 1,
@@ -64,33 +69,51 @@ pub(crate) fn match_pairs(
                 _ => {
                     m.non_manifold_edges += 1;
                     push_example(&mut m.examples, [a, b]);
-                    m.non_manifold.extend(group.iter().map(|&k| half_edge(k)));
-                    // Duplicates on a non-manifold edge; paired ones are found on `O` later.
-                    duplicates_on_edge(v, group, &mut m.duplicates);
+                    m.failed = non_manifold_edge(v, group, m).err();
                 }
             }
         },
-    );
+    )?;
     let mut out = Matching {
+        // In place (the same size and alignment): no allocation.
         partner: partner.into_iter().map(AtomicU32::into_inner).collect(),
         non_manifold: Vec::new(),
         duplicates: Vec::new(),
         same_direction: false,
     };
-    for m in found {
+    for mut m in found {
+        if let Some(e) = m.failed.take() {
+            return Err(e);
+        }
         report.input_edges += m.input_edges;
         report.boundary_edges += m.boundary_edges;
         report.non_manifold_edges += m.non_manifold_edges;
         extend_examples(&mut report.non_manifold_edge_examples, m.examples);
-        out.non_manifold.extend(m.non_manifold);
-        out.duplicates.extend(m.duplicates);
+        try_extend(
+            &mut out.non_manifold,
+            m.non_manifold,
+            "the non-manifold half-edges",
+        )?;
+        try_extend(&mut out.duplicates, m.duplicates, "the duplicate triangles")?;
         out.same_direction |= m.same_direction;
     }
-    out
+    Ok(out)
 }
 
-fn direction_bits(v: &[u32]) -> Vec<u64> {
-    let mut bits = vec![0u64; v.len().div_ceil(64)];
+/// The half-edges of a non-manifold edge, and the duplicates on it (paired duplicates are
+/// found on `O` later), into the thread's lists.
+fn non_manifold_edge(v: &[u32], group: &[u64], m: &mut Matched) -> Result<()> {
+    let half_edges = group.iter().map(|&k| half_edge(k));
+    try_extend(
+        &mut m.non_manifold,
+        half_edges,
+        "the non-manifold half-edges",
+    )?;
+    duplicates_on_edge(v, group, &mut m.duplicates)
+}
+
+fn direction_bits(v: &[u32]) -> Result<Vec<u64>> {
+    let mut bits = try_vec(v.len().div_ceil(64), 0u64, "the half-edge directions")?;
     for (t, tri) in v.chunks_exact(3).enumerate() {
         let h = 3 * t;
         for (i, (a, b)) in [(tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])]
@@ -100,31 +123,30 @@ fn direction_bits(v: &[u32]) -> Vec<u64> {
             bits[(h + i) >> 6] |= ((a < b) as u64) << ((h + i) & 63);
         }
     }
-    bits
+    Ok(bits)
 }
 
 /// Pairs of triangles with the same three vertices among the half-edges of one
 /// non-manifold vertex pair (such a pair is seen on each of its non-manifold pairs:
 /// deduplicated by the caller).
-fn duplicates_on_edge(v: &[u32], group: &[u64], out: &mut Vec<[u32; 2]>) {
+fn duplicates_on_edge(v: &[u32], group: &[u64], out: &mut Vec<[u32; 2]>) -> Result<()> {
     let third = |k: u64| v[prev(half_edge(k)) as usize];
-    let mut by_third: Vec<(u32, u32)> = group
-        .iter()
-        .map(|&k| (third(k), half_edge(k) / 3))
-        .collect();
+    let by_third = group.iter().map(|&k| (third(k), half_edge(k) / 3));
+    let mut by_third: Vec<(u32, u32)> = try_collect(by_third, "a non-manifold edge")?;
     by_third.sort_unstable();
     for run in by_third.chunk_by(|x, y| x.0 == y.0) {
         for (i, &(_, s)) in run.iter().enumerate() {
             for &(_, t) in &run[i + 1..] {
-                out.push([s.min(t), s.max(t)]);
+                try_push(out, [s.min(t), s.max(t)], "the duplicate triangles")?;
             }
         }
     }
+    Ok(())
 }
 
 /// Two triangles with the same three vertices whose edges are all paired to each other
 /// (a closed "pillow"): found with one sequential pass over `O`.
-pub(crate) fn count_pillows(o: &[u32], out: &mut Vec<[u32; 2]>) {
+pub(crate) fn count_pillows(o: &[u32], out: &mut Vec<[u32; 2]>) -> Result<()> {
     for (t, opp) in o.chunks_exact(3).enumerate() {
         let other = opp[0] / 3;
         if opp[0] != NONE
@@ -134,9 +156,10 @@ pub(crate) fn count_pillows(o: &[u32], out: &mut Vec<[u32; 2]>) {
             && opp[2] / 3 == other
             && other > t as u32
         {
-            out.push([t as u32, other]);
+            try_push(out, [t as u32, other], "the duplicate triangles")?;
         }
     }
+    Ok(())
 }
 
 /// Strict mode: the first non-manifold edge, with the input triangles on it, as an error.

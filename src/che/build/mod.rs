@@ -3,6 +3,7 @@
 //! split, then (5) the requested level. Every step but the last works on flat arrays; the
 //! `Che` is assembled at level 1 and raised or lowered to the level asked for.
 
+mod budget;
 mod level2;
 mod level3;
 mod matching;
@@ -12,12 +13,14 @@ mod report;
 mod soup;
 mod split;
 
+pub use budget::estimated_build_bytes;
 pub use options::{BuildOptions, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts};
 pub use report::BuildReport;
 
 use super::Che;
 use crate::NONE;
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_reserve, try_to_vec};
 use crate::util::options::check_input;
 use crate::util::origin::OriginMap;
 use crate::util::rank::RankBits;
@@ -38,6 +41,19 @@ pub(crate) fn build(
     )?;
     let (non_finite_vertices, non_finite_vertex_examples) =
         crate::util::non_finite_vertices(positions);
+    let estimate = budget::estimated_build_bytes(
+        triangles.len(),
+        n_vertices,
+        !positions.is_empty(),
+        options.level,
+    );
+    crate::util::budget::check(&options, estimate, || {
+        format!(
+            "a CHE build of {} triangles at level {}",
+            triangles.len(),
+            options.level
+        )
+    })?;
     let mut report = BuildReport {
         input_triangles: triangles.len(),
         input_vertices: n_vertices,
@@ -49,16 +65,16 @@ pub(crate) fn build(
     let (mut v, triangle_origin) = soup::soup(triangles, n_vertices, &mut report, threads)?;
     let triangle_origin = OriginMap::from(triangle_origin);
     let origin_of = |t: u32| triangle_origin.get(t);
-    let mut matching = matching::match_pairs(&v, n_vertices, threads, &mut report);
+    let mut matching = matching::match_pairs(&v, n_vertices, threads, &mut report)?;
     if options.strict {
         matching::reject_non_manifold_edges(&report, &v, &matching.non_manifold, origin_of)?;
     }
-    let (o, seams) = orient_step(&mut v, &mut matching, &mut report, origin_of);
+    let (o, seams) = orient_step(&mut v, &mut matching, &mut report, origin_of)?;
     let mut non_manifold = std::mem::take(&mut matching.non_manifold);
     non_manifold.sort_unstable();
-    duplicates_step(&o, matching.duplicates, &mut report, origin_of);
+    duplicates_step(&o, matching.duplicates, &mut report, origin_of)?;
     reject_if_strict(&report, options.strict)?;
-    let mut split = split::split(&mut v, &o, n_vertices, &seams, threads);
+    let mut split = split::split(&mut v, &o, n_vertices, &seams, threads)?;
     split_step(&mut split, &mut report, options.strict)?;
     let vh = std::mem::take(&mut split.vh);
     let canonical = Canonical {
@@ -68,8 +84,8 @@ pub(crate) fn build(
         non_manifold,
         triangle_origin,
     };
-    let mut che = assemble(canonical, &split.copies, n_vertices, positions, report);
-    finish_level(&mut che, options.level, vh);
+    let mut che = assemble(canonical, &split.copies, n_vertices, positions, report)?;
+    finish_level(&mut che, options.level, vh)?;
     Ok(che)
 }
 
@@ -79,12 +95,12 @@ pub(crate) fn build(
 fn orient_step(
     v: &mut [u32], matching: &mut matching::Matching, report: &mut BuildReport,
     origin_of: impl Fn(u32) -> u32,
-) -> (Vec<u32>, Vec<u32>) {
+) -> Result<(Vec<u32>, Vec<u32>)> {
     let partner = std::mem::take(&mut matching.partner);
     if !matching.same_direction {
-        return (partner, Vec::new());
+        return Ok((partner, Vec::new()));
     }
-    let oriented = orient::orient(v, &partner);
+    let oriented = orient::orient(v, &partner)?;
     drop(partner);
     let flips = &oriented.flips;
     report.flipped_triangles = flips.flipped_count;
@@ -100,7 +116,7 @@ fn orient_step(
             *h = orient::flipped_id(*h);
         }
     }
-    (oriented.o, oriented.seams)
+    Ok((oriented.o, oriented.seams))
 }
 
 /// Duplicate triangles: those seen on non-manifold edges plus the closed pillows on `O`,
@@ -108,14 +124,15 @@ fn orient_step(
 fn duplicates_step(
     o: &[u32], mut duplicates: Vec<[u32; 2]>, report: &mut BuildReport,
     origin_of: impl Fn(u32) -> u32,
-) {
-    matching::count_pillows(o, &mut duplicates);
+) -> Result<()> {
+    matching::count_pillows(o, &mut duplicates)?;
     duplicates.sort_unstable();
     duplicates.dedup();
     report.duplicate_triangles = duplicates.len();
     for &[s, t] in &duplicates {
         push_example(&mut report.duplicate_examples, [origin_of(s), origin_of(t)]);
     }
+    Ok(())
 }
 
 /// Strict mode: duplicate triangles are an error.
@@ -156,10 +173,11 @@ struct Canonical {
 /// The structure at level 1, with the vertex copies of the split appended.
 fn assemble(
     c: Canonical, copies: &[u32], n_vertices: usize, positions: &[DVec3], report: BuildReport,
-) -> Che {
-    let vertex_origin = OriginMap::with_copies(n_vertices, copies);
-    let mut positions = positions.to_vec();
+) -> Result<Che> {
+    let vertex_origin = OriginMap::with_copies(n_vertices, copies)?;
+    let mut positions = try_to_vec(positions, "the positions")?;
     if !positions.is_empty() {
+        try_reserve(&mut positions, copies.len(), "the positions")?;
         for &x in copies {
             positions.push(positions[x as usize]);
         }
@@ -169,7 +187,7 @@ fn assemble(
             .enumerate()
             .filter(|&(h, &g)| g == NONE || (h as u32) < g)
             .count();
-    Che {
+    Ok(Che {
         level: 1,
         n_input_vertices: n_vertices,
         n_vertices: n_vertices + copies.len(),
@@ -189,24 +207,25 @@ fn assemble(
         non_manifold: c.non_manifold,
         seams: c.seams,
         report,
-    }
+    })
 }
 
 /// Step 5 on a fresh build: `vh` is the split's (the same `VH` level 2 would compute).
-fn finish_level(che: &mut Che, level: u8, vh: Vec<u32>) {
+fn finish_level(che: &mut Che, level: u8, vh: Vec<u32>) -> Result<()> {
     if level == 0 {
         che.o = Vec::new();
         che.level = 0;
     }
     if level >= 2 {
         che.vh = vh;
-        level2::build_edges(che);
+        level2::build_edges(che)?;
         che.level = 2;
     }
     if level >= 3 {
-        level3::build(che);
+        level3::build(che)?;
         che.level = 3;
     }
+    Ok(())
 }
 
 /// Raises or lowers the level of a built structure in place (ids do not change).
@@ -231,15 +250,15 @@ pub(crate) fn change_level(che: &mut Che, level: u8) -> Result<()> {
         return Ok(());
     }
     if che.level < 1 && level >= 1 {
-        che.o = super::pairs::opposites_by_rule(&che.v, che.n_vertices, &che.non_manifold);
+        che.o = super::pairs::opposites_by_rule(&che.v, che.n_vertices, &che.non_manifold)?;
         che.level = 1;
     }
     if che.level < 2 && level >= 2 {
-        level2::build(che);
+        level2::build(che)?;
         che.level = 2;
     }
     if che.level < 3 && level >= 3 {
-        level3::build(che);
+        level3::build(che)?;
         che.level = 3;
     }
     Ok(())

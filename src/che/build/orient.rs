@@ -4,6 +4,8 @@
 
 use crate::NONE;
 use crate::che::ids::{first, tri};
+use crate::error::Result;
+use crate::util::alloc::{try_collect, try_vec};
 use crate::util::orient::{Flips, choose_flips};
 
 pub(crate) struct Oriented {
@@ -25,21 +27,23 @@ pub(crate) fn flipped_id(h: u32) -> u32 {
 
 /// `partner[h]` is the other half-edge on `h`'s vertex pair when there are exactly two (in
 /// either direction), else `NONE`. Flips `v` in place and returns the opposites.
-pub(crate) fn orient(v: &mut [u32], partner: &[u32]) -> Oriented {
+pub(crate) fn orient(v: &mut [u32], partner: &[u32]) -> Result<Oriented> {
     // Partners on one vertex pair run the same way when they start at the same vertex.
-    let flips = choose_flips::<3>(partner, |h, g| v[h as usize] == v[g as usize], &[]);
+    let flips = choose_flips::<3>(partner, |h, g| v[h as usize] == v[g as usize], &[])?;
     for (t, &f) in flips.flipped.iter().enumerate() {
         if f {
             v.swap(3 * t + 1, 3 * t + 2);
         }
     }
-    let (o, seams) = renumber_pairs(partner, &flips.flipped, &flips.seam_pairs);
-    Oriented { o, seams, flips }
+    let (o, seams) = renumber_pairs(partner, &flips.flipped, &flips.seam_pairs)?;
+    Ok(Oriented { o, seams, flips })
 }
 
 /// The opposites and the sorted seams in the flipped numbering: every partner pair but
 /// the seams.
-fn renumber_pairs(partner: &[u32], flipped: &[bool], seam_pairs: &[u32]) -> (Vec<u32>, Vec<u32>) {
+fn renumber_pairs(
+    partner: &[u32], flipped: &[bool], seam_pairs: &[u32],
+) -> Result<(Vec<u32>, Vec<u32>)> {
     let renumber = |h: u32| {
         if flipped[tri(h) as usize] {
             flipped_id(h)
@@ -49,19 +53,19 @@ fn renumber_pairs(partner: &[u32], flipped: &[bool], seam_pairs: &[u32]) -> (Vec
     };
     let mut is_seam = vec![false; 0];
     if !seam_pairs.is_empty() {
-        is_seam = vec![false; partner.len()];
+        is_seam = try_vec(partner.len(), false, "the seam marks")?;
         for &h in seam_pairs {
             is_seam[h as usize] = true;
         }
     }
-    let mut o = crate::util::pages::filled(partner.len(), NONE);
+    let mut o = crate::util::pages::filled(partner.len(), NONE, "the opposites O (level 1)")?;
     for h in 0..partner.len() as u32 {
         let g = partner[h as usize];
         if g != NONE && (is_seam.is_empty() || !is_seam[h as usize]) {
             o[renumber(h) as usize] = renumber(g);
         }
     }
-    let mut seams: Vec<u32> = seam_pairs.iter().map(|&h| renumber(h)).collect();
+    let mut seams = try_collect(seam_pairs.iter().map(|&h| renumber(h)), "the seams")?;
     seams.sort_unstable();
-    (o, seams)
+    Ok((o, seams))
 }

@@ -4,6 +4,7 @@
 
 use super::report::BuildReport;
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_extend, try_push};
 
 /// `V` and the map from structure triangle to input triangle (empty: the identity).
 pub(crate) fn soup(
@@ -11,7 +12,7 @@ pub(crate) fn soup(
 ) -> Result<(Vec<u32>, Vec<u32>)> {
     let n = triangles.len();
     let chunk = n.div_ceil(threads.max(1)).max(1);
-    let mut v: Vec<u32> = crate::util::pages::zeroed(3 * n);
+    let mut v: Vec<u32> = crate::util::pages::zeroed(3 * n, "the triangle vertices V")?;
     let jobs: Vec<_> = triangles
         .chunks(chunk)
         .zip(v.chunks_mut(3 * chunk))
@@ -24,12 +25,12 @@ pub(crate) fn soup(
         let run = r?;
         report.dropped_degenerate += run.len();
         crate::util::extend_examples(&mut report.degenerate_examples, run.iter().copied());
-        dropped.extend(run);
+        try_extend(&mut dropped, run, "the dropped triangles")?;
     }
     let origin = if dropped.is_empty() {
         Vec::new()
     } else {
-        crate::util::holes::close_holes(&mut v, 3, &mut Vec::<u8>::new(), &dropped)
+        crate::util::holes::close_holes(&mut v, 3, &mut Vec::<u8>::new(), &dropped)?
     };
     Ok((v, origin))
 }
@@ -48,7 +49,7 @@ fn run(t0: usize, tris: &[[u32; 3]], v: &mut [u32], n_vertices: usize) -> Result
         }
         let [a, b, c] = *tri;
         if a == b || b == c || a == c {
-            dropped.push(t as u32);
+            try_push(&mut dropped, t as u32, "the dropped triangles")?;
             continue;
         }
         q.copy_from_slice(tri);

@@ -5,6 +5,8 @@
 use super::report::push_example;
 use crate::NONE;
 use crate::che::ids::{next, prev};
+use crate::error::Result;
+use crate::util::alloc::{try_collect, try_push, try_to_vec, try_vec, try_with_capacity};
 use crate::util::dsu::Dsu;
 
 fn test(bits: &[u64], i: u32) -> bool {
@@ -53,9 +55,11 @@ fn walk_fan(o: &[u32], h: u32, visit: &mut impl FnMut(u32)) -> (u32, u32) {
 /// dependent chains of random `O` loads, so `LANES` of them advance in step: their cache
 /// misses overlap instead of queueing.
 /// The walks share out among up to `threads` threads, each over a range of vertices.
-fn single_fans(v: &[u32], o: &[u32], n_vertices: usize, threads: usize) -> (Vec<u32>, Vec<u32>) {
-    let mut vh = crate::util::pages::filled(n_vertices, NONE);
-    let mut degree: Vec<u32> = crate::util::pages::zeroed(n_vertices);
+fn single_fans(
+    v: &[u32], o: &[u32], n_vertices: usize, threads: usize,
+) -> Result<(Vec<u32>, Vec<u32>)> {
+    let mut vh = crate::util::pages::filled(n_vertices, NONE, "the vertex half-edges VH")?;
+    let mut degree: Vec<u32> = crate::util::pages::zeroed(n_vertices, "the vertex degrees")?;
     for h in (0..v.len() as u32).rev() {
         let x = v[h as usize] as usize;
         vh[x] = h;
@@ -71,14 +75,15 @@ fn single_fans(v: &[u32], o: &[u32], n_vertices: usize, threads: usize) -> (Vec<
     let found = crate::util::par::run_all(jobs, |(first, vh, degree)| {
         single_fans_of(o, first, vh, degree)
     });
-    let mut several: Vec<u32> = found.concat();
+    let found = found.into_iter().collect::<Result<Vec<_>>>()?;
+    let mut several = try_collect(found.into_iter().flatten(), "the non-manifold vertices")?;
     several.sort_unstable();
-    (vh, several)
+    Ok((vh, several))
 }
 
 /// [`single_fans`] for the vertices from `first` on (`vh` and `degree` are theirs): sets
 /// their `VH` and returns those with several fans.
-fn single_fans_of(o: &[u32], first: usize, vh: &mut [u32], degree: &[u32]) -> Vec<u32> {
+fn single_fans_of(o: &[u32], first: usize, vh: &mut [u32], degree: &[u32]) -> Result<Vec<u32>> {
     const LANES: usize = 8;
     let n_vertices = vh.len();
     let mut several = Vec::new();
@@ -114,9 +119,13 @@ fn single_fans_of(o: &[u32], first: usize, vh: &mut [u32], degree: &[u32]) -> Ve
         }
         for (&vertex, l) in vertices[..n].iter().zip(&lane[..n]) {
             if l.2 == NONE {
-                open.push(vertex);
+                try_push(&mut open, vertex, "the boundary vertices")?;
             } else if l.2 != degree[vertex as usize] {
-                several.push(first as u32 + vertex);
+                try_push(
+                    &mut several,
+                    first as u32 + vertex,
+                    "the non-manifold vertices",
+                )?;
             }
         }
     }
@@ -126,10 +135,10 @@ fn single_fans_of(o: &[u32], first: usize, vh: &mut [u32], degree: &[u32]) -> Ve
         if count == degree[x as usize] {
             vh[x as usize] = start;
         } else {
-            several.push(first as u32 + x);
+            try_push(&mut several, first as u32 + x, "the non-manifold vertices")?;
         }
     }
-    several
+    Ok(several)
 }
 
 pub(crate) struct Split {
@@ -153,25 +162,25 @@ pub(crate) struct Split {
 /// over every one of their half-edges, in half-edge order, which numbers the copies.
 pub(crate) fn split(
     v: &mut [u32], o: &[u32], n_vertices: usize, seams: &[u32], threads: usize,
-) -> Split {
-    let (mut vh, several) = single_fans(v, o, n_vertices, threads);
+) -> Result<Split> {
+    let (mut vh, several) = single_fans(v, o, n_vertices, threads)?;
     let mut copies: Vec<u32> = Vec::new();
     if !several.is_empty() {
-        let mut pending = vec![0u64; n_vertices.div_ceil(64)];
+        let mut pending = try_vec(n_vertices.div_ceil(64), 0u64, "the split's vertex marks")?;
         for &x in &several {
             pending[(x >> 6) as usize] |= 1 << (x & 63);
             vh[x as usize] = NONE;
         }
         let is_pending = |x: u32| (pending[(x >> 6) as usize] >> (x & 63)) & 1 == 1;
-        let mut visited = vec![0u64; v.len().div_ceil(64)];
+        let mut visited = try_vec(v.len().div_ceil(64), 0u64, "the split's half-edge marks")?;
         for h in 0..v.len() as u32 {
             let vertex = v[h as usize];
             if (vertex as usize) >= n_vertices || !is_pending(vertex) || test(&visited, h) {
                 continue;
             }
             let id = if vh[vertex as usize] != NONE {
-                copies.push(vertex);
-                vh.push(NONE);
+                try_push(&mut copies, vertex, "the vertex copies")?;
+                try_push(&mut vh, NONE, "the vertex half-edges VH")?;
                 (n_vertices + copies.len() - 1) as u32
             } else {
                 vertex
@@ -183,13 +192,13 @@ pub(crate) fn split(
             vh[id as usize] = walk_fan(o, h, &mut fan).0;
         }
     }
-    let mut split_origins: Vec<u32> = copies.clone();
+    let mut split_origins = try_to_vec(&copies, "the split vertices")?;
     split_origins.sort_unstable();
     split_origins.dedup();
     let non_manifold = if seams.is_empty() || split_origins.is_empty() {
-        vec![true; split_origins.len()]
+        try_vec(split_origins.len(), true, "the split vertices")?
     } else {
-        still_split(v, n_vertices, &copies, &split_origins, seams)
+        still_split(v, n_vertices, &copies, &split_origins, seams)?
     };
     let mut split_examples = Vec::new();
     for (&x, _) in split_origins
@@ -200,24 +209,24 @@ pub(crate) fn split(
         push_example(&mut split_examples, x);
     }
     let split_vertices = non_manifold.iter().filter(|&&nm| nm).count();
-    Split {
+    Ok(Split {
         split_vertices,
         seam_split_vertices: split_origins.len() - split_vertices,
         split_examples,
         copies,
         vh,
-    }
+    })
 }
 
 /// Joins the fans of each vertex that a seam pair connects; a split vertex whose fans all
 /// join was manifold in the input. Returns, per split origin, whether it is non-manifold.
 fn still_split(
     v: &[u32], n_vertices: usize, copies: &[u32], split_origins: &[u32], seams: &[u32],
-) -> Vec<bool> {
+) -> Result<Vec<bool>> {
     let n = n_vertices + copies.len();
-    let mut dsu = Dsu::new(n);
+    let mut dsu = Dsu::new(n)?;
     // Seams come in pairs (h, g) of half-edges on one vertex pair running the same way.
-    let mut by_pair: Vec<(u32, u32, u32)> = Vec::with_capacity(seams.len());
+    let mut by_pair: Vec<(u32, u32, u32)> = try_with_capacity(seams.len(), "the seams")?;
     let origin = |x: u32| {
         if (x as usize) < n_vertices {
             x
@@ -235,8 +244,8 @@ fn still_split(
             dsu.union(v[next(h) as usize], v[next(g) as usize]);
         }
     }
-    let mut root_of_origin = vec![NONE; split_origins.len()];
-    let mut apart = vec![false; split_origins.len()];
+    let mut root_of_origin = try_vec(split_origins.len(), NONE, "the split vertices")?;
+    let mut apart = try_vec(split_origins.len(), false, "the split vertices")?;
     for x in split_origins
         .iter()
         .copied()
@@ -251,5 +260,5 @@ fn still_split(
             apart[k] = true;
         }
     }
-    apart
+    Ok(apart)
 }

@@ -8,6 +8,8 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::tri;
 use crate::che::tables::{edge_ids, vertex_half_edges};
+use crate::error::{Error, Result};
+use crate::util::alloc::{try_collect, try_push, try_with_capacity};
 use std::borrow::Cow;
 
 /// A relation for every element: element `i` has `indices[offsets[i]..offsets[i + 1]]`.
@@ -18,18 +20,39 @@ impl Csr {
     pub fn get(&self, i: usize) -> &[u32] {
         self.row(i)
     }
+}
 
-    fn with_capacity(rows: usize, indices: usize) -> Self {
-        Csr {
-            offsets: Vec::with_capacity(rows + 1),
-            indices: Vec::with_capacity(indices),
+/// A [`Csr`] being filled by a sweep: its growth past the first room is fallible, and the
+/// first failure is kept (a [`Rows`] receiver has no error to return) and ends the fill.
+struct Filling {
+    csr: Csr,
+    failed: Option<Error>,
+}
+
+impl Filling {
+    fn with_capacity(rows: usize, indices: usize) -> Result<Self> {
+        let csr = Csr {
+            offsets: try_with_capacity(rows + 1, "the CSR offsets")?,
+            indices: try_with_capacity(indices, "the CSR indices")?,
+        };
+        Ok(Filling { csr, failed: None })
+    }
+
+    fn keep(&mut self, r: Result<()>) {
+        if let (Err(e), None) = (r, &self.failed) {
+            self.failed = Some(e);
         }
     }
 
     /// Closes the last row.
-    fn finish(mut self) -> Self {
-        self.offsets.push(self.indices.len());
-        self
+    fn finish(mut self) -> Result<Csr> {
+        let end = self.csr.indices.len();
+        let r = try_push(&mut self.csr.offsets, end, "the CSR offsets");
+        self.keep(r);
+        match self.failed {
+            Some(e) => Err(e),
+            None => Ok(self.csr),
+        }
     }
 }
 
@@ -43,17 +66,24 @@ pub(crate) trait Rows: Push {
     fn row(&mut self);
 }
 
-impl Push for Csr {
+impl Push for Filling {
     #[inline]
     fn push(&mut self, x: u32) {
-        self.indices.push(x);
+        if self.failed.is_none() {
+            let r = try_push(&mut self.csr.indices, x, "the CSR indices");
+            self.keep(r);
+        }
     }
 }
 
-impl Rows for Csr {
+impl Rows for Filling {
     #[inline]
     fn row(&mut self) {
-        self.offsets.push(self.indices.len());
+        if self.failed.is_none() {
+            let end = self.csr.indices.len();
+            let r = try_push(&mut self.csr.offsets, end, "the CSR offsets");
+            self.keep(r);
+        }
     }
 }
 
@@ -64,13 +94,13 @@ struct Tables<'a> {
 }
 
 impl Che {
-    fn sweep_tables(&self) -> Tables<'_> {
-        let o = self.opposites_or_computed();
+    fn sweep_tables(&self) -> Result<Tables<'_>> {
+        let o = self.try_opposites_or_computed()?;
         let vh = match self.vertex_half_edges() {
             Some(vh) => Cow::Borrowed(vh),
-            None => Cow::Owned(vertex_half_edges(self.n_vertices, &self.v, &o)),
+            None => Cow::Owned(vertex_half_edges(self.n_vertices, &self.v, &o)?),
         };
-        Tables { o, vh }
+        Ok(Tables { o, vh })
     }
 
     /// One row per vertex: `item` of each step of its rotation.
@@ -87,9 +117,9 @@ impl Che {
         }
     }
 
-    fn star_csr(&self, fill: impl FnOnce(&Self, &mut Csr)) -> Csr {
-        let mut csr = Csr::with_capacity(self.n_vertices, self.v.len() + self.v.len() / 8);
-        fill(self, &mut csr);
+    fn star_csr(&self, fill: impl FnOnce(&Self, &mut Filling) -> Result<()>) -> Result<Csr> {
+        let mut csr = Filling::with_capacity(self.n_vertices, self.v.len() + self.v.len() / 8)?;
+        fill(self, &mut csr)?;
         csr.finish()
     }
 
@@ -131,69 +161,78 @@ impl Che {
     }
 
     /// VV rows, in the order of [`Che::vertex_vertices`].
-    pub(crate) fn vertex_vertices_rows(&self, out: &mut impl Rows) {
-        let t = self.sweep_tables();
+    pub(crate) fn vertex_vertices_rows(&self, out: &mut impl Rows) -> Result<()> {
+        let t = self.sweep_tables()?;
         let vs = &self.v[..];
         self.star_rows(&t, out, |s| Some(vv_item(vs, s)));
+        Ok(())
     }
 
     /// VE rows, in the order of [`Che::vertex_edges`].
-    pub(crate) fn vertex_edges_rows(&self, out: &mut impl Rows) {
-        let t = self.sweep_tables();
+    pub(crate) fn vertex_edges_rows(&self, out: &mut impl Rows) -> Result<()> {
+        let t = self.sweep_tables()?;
         if self.level >= 2 {
-            return self.star_rows(&t, out, |s| Some(self.ve_item(s)));
+            self.star_rows(&t, out, |s| Some(self.ve_item(s)));
+            return Ok(());
         }
-        let ids = edge_ids(&t.o);
+        let ids = edge_ids(&t.o)?;
         self.star_rows(&t, out, |s| match s {
             StarStep::Out(h) | StarStep::LastIn(h) => Some(ids[h as usize]),
         });
+        Ok(())
     }
 
     /// VF rows, in the order of [`Che::vertex_triangles`].
-    pub(crate) fn vertex_triangles_rows(&self, out: &mut impl Rows) {
-        let t = self.sweep_tables();
+    pub(crate) fn vertex_triangles_rows(&self, out: &mut impl Rows) -> Result<()> {
+        let t = self.sweep_tables()?;
         self.star_rows(&t, out, vf_item);
+        Ok(())
     }
 
     /// FF rows: 3 entries per triangle, `NONE` across boundary edges.
-    pub(crate) fn triangle_triangles_rows(&self, out: &mut impl Rows) {
-        let o = self.opposites_or_computed();
+    pub(crate) fn triangle_triangles_rows(&self, out: &mut impl Rows) -> Result<()> {
+        let o = self.try_opposites_or_computed()?;
         for (h, &g) in o.iter().enumerate() {
             if h % 3 == 0 {
                 out.row();
             }
             out.push(if g == NONE { NONE } else { tri(g) });
         }
+        Ok(())
     }
 
     /// VV for every vertex, in the order of [`Che::vertex_vertices`].
-    pub fn all_vertex_vertices(&self) -> Csr {
+    ///
+    /// An [`ErrorKind::OutOfMemory`](crate::ErrorKind::OutOfMemory) error when the rows
+    /// (or, below level 2, the tables computed for the sweep) do not fit in memory; the
+    /// same for every bulk relation.
+    pub fn all_vertex_vertices(&self) -> Result<Csr> {
         self.star_csr(|c, csr| c.vertex_vertices_rows(csr))
     }
 
     /// VE for every vertex, in the order of [`Che::vertex_edges`].
-    pub fn all_vertex_edges(&self) -> Csr {
+    pub fn all_vertex_edges(&self) -> Result<Csr> {
         self.star_csr(|c, csr| c.vertex_edges_rows(csr))
     }
 
     /// VF for every vertex, in the order of [`Che::vertex_triangles`].
-    pub fn all_vertex_triangles(&self) -> Csr {
+    pub fn all_vertex_triangles(&self) -> Result<Csr> {
         self.star_csr(|c, csr| c.vertex_triangles_rows(csr))
     }
 
     /// FF for every triangle: 3 entries each, `NONE` across boundary edges.
-    pub fn all_triangle_triangles(&self) -> Vec<u32> {
-        let o = self.opposites_or_computed();
-        o.iter()
-            .map(|&g| if g == NONE { NONE } else { tri(g) })
-            .collect()
+    pub fn all_triangle_triangles(&self) -> Result<Vec<u32>> {
+        let o = self.try_opposites_or_computed()?;
+        let ff = o.iter().map(|&g| if g == NONE { NONE } else { tri(g) });
+        try_collect(ff, "the triangle neighbours")
     }
 
     /// FE for every triangle: 3 edge ids each.
-    pub fn all_triangle_edges(&self) -> Vec<u32> {
+    pub fn all_triangle_edges(&self) -> Result<Vec<u32>> {
         if self.level >= 2 {
-            return (0..self.v.len() as u32).map(|h| self.edge_of(h)).collect();
+            let fe = (0..self.v.len() as u32).map(|h| self.edge_of(h));
+            return try_collect(fe, "the triangle edges");
         }
-        edge_ids(&self.opposites_or_computed())
+        edge_ids(&self.try_opposites_or_computed()?)
     }
 }

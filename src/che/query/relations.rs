@@ -4,6 +4,8 @@
 use super::star::{Rotation, vf_item, vv_item};
 use crate::che::ids::{first, next, prev, tri};
 use crate::che::{Che, edge_directory, pairs};
+use crate::error::Result;
+use crate::util::alloc::or_panic;
 use crate::util::rank_directory::RankDirectory;
 use crate::{Ids, NONE};
 use std::borrow::Cow;
@@ -59,16 +61,21 @@ impl Che {
     }
 
     /// Opposites: borrowed from level 1 on, computed (O(T) time and memory) at level 0.
-    pub(crate) fn opposites_or_computed(&self) -> Cow<'_, [u32]> {
-        if self.level >= 1 {
+    pub(crate) fn try_opposites_or_computed(&self) -> Result<Cow<'_, [u32]>> {
+        Ok(if self.level >= 1 {
             Cow::Borrowed(&self.o)
         } else {
             Cow::Owned(pairs::opposites_by_rule(
                 &self.v,
                 self.n_vertices,
                 &self.non_manifold,
-            ))
-        }
+            )?)
+        })
+    }
+
+    /// [`Che::try_opposites_or_computed`] for the queries without an error to return.
+    pub(crate) fn opposites_or_computed(&self) -> Cow<'_, [u32]> {
+        crate::util::alloc::or_panic(self.try_opposites_or_computed())
     }
 
     /// Is `h` on the boundary (no opposite)?
@@ -168,8 +175,10 @@ impl Che {
     pub(crate) fn edge_names(&self) -> EdgeNames<'_> {
         let o = self.opposites_or_computed();
         let ranks = match self.level {
-            0 => Cow::Owned(edge_directory(&o)),
-            1 => Cow::Borrowed(self.lazy_edge_bits.get_or_init(|| edge_directory(&self.o))),
+            0 => Cow::Owned(or_panic(edge_directory(&o))),
+            1 => Cow::Borrowed(
+                (self.lazy_edge_bits).get_or_init(|| or_panic(edge_directory(&self.o))),
+            ),
             _ => Cow::Borrowed(&self.edge_bits),
         };
         EdgeNames { o, ranks }

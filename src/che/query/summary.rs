@@ -4,6 +4,7 @@
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::next;
+use crate::util::alloc::{or_panic, try_vec};
 use crate::util::dsu::{Dsu, element_components};
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.
@@ -37,12 +38,13 @@ impl Che {
     pub fn summary(&self) -> Summary {
         let r = &self.report;
         let n = self.n_input_vertices;
-        let (components, isolated) = element_components::<3>(&self.v, n, |x| self.vertex_origin(x));
+        let components = element_components::<3>(&self.v, n, |x| self.vertex_origin(x));
+        let (components, isolated) = or_panic(components);
 
         // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
         let o = self.opposites_or_computed();
-        let mut on_boundary = vec![false; n];
-        let mut dsu = Dsu::new(n);
+        let mut on_boundary = or_panic(try_vec(n, false, "the summary's boundary marks"));
+        let mut dsu = or_panic(Dsu::new(n));
         for h in 0..self.v.len() as u32 {
             if o[h as usize] != NONE
                 || self.non_manifold.binary_search(&h).is_ok()

@@ -7,6 +7,7 @@ use crate::che::Che;
 use crate::che::ids::{next, tri};
 use crate::che::tables::is_canonical;
 use crate::error::{Error, Result};
+use crate::util::alloc::try_vec;
 
 /// A violation: an invalid-input error naming the element.
 fn broken(what: String) -> Result<()> {
@@ -117,8 +118,8 @@ impl Che {
             ));
         }
         // Outgoing half-edges per vertex, and whether one is on the boundary.
-        let mut degree = vec![0u32; self.n_vertices];
-        let mut on_boundary = vec![false; self.n_vertices];
+        let mut degree = try_vec(self.n_vertices, 0u32, "the vertex degrees")?;
+        let mut on_boundary = try_vec(self.n_vertices, false, "the boundary vertices")?;
         for (h, &x) in v.iter().enumerate() {
             degree[x as usize] += 1;
             on_boundary[x as usize] |= o[h] == NONE;
@@ -183,7 +184,7 @@ impl Che {
         if let Some(h) = (0..o.len()).find(|&h| self.boundary_bits.get(h) != (o[h] == NONE)) {
             return broken(format!("the boundary bits flag half-edge {h} wrongly"));
         }
-        let mut seen = vec![false; self.curve_of.len()];
+        let mut seen = try_vec(self.curve_of.len(), false, "the curve marks")?;
         for (c, &start) in self.ch.iter().enumerate() {
             if start as usize >= o.len() || o[start as usize] != NONE {
                 return broken(format!("CH[{c}] = {start} is not a boundary half-edge"));

@@ -21,6 +21,7 @@ use crate::chf::Chf;
 use crate::chf::ids::face_cycle;
 use crate::chf::query::view::Need;
 use crate::error::Result;
+use crate::util::alloc::{or_panic, try_collect, try_vec};
 use crate::util::dsu::Dsu;
 use crate::util::rank::RankBits;
 use std::borrow::Cow;
@@ -62,38 +63,51 @@ struct Parts {
 }
 
 fn parts(chf: &Chf) -> Parts {
-    let view = chf.view(Need::NOTHING);
+    or_panic(try_parts(chf))
+}
+
+fn try_parts(chf: &Chf) -> Result<Parts> {
+    let view = chf.try_view(Need::NOTHING)?;
     let o = &view.o;
-    let half_faces: Vec<u32> = (0..o.len() as u32)
-        .filter(|&hf| o[hf as usize] == NONE)
-        .collect();
-    let mut on = vec![0u64; chf.n_vertices.div_ceil(64)];
+    let unpaired = (0..o.len() as u32).filter(|&hf| o[hf as usize] == NONE);
+    let half_faces = try_collect(unpaired, "the boundary half-faces")?;
+    let mut on = try_vec(
+        chf.n_vertices.div_ceil(64),
+        0u64,
+        "the boundary vertex marks",
+    )?;
     for &hf in &half_faces {
         for x in face_cycle(&chf.v, hf) {
             on[x as usize >> 6] |= 1 << (x & 63);
         }
     }
-    let vertex_bits = RankBits::from_words(on, chf.n_vertices);
+    let vertex_bits = RankBits::from_words(on, chf.n_vertices)?;
     let mut vertices = Vec::new();
-    vertex_bits.ones_map(&mut vertices, |v| v as u32);
-    Parts {
+    vertex_bits.ones_map(&mut vertices, |v| v as u32, "the boundary vertices")?;
+    Ok(Parts {
         half_faces,
         vertex_bits,
         vertices,
-    }
+    })
 }
 
 /// The boundary, its CHE built on up to `threads` threads.
-pub(crate) fn build(chf: &Chf, threads: usize) -> Result<Boundary> {
-    let p = parts(chf);
-    let che = surface(chf, &p, 3, threads)?;
+pub(crate) fn build(chf: &Chf, threads: usize, memory_limit_bytes: u64) -> Result<Boundary> {
+    let p = try_parts(chf)?;
+    let options = BuildOptions {
+        level: 3,
+        strict: false,
+        threads,
+        memory_limit_bytes,
+    };
+    let che = surface(chf, &p, options)?;
     let n_hf = chf.v.len();
-    let mut words = vec![0u64; n_hf.div_ceil(64)];
+    let mut words = try_vec(n_hf.div_ceil(64), 0u64, "the boundary half-face bits")?;
     for &hf in &p.half_faces {
         words[hf as usize >> 6] |= 1 << (hf & 63);
     }
-    let bits = RankBits::from_words(words, n_hf);
-    let (component, components) = components(chf, &p);
+    let bits = RankBits::from_words(words, n_hf)?;
+    let (component, components) = components(chf, &p)?;
     let true_faces = p.half_faces.len() - flagged_count(chf);
     Ok(Boundary {
         che,
@@ -109,48 +123,38 @@ pub(crate) fn build(chf: &Chf, threads: usize) -> Result<Boundary> {
 
 /// Flagged half-faces (non-manifold or seam), all unpaired.
 fn flagged_count(chf: &Chf) -> usize {
-    crate::chf::star_pass::merged(&chf.non_manifold, &chf.seams).len()
+    or_panic(crate::chf::star_pass::merged(&chf.non_manifold, &chf.seams)).len()
 }
 
-fn surface(chf: &Chf, p: &Parts, level: u8, threads: usize) -> Result<Che> {
-    let tris: Vec<[u32; 3]> = p
+fn surface(chf: &Chf, p: &Parts, options: BuildOptions) -> Result<Che> {
+    let local = |x: u32| p.vertex_bits.rank(x as usize) as u32;
+    let tris = p
         .half_faces
         .iter()
-        .map(|&hf| face_cycle(&chf.v, hf).map(|x| p.vertex_bits.rank(x as usize) as u32))
-        .collect();
+        .map(|&hf| face_cycle(&chf.v, hf).map(local));
+    let tris: Vec<[u32; 3]> = try_collect(tris, "the boundary triangles")?;
     let positions: Vec<_> = if chf.positions.is_empty() {
         Vec::new()
     } else {
-        p.vertices
-            .iter()
-            .map(|&x| chf.positions[x as usize])
-            .collect()
+        let positions = p.vertices.iter().map(|&x| chf.positions[x as usize]);
+        try_collect(positions, "the boundary positions")?
     };
-    Che::from_triangles(
-        &tris,
-        p.vertices.len(),
-        &positions,
-        BuildOptions {
-            level,
-            strict: false,
-            threads,
-        },
-    )
+    Che::from_triangles(&tris, p.vertices.len(), &positions, options)
 }
 
 /// Boundary component of every boundary vertex, by union-find over the boundary
 /// triangles.
-fn components(chf: &Chf, p: &Parts) -> (Vec<u32>, usize) {
+fn components(chf: &Chf, p: &Parts) -> Result<(Vec<u32>, usize)> {
     let n = p.vertices.len();
-    let mut dsu = Dsu::new(n);
+    let mut dsu = Dsu::new(n)?;
     let local = |x: u32| p.vertex_bits.rank(x as usize) as u32;
     for &hf in &p.half_faces {
         let [a, b, c] = face_cycle(&chf.v, hf).map(local);
         dsu.union(a, b);
         dsu.union(a, c);
     }
-    let mut id_of_root = vec![NONE; n];
-    let mut component = vec![NONE; n];
+    let mut id_of_root = try_vec(n, NONE, "the boundary components")?;
+    let mut component = try_vec(n, NONE, "the boundary components")?;
     let mut count = 0u32;
     for &hf in &p.half_faces {
         for x in face_cycle(&chf.v, hf).map(local) {
@@ -162,7 +166,7 @@ fn components(chf: &Chf, p: &Parts) -> (Vec<u32>, usize) {
             component[x as usize] = id_of_root[r];
         }
     }
-    (component, count as usize)
+    Ok((component, count as usize))
 }
 
 impl Chf {
@@ -177,7 +181,11 @@ impl Chf {
         if let Some(b) = &self.boundary {
             return Ok(b.che.clone());
         }
-        surface(self, &parts(self), 3, 1)
+        let options = BuildOptions {
+            threads: 1,
+            ..BuildOptions::level(3)
+        };
+        surface(self, &try_parts(self)?, options)
     }
 
     /// Unpaired half-faces in increasing order: triangle `k` of the boundary surface is the
@@ -306,7 +314,7 @@ impl Chf {
         }
         match &self.boundary {
             Some(s) => s.component[b as usize],
-            None => components(self, &parts(self)).0[b as usize],
+            None => or_panic(components(self, &parts(self))).0[b as usize],
         }
     }
 
@@ -321,7 +329,7 @@ impl Chf {
     pub fn num_boundary_components(&self) -> usize {
         match &self.boundary {
             Some(b) => b.components,
-            None => components(self, &parts(self)).1,
+            None => or_panic(components(self, &parts(self))).1,
         }
     }
 }

@@ -2,6 +2,7 @@
 //! half-faces, orient, split non-manifold vertices, name the edges, then build the
 //! requested level. Everything changed or left unpaired is counted in the report.
 
+mod budget;
 pub(crate) mod level2;
 pub(crate) mod level3;
 mod orient;
@@ -21,11 +22,13 @@ use crate::chf::ids::tet;
 use crate::chf::star_pass::link::FaceCensus;
 use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_reserve, try_to_vec, try_vec};
 use crate::util::options::{Cells, check_input};
 use crate::util::origin::OriginMap;
 use glam::DVec3;
 
 pub use crate::util::options::BuildOptions;
+pub use budget::estimated_build_bytes;
 
 /// Largest tetrahedron count whose half-face ids (`4T`) fit below `NONE`.
 pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
@@ -41,6 +44,7 @@ pub(crate) fn build(
         n_vertices,
         positions.len(),
     )?;
+    check_budget(tets.len(), n_vertices, !positions.is_empty(), &options)?;
     let mut report = BuildReport::of_input(tets.len(), n_vertices);
     (
         report.non_finite_vertices,
@@ -69,18 +73,18 @@ pub(crate) fn build(
     };
     drop(links);
     let n_total = n_vertices + copies.len();
-    let vertex_origin = OriginMap::with_copies(n_vertices, &copies);
+    let vertex_origin = OriginMap::with_copies(n_vertices, &copies)?;
     // 5. Edges: the census by input vertex pair (after a split, one more star pass).
     let census = if copies.is_empty() {
         std::mem::take(&mut stars.census)
     } else {
         // Every star is one piece now; the census groups by input pair.
-        let flagged = merged(&non_manifold, &seams);
-        stars = stars::stars(&v, n_total, &flagged, pass.with_tables());
+        let flagged = merged(&non_manifold, &seams)?;
+        stars = stars::stars(&v, n_total, &flagged, pass.with_tables())?;
         debug_assert!(!stars.split_needed);
         edges::census(&v, &stars.edge_bits, n_vertices, |x| {
             vertex_origin[x as usize]
-        })
+        })?
     };
     record_edges(&mut report, &census);
     if options.strict {
@@ -98,7 +102,7 @@ pub(crate) fn build(
         n_vertices: n_total,
         num_edges: stars.num_edges,
         num_faces: count_faces(&o, &seams, v.len() - pairs),
-        positions: with_copies(positions, &copies),
+        positions: with_copies(positions, &copies)?,
         vertex_origin,
         tet_origin,
         non_manifold,
@@ -109,7 +113,20 @@ pub(crate) fn build(
         o,
         ..Chf::empty()
     };
-    raise(chf, options.level, stars, n_threads)
+    raise(chf, options, stars, n_threads)
+}
+
+/// Refuses, before allocating, a build whose estimate exceeds the memory limit.
+fn check_budget(
+    tets: usize, n_vertices: usize, positions: bool, options: &BuildOptions,
+) -> Result<()> {
+    let estimate = budget::estimated_build_bytes(tets, n_vertices, positions, options.level);
+    crate::util::budget::check(options, estimate, || {
+        format!(
+            "a CHF build of {tets} tetrahedra at level {}",
+            options.level
+        )
+    })
 }
 
 /// What steps 1 to 3 leave: an oriented `V` with its pairs, before the vertex split.
@@ -145,7 +162,7 @@ fn oriented(
         tables: options.level >= 2,
         threads: stars::threads_for(soup.v.len() / 4, n_vertices, n_threads),
     };
-    let (mut stars, faces, partner) = first_star_pass(&soup.v, n_vertices, pass, options.level);
+    let (mut stars, faces, partner) = first_star_pass(&soup.v, n_vertices, pass, options.level)?;
     let pairs = faces.pairs();
     let same_direction = faces.same_direction;
     let mut non_manifold = record_faces(report, faces, &origin_of);
@@ -163,8 +180,8 @@ fn oriented(
         report.flipped_tetrahedra = soup.flipped;
         (partner, Vec::new(), Vec::new())
     } else {
-        let oriented = orient_soup(&mut soup, partner, &mut non_manifold, report, origin_of);
-        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, pass);
+        let oriented = orient_soup(&mut soup, partner, &mut non_manifold, report, origin_of)?;
+        stars = stars::stars(&soup.v, n_vertices, &oriented.seams, pass)?;
         (oriented.o, oriented.seams, oriented.links)
     };
     Ok(Oriented {
@@ -185,13 +202,13 @@ fn oriented(
 /// for level 2.
 fn first_star_pass(
     v: &[u32], n_vertices: usize, pass: StarPass, level: u8,
-) -> (Stars, FaceCensus, Vec<u32>) {
+) -> Result<(Stars, FaceCensus, Vec<u32>)> {
     let pairs = if level == 0 {
         Pairs::Census
     } else {
         Pairs::Partners
     };
-    let mut stars = stars::stars(v, n_vertices, &[], StarPass { pairs, ..pass });
+    let mut stars = stars::stars(v, n_vertices, &[], StarPass { pairs, ..pass })?;
     let (faces, mut partner) = stars.faces.take().expect("faces were asked for");
     if partner.is_empty() && (faces.same_direction || stars.split_needed) {
         let pass = StarPass {
@@ -199,12 +216,12 @@ fn first_star_pass(
             tables: false,
             ..pass
         };
-        partner = stars::stars(v, n_vertices, &[], pass)
+        partner = stars::stars(v, n_vertices, &[], pass)?
             .faces
             .expect("faces were asked for")
             .1;
     }
-    (stars, faces, partner)
+    Ok((stars, faces, partner))
 }
 
 /// The face counts into the report; returns the non-manifold half-faces.
@@ -228,7 +245,7 @@ fn record_faces(
 fn orient_soup(
     soup: &mut Soup, partner: Vec<u32>, non_manifold: &mut [u32], report: &mut BuildReport,
     origin_of: impl Fn(u32) -> u32,
-) -> orient::Oriented {
+) -> Result<orient::Oriented> {
     let unflip = |hf: u32| {
         if soup.is_flipped(tet(hf)) {
             flipped_id(hf)
@@ -236,7 +253,7 @@ fn orient_soup(
             hf
         }
     };
-    let mut input_partner = vec![NONE; partner.len()];
+    let mut input_partner = try_vec(partner.len(), NONE, "the partners")?;
     for (h, &g) in partner.iter().enumerate() {
         if g != NONE {
             input_partner[unflip(h as u32) as usize] = unflip(g);
@@ -247,7 +264,7 @@ fn orient_soup(
         *hf = unflip(*hf);
     }
     soup.unflip();
-    let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign);
+    let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign)?;
     drop(input_partner);
     let origins = |ts: &[u32]| ts.iter().map(|&t| origin_of(t)).collect();
     let flips = &oriented.flips;
@@ -262,14 +279,14 @@ fn orient_soup(
             *hf = flipped_id(*hf);
         }
     }
-    oriented
+    Ok(oriented)
 }
 
 /// Splits the non-manifold vertices of `v`; returns the copies' origins.
 fn split_vertices(
     v: &mut [u32], o: &[u32], links: &[u32], n_vertices: usize, report: &mut BuildReport,
 ) -> Result<Vec<u32>> {
-    let split = split::split(v, o, links, n_vertices);
+    let split = split::split(v, o, links, n_vertices)?;
     report.split_vertices = split.split_vertices;
     report.split_vertex_examples = split.split_examples;
     report.seam_split_vertices = split.seam_split_vertices;
@@ -284,14 +301,15 @@ fn split_vertices(
 }
 
 /// The positions, each copy repeating its origin's.
-fn with_copies(positions: &[DVec3], copies: &[u32]) -> Vec<DVec3> {
-    let mut positions = positions.to_vec();
+fn with_copies(positions: &[DVec3], copies: &[u32]) -> Result<Vec<DVec3>> {
+    let mut positions = try_to_vec(positions, "the positions")?;
     if !positions.is_empty() {
+        try_reserve(&mut positions, copies.len(), "the positions")?;
         for &c in copies {
             positions.push(positions[c as usize]);
         }
     }
-    positions
+    Ok(positions)
 }
 
 /// Canonical half-faces: the unpaired ones and one per pair (`unpaired_or_pairs` when
@@ -337,18 +355,21 @@ impl BuildReport {
 }
 
 /// From level 1 to `level`, with the tables of the last star pass.
-fn raise(mut chf: Chf, level: u8, mut stars: Stars, n_threads: usize) -> Result<Chf> {
+fn raise(mut chf: Chf, options: BuildOptions, mut stars: Stars, n_threads: usize) -> Result<Chf> {
+    let level = options.level;
     let edge_bits = std::mem::take(&mut stars.edge_bits);
     if level == 0 {
         chf.o = Vec::new();
         chf.level = 0;
     }
     if level >= 2 {
-        level2::build(&mut chf, edge_bits, std::mem::take(&mut stars.vh));
+        level2::build(&mut chf, edge_bits, std::mem::take(&mut stars.vh))?;
         chf.level = 2;
     }
     if level >= 3 {
-        chf.boundary = Some(level3::build(&chf, n_threads)?);
+        let m = chf.memory_bytes();
+        let limit = crate::util::budget::remaining(&options, m.topology + m.positions + m.maps);
+        chf.boundary = Some(level3::build(&chf, n_threads, limit)?);
         chf.level = 3;
     }
     Ok(chf)

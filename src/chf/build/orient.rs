@@ -13,6 +13,8 @@
 use crate::NONE;
 use crate::chf::build::report::push_example;
 use crate::chf::ids::{same_direction, tet};
+use crate::error::Result;
+use crate::util::alloc::{try_collect, try_vec};
 use crate::util::orient::{Flips, choose_flips};
 
 pub(crate) struct Oriented {
@@ -45,8 +47,8 @@ pub(crate) fn flipped_id(hf: u32) -> u32 {
 /// `partner[hf]` is the other half-face on `hf`'s vertex triple when there are exactly two
 /// (either orientation), else `NONE`. `sign` is empty or holds the sign of each
 /// tetrahedron's determinant. Flips `v` in place.
-pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Oriented {
-    let flips = choose_flips::<4>(partner, |h, g| same_direction(v, h, g), sign);
+pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Result<Oriented> {
+    let flips = choose_flips::<4>(partner, |h, g| same_direction(v, h, g), sign)?;
     let (mut inverted, mut inverted_examples) = (0, Vec::new());
     if !sign.is_empty() {
         for (t, &f) in flips.flipped.iter().enumerate() {
@@ -65,14 +67,16 @@ pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Oriented {
         inverted,
         inverted_examples,
     };
-    apply(v, partner, &flips.flipped, &flips.seam_pairs, &mut out);
+    apply(v, partner, &flips.flipped, &flips.seam_pairs, &mut out)?;
     out.flips = flips;
-    out
+    Ok(out)
 }
 
 /// Flips the tetrahedra of `v` and renumbers the pairs: `O` without the seams, the seams,
 /// and with seams the links (every pair, for the split).
-fn apply(v: &mut [u32], partner: &[u32], flipped: &[bool], seam_pairs: &[u32], out: &mut Oriented) {
+fn apply(
+    v: &mut [u32], partner: &[u32], flipped: &[bool], seam_pairs: &[u32], out: &mut Oriented,
+) -> Result<()> {
     for (t, &f) in flipped.iter().enumerate() {
         if f {
             v.swap(4 * t + 1, 4 * t + 2);
@@ -87,13 +91,13 @@ fn apply(v: &mut [u32], partner: &[u32], flipped: &[bool], seam_pairs: &[u32], o
     };
     let mut is_seam = Vec::new();
     if !seam_pairs.is_empty() {
-        is_seam = vec![false; v.len()];
+        is_seam = try_vec(v.len(), false, "the seam marks")?;
         for &h in seam_pairs {
             is_seam[h as usize] = true;
         }
-        out.links = vec![NONE; v.len()];
+        out.links = try_vec(v.len(), NONE, "the face links")?;
     }
-    let mut o = crate::util::pages::filled(v.len(), NONE);
+    let mut o = crate::util::pages::filled(v.len(), NONE, "the opposites O (level 1)")?;
     for h in 0..v.len() as u32 {
         let g = partner[h as usize];
         if g == NONE {
@@ -106,8 +110,9 @@ fn apply(v: &mut [u32], partner: &[u32], flipped: &[bool], seam_pairs: &[u32], o
             out.links[renumber(h) as usize] = renumber(g);
         }
     }
-    let mut seams: Vec<u32> = seam_pairs.iter().map(|&h| renumber(h)).collect();
+    let mut seams = try_collect(seam_pairs.iter().map(|&h| renumber(h)), "the seams")?;
     seams.sort_unstable();
     out.o = o;
     out.seams = seams;
+    Ok(())
 }

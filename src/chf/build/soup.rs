@@ -11,6 +11,7 @@
 
 use crate::chf::build::report::{BuildReport, push_example};
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_extend, try_push, try_vec};
 use glam::DVec3;
 
 pub(crate) struct Soup {
@@ -45,8 +46,9 @@ pub(crate) fn soup(
 ) -> Result<Soup> {
     let n = tets.len();
     let chunk = n.div_ceil(threads.max(1)).max(1);
-    let mut v: Vec<u32> = crate::util::pages::zeroed(4 * n);
-    let mut sign: Vec<i8> = vec![0; if positions.is_empty() { 0 } else { n }];
+    let mut v: Vec<u32> = crate::util::pages::zeroed(4 * n, "the tetrahedron vertices V")?;
+    let n_signs = if positions.is_empty() { 0 } else { n };
+    let mut sign: Vec<i8> = try_vec(n_signs, 0, "the determinant signs")?;
     let mut sign_parts: Vec<&mut [i8]> = if positions.is_empty() {
         tets.chunks(chunk).map(|_| &mut [][..]).collect()
     } else {
@@ -70,7 +72,7 @@ pub(crate) fn soup(
         }
         report.dropped_degenerate += r.dropped.len();
         crate::util::extend_examples(&mut report.degenerate_examples, r.dropped.iter().copied());
-        dropped.extend(r.dropped);
+        try_extend(&mut dropped, r.dropped, "the dropped tetrahedra")?;
         report.zero_volume += r.zero_volume;
         crate::util::extend_examples(&mut report.zero_volume_examples, r.zero_volume_examples);
         flipped += r.flipped;
@@ -79,7 +81,7 @@ pub(crate) fn soup(
     let tet_origin = if dropped.is_empty() {
         Vec::new()
     } else {
-        crate::util::holes::close_holes(&mut v, 4, &mut sign, &dropped)
+        crate::util::holes::close_holes(&mut v, 4, &mut sign, &dropped)?
     };
     Ok(Soup {
         v,
@@ -107,7 +109,10 @@ fn run(
         }
         let [a, b, c, d] = *tet;
         if a == b || a == c || a == d || b == c || b == d || c == d {
-            out.dropped.push(t as u32);
+            if let Err(e) = try_push(&mut out.dropped, t as u32, "the dropped tetrahedra") {
+                out.error = Some(e);
+                return out;
+            }
             continue;
         }
         if positions.is_empty() {

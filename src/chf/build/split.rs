@@ -12,6 +12,8 @@
 use crate::NONE;
 use crate::chf::build::report::push_example;
 use crate::chf::ids::{first, tet};
+use crate::error::Result;
+use crate::util::alloc::{try_push, try_to_vec, try_vec, try_with_capacity};
 
 pub(crate) struct Split {
     /// Origins of the appended copies (input ids), in order of creation.
@@ -26,45 +28,46 @@ pub(crate) struct Split {
 /// Rewrites `v` so that every vertex id names one piece of a star, pieces connected
 /// through `o`. `links` is empty, or `o` plus the seam pairs: the input adjacency, used to
 /// tell apart the vertices cut only by a seam.
-pub(crate) fn split(v: &mut [u32], o: &[u32], links: &[u32], n_vertices: usize) -> Split {
+pub(crate) fn split(v: &mut [u32], o: &[u32], links: &[u32], n_vertices: usize) -> Result<Split> {
     // The input adjacency first, on the unsplit ids.
     let mut non_manifold = Vec::new();
     if !links.is_empty() {
-        non_manifold = pieces(v, links, n_vertices, false);
+        non_manifold = pieces(v, links, n_vertices, false)?;
         non_manifold.sort_unstable();
         non_manifold.dedup();
     }
-    let copies = pieces(v, o, n_vertices, true);
-    let mut split_origins = copies.clone();
+    let copies = pieces(v, o, n_vertices, true)?;
+    let mut split_origins = try_to_vec(&copies, "the split vertices")?;
     split_origins.sort_unstable();
     split_origins.dedup();
     if links.is_empty() {
-        non_manifold = split_origins.clone();
+        non_manifold = try_to_vec(&split_origins, "the split vertices")?;
     }
     let mut split_examples = Vec::new();
     for &x in &non_manifold {
         push_example(&mut split_examples, x);
     }
-    Split {
+    Ok(Split {
         split_vertices: non_manifold.len(),
         seam_split_vertices: split_origins.len() - non_manifold.len(),
         split_examples,
         copies,
-    }
+    })
 }
 
 /// Walks the pieces of every vertex star, through `links`; every piece after the first of
 /// a vertex is a copy. With `relabel`, the copies get new ids in `v` (after `n_vertices`);
 /// returns the vertex each copy comes from, in order of creation.
-fn pieces(v: &mut [u32], links: &[u32], n_vertices: usize, relabel: bool) -> Vec<u32> {
-    let mut visited = vec![0u64; v.len().div_ceil(64)];
-    let mut has_piece = vec![0u64; n_vertices.div_ceil(64)];
+fn pieces(v: &mut [u32], links: &[u32], n_vertices: usize, relabel: bool) -> Result<Vec<u32>> {
+    let mut visited = try_vec(v.len().div_ceil(64), 0u64, "the split's occurrence marks")?;
+    let mut has_piece = try_vec(n_vertices.div_ceil(64), 0u64, "the split's vertex marks")?;
     let test = |bits: &[u64], i: usize| (bits[i >> 6] >> (i & 63)) & 1 == 1;
     fn set(bits: &mut [u64], i: usize) {
         bits[i >> 6] |= 1 << (i & 63);
     }
     let mut copies: Vec<u32> = Vec::new();
-    let mut queue: Vec<u32> = Vec::new();
+    // A piece has at most every occurrence: the queue never grows past this.
+    let mut queue: Vec<u32> = try_with_capacity(v.len(), "the split's queue")?;
     for s in 0..v.len() as u32 {
         if test(&visited, s as usize) {
             continue;
@@ -100,7 +103,7 @@ fn pieces(v: &mut [u32], links: &[u32], n_vertices: usize, relabel: bool) -> Vec
             set(&mut has_piece, x as usize);
             continue;
         }
-        copies.push(x);
+        try_push(&mut copies, x, "the vertex copies")?;
         if relabel {
             let id = (n_vertices + copies.len() - 1) as u32;
             for &occ in &queue {
@@ -108,5 +111,5 @@ fn pieces(v: &mut [u32], links: &[u32], n_vertices: usize, relabel: bool) -> Vec
             }
         }
     }
-    copies
+    Ok(copies)
 }

@@ -14,40 +14,46 @@ use crate::chf::Chf;
 use crate::chf::ids::{EDGE, face_cycle};
 use crate::chf::query::fan::EdgeIds;
 use crate::chf::query::view::{Need, View};
+use crate::error::Result;
+use crate::util::alloc::{try_to_vec, try_vec};
 
 /// Row `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
 pub type Csr = crate::util::csr::Csr<u32>;
 
 /// Rows over `n` vertices from `(vertex, id)` pairs given twice by `each` (once to count,
 /// once to place), ids in increasing order per pass, so that every row is sorted.
-fn by_counting(n: usize, each: impl Fn(&mut dyn FnMut(u32, u32))) -> Csr {
-    let mut offsets = vec![0u32; n + 1];
+fn by_counting(n: usize, each: impl Fn(&mut dyn FnMut(u32, u32))) -> Result<Csr> {
+    let mut offsets = try_vec(n + 1, 0u32, "the CSR offsets")?;
     each(&mut |x, _| offsets[x as usize + 1] += 1);
     for i in 0..n {
         offsets[i + 1] += offsets[i];
     }
-    let mut fill = offsets[..n].to_vec();
-    let mut indices = vec![0u32; offsets[n] as usize];
+    let mut fill = try_to_vec(&offsets[..n], "the CSR fill")?;
+    let mut indices = try_vec(offsets[n] as usize, 0u32, "the CSR indices")?;
     each(&mut |x, id| {
         let f = &mut fill[x as usize];
         indices[*f as usize] = id;
         *f += 1;
     });
-    Csr { offsets, indices }
+    Ok(Csr { offsets, indices })
 }
 
 impl Chf {
     /// `O` at every level: borrowed from level 1, computed below (O(T), the rule level 1
     /// stores).
-    pub fn all_opposites(&self) -> Vec<u32> {
+    ///
+    /// An [`ErrorKind::OutOfMemory`](crate::ErrorKind::OutOfMemory) error when the answer
+    /// (or the tables computed for it below the level that stores them) does not fit in
+    /// memory; the same for every bulk relation.
+    pub fn all_opposites(&self) -> Result<Vec<u32>> {
         match self.opposites() {
-            Some(o) => o.to_vec(),
-            None => self.opposites_by_rule(),
+            Some(o) => try_to_vec(o, "the opposites O"),
+            None => self.try_opposites_by_rule(),
         }
     }
 
     /// VT for every vertex: row `v` is [`Chf::vertex_tetrahedra`]`(v)`. O(T) at every level.
-    pub fn all_vertex_tetrahedra(&self) -> Csr {
+    pub fn all_vertex_tetrahedra(&self) -> Result<Csr> {
         let v = &self.v;
         by_counting(self.n_vertices, |f| {
             for (hf, &x) in v.iter().enumerate() {
@@ -57,13 +63,14 @@ impl Chf {
     }
 
     /// VF for every vertex: row `v` is [`Chf::vertex_faces`]`(v)`. O(T) at every level.
-    pub fn all_vertex_faces(&self) -> Csr {
-        let view = self.view(Need::FACES);
+    pub fn all_vertex_faces(&self) -> Result<Csr> {
+        let view = self.try_view(Need::FACES)?;
         let mut fh = Vec::new();
         let fh: &[u32] = match self.face_half_faces() {
             Some(fh) => fh,
             None => {
-                view.faces.ones_map(&mut fh, |hf| hf as u32);
+                view.faces
+                    .ones_map(&mut fh, |hf| hf as u32, "the face half-faces")?;
                 &fh
             }
         };
@@ -77,10 +84,11 @@ impl Chf {
     }
 
     /// VE for every vertex: row `v` is [`Chf::vertex_edges`]`(v)`. O(T) at every level.
-    pub fn all_vertex_edges(&self) -> Csr {
-        let view = self.view(Need::EDGES);
+    pub fn all_vertex_edges(&self) -> Result<Csr> {
+        let view = self.try_view(Need::EDGES)?;
         let mut slots = Vec::new();
-        view.edges.ones_map(&mut slots, |s| s as u64);
+        view.edges
+            .ones_map(&mut slots, |s| s as u64, "the edge slots")?;
         by_counting(self.n_vertices, |f| {
             for (id, &s) in slots.iter().enumerate() {
                 let base = 4 * (s / 6) as usize;
@@ -95,8 +103,8 @@ impl Chf {
     /// (plus sorting the rows): both ends of every canonical edge slot, read in
     /// tetrahedron order (sequential memory), then each row sorted and its repeats (a pair
     /// of vertices with several fans) dropped.
-    pub fn all_vertex_vertices(&self) -> Csr {
-        let view = self.view(Need::EDGES);
+    pub fn all_vertex_vertices(&self) -> Result<Csr> {
+        let view = self.try_view(Need::EDGES)?;
         let bits = &view.edges;
         let v = &self.v;
         let mut c = by_counting(self.n_vertices, |f| {
@@ -109,7 +117,7 @@ impl Chf {
                     }
                 }
             }
-        });
+        })?;
         // Sort each row and drop repeats, compacting in place.
         let mut end = 0usize;
         let mut start = 0usize;
@@ -130,7 +138,7 @@ impl Chf {
         }
         c.offsets[self.n_vertices] = end as u32;
         c.indices.truncate(end);
-        c
+        Ok(c)
     }
 
     /// TT for every tetrahedron: calls `row(t)` for each tetrahedron in order with
@@ -182,6 +190,7 @@ mod tests {
                 let nv = chf.num_vertices();
                 let (vt, vf) = (chf.all_vertex_tetrahedra(), chf.all_vertex_faces());
                 let (ve, vv) = (chf.all_vertex_edges(), chf.all_vertex_vertices());
+                let [vt, vf, ve, vv] = [vt, vf, ve, vv].map(Result::unwrap);
                 for v in 0..nv as u32 {
                     let at = format!("round {round}, level {level}, vertex {v}");
                     let row = |c: &Csr| c.row(v as usize).to_vec();

@@ -7,6 +7,7 @@ use crate::chf::Chf;
 use crate::chf::ids::{face_cycle, same_direction, sorted_triple};
 use crate::chf::star_pass::{self, Pairs, StarPass};
 use crate::error::{Error, Result};
+use crate::util::alloc::try_vec;
 
 /// The first violation, as an error naming the structure.
 fn broken(what: String) -> Result<()> {
@@ -62,13 +63,13 @@ impl Chf {
         self.validate_tetrahedra()?;
         self.validate_maps()?;
         // The pairs and the edge slots by the rule, from `V` alone.
-        let flagged = star_pass::merged(&self.non_manifold, &self.seams);
+        let flagged = star_pass::merged(&self.non_manifold, &self.seams)?;
         let pass = StarPass {
             pairs: Pairs::Opposites,
             tables: true,
             threads: 1,
         };
-        let rule = star_pass::stars(&self.v, self.n_vertices, &flagged, pass);
+        let rule = star_pass::stars(&self.v, self.n_vertices, &flagged, pass)?;
         let rule_o = rule.faces.as_ref().map_or(&[][..], |(_, o)| &o[..]);
         if self.level >= 1 {
             self.validate_opposites(&flagged, rule_o)?;
@@ -262,8 +263,8 @@ impl Chf {
     fn validate_vertex_half_faces(&self, o: &[u32]) -> Result<()> {
         let vh = &self.vh;
         ensure_len("VH", vh.len(), self.n_vertices, "vertices")?;
-        let mut used = vec![false; self.n_vertices];
-        let mut boundary = vec![false; self.n_vertices];
+        let mut used = try_vec(self.n_vertices, false, "the used vertices")?;
+        let mut boundary = try_vec(self.n_vertices, false, "the boundary vertices")?;
         for &x in &self.v {
             used[x as usize] = true;
         }
@@ -333,7 +334,7 @@ impl Chf {
         let Some(b) = &self.boundary else {
             return Ok(Vec::new());
         };
-        let mut on = vec![false; self.n_vertices];
+        let mut on = try_vec(self.n_vertices, false, "the boundary vertices")?;
         for &hf in unpaired {
             for x in face_cycle(&self.v, hf) {
                 on[x as usize] = true;

@@ -8,6 +8,8 @@ use crate::chf::Chf;
 use crate::chf::edges::{self, MultiFan};
 use crate::chf::ids::{HalfEdge, first, he_face, local, sorted_triple, tet};
 use crate::chf::star_pass as stars;
+use crate::error::Result;
+use crate::util::alloc::{or_panic, try_collect};
 use crate::util::rank::RankBits;
 use std::borrow::Cow;
 
@@ -49,22 +51,28 @@ pub(crate) struct View<'a> {
 }
 
 impl Chf {
+    /// [`Chf::try_view`] for the one-element queries, which have no error to return.
     pub(crate) fn view(&self, need: Need) -> View<'_> {
+        or_panic(self.try_view(need))
+    }
+
+    /// The tables `need` asks for, borrowed or computed; an error when memory runs out.
+    pub(crate) fn try_view(&self, need: Need) -> Result<View<'_>> {
         let o: Cow<'_, [u32]> = if self.level >= 1 {
             Cow::Borrowed(&self.o)
         } else {
-            Cow::Owned(self.opposites_by_rule())
+            Cow::Owned(self.try_opposites_by_rule()?)
         };
         let stored = self.level >= 2;
         let faces = match (stored, need.faces) {
             (true, _) => Cow::Borrowed(&self.face_bits),
-            (false, true) => Cow::Owned(face_bits(&o)),
+            (false, true) => Cow::Owned(face_bits(&o)?),
             (false, false) => Cow::Owned(RankBits::default()),
         };
         let edges = match (stored, need.edges) {
             (true, _) => Cow::Borrowed(&self.edge_bits),
             (false, true) => {
-                let flagged = stars::merged(&self.non_manifold, &self.seams);
+                let flagged = stars::merged(&self.non_manifold, &self.seams)?;
                 Cow::Owned(
                     stars::stars(
                         &self.v,
@@ -75,13 +83,13 @@ impl Chf {
                             tables: true,
                             threads: 1,
                         },
-                    )
+                    )?
                     .edge_bits,
                 )
             }
             (false, false) => Cow::Owned(RankBits::default()),
         };
-        View {
+        Ok(View {
             v: &self.v,
             o,
             faces,
@@ -90,21 +98,21 @@ impl Chf {
             fh: stored.then_some(&self.fh[..]),
             eh: stored.then_some(&self.eh[..]),
             multi_fan: &self.multi_fan,
-        }
+        })
     }
 
     /// `O` of a canonical `V` (oriented, split): two half-faces are twins when they are the
     /// only two on their vertex triple, run opposite ways, and are flagged neither
     /// non-manifold nor seam. Level 1 stores it; level 0 queries compute it.
-    pub(crate) fn opposites_by_rule(&self) -> Vec<u32> {
-        let flagged = stars::merged(&self.non_manifold, &self.seams);
+    pub(crate) fn try_opposites_by_rule(&self) -> Result<Vec<u32>> {
+        let flagged = stars::merged(&self.non_manifold, &self.seams)?;
         let pass = stars::StarPass {
             pairs: stars::Pairs::Opposites,
             tables: false,
             threads: 1,
         };
-        let faces = stars::stars(&self.v, self.n_vertices, &flagged, pass).faces;
-        faces.expect("faces were asked for").1
+        let faces = stars::stars(&self.v, self.n_vertices, &flagged, pass)?.faces;
+        Ok(faces.expect("faces were asked for").1)
     }
 
     /// The opposite of one half-face without building `O`: a scan at level 0, by the same
@@ -131,19 +139,15 @@ impl Chf {
 }
 
 /// One bit per half-face, set on canonical ones.
-pub(crate) fn face_bits(o: &[u32]) -> RankBits {
+pub(crate) fn face_bits(o: &[u32]) -> Result<RankBits> {
     // A word at a time: 64 independent compares the compiler can vectorize.
-    let words = o
-        .chunks(64)
-        .enumerate()
-        .map(|(w, chunk)| {
-            let base = 64 * w as u32;
-            chunk.iter().enumerate().fold(0u64, |word, (i, &g)| {
-                word | (((g == NONE) | (base + (i as u32) < g)) as u64) << i
-            })
+    let words = o.chunks(64).enumerate().map(|(w, chunk)| {
+        let base = 64 * w as u32;
+        chunk.iter().enumerate().fold(0u64, |word, (i, &g)| {
+            word | (((g == NONE) | (base + (i as u32) < g)) as u64) << i
         })
-        .collect();
-    RankBits::from_words(words, o.len())
+    });
+    RankBits::from_words(try_collect(words, "the face bits")?, o.len())
 }
 
 /// The position of the `k`-th set bit (binary search on the rank): O(log n).

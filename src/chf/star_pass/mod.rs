@@ -23,6 +23,8 @@ use self::pairs::{Opposites, Writer};
 use crate::NONE;
 use crate::chf::edges::EdgeCensus;
 use crate::chf::edges::MultiFan;
+use crate::error::Result;
+use crate::util::alloc::{try_collect, try_extend, try_resize, try_vec};
 use crate::util::extend_examples;
 use crate::util::rank::RankBits;
 
@@ -87,7 +89,9 @@ pub(crate) struct StarPass {
 /// each round are shared among up to `options.threads` threads (contiguous ranges of
 /// vertices), and what they find is added up in vertex order: the answer does not depend
 /// on the number of threads.
-pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], options: StarPass) -> Stars {
+pub(crate) fn stars(
+    v: &[u32], n_vertices: usize, flagged: &[u32], options: StarPass,
+) -> Result<Stars> {
     let StarPass {
         pairs,
         tables,
@@ -96,13 +100,13 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], options: Star
     let faces = pairs != Pairs::No;
     let collect = matches!(pairs, Pairs::Partners | Pairs::Opposites);
     let plan = Plan::new(v, n_vertices, threads, tables);
-    let opposites = Opposites::new(if collect { v.len() } else { 0 });
+    let opposites = Opposites::new(if collect { v.len() } else { 0 })?;
     let mut vh = if tables {
-        crate::util::pages::filled(n_vertices, NONE)
+        crate::util::pages::filled(n_vertices, NONE, "the vertex half-faces VH")?
     } else {
         Vec::new()
     };
-    let mut workers = workers(v.len(), n_vertices, plan.threads, &opposites, tables);
+    let mut workers = workers(v.len(), n_vertices, plan.threads, &opposites, tables)?;
     let mode = &Mode {
         flagged,
         faces,
@@ -111,11 +115,11 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], options: Star
         tables,
         shift: plan.shift,
     };
-    let mut records = plan.records(v.len());
+    let mut records = plan.records(v.len())?;
     let mut total = Tally::default();
     for &round in &plan.rounds {
         let vh = if tables { &mut vh[..] } else { &mut [] };
-        plan.round(round, &mut records, &mut workers, vh, mode, &mut total);
+        plan.round(round, &mut records, &mut workers, vh, mode, &mut total)?;
     }
     let mut edge_slots = Vec::with_capacity(workers.len());
     for w in workers {
@@ -124,22 +128,22 @@ pub(crate) fn stars(v: &[u32], n_vertices: usize, flagged: &[u32], options: Star
     }
     // The pairs' memory then serves the edge bits.
     let (o, scratch) = if collect {
-        opposites.finish(records)
+        opposites.finish(records)?
     } else {
         (Vec::new(), Vec::new())
     };
     let edge_bits = if tables {
-        bits_from_slots(&edge_slots, 6 * (v.len() / 4), scratch)
+        bits_from_slots(&edge_slots, 6 * (v.len() / 4), scratch)?
     } else {
         RankBits::default()
     };
-    total.into_stars(vh, edge_bits, faces.then_some(o))
+    Ok(total.into_stars(vh, edge_bits, faces.then_some(o)))
 }
 
 /// A thread's scratch per part of the tetrahedra.
 fn workers<'o>(
     len: usize, n_vertices: usize, threads: usize, opposites: &'o Opposites, tables: bool,
-) -> Vec<Worker<'o>> {
+) -> Result<Vec<Worker<'o>>> {
     // About one edge per vertex and per tetrahedron, plus one per boundary face pair
     // (Euler): reserved at once, so that growing by doubling copies nothing at the peak
     // (with a margin per thread, whose share of the edges is not known in advance).
@@ -244,11 +248,12 @@ impl<'v> Plan<'v> {
 
     /// One buffer for every region, at least as large as `O` (`len` ids), so that `O` can
     /// then take it over.
-    fn records(&self, len: usize) -> Vec<u32> {
+    fn records(&self, len: usize) -> Result<Vec<u32>> {
         let total = self.sizes.iter().sum::<usize>();
-        let mut records: Vec<u32> = crate::util::pages::with_capacity(len.max(total));
+        let mut records: Vec<u32> =
+            crate::util::pages::with_capacity(len.max(total), "the star pass's records")?;
         records.resize(total, 0);
-        records
+        Ok(records)
     }
 
     /// One round over coarse buckets `first..last`: every part scatters its occurrences to
@@ -256,7 +261,7 @@ impl<'v> Plan<'v> {
     fn round(
         &self, (first, last): (usize, usize), records: &mut [u32], workers: &mut [Worker],
         vh: &mut [u32], mode: &Mode, total: &mut Tally,
-    ) {
+    ) -> Result<()> {
         let shift = self.shift;
         let mut rest = &mut records[..];
         let mut jobs = Vec::with_capacity(self.parts.len());
@@ -265,6 +270,7 @@ impl<'v> Plan<'v> {
             rest = r;
             jobs.push((j * self.part_len / 4, part, &pc[first..last], mine));
         }
+        // `scatter`'s starts are one per coarse bucket of the round: bounded.
         let starts = crate::util::par::run_all(jobs, |(t0, part, pc, rec)| {
             scatter(part, t0 as u32, pc, first as u32, shift, rec)
         });
@@ -305,8 +311,9 @@ impl<'v> Plan<'v> {
             w.round(&buckets, vh, base, mode)
         });
         for t in tallies {
-            total.add(t);
+            total.add(t?)?;
         }
+        Ok(())
     }
 
     /// Where each of `n_workers` runs of coarse buckets starts (and, last, `last`): runs
@@ -461,7 +468,7 @@ impl Tally {
     }
 
     /// Adds `t`, which covers vertices after all those of `self`.
-    fn add(&mut self, t: Tally) {
+    fn add(&mut self, t: Tally) -> Result<()> {
         self.split_needed |= t.split_needed;
         self.num_edges += t.num_edges;
         self.input_edges += t.input_edges;
@@ -470,7 +477,7 @@ impl Tally {
             &mut self.non_manifold_edge_examples,
             t.non_manifold_edge_examples,
         );
-        self.multi_fan.extend(t.multi_fan);
+        try_extend(&mut self.multi_fan, t.multi_fan, "the multi-fan edges")?;
         let (a, b) = (&mut self.census, t.census);
         a.input_faces += b.input_faces;
         a.boundary_faces += b.boundary_faces;
@@ -479,10 +486,15 @@ impl Tally {
             &mut a.non_manifold_face_examples,
             b.non_manifold_face_examples,
         );
-        a.non_manifold.extend(b.non_manifold);
+        try_extend(
+            &mut a.non_manifold,
+            b.non_manifold,
+            "the non-manifold half-faces",
+        )?;
         a.duplicates += b.duplicates;
         extend_examples(&mut a.duplicate_examples, b.duplicate_examples);
         a.same_direction |= b.same_direction;
+        Ok(())
     }
 }
 
@@ -504,17 +516,17 @@ struct Sorter {
 }
 
 impl<'o> Worker<'o> {
-    fn new(n_vertices: usize, pairs: Writer<'o>, edge_slots: usize) -> Self {
-        Worker {
-            link: Link::new(n_vertices),
+    fn new(n_vertices: usize, pairs: Writer<'o>, edge_slots: usize) -> Result<Self> {
+        Ok(Worker {
+            link: Link::new(n_vertices)?,
             pairs,
             edge_slots: if edge_slots == 0 {
                 Vec::new()
             } else {
-                crate::util::pages::with_capacity(edge_slots)
+                crate::util::pages::with_capacity(edge_slots, "the edge slots")?
             },
             sorter: Sorter::default(),
-        }
+        })
     }
 
     /// The stars of a run of coarse buckets, each in records from every part in turn.
@@ -522,7 +534,7 @@ impl<'o> Worker<'o> {
     /// hands each star to the link.
     fn round(
         &mut self, buckets: &[Vec<&[u32]>], vh: &mut [u32], vh_base: usize, mode: &Mode,
-    ) -> Tally {
+    ) -> Result<Tally> {
         let mut census = FaceCensus::default();
         let mut sums = Sums {
             flagged: mode.flagged,
@@ -542,10 +554,20 @@ impl<'o> Worker<'o> {
         };
         let n_fine = 1usize << mode.shift;
         let sorter = &mut self.sorter;
-        sorter.fine_start.resize(n_fine + 1, 0);
-        sorter.cursor.resize(n_fine, 0);
+        try_resize(
+            &mut sorter.fine_start,
+            n_fine + 1,
+            0,
+            "the star pass's fine buckets",
+        )?;
+        try_resize(
+            &mut sorter.cursor,
+            n_fine,
+            0,
+            "the star pass's fine buckets",
+        )?;
         for parts in buckets {
-            if sorter.sort_bucket(parts, n_fine) == 0 {
+            if sorter.sort_bucket(parts, n_fine)? == 0 {
                 continue;
             }
             let fine_start = &sorter.fine_start;
@@ -558,7 +580,7 @@ impl<'o> Worker<'o> {
         }
         let mut tally = Tally::from_sums(sums);
         tally.census = census;
-        tally
+        Ok(tally)
     }
 }
 
@@ -567,7 +589,7 @@ impl Sorter {
     /// low bits of the vertex, `fine_start` marking where each vertex's records start;
     /// returns how many records.
     #[inline(always)]
-    fn sort_bucket(&mut self, parts: &[&[u32]], n_fine: usize) -> usize {
+    fn sort_bucket(&mut self, parts: &[&[u32]], n_fine: usize) -> Result<usize> {
         let mask = (n_fine - 1) as u32;
         let bucket = || {
             parts
@@ -585,10 +607,10 @@ impl Sorter {
         }
         let size = fine_start[n_fine] as usize;
         if size == 0 {
-            return 0;
+            return Ok(0);
         }
         if self.local.len() < size {
-            self.local.resize(size, [0; 5]);
+            try_resize(&mut self.local, size, [0; 5], "the star pass's bucket")?;
         }
         self.cursor.copy_from_slice(&fine_start[..n_fine]);
         for r in bucket() {
@@ -596,7 +618,7 @@ impl Sorter {
             self.local[*slot as usize] = r;
             *slot += 1;
         }
-        size
+        Ok(size)
     }
 }
 
@@ -627,7 +649,7 @@ impl Tally {
 /// The rank bits of `n` slots with `slots` set: the slots are bucketed by window of bits
 /// first (at most 256 windows), then each window's bits are set in cache. `scratch` is
 /// memory to reuse.
-pub(crate) fn bits_from_slots(slots: &[Vec<u64>], n: usize, scratch: Vec<u64>) -> RankBits {
+pub(crate) fn bits_from_slots(slots: &[Vec<u64>], n: usize, scratch: Vec<u64>) -> Result<RankBits> {
     let n_slots: usize = slots.iter().map(Vec::len).sum();
     let slots = || slots.iter().flatten();
     let bits = u64::BITS - (n as u64).saturating_sub(1).leading_zeros();
@@ -644,13 +666,13 @@ pub(crate) fn bits_from_slots(slots: &[Vec<u64>], n: usize, scratch: Vec<u64>) -
     let mut fill = start.clone();
     let mut low = scratch;
     low.clear();
-    low.resize(n_slots, 0);
+    try_resize(&mut low, n_slots, 0, "the edge slots")?;
     for &s in slots() {
         let f = &mut fill[(s >> shift) as usize];
         low[*f as usize] = s & ((1 << shift) - 1);
         *f += 1;
     }
-    let mut words = vec![0u64; n.div_ceil(64)];
+    let mut words = try_vec(n.div_ceil(64), 0u64, "the edge bits")?;
     for w in 0..n_windows {
         let base = w << (shift - 6);
         for &l in &low[start[w] as usize..start[w + 1] as usize] {
@@ -662,11 +684,11 @@ pub(crate) fn bits_from_slots(slots: &[Vec<u64>], n: usize, scratch: Vec<u64>) -
 
 /// The sorted union of two sorted lists: the half-faces the pass never pairs (non-manifold
 /// faces and seams) are both lists of the structure.
-pub(crate) fn merged(a: &[u32], b: &[u32]) -> Vec<u32> {
-    let mut out: Vec<u32> = a.iter().chain(b).copied().collect();
+pub(crate) fn merged(a: &[u32], b: &[u32]) -> Result<Vec<u32>> {
+    let mut out: Vec<u32> = try_collect(a.iter().chain(b).copied(), "the flagged half-faces")?;
     out.sort_unstable();
     out.dedup();
-    out
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -680,7 +702,7 @@ mod tests {
                 .filter(|s| s % 7 == 3 || s % 11 == 0)
                 .rev()
                 .collect();
-            let bits = bits_from_slots(std::slice::from_ref(&slots), n, Vec::new());
+            let bits = bits_from_slots(std::slice::from_ref(&slots), n, Vec::new()).unwrap();
             for s in 0..n {
                 assert_eq!(bits.get(s), s % 7 == 3 || s % 11 == 0, "n = {n}, slot {s}");
             }
@@ -718,7 +740,7 @@ mod against_walks {
             crate::util::test_soups::<4>(seed, 200, (6, 20), (10, 60)).enumerate()
         {
             let chf = Chf::from_tetrahedra(&tets, n, &[], BuildOptions::level(1)).unwrap();
-            let flagged = merged(&chf.non_manifold, &chf.seams);
+            let flagged = merged(&chf.non_manifold, &chf.seams).unwrap();
             let stars = stars(
                 &chf.v,
                 chf.n_vertices,
@@ -728,7 +750,8 @@ mod against_walks {
                     tables: true,
                     threads: 1,
                 },
-            );
+            )
+            .unwrap();
             assert!(!stars.split_needed);
             let walked = edges::canonical_slots(&chf.v, &chf.o);
             let n_slots = 6 * chf.num_tetrahedra();
@@ -777,6 +800,7 @@ mod against_walks {
                                 threads: 1
                             }
                         )
+                        .unwrap()
                     );
                     for threads in [2, 3, 7] {
                         let many = format!(
@@ -791,6 +815,7 @@ mod against_walks {
                                     threads
                                 }
                             )
+                            .unwrap()
                         );
                         assert!(
                             one == many,

@@ -10,6 +10,8 @@
 //! particular order, which `finish` does not need (each half-face has one record).
 
 use crate::NONE;
+use crate::error::Result;
+use crate::util::alloc::try_resize;
 use std::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
 
 const WINDOWS_BITS: u32 = 9;
@@ -35,20 +37,20 @@ pub(crate) struct Writer<'a> {
 const STAGE: usize = 8;
 
 impl Opposites {
-    pub(crate) fn new(n_hf: usize) -> Self {
+    pub(crate) fn new(n_hf: usize) -> Result<Self> {
         let bits = usize::BITS - n_hf.saturating_sub(1).leading_zeros();
         let shift = bits.saturating_sub(WINDOWS_BITS);
         let n_windows = (n_hf.saturating_sub(1) >> shift) + 1;
-        let records: Vec<u64> = crate::util::pages::zeroed(n_hf);
-        Opposites {
+        let records = crate::util::pages::from_fn(n_hf, || AtomicU64::new(0), "the face pairs")?;
+        Ok(Opposites {
             n_hf,
             shift,
-            // In place (same size and alignment): no copy, the pages stay untouched.
-            records: records.into_iter().map(AtomicU64::new).collect(),
+            records,
+            // At most 512 windows.
             fill: (0..n_windows as u32)
                 .map(|w| AtomicU32::new(w << shift))
                 .collect(),
-        }
+        })
     }
 
     pub(crate) fn writer(&self) -> Writer<'_> {
@@ -71,15 +73,15 @@ impl Opposites {
 
     /// `O`, in `buffer`'s memory (its contents are dropped), and the records' memory for
     /// the caller to reuse. Every writer must have been flushed.
-    pub(crate) fn finish(self, buffer: Vec<u32>) -> (Vec<u32>, Vec<u64>) {
+    pub(crate) fn finish(self, buffer: Vec<u32>) -> Result<(Vec<u32>, Vec<u64>)> {
         let mut o = buffer;
         o.clear();
         if o.capacity() < self.n_hf {
             // Too small: let it go before the new one comes (the build's peak).
             drop(o);
-            o = crate::util::pages::with_capacity(self.n_hf);
+            o = crate::util::pages::with_capacity(self.n_hf, "the opposites O (level 1)")?;
         }
-        o.resize(self.n_hf, NONE);
+        try_resize(&mut o, self.n_hf, NONE, "the opposites O (level 1)")?;
         // A buffer much larger than `O` gives the rest back (in place: no copy).
         if o.capacity() - o.len() > o.len() / 16 {
             o.shrink_to_fit();
@@ -93,7 +95,7 @@ impl Opposites {
         let mut records = self.records;
         records.clear();
         // Empty, so in place and without a pass: the memory only.
-        (o, records.into_iter().map(AtomicU64::into_inner).collect())
+        Ok((o, records.into_iter().map(AtomicU64::into_inner).collect()))
     }
 }
 
@@ -132,7 +134,7 @@ mod tests {
     #[test]
     fn pairs_land_in_place() {
         for n in [0usize, 1, 2, 5, 4096, 4097, 100_000] {
-            let o = Opposites::new(n);
+            let o = Opposites::new(n).unwrap();
             let mut expected = vec![NONE; n];
             // Pair i with n - 1 - i for every third i, in a scrambled order.
             let mut pairs: Vec<(u32, u32)> = (0..n as u32 / 2)
@@ -147,7 +149,7 @@ mod tests {
                 expected[g as usize] = h;
             }
             w.flush();
-            assert_eq!(o.finish(vec![7; 3]).0, expected, "n = {n}");
+            assert_eq!(o.finish(vec![7; 3]).unwrap().0, expected, "n = {n}");
         }
     }
 }

@@ -46,13 +46,19 @@ pub struct CheBuildOptions {
     /// the calling thread alone; a larger number is capped at what the machine runs at once
     /// and at one thread per 8192 elements. The mesh is the same whatever the number.
     pub threads: u32,
+    /// A memory budget for the build, in bytes (0, the default: none). The build
+    /// estimates its peak from the input's sizes and, when the estimate exceeds the
+    /// budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
+    /// estimate and the budget).
+    pub memory_limit_bytes: u64,
 }
 
-// The layout of the `bool` version, which compiled C hosts still use.
+// The layout C hosts compile against: `strict` where the `bool` was, then the budget.
 const _: () = {
-    assert!(core::mem::size_of::<CheBuildOptions>() == 12);
+    assert!(core::mem::size_of::<CheBuildOptions>() == 24);
     assert!(core::mem::offset_of!(CheBuildOptions, strict) == 4);
     assert!(core::mem::offset_of!(CheBuildOptions, threads) == 8);
+    assert!(core::mem::offset_of!(CheBuildOptions, memory_limit_bytes) == 16);
 };
 
 /// The default build options: level 2, not strict, every thread of the machine.

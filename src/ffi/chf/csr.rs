@@ -14,7 +14,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
     indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| s.copy(&c.all_vertex_vertices()))
+        => |c, s| s.copy(&c.all_vertex_vertices()?))
 }
 
 /// VE for every vertex (rows as `chf_vertex_edges`). O(T) at every level.
@@ -24,7 +24,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
     indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| s.copy(&c.all_vertex_edges()))
+        => |c, s| s.copy(&c.all_vertex_edges()?))
 }
 
 /// VF for every vertex (rows as `chf_vertex_faces`). O(T) at every level.
@@ -34,7 +34,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
     indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| s.copy(&c.all_vertex_faces()))
+        => |c, s| s.copy(&c.all_vertex_faces()?))
 }
 
 /// VT for every vertex (rows as `chf_vertex_tetrahedra`). O(T) at every level.
@@ -44,7 +44,7 @@ pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
     indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
 ) -> Status {
     csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| s.copy(&c.all_vertex_tetrahedra()))
+        => |c, s| s.copy(&c.all_vertex_tetrahedra()?))
 }
 
 /// EF for every edge (rows as `chf_edge_faces`, in rotation order). O(T) at every level.

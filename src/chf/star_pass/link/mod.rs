@@ -180,11 +180,11 @@ const SMALLEST: [u8; 8] = {
 };
 
 impl Link {
-    pub(crate) fn new(n_vertices: usize) -> Self {
-        Link {
+    pub(crate) fn new(n_vertices: usize) -> crate::error::Result<Self> {
+        Ok(Link {
             n_vertices,
             stamp_compact: if n_vertices < 1 << 24 {
-                vec![0; n_vertices]
+                crate::util::alloc::try_vec(n_vertices, 0, "a star pass's vertex stamps")?
             } else {
                 Vec::new()
             },
@@ -206,7 +206,7 @@ impl Link {
             fans: Vec::new(),
             events: Vec::new(),
             small: Box::new(Small::new()),
-        }
+        })
     }
 
     /// The star of one vertex: its records, in tetrahedron order.

@@ -1,0 +1,99 @@
+//! The memory a CHF build will take at its peak, from the input's sizes: the arrays each
+//! step makes, in bytes per input tetrahedron and per input vertex (see `util::budget`).
+//! The boundary surface of level 3 is a CHE build of its own, checked against what is left
+//! of the limit once the volume is built.
+
+use crate::util::budget::Cost;
+
+/// The star pass's peak: `V` (16), the determinant signs (1), the records buffer (16, 20
+/// with the level-2 tables), the pairs (8 per half-face, 32) and each thread's vertex
+/// stamps (at most 8 per vertex and 2 per tetrahedron in all; see `threads_for`).
+const STAR_PASS: Cost = Cost::new(16 + 1 + 16 + 32 + 2, 8);
+/// The star pass's level-2 tables: the larger records (4), the edge slots (8 per
+/// estimated edge, about one per vertex and 1.25 per tetrahedron) and `VH`.
+const STAR_PASS_TABLES: Cost = Cost::new(4 + 10, 8 + 4);
+/// What the build keeps from level 1 on: `V` and `O` (16 each, `O` made at every level).
+const LEVEL_1: Cost = Cost::new(32, 0);
+/// Level 2: `FH`, at most a face per half-face (16), `EH`, at most an edge per slot (24),
+/// the face and edge bits (3) and `VH` (4 per vertex).
+const LEVEL_2: Cost = Cost::new(43, 4);
+/// The origin maps (4 per tetrahedron and per vertex), and the positions (24 per vertex)
+/// when given.
+const MAPS: Cost = Cost::new(4, 4);
+const POSITIONS: Cost = Cost::new(0, 24);
+
+/// The bytes a build of `tets` tetrahedra over `vertices` vertices (with positions or not)
+/// at `level` is estimated to hold at its peak, the boundary surface of level 3 aside (a
+/// CHE build of its own, checked against what is left of the limit): what
+/// `BuildOptions::memory_limit_bytes` is checked against. At least what the structure
+/// holds once built ([`Chf::memory_bytes`](crate::Chf::memory_bytes): topology, positions
+/// and maps), and at most eight times that on a manifold mesh.
+pub fn estimated_build_bytes(tets: usize, vertices: usize, positions: bool, level: u8) -> u64 {
+    let (pass, kept) = if level >= 2 {
+        (STAR_PASS.plus(STAR_PASS_TABLES), LEVEL_1.plus(LEVEL_2))
+    } else {
+        (STAR_PASS, LEVEL_1)
+    };
+    let steps = pass.bytes(tets, vertices).max(kept.bytes(tets, vertices));
+    let extra = if positions {
+        MAPS.plus(POSITIONS)
+    } else {
+        MAPS
+    };
+    steps.saturating_add(extra.bytes(tets, vertices))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::chf::{BuildOptions, Chf};
+    use glam::DVec3;
+
+    /// An `n`^3 grid of cubes, six tetrahedra each (Kuhn), with positions.
+    fn cubes(n: u32) -> (Vec<[u32; 4]>, Vec<DVec3>) {
+        let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
+        let mut positions = Vec::new();
+        for k in 0..=n {
+            for j in 0..=n {
+                for i in 0..=n {
+                    positions.push(DVec3::new(i as f64, j as f64, k as f64));
+                }
+            }
+        }
+        let mut tets = Vec::new();
+        for (i, j, k) in
+            (0..n).flat_map(|k| (0..n).flat_map(move |j| (0..n).map(move |i| (i, j, k))))
+        {
+            let c = |b: u32| id(i + (b & 1), j + (b >> 1 & 1), k + (b >> 2));
+            for [p, q] in [[1, 2], [2, 1], [1, 4], [4, 1], [2, 4], [4, 2]] {
+                tets.push([c(0), c(p), c(p | q), c(7)]);
+            }
+        }
+        (tets, positions)
+    }
+
+    /// The estimate bounds what the structure holds, within the factor the docs state.
+    #[test]
+    fn the_estimate_bounds_the_structure_within_a_factor_of_eight() {
+        for n in [3, 12] {
+            let (tets, positions) = cubes(n);
+            let nv = positions.len();
+            for level in 0..=2 {
+                for with_positions in [false, true] {
+                    let pos = if with_positions { &positions[..] } else { &[] };
+                    let chf =
+                        Chf::from_tetrahedra(&tets, nv, pos, BuildOptions::level(level)).unwrap();
+                    assert_eq!(chf.report.inverted_tetrahedra, 0, "positive determinants");
+                    let m = chf.memory_bytes();
+                    let held = (m.topology + m.positions + m.maps) as u64;
+                    let estimate =
+                        super::estimated_build_bytes(tets.len(), nv, with_positions, level);
+                    assert!(held <= estimate, "level {level}: {held} > {estimate}");
+                    assert!(
+                        estimate <= 8 * held,
+                        "level {level}: {estimate} > 8 x {held}"
+                    );
+                }
+            }
+        }
+    }
+}

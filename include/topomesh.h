@@ -212,6 +212,12 @@ typedef struct che_build_options {
      * the calling thread alone. The mesh is the same whatever the number.
      */
     uint32_t threads;
+    /**
+     * Weld before building: vertices at most this distance apart (on the positions, which
+     * it needs) become one, the smallest id of each cluster of close vertices winning;
+     * the others keep their ids but lose their elements. 0 (default) is off.
+     */
+    double weld_tolerance;
 } che_build_options;
 
 /**
@@ -308,6 +314,11 @@ typedef struct che_build_report {
      * Edges left unpaired on the seams of non-orientable components.
      */
     uint64_t seam_edges;
+    /**
+     * Vertices merged into another by the weld (`weld_tolerance` of the build options):
+     * no element uses them any more; they keep their ids.
+     */
+    uint64_t welded_vertices;
 } che_build_report;
 
 /**
@@ -367,6 +378,12 @@ typedef struct chf_build_options {
      * the calling thread alone. The mesh is the same whatever the number.
      */
     uint32_t threads;
+    /**
+     * Weld before building: vertices at most this distance apart (on the positions, which
+     * it needs) become one, the smallest id of each cluster of close vertices winning;
+     * the others keep their ids but lose their elements. 0 (default) is off.
+     */
+    double weld_tolerance;
 } chf_build_options;
 
 /**
@@ -501,6 +518,11 @@ typedef struct chf_build_report {
      * Faces left unpaired because their two tetrahedra could not agree on an orientation.
      */
     uint64_t seam_faces;
+    /**
+     * Vertices merged into another by the weld (`weld_tolerance` of the build options):
+     * no element uses them any more; they keep their ids.
+     */
+    uint64_t welded_vertices;
 } chf_build_report;
 
 /**

@@ -115,6 +115,10 @@ struct Options {
     /// Threads for the build (0: as many as the machine runs at once; the mesh is the same
     /// whatever the number).
     std::uint32_t threads = 0;
+    /// Weld before building: vertices at most this distance apart (on the positions, which
+    /// the weld needs) become one, the smallest id of each cluster of close vertices
+    /// winning; the others keep their ids but lose their elements. 0 (the default) is off.
+    double weld_tolerance = 0.0;
 };
 
 struct Csr;
@@ -447,6 +451,7 @@ struct SurfaceReport {
     std::size_t non_manifold_edges = 0, split_vertices = 0, seam_split_vertices = 0;
     std::size_t added_vertices = 0, flipped_triangles = 0, non_orientable_components = 0;
     std::size_t seam_edges = 0;
+    std::size_t welded_vertices = 0; ///< merged into another by Options::weld_tolerance
 };
 
 /// Volume::summary(): the counts and invariants of the volume (see chf_summary).
@@ -469,6 +474,7 @@ struct VolumeReport {
     std::size_t input_edges = 0, non_manifold_edges = 0, kept_non_manifold_edges = 0;
     std::size_t split_vertices = 0, seam_split_vertices = 0, added_vertices = 0;
     std::size_t flipped_tetrahedra = 0, non_orientable_components = 0, seam_faces = 0;
+    std::size_t welded_vertices = 0; ///< merged into another by Options::weld_tolerance
 };
 
 // ---------------------------------------------------------------------------------------

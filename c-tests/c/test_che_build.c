@@ -215,7 +215,7 @@ static void test_non_manifold_edge(void) {
     CHECK_IDS(ff, len, N_, N_, N_);
     che_mesh_free(m);
 
-    che_build_options o = {2, true, 0};
+    che_build_options o = {2, true, 0, 0.0};
     m = NULL;
     CHECK_STATUS(che_mesh_from_triangles_ex(FIN, 3, 5, NULL, &o, &m), TOPOMESH_STATUS_NON_MANIFOLD);
     CHECK(m == NULL);

@@ -255,7 +255,7 @@ static void test_non_manifold_face(void) {
     chf_mesh_free(m);
 
     /* Strict: NON_MANIFOLD, the detail names the face and its tetrahedra. */
-    chf_build_options o = {2, true, 0};
+    chf_build_options o = {2, true, 0, 0.0};
     m = (chf_mesh *)&o;
     CHECK_STATUS(chf_mesh_from_tetrahedra_ex(BOOK, 3, 6, NULL, &o, &m),
                  TOPOMESH_STATUS_NON_MANIFOLD);

@@ -19,6 +19,9 @@ pub struct BenchOptions {
     /// Threads for the build (0: as many as the machine runs at once).
     #[arg(long, default_value_t = 0)]
     threads: usize,
+    /// Weld vertices at most TOLERANCE apart before building (0: off).
+    #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
+    weld: f64,
 }
 
 impl BenchOptions {
@@ -49,6 +52,7 @@ fn bench_surface(name: &str, data: &MeshData, options: &BenchOptions) -> Result<
             level,
             strict: false,
             threads: options.threads,
+            weld_tolerance: options.weld,
         };
         let (che, secs) = timed_builds(repeat, || build_surface(data, build))?;
         build_line(level, secs, n, che.memory_bytes().topology, "triangle");
@@ -68,6 +72,7 @@ fn bench_volume(name: &str, data: &MeshData, options: &BenchOptions) -> Result<(
             level,
             strict: false,
             threads: options.threads,
+            weld_tolerance: options.weld,
         };
         let (chf, secs) = timed_builds(repeat, || build_volume(data, build))?;
         build_line(level, secs, n, chf.memory_bytes().topology, "tetrahedron");

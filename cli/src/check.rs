@@ -13,6 +13,9 @@ use topomesh::{BuildOptions, Error, chf};
 #[derive(clap::Args)]
 pub struct CheckOptions {
     file: PathBuf,
+    /// Weld vertices at most TOLERANCE apart before building (0: off).
+    #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
+    weld: f64,
 }
 
 pub fn run(options: &CheckOptions) -> Result<ExitCode, Error> {
@@ -20,9 +23,9 @@ pub fn run(options: &CheckOptions) -> Result<ExitCode, Error> {
     let (name, data) = load(Some(&options.file), &progress)?;
     drop(progress);
     if data.is_volume() {
-        check_volume(&name, &data)
+        check_volume(&name, &data, options.weld)
     } else {
-        check_surface(&name, &data)
+        check_surface(&name, &data, options.weld)
     }
 }
 
@@ -50,8 +53,12 @@ impl Problems {
     }
 }
 
-fn check_surface(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
-    let che = build_surface(data, BuildOptions::level(1))?;
+fn check_surface(name: &str, data: &MeshData, weld: f64) -> Result<ExitCode, Error> {
+    let options = BuildOptions {
+        weld_tolerance: weld,
+        ..BuildOptions::level(1)
+    };
+    let che = build_surface(data, options)?;
     let r = che.report();
     let mut problems = Problems::default();
     problems.note(
@@ -93,11 +100,12 @@ fn check_surface(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
     }))
 }
 
-fn check_volume(name: &str, data: &MeshData) -> Result<ExitCode, Error> {
+fn check_volume(name: &str, data: &MeshData, weld: f64) -> Result<ExitCode, Error> {
     let chf = build_volume(
         data,
         chf::BuildOptions {
             level: 1,
+            weld_tolerance: weld,
             ..chf::BuildOptions::default()
         },
     )?;

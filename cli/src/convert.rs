@@ -11,12 +11,26 @@ use topomesh::io;
 pub struct ConvertOptions {
     input: PathBuf,
     output: PathBuf,
+    /// Weld vertices at most TOLERANCE apart: every corner goes to its cluster's smallest
+    /// vertex id (0: off).
+    #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
+    weld: f64,
 }
 
 pub fn run(options: &ConvertOptions) -> Result<ExitCode, Error> {
-    let ConvertOptions { input, output } = options;
+    let ConvertOptions {
+        input,
+        output,
+        weld,
+    } = options;
     let progress = Progress::new();
-    let (_, data) = load(Some(input), &progress)?;
+    let (_, mut data) = load(Some(input), &progress)?;
+    if *weld != 0.0 {
+        let rep = topomesh::weld_representatives(&data.positions, *weld)?;
+        let to = |x: &mut u32| *x = rep.get(*x as usize).copied().unwrap_or(*x);
+        data.triangles.iter_mut().flatten().for_each(to);
+        data.tetrahedra.iter_mut().flatten().for_each(to);
+    }
     progress.step(format!("writing {}", output.display()));
     io::write(output, &data)?;
     drop(progress);

@@ -29,6 +29,9 @@ pub struct InfoOptions {
     /// Threads for the build (0: as many as the machine runs at once).
     #[arg(long, default_value_t = 0)]
     threads: usize,
+    /// Weld vertices at most TOLERANCE apart before building (0: off).
+    #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
+    weld: f64,
 }
 
 /// What `topomesh` with no subcommand runs: `info` on the embedded torus at level 3.
@@ -40,6 +43,7 @@ impl Default for InfoOptions {
             strict: false,
             json: false,
             threads: 0,
+            weld: 0.0,
         }
     }
 }
@@ -62,6 +66,7 @@ impl InfoOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
+            weld_tolerance: self.weld,
         }
     }
 
@@ -70,6 +75,7 @@ impl InfoOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
+            weld_tolerance: self.weld,
         }
     }
 }
@@ -232,6 +238,7 @@ fn print_surface_report(r: &topomesh::BuildReport) {
     );
     report_line::<u32>("seam edges left unpaired", r.seam_edges, &[]);
     report_line::<u32>("vertices added by splits", r.added_vertices, &[]);
+    report_line::<u32>("vertices welded into another", r.welded_vertices, &[]);
 }
 
 #[derive(Serialize)]
@@ -356,4 +363,5 @@ fn print_volume_report(r: &topomesh::chf::BuildReport) {
         r.non_orientable_components,
         &r.non_orientable_examples,
     );
+    report_line::<u32>("vertices welded into another", r.welded_vertices, &[]);
 }

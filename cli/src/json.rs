@@ -35,7 +35,7 @@ json_fields!(SurfaceReport(che::BuildReport) {
     duplicate_triangles, duplicate_examples, input_edges, boundary_edges, non_manifold_edges,
     non_manifold_edge_examples, split_vertices, split_vertex_examples, seam_split_vertices,
     added_vertices, flipped_triangles, non_orientable_components, non_orientable_examples,
-    seam_edges,
+    seam_edges, welded_vertices,
 });
 
 json_fields!(SurfaceMemory(che::Memory) {
@@ -56,7 +56,7 @@ json_fields!(VolumeReport(chf::BuildReport) {
     non_manifold_face_examples, input_edges, non_manifold_edges, non_manifold_edge_examples,
     kept_non_manifold_edges, kept_non_manifold_edge_examples, split_vertices,
     split_vertex_examples, seam_split_vertices, added_vertices, flipped_tetrahedra,
-    non_orientable_components, non_orientable_examples, seam_faces,
+    non_orientable_components, non_orientable_examples, seam_faces, welded_vertices,
 });
 
 json_fields!(VolumeMemory(chf::Memory) {

@@ -192,7 +192,12 @@ macro_rules! handle {
         impl Default for $opt {
             fn default() -> Self {
                 let d = $core_opt::default();
-                $opt { level: d.level as u32, strict: d.strict, threads: d.threads as u32 }
+                $opt {
+                    level: d.level as u32,
+                    strict: d.strict,
+                    threads: d.threads as u32,
+                    weld_tolerance: d.weld_tolerance,
+                }
             }
         }
 
@@ -204,7 +209,12 @@ macro_rules! handle {
 
             fn to_core(self) -> $crate::error::Result<$core_opt> {
                 let level = $crate::ffi::boundary::level_arg(self.level)?;
-                Ok($core_opt { level, strict: self.strict, threads: self.threads as usize })
+                Ok($core_opt {
+                    level,
+                    strict: self.strict,
+                    threads: self.threads as usize,
+                    weld_tolerance: self.weld_tolerance,
+                })
             }
         }
     };

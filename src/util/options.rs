@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 
 /// How to build: the level (0..=3) and whether non-manifold input is an error. The same
 /// for CHE and CHF (`che::BuildOptions`, `chf::BuildOptions`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BuildOptions {
     pub level: u8,
     /// Reject non-manifold input (edges, faces, vertices and duplicate elements) instead of
@@ -15,6 +15,11 @@ pub struct BuildOptions {
     /// Threads for the build: 0 (the default) for as many as the machine runs at once, 1
     /// for the calling thread alone. The structure is the same whatever the number.
     pub threads: usize,
+    /// Weld before building: vertices at most this distance apart (Euclidean, on the
+    /// positions, which the weld needs) become one, the smallest id of each cluster of
+    /// close vertices winning (`util::weld` gives the exact rule). 0 (the default) is off:
+    /// the topology is that of the vertex ids as given.
+    pub weld_tolerance: f64,
 }
 
 impl Default for BuildOptions {
@@ -23,6 +28,7 @@ impl Default for BuildOptions {
             level: 2,
             strict: false,
             threads: 0,
+            weld_tolerance: 0.0,
         }
     }
 }

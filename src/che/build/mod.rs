@@ -35,6 +35,9 @@ pub(crate) fn build(
         input_vertices: n_vertices,
         ..BuildReport::default()
     };
+    let welded = crate::util::weld::weld_elements(triangles, positions, options.weld_tolerance)?;
+    report.welded_vertices = welded.welded_vertices;
+    let triangles = &*welded.elements;
     let threads = crate::util::par::build_threads(options.threads, triangles.len());
     let (mut v, triangle_origin) = soup::soup(triangles, n_vertices, &mut report, threads)?;
     let triangle_origin = OriginMap::from(triangle_origin);

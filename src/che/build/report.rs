@@ -34,6 +34,9 @@ pub struct BuildReport {
     pub non_orientable_examples: Vec<u32>,
     /// Half-edges left unpaired on the seams of non-orientable components.
     pub seam_edges: usize,
+    /// Vertices merged into another by the weld (`BuildOptions::weld_tolerance`): no
+    /// element uses them any more; they keep their ids.
+    pub welded_vertices: usize,
 }
 
 impl BuildReport {

@@ -134,6 +134,7 @@ fn surface(chf: &Chf, p: &Parts, level: u8, threads: usize) -> Result<Che> {
             level,
             strict: false,
             threads,
+            ..BuildOptions::default()
         },
     )
 }

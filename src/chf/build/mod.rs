@@ -41,6 +41,9 @@ pub(crate) fn build(
         too_many_tetrahedra(tets.len()),
     )?;
     let mut report = BuildReport::of_input(tets.len(), n_vertices);
+    let welded = crate::util::weld::weld_elements(tets, positions, options.weld_tolerance)?;
+    report.welded_vertices = welded.welded_vertices;
+    let tets = &*welded.elements;
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
     let Oriented {

@@ -55,6 +55,9 @@ pub struct BuildReport {
     pub non_orientable_examples: Vec<u32>,
     /// Faces left unpaired because their two tetrahedra could not agree on an orientation.
     pub seam_faces: usize,
+    /// Vertices merged into another by the weld (`BuildOptions::weld_tolerance`): no
+    /// element uses them any more; they keep their ids.
+    pub welded_vertices: usize,
 }
 
 impl BuildReport {

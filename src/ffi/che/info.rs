@@ -78,12 +78,15 @@ pub struct CheBuildReport {
     pub non_orientable_components: u64,
     /// Edges left unpaired on the seams of non-orientable components.
     pub seam_edges: u64,
+    /// Vertices merged into another by the weld (`weld_tolerance` of the build options):
+    /// no element uses them any more; they keep their ids.
+    pub welded_vertices: u64,
 }
 
 mirror!(BuildReport => CheBuildReport {
     input_triangles, input_vertices, dropped_degenerate, duplicate_triangles, input_edges,
     boundary_edges, non_manifold_edges, split_vertices, seam_split_vertices, added_vertices,
-    flipped_triangles, non_orientable_components, seam_edges,
+    flipped_triangles, non_orientable_components, seam_edges, welded_vertices,
 });
 
 /// The build report into `*out`. O(1).

@@ -28,7 +28,7 @@ handle!(CheMesh { che: Che, vertex_origins, triangle_origins }, CheBuildOptions 
 
 /// How to build a CHE.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CheBuildOptions {
     /// The level, 0..3 (default 2).
     pub level: u32,
@@ -39,6 +39,10 @@ pub struct CheBuildOptions {
     /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
     /// the calling thread alone. The mesh is the same whatever the number.
     pub threads: u32,
+    /// Weld before building: vertices at most this distance apart (on the positions, which
+    /// it needs) become one, the smallest id of each cluster of close vertices winning;
+    /// the others keep their ids but lose their elements. 0 (default) is off.
+    pub weld_tolerance: f64,
 }
 
 /// The default build options: level 2, not strict, every thread of the machine.

@@ -101,13 +101,16 @@ pub struct ChfBuildReport {
     pub non_orientable_components: u64,
     /// Faces left unpaired because their two tetrahedra could not agree on an orientation.
     pub seam_faces: u64,
+    /// Vertices merged into another by the weld (`weld_tolerance` of the build options):
+    /// no element uses them any more; they keep their ids.
+    pub welded_vertices: u64,
 }
 
 mirror!(Report => ChfBuildReport {
     input_tetrahedra, input_vertices, dropped_degenerate, zero_volume, inverted_tetrahedra,
     duplicate_tetrahedra, input_faces, boundary_faces, non_manifold_faces, input_edges,
     non_manifold_edges, kept_non_manifold_edges, split_vertices, seam_split_vertices,
-    added_vertices, flipped_tetrahedra, non_orientable_components, seam_faces,
+    added_vertices, flipped_tetrahedra, non_orientable_components, seam_faces, welded_vertices,
 });
 
 /// The build report into `*out`. O(1).

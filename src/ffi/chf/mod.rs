@@ -29,7 +29,7 @@ handle!(ChfMesh { chf: Chf, vertex_origins, tetrahedron_origins }, ChfBuildOptio
 
 /// How to build a CHF.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ChfBuildOptions {
     /// The level, 0..3 (default 2).
     pub level: u32,
@@ -40,6 +40,10 @@ pub struct ChfBuildOptions {
     /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
     /// the calling thread alone. The mesh is the same whatever the number.
     pub threads: u32,
+    /// Weld before building: vertices at most this distance apart (on the positions, which
+    /// it needs) become one, the smallest id of each cluster of close vertices winning;
+    /// the others keep their ids but lose their elements. 0 (default) is off.
+    pub weld_tolerance: f64,
 }
 
 /// The default CHF build options: level 2, not strict, every thread of the machine.

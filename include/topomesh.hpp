@@ -21,6 +21,10 @@
 //   edge, triangle) without allocation.
 // - Views are Span<T> (pointer + size) into the structure, valid until the mesh is
 //   destroyed or its level changes. Bulk relations come as a Csr.
+// - vertices(), edges(), triangles(), boundary_curves() (faces(), tetrahedra() on a Volume)
+//   are ranges of strong ids; position(v) is a Vec3; VertexData<T>, EdgeData<T>,
+//   TriangleData<T>, FaceData<T>, TetData<T> hold the user's data per element, indexed by
+//   the strong ids and sized from a mesh: `VertexData<double> area(mesh, 0.0); area[v] = 1;`.
 // - Thread safety is the C API's: const member functions may run concurrently;
 //   build_level() and destruction need exclusive access.
 //
@@ -67,6 +71,8 @@ using HalfEdgeId = Id<struct HalfEdgeTag>;
 using FaceId = Id<struct FaceTag>;
 using TetrahedronId = Id<struct TetrahedronTag>;
 using HalfFaceId = Id<struct HalfFaceTag>;
+/// A boundary curve of a surface (0 .. num_boundary_curves() - 1).
+using CurveId = Id<struct CurveTag>;
 
 /// Half-edge arithmetic (all levels): triangle t owns half-edges 3t, 3t+1, 3t+2.
 constexpr TriangleId triangle_of(HalfEdgeId h) noexcept { return TriangleId{h.value() / 3u}; }
@@ -133,6 +139,9 @@ struct VolumeReport;
 #include "detail/ranges.hpp"
 #include "detail/calls.hpp"
 #include "detail/star.hpp"
+// Vec3 (positions), IdRange<I> (vertices(), edges(), ...), ElementData<I, T> (VertexData<T>,
+// ...): the element ranges and the user's per-element data.
+#include "detail/elements.hpp"
 
 namespace topomesh {
 
@@ -201,6 +210,30 @@ public:
     Ids<TriangleId, 3> triangle_triangles(TriangleId t) const;
     /// The vertices of boundary curve `curve`, in order.
     Ids<VertexId> boundary_curve_vertices(std::uint32_t curve) const;
+
+    // Element ranges and positions. Every element of a kind, as strong ids in id order,
+    // without storage, for loops and for sizing per-element data:
+    //   for (VertexId v : s.vertices()) { Vec3 p = s.position(v); ... }
+    //   VertexData<double> area(s, 0.0);  // one double per vertex: area[v]
+    IdRange<VertexId> vertices() const noexcept { return IdRange<VertexId>(num_vertices()); }
+    IdRange<TriangleId> triangles() const noexcept {
+        return IdRange<TriangleId>(num_triangles());
+    }
+    IdRange<EdgeId> edges() const noexcept { return IdRange<EdgeId>(num_edges()); }
+    IdRange<HalfEdgeId> half_edges() const noexcept {
+        return IdRange<HalfEdgeId>(num_half_edges());
+    }
+    /// The boundary curves (each a closed loop of boundary edges; see
+    /// boundary_curve_vertices()).
+    IdRange<CurveId> boundary_curves() const noexcept {
+        return IdRange<CurveId>(num_boundary_curves());
+    }
+    Ids<VertexId> boundary_curve_vertices(CurveId curve) const;
+    /// Whether the surface was built with positions.
+    bool has_positions() const { return !positions().empty(); }
+    /// The position of v; throws Error (OUT_OF_RANGE for a bad id, INVALID_INPUT when
+    /// built without positions).
+    Vec3 position(VertexId v) const;
 
     // Half-edges and boundary tests.
     HalfEdgeId opposite(HalfEdgeId h) const;
@@ -341,6 +374,23 @@ public:
     Ids<FaceId, 4> tetrahedron_faces(TetrahedronId t) const;
     /// The tetrahedron across each face; invalid on the boundary.
     Ids<TetrahedronId, 4> tetrahedron_tetrahedra(TetrahedronId t) const;
+
+    // Element ranges and positions, as on Surface:
+    //   for (TetrahedronId t : vol.tetrahedra()) { ... }   TetData<double> volume(vol, 0.0);
+    IdRange<VertexId> vertices() const noexcept { return IdRange<VertexId>(num_vertices()); }
+    IdRange<EdgeId> edges() const noexcept { return IdRange<EdgeId>(num_edges()); }
+    IdRange<FaceId> faces() const noexcept { return IdRange<FaceId>(num_faces()); }
+    IdRange<TetrahedronId> tetrahedra() const noexcept {
+        return IdRange<TetrahedronId>(num_tetrahedra());
+    }
+    IdRange<HalfFaceId> half_faces() const noexcept {
+        return IdRange<HalfFaceId>(num_half_faces());
+    }
+    /// Whether the volume was built with positions.
+    bool has_positions() const { return !positions().empty(); }
+    /// The position of v; throws Error (OUT_OF_RANGE for a bad id, INVALID_INPUT when
+    /// built without positions).
+    Vec3 position(VertexId v) const;
 
     // Half-faces and boundary tests.
     HalfFaceId opposite(HalfFaceId hf) const;
@@ -514,5 +564,6 @@ template <class T, std::size_t N> using SmallIds [[deprecated("use Ids<T, N>")]]
 #include "detail/error.hpp"
 #include "detail/surface.hpp"
 #include "detail/volume.hpp"
+#include "detail/element_members.hpp"
 
 #endif // TOPOMESH_HPP

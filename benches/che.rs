@@ -71,6 +71,7 @@ fn build(c: &mut Criterion) {
                                 level,
                                 strict: false,
                                 threads,
+                                ..BuildOptions::default()
                             },
                         )
                         .unwrap()

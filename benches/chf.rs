@@ -78,6 +78,7 @@ fn build_chf(input: &Input, level: u8, threads: usize) -> Chf {
         level,
         strict: false,
         threads,
+        ..chf::BuildOptions::default()
     };
     Chf::from_tetrahedra(
         &input.tets,

@@ -21,7 +21,7 @@ pub use chf::{ChfBuildOptions, ChfBuildReport, ChfSummary};
 pub use error::{Error, ErrorKind};
 pub use util::REPORT_EXAMPLES;
 pub use util::small_ids::Ids;
-pub use util::weld::representatives as weld_representatives;
+pub use util::weld::{representatives as weld_representatives, weld_arrays};
 
 /// "No element": the opposite of a boundary half-edge, the start of an isolated vertex, ...
 pub const NONE: u32 = u32::MAX;

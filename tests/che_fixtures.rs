@@ -429,6 +429,7 @@ fn build_is_the_same_on_any_number_of_threads() {
                 level,
                 threads,
                 strict: true,
+                ..BuildOptions::default()
             };
             Che::from_triangles(&tris, n, &s.positions, options)
                 .unwrap_err()

@@ -250,6 +250,7 @@ fn chf_build_is_the_same_on_any_number_of_threads() {
                 level,
                 threads,
                 strict: true,
+                ..chf::BuildOptions::default()
             };
             Chf::from_tetrahedra(&tets, n, &mesh.positions, options)
                 .unwrap_err()

@@ -42,7 +42,7 @@ fn octahedron_soup() -> (Vec<[u32; 3]>, Vec<DVec3>) {
 
 /// `x` moved by up to 3 units in the last place of 1, up or down by `k`.
 fn last_bits(x: f64, k: usize) -> f64 {
-    let units = (k % 4) as f64 * if k % 2 == 0 { 1.0 } else { -1.0 };
+    let units = (k % 4) as f64 * if k.is_multiple_of(2) { 1.0 } else { -1.0 };
     x + units * f64::EPSILON
 }
 

@@ -6,13 +6,14 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use topomesh::Error;
 use topomesh::io;
+use topomesh::io::MeshData;
 
 #[derive(clap::Args)]
 pub struct ConvertOptions {
     input: PathBuf,
     output: PathBuf,
     /// Weld vertices at most TOLERANCE apart: every corner goes to its cluster's smallest
-    /// vertex id (0: off).
+    /// vertex id and the others are left out of the output (0: off).
     #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
     weld: f64,
 }
@@ -26,10 +27,12 @@ pub fn run(options: &ConvertOptions) -> Result<ExitCode, Error> {
     let progress = Progress::new();
     let (_, mut data) = load(Some(input), &progress)?;
     if *weld != 0.0 {
-        let rep = topomesh::weld_representatives(&data.positions, *weld)?;
-        let to = |x: &mut u32| *x = rep.get(*x as usize).copied().unwrap_or(*x);
-        data.triangles.iter_mut().flatten().for_each(to);
-        data.tetrahedra.iter_mut().flatten().for_each(to);
+        let MeshData {
+            positions,
+            triangles,
+            tetrahedra,
+        } = &mut data;
+        topomesh::weld_arrays(positions, triangles, tetrahedra, *weld)?;
     }
     progress.step(format!("writing {}", output.display()));
     io::write(output, &data)?;

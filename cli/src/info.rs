@@ -238,7 +238,7 @@ fn print_surface_report(r: &topomesh::BuildReport) {
     );
     report_line::<u32>("seam edges left unpaired", r.seam_edges, &[]);
     report_line::<u32>("vertices added by splits", r.added_vertices, &[]);
-    report_line::<u32>("vertices welded into another", r.welded_vertices, &[]);
+    report_line::<u32>("welded vertices", r.welded_vertices, &[]);
 }
 
 #[derive(Serialize)]
@@ -363,5 +363,5 @@ fn print_volume_report(r: &topomesh::chf::BuildReport) {
         r.non_orientable_components,
         &r.non_orientable_examples,
     );
-    report_line::<u32>("vertices welded into another", r.welded_vertices, &[]);
+    report_line::<u32>("welded vertices", r.welded_vertices, &[]);
 }

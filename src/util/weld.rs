@@ -10,10 +10,10 @@
 //! id and its position but no element uses it any more. An element whose corners meet
 //! under the weld is then degenerate and dropped by the soup step (counted as such).
 //!
-//! How. A grid of cubic cells whose side is the tolerance: two close vertices lie in the
-//! same or in neighbouring cells. The vertices are sorted by cell (one array of keys, no
-//! per-element allocation), and each cell is compared with itself and with the 13 of its
-//! 26 neighbours that come after it in that order, each found by binary search: O(n log n)
+//! How. A grid of cubic cells whose side is (a little more than) the tolerance: two close
+//! vertices lie in the same or in neighbouring cells. The vertices are sorted by cell (one
+//! array of keys, no per-element allocation), and each cell is compared with itself and
+//! with the 13 of its 26 neighbours that come after it in that order, each found by binary search: O(n log n)
 //! for points spread at least a tolerance apart, more where many points crowd one cell.
 //! The unions go through a union-find whose smaller root wins, so the clusters and their
 //! representatives do not depend on the order of the pairs.
@@ -106,7 +106,48 @@ pub fn representatives(positions: &[DVec3], tolerance: f64) -> Result<Vec<u32>> 
         }
         start = end;
     }
-    Ok((0..positions.len() as u32).map(|v| dsu.find(v)).collect())
+    let mut out = Vec::new();
+    out.try_reserve_exact(positions.len())
+        .map_err(|_| Error::too_large(format!("{} vertices to weld", positions.len())))?;
+    out.extend((0..positions.len() as u32).map(|v| dsu.find(v)));
+    Ok(out)
+}
+
+/// The weld applied to a mesh's own arrays, for a file writer (the CLI's `convert --weld`):
+/// every corner rewritten to its representative, then the welded vertices removed and the
+/// others renumbered in their order, as a file has no use for vertices no element uses.
+/// Returns how many vertices were removed. Corner ids out of range stay out of range.
+pub fn weld_arrays(
+    positions: &mut Vec<DVec3>, triangles: &mut [[u32; 3]], tetrahedra: &mut [[u32; 4]],
+    tolerance: f64,
+) -> Result<usize> {
+    let representative = representatives(positions, tolerance)?;
+    // Representatives keep their order; a welded vertex takes its representative's new id
+    // (which comes first, being smaller).
+    let mut new_id = representative;
+    let mut kept = 0u32;
+    for v in 0..new_id.len() {
+        let r = new_id[v] as usize;
+        new_id[v] = if r == v {
+            kept += 1;
+            kept - 1
+        } else {
+            new_id[r]
+        };
+    }
+    let renumber = |x: &mut u32| *x = new_id.get(*x as usize).copied().unwrap_or(*x);
+    triangles.iter_mut().flatten().for_each(renumber);
+    tetrahedra.iter_mut().flatten().for_each(renumber);
+    // A vertex is kept when it is the first to take its new id.
+    let mut next = 0u32;
+    let mut k = 0;
+    positions.retain(|_| {
+        let keep = new_id[k] == next;
+        next += u32::from(keep);
+        k += 1;
+        keep
+    });
+    Ok(new_id.len() - kept as usize)
 }
 
 type Cell = [i64; 3];
@@ -137,12 +178,18 @@ fn shifted(cell: Cell, offset: Cell) -> Option<Cell> {
     ])
 }
 
-/// Bound on a cell coordinate, so that it converts to an integer exactly.
-const MAX_CELL: f64 = (1u64 << 52) as f64;
+/// Bound on a cell coordinate. Below it, the rounding of `position / side` is under
+/// `2 * MAX_CELL * 2^-53 = 2^-12` of a cell, less than the margin `SIDE_MARGIN` leaves.
+const MAX_CELL: f64 = (1u64 << 40) as f64;
+/// The cell side is the tolerance times this: two vertices at most a tolerance apart are
+/// then less than `1 - 2^-11` cells apart along each axis, so that rounding cannot put
+/// them two cells apart.
+const SIDE_MARGIN: f64 = 1.0 + 1.0 / 1024.0;
 
-/// (cell, vertex) for every vertex, sorted: by cell, then by id. The cell side is the
-/// tolerance, or larger when the positions reach more than `MAX_CELL` tolerances from the
-/// origin (close vertices are still in the same or neighbouring cells; cells only crowd).
+/// (cell, vertex) for every vertex, sorted: by cell, then by id. The cell side is a little
+/// more than the tolerance (`SIDE_MARGIN`), or larger when the positions reach more than
+/// `MAX_CELL` cells from the origin: close vertices are still in the same or neighbouring
+/// cells, which only crowd.
 fn sorted_cells(positions: &[DVec3], tolerance: f64) -> Result<Vec<(Cell, u32)>> {
     if positions.len() >= NONE as usize {
         return Err(Error::too_large(format!(
@@ -159,7 +206,7 @@ fn sorted_cells(positions: &[DVec3], tolerance: f64) -> Result<Vec<(Cell, u32)>>
         }
         reach = reach.max(p.abs().max_element());
     }
-    let side = tolerance.max(reach / MAX_CELL);
+    let side = (tolerance * SIDE_MARGIN).max(reach / MAX_CELL);
     let mut out = Vec::new();
     out.try_reserve_exact(positions.len())
         .map_err(|_| Error::too_large(format!("{} vertices to weld", positions.len())))?;
@@ -224,6 +271,21 @@ mod tests {
     }
 
     #[test]
+    fn points_exactly_a_tolerance_apart_match_brute_force() {
+        // Lattices whose spacing is the tolerance, where every close pair is at the bound
+        // and the quotients by the cell side round near cell borders.
+        for t in [0.1, 0.3, 1e-3, 7.0, 1.0 / 3.0] {
+            for shift in [0.0, -2.5, 1e6] {
+                let points: Vec<DVec3> = (0..60)
+                    .map(|k| DVec3::new(shift + (k % 6) as f64 * t, (k / 6) as f64 * t, 0.0))
+                    .collect();
+                let fast = representatives(&points, t).unwrap();
+                assert_eq!(fast, brute_force(&points, t), "t {t}, shift {shift}");
+            }
+        }
+    }
+
+    #[test]
     fn tiny_tolerance_over_a_large_reach_welds_exact_copies() {
         // Cells of side 1e-300 cannot number positions near 1e12: the side grows, and
         // exact copies still weld while neighbours one unit in the last place apart do not.
@@ -233,6 +295,27 @@ mod tests {
         let fast = representatives(&p, 1e-300).unwrap();
         assert_eq!(fast, vec![0, 1, 0, 3, 3]);
         assert_eq!(fast, brute_force(&p, 1e-300));
+    }
+
+    #[test]
+    fn weld_arrays_removes_the_welded_vertices() {
+        // 0 and 2 weld (2 goes), 1 and 4 weld (4 goes), 3 stays: 0 1 3 become 0 1 2.
+        let mut p = [
+            [0., 0., 0.],
+            [5., 0., 0.],
+            [0.1, 0., 0.],
+            [9., 9., 9.],
+            [5., 0.1, 0.],
+        ]
+        .map(DVec3::from_array)
+        .to_vec();
+        let mut tris = [[0, 1, 3], [2, 4, 3], [9, 2, 1]];
+        let mut tets = [[4, 3, 2, 0]];
+        assert_eq!(weld_arrays(&mut p, &mut tris, &mut tets, 0.2).unwrap(), 2);
+        assert_eq!(tris, [[0, 1, 2], [0, 1, 2], [9, 0, 1]]);
+        assert_eq!(tets, [[1, 2, 0, 0]]);
+        let want = [[0., 0., 0.], [5., 0., 0.], [9., 9., 9.]].map(DVec3::from_array);
+        assert_eq!(p, want);
     }
 
     #[test]

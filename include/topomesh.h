@@ -1580,6 +1580,22 @@ const uint32_t *chf_mesh_vertex_origins(const struct chf_mesh *m, size_t *len);
  */
 const uint32_t *chf_mesh_tetrahedron_origins(const struct chf_mesh *m, size_t *len);
 
+/* ---- The weld of nearly equal vertices (what weld_tolerance applies) ---- */
+
+/**
+ * The weld of `n_vertices` positions (`3 * n_vertices` doubles) at `tolerance`, as the
+ * builds do it with `weld_tolerance`: into `buf`, for each vertex, the smallest id of its
+ * cluster of vertices at most `tolerance` apart (single linkage), itself when it welds to
+ * none; `*out_len` receives `n_vertices`. A tolerance that is not finite and positive, or
+ * a position that is not finite, is `TOPOMESH_STATUS_INVALID_INPUT`.
+ */
+topomesh_status topomesh_weld_representatives(const double *positions,
+                                              size_t n_vertices,
+                                              double tolerance,
+                                              uint32_t *buf,
+                                              size_t cap,
+                                              size_t *out_len);
+
 /* ---- Status, errors and version ---- */
 
 /**

@@ -549,6 +549,27 @@ private:
 inline std::string version() { return topomesh_version(); }
 
 // ---------------------------------------------------------------------------------------
+// The weld alone (what Options::weld_tolerance applies before a build)
+// ---------------------------------------------------------------------------------------
+
+/// For each vertex of `positions` (3 doubles per vertex), the smallest id of its cluster of
+/// vertices at most `tolerance` apart (single linkage); itself when it welds to none.
+/// Throws Error (INVALID_INPUT) for a tolerance that is not finite and positive.
+inline std::vector<VertexId> weld_representatives(const std::vector<double> &positions,
+                                                  double tolerance) {
+    if (positions.size() % 3 != 0)
+        throw Error(TOPOMESH_STATUS_INVALID_INPUT,
+                    std::to_string(positions.size()) + " coordinates: not 3 per vertex");
+    const std::size_t n = positions.size() / 3;
+    std::vector<std::uint32_t> raw(n);
+    std::size_t len = 0;
+    const topomesh_status s = topomesh_weld_representatives(
+        positions.data(), n, tolerance, raw.data(), raw.size(), &len);
+    if (s != TOPOMESH_STATUS_OK) detail::throw_error(s);
+    return std::vector<VertexId>(raw.begin(), raw.end());
+}
+
+// ---------------------------------------------------------------------------------------
 // Old names, kept for one release
 // ---------------------------------------------------------------------------------------
 

@@ -71,6 +71,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
         "chf_mesh_summary", "chf_mesh_report*", "chf_mesh_memory", "chf_mesh_validate",
     ]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),
+    ("The weld of nearly equal vertices (what weld_tolerance applies)", &[
+        "topomesh_weld_*",
+    ]),
     ("Status, errors and version", &["topomesh_*"]),
 ];
 

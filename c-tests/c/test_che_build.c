@@ -343,6 +343,21 @@ static void test_weld(void) {
     CHECK_OK(che_triangle_vertices(m, 1, tv, 3, &len));
     CHECK_IDS(tv, len, 1, 4, 2);
     che_mesh_free(m);
+    /* The weld alone: each vertex's representative, the map the build applied. */
+    uint32_t rep[6];
+    CHECK_OK(topomesh_weld_representatives(pos, 6, 1e-9, NULL, 0, &len));
+    CHECK(len == 6);
+    CHECK_OK(topomesh_weld_representatives(pos, 6, 1e-9, rep, 6, &len));
+    CHECK_IDS(rep, len, 0, 1, 2, 1, 4, 2);
+    CHECK_STATUS(topomesh_weld_representatives(pos, 6, 1e-9, rep, 5, &len),
+                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+    CHECK(len == 6);
+    CHECK_STATUS(topomesh_weld_representatives(NULL, 6, 1e-9, rep, 6, &len),
+                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("positions");
+    CHECK_STATUS(topomesh_weld_representatives(pos, 6, 0.0, rep, 6, &len),
+                 TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK_DETAIL("weld_tolerance 0");
     o.weld_tolerance = 0.0;
     CHECK_OK(che_mesh_from_triangles_ex(tris, 2, 6, pos, &o, &m));
     CHECK(che_mesh_num_edges(m) == 6 && che_mesh_num_boundary_curves(m) == 2);

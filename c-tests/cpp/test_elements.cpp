@@ -164,6 +164,12 @@ static void weld_option() {
     o.weld_tolerance = -1;
     CHECK_THROWS(Surface::from_triangles(tris, 6, pos, o), TOPOMESH_STATUS_INVALID_INPUT,
                  "weld_tolerance");
+    // The map the build applied: corners 3 and 4 went to 0 and 2.
+    std::vector<VertexId> rep = weld_representatives(pos, 1e-9);
+    std::vector<VertexId> want{VertexId{0}, VertexId{1}, VertexId{2},
+                               VertexId{0}, VertexId{2}, VertexId{5}};
+    CHECK(rep == want);
+    CHECK_THROWS(weld_representatives(pos, 0.0), TOPOMESH_STATUS_INVALID_INPUT, "weld_tolerance");
 }
 
 int main() {

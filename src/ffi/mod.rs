@@ -27,6 +27,7 @@ mod mesh_arrays;
 mod shapes;
 #[cfg(test)]
 mod tests;
+pub mod weld;
 
 pub use che::{CheBuildOptions, CheMesh};
 pub use che::{CheBuildReport, CheMemory, CheReportKind, CheStarIter, CheStarStep, CheSummary};

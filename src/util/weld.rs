@@ -13,10 +13,11 @@
 //! How. A grid of cubic cells whose side is (a little more than) the tolerance: two close
 //! vertices lie in the same or in neighbouring cells. The vertices are sorted by cell (one
 //! array of keys, no per-element allocation), and each cell is compared with itself and
-//! with the 13 of its 26 neighbours that come after it in that order, each found by binary search: O(n log n)
-//! for points spread at least a tolerance apart, more where many points crowd one cell.
-//! The unions go through a union-find whose smaller root wins, so the clusters and their
-//! representatives do not depend on the order of the pairs.
+//! with the 13 of its 26 neighbours that come after it in that order, each found by binary
+//! search: O(n log n) for points spread at least a tolerance apart, more where many points
+//! crowd one cell (all pairs of a cell are compared). The unions go through a union-find
+//! whose smaller root wins, so the clusters and their representatives do not depend on the
+//! order of the pairs.
 
 use crate::NONE;
 use crate::error::{Error, Result};
@@ -45,7 +46,7 @@ pub(crate) fn weld_elements<'a, const K: usize>(
             welded_vertices: 0,
         });
     }
-    if positions.is_empty() {
+    if positions.is_empty() && !elements.is_empty() {
         return Err(Error::invalid(format!(
             "weld_tolerance {tolerance} given without vertex positions"
         )));
@@ -337,7 +338,9 @@ mod tests {
             let e = weld_elements(&[[0, 1, 0]], &p[..1], t).err().unwrap();
             assert!(e.message.contains("weld_tolerance"), "{}", e.message);
         }
-        let e = weld_elements::<3>(&[], &[], 0.5).err().unwrap();
+        let empty = weld_elements::<3>(&[], &[], 0.5).unwrap(); // an empty mesh is no error
+        assert!(empty.elements.is_empty() && empty.welded_vertices == 0);
+        let e = weld_elements(&[[0, 1, 2]], &[], 0.5).err().unwrap();
         assert!(
             e.message.contains("without vertex positions"),
             "{}",

@@ -73,6 +73,7 @@ fn build(c: &mut Criterion) {
                                 strict: false,
                                 threads,
                                 memory_limit_bytes: 0,
+                                ..BuildOptions::default()
                             },
                         )
                         .unwrap()

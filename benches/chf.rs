@@ -79,6 +79,7 @@ fn build_chf(input: &Input, level: u8, threads: usize) -> Chf {
         strict: false,
         threads,
         memory_limit_bytes: 0,
+        ..chf::BuildOptions::default()
     };
     Chf::from_tetrahedra(
         &input.tets,

@@ -247,6 +247,12 @@ typedef struct che_build_options {
      * estimate and the budget).
      */
     uint64_t memory_limit_bytes;
+    /**
+     * Weld before building: vertices at most this distance apart (on the positions, which
+     * it needs) become one, the smallest id of each cluster of close vertices winning;
+     * the others keep their ids but lose their elements. 0 (default) is off.
+     */
+    double weld_tolerance;
 } che_build_options;
 
 /**
@@ -347,6 +353,11 @@ typedef struct che_build_report {
      * Input vertices with a NaN or infinite coordinate (kept).
      */
     uint64_t non_finite_vertices;
+    /**
+     * Vertices merged into another by the weld (`weld_tolerance` of the build options):
+     * no element uses them any more; they keep their ids.
+     */
+    uint64_t welded_vertices;
 } che_build_report;
 
 /**
@@ -416,6 +427,12 @@ typedef struct chf_build_options {
      * estimate and the budget).
      */
     uint64_t memory_limit_bytes;
+    /**
+     * Weld before building: vertices at most this distance apart (on the positions, which
+     * it needs) become one, the smallest id of each cluster of close vertices winning;
+     * the others keep their ids but lose their elements. 0 (default) is off.
+     */
+    double weld_tolerance;
 } chf_build_options;
 
 /**
@@ -555,6 +572,11 @@ typedef struct chf_build_report {
      * their neighbours).
      */
     uint64_t non_finite_vertices;
+    /**
+     * Vertices merged into another by the weld (`weld_tolerance` of the build options):
+     * no element uses them any more; they keep their ids.
+     */
+    uint64_t welded_vertices;
 } chf_build_report;
 
 /**
@@ -1761,6 +1783,22 @@ const uint32_t *chf_mesh_vertex_origins(const struct chf_mesh *m, size_t *len);
  * the identity.
  */
 const uint32_t *chf_mesh_tetrahedron_origins(const struct chf_mesh *m, size_t *len);
+
+/* ---- The weld of nearly equal vertices (what weld_tolerance applies) ---- */
+
+/**
+ * The weld of `n_vertices` positions (`3 * n_vertices` doubles) at `tolerance`, as the
+ * builds do it with `weld_tolerance`: into `buf`, for each vertex, the smallest id of its
+ * cluster of vertices at most `tolerance` apart (single linkage), itself when it welds to
+ * none; `*out_len` receives `n_vertices`. A tolerance that is not finite and positive, or
+ * a position that is not finite, is `TOPOMESH_STATUS_INVALID_INPUT`.
+ */
+topomesh_status topomesh_weld_representatives(const double *positions,
+                                              size_t n_vertices,
+                                              double tolerance,
+                                              uint32_t *buf,
+                                              size_t cap,
+                                              size_t *out_len);
 
 /* ---- Status, errors and version ---- */
 

@@ -21,6 +21,10 @@
 //   edge, triangle) without allocation.
 // - Views are Span<T> (pointer + size) into the structure, valid until the mesh is
 //   destroyed or its level changes. Bulk relations come as a Csr.
+// - vertices(), edges(), triangles(), boundary_curves() (faces(), tetrahedra() on a Volume)
+//   are ranges of strong ids; position(v) is a Vec3; VertexData<T>, EdgeData<T>,
+//   TriangleData<T>, FaceData<T>, TetData<T> hold the user's data per element, indexed by
+//   the strong ids and sized from a mesh: `VertexData<double> area(mesh, 0.0); area[v] = 1;`.
 // - Thread safety is the C API's: const member functions may run concurrently;
 //   build_level() and destruction need exclusive access.
 //
@@ -67,6 +71,8 @@ using HalfEdgeId = Id<struct HalfEdgeTag>;
 using FaceId = Id<struct FaceTag>;
 using TetrahedronId = Id<struct TetrahedronTag>;
 using HalfFaceId = Id<struct HalfFaceTag>;
+/// A boundary curve of a surface (0 .. num_boundary_curves() - 1).
+using CurveId = Id<struct CurveTag>;
 
 /// Half-edge arithmetic (all levels): triangle t owns half-edges 3t, 3t+1, 3t+2.
 constexpr TriangleId triangle_of(HalfEdgeId h) noexcept { return TriangleId{h.value() / 3u}; }
@@ -118,6 +124,10 @@ struct Options {
     /// A memory budget for the build in bytes (0: none): a build whose estimated peak
     /// exceeds it throws `Error` with `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating.
     std::uint64_t memory_limit_bytes = 0;
+    /// Weld before building: vertices at most this distance apart (on the positions, which
+    /// the weld needs) become one, the smallest id of each cluster of close vertices
+    /// winning; the others keep their ids but lose their elements. 0 (the default) is off.
+    double weld_tolerance = 0.0;
 };
 
 struct Csr;
@@ -132,6 +142,9 @@ struct VolumeReport;
 #include "detail/ranges.hpp"
 #include "detail/calls.hpp"
 #include "detail/star.hpp"
+// Vec3 (positions), IdRange<I> (vertices(), edges(), ...), ElementData<I, T> (VertexData<T>,
+// ...): the element ranges and the user's per-element data.
+#include "detail/elements.hpp"
 
 namespace topomesh {
 
@@ -200,6 +213,30 @@ public:
     Ids<TriangleId, 3> triangle_triangles(TriangleId t) const;
     /// The vertices of boundary curve `curve`, in order.
     Ids<VertexId> boundary_curve_vertices(std::uint32_t curve) const;
+
+    // Element ranges and positions. Every element of a kind, as strong ids in id order,
+    // without storage, for loops and for sizing per-element data:
+    //   for (VertexId v : s.vertices()) { Vec3 p = s.position(v); ... }
+    //   VertexData<double> area(s, 0.0);  // one double per vertex: area[v]
+    IdRange<VertexId> vertices() const noexcept { return IdRange<VertexId>(num_vertices()); }
+    IdRange<TriangleId> triangles() const noexcept {
+        return IdRange<TriangleId>(num_triangles());
+    }
+    IdRange<EdgeId> edges() const noexcept { return IdRange<EdgeId>(num_edges()); }
+    IdRange<HalfEdgeId> half_edges() const noexcept {
+        return IdRange<HalfEdgeId>(num_half_edges());
+    }
+    /// The boundary curves (each a closed loop of boundary edges; see
+    /// boundary_curve_vertices()).
+    IdRange<CurveId> boundary_curves() const noexcept {
+        return IdRange<CurveId>(num_boundary_curves());
+    }
+    Ids<VertexId> boundary_curve_vertices(CurveId curve) const;
+    /// Whether the surface was built with positions.
+    bool has_positions() const { return !positions().empty(); }
+    /// The position of v; throws Error (OUT_OF_RANGE for a bad id, INVALID_INPUT when
+    /// built without positions).
+    Vec3 position(VertexId v) const;
 
     // Half-edges and boundary tests.
     HalfEdgeId opposite(HalfEdgeId h) const;
@@ -349,6 +386,23 @@ public:
     /// The tetrahedron across each face; invalid on the boundary.
     Ids<TetrahedronId, 4> tetrahedron_tetrahedra(TetrahedronId t) const;
 
+    // Element ranges and positions, as on Surface:
+    //   for (TetrahedronId t : vol.tetrahedra()) { ... }   TetData<double> volume(vol, 0.0);
+    IdRange<VertexId> vertices() const noexcept { return IdRange<VertexId>(num_vertices()); }
+    IdRange<EdgeId> edges() const noexcept { return IdRange<EdgeId>(num_edges()); }
+    IdRange<FaceId> faces() const noexcept { return IdRange<FaceId>(num_faces()); }
+    IdRange<TetrahedronId> tetrahedra() const noexcept {
+        return IdRange<TetrahedronId>(num_tetrahedra());
+    }
+    IdRange<HalfFaceId> half_faces() const noexcept {
+        return IdRange<HalfFaceId>(num_half_faces());
+    }
+    /// Whether the volume was built with positions.
+    bool has_positions() const { return !positions().empty(); }
+    /// The position of v; throws Error (OUT_OF_RANGE for a bad id, INVALID_INPUT when
+    /// built without positions).
+    Vec3 position(VertexId v) const;
+
     // Half-faces and boundary tests.
     HalfFaceId opposite(HalfFaceId hf) const;
     FaceId face(HalfFaceId hf) const;
@@ -466,6 +520,7 @@ struct SurfaceReport {
     std::size_t non_manifold_edges = 0, split_vertices = 0, seam_split_vertices = 0;
     std::size_t added_vertices = 0, flipped_triangles = 0, non_orientable_components = 0;
     std::size_t seam_edges = 0;
+    std::size_t welded_vertices = 0; ///< merged into another by Options::weld_tolerance
 };
 
 /// Volume::summary(): the counts and invariants of the volume (see chf_summary).
@@ -488,6 +543,7 @@ struct VolumeReport {
     std::size_t input_edges = 0, non_manifold_edges = 0, kept_non_manifold_edges = 0;
     std::size_t split_vertices = 0, seam_split_vertices = 0, added_vertices = 0;
     std::size_t flipped_tetrahedra = 0, non_orientable_components = 0, seam_faces = 0;
+    std::size_t welded_vertices = 0; ///< merged into another by Options::weld_tolerance
 };
 
 // ---------------------------------------------------------------------------------------
@@ -512,6 +568,27 @@ private:
 inline std::string version() { return topomesh_version(); }
 
 // ---------------------------------------------------------------------------------------
+// The weld alone (what Options::weld_tolerance applies before a build)
+// ---------------------------------------------------------------------------------------
+
+/// For each vertex of `positions` (3 doubles per vertex), the smallest id of its cluster of
+/// vertices at most `tolerance` apart (single linkage); itself when it welds to none.
+/// Throws Error (INVALID_INPUT) for a tolerance that is not finite and positive.
+inline std::vector<VertexId> weld_representatives(const std::vector<double> &positions,
+                                                  double tolerance) {
+    if (positions.size() % 3 != 0)
+        throw Error(TOPOMESH_STATUS_INVALID_INPUT,
+                    std::to_string(positions.size()) + " coordinates: not 3 per vertex");
+    const std::size_t n = positions.size() / 3;
+    std::vector<std::uint32_t> raw(n);
+    std::size_t len = 0;
+    const topomesh_status s = topomesh_weld_representatives(
+        positions.data(), n, tolerance, raw.data(), raw.size(), &len);
+    if (s != TOPOMESH_STATUS_OK) detail::throw_error(s);
+    return std::vector<VertexId>(raw.begin(), raw.end());
+}
+
+// ---------------------------------------------------------------------------------------
 // Old names, kept for one release
 // ---------------------------------------------------------------------------------------
 
@@ -527,5 +604,6 @@ template <class T, std::size_t N> using SmallIds [[deprecated("use Ids<T, N>")]]
 #include "detail/error.hpp"
 #include "detail/surface.hpp"
 #include "detail/volume.hpp"
+#include "detail/element_members.hpp"
 
 #endif // TOPOMESH_HPP

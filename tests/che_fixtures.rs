@@ -430,6 +430,7 @@ fn build_is_the_same_on_any_number_of_threads() {
                 threads,
                 strict: true,
                 memory_limit_bytes: 0,
+                ..BuildOptions::default()
             };
             Che::from_triangles(&tris, n, &s.positions, options)
                 .unwrap_err()

@@ -251,6 +251,7 @@ fn chf_build_is_the_same_on_any_number_of_threads() {
                 threads,
                 strict: true,
                 memory_limit_bytes: 0,
+                ..chf::BuildOptions::default()
             };
             Chf::from_tetrahedra(&tets, n, &mesh.positions, options)
                 .unwrap_err()

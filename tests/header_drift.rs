@@ -75,6 +75,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ]),
     ("CHF: writing files", &["chf_mesh_write", "chf_mesh_write_boundary"]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),
+    ("The weld of nearly equal vertices (what weld_tolerance applies)", &[
+        "topomesh_weld_*",
+    ]),
     ("Status, errors and version", &["topomesh_*"]),
 ];
 

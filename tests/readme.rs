@@ -6,6 +6,7 @@ fn readme_examples_are_the_tested_files() {
     for (file, lang) in [
         (include_str!("../c-tests/examples/example.c"), "```c\n"),
         (include_str!("../c-tests/examples/example.cpp"), "```cpp\n"),
+        (include_str!("../c-tests/examples/elements.cpp"), "```cpp\n"),
     ] {
         let block = format!("{lang}{file}```");
         assert!(

@@ -57,7 +57,7 @@ static void test_argument_errors(void) {
 
     /* Options. */
     che_build_options o = che_build_options_default();
-    CHECK(o.level == 2 && !o.strict && o.threads == 0);
+    CHECK(o.level == 2 && !o.strict && o.threads == 0 && o.weld_tolerance == 0.0);
     CHECK_OK(che_mesh_from_triangles_ex(STRIP, 2, 4, NULL, NULL, &m));
     CHECK(che_mesh_level(m) == 2);
     che_mesh_free(m);
@@ -218,7 +218,7 @@ static void test_non_manifold_edge(void) {
     CHECK_IDS(ff, len, N_, N_, N_);
     che_mesh_free(m);
 
-    che_build_options o = {2, true, 0, 0};
+    che_build_options o = {2, true, 0, 0, 0.0};
     m = NULL;
     CHECK_STATUS(che_mesh_from_triangles_ex(FIN, 3, 5, NULL, &o, &m), TOPOMESH_STATUS_NON_MANIFOLD);
     CHECK(m == NULL);
@@ -323,6 +323,59 @@ static void test_validate(void) {
     CHECK_DETAIL("m");
 }
 
+/* The weld: a square's two triangles, each with its own corners, the shared ones a unit in
+ * the last place apart, build as one patch with it and as two triangles without. */
+static void test_weld(void) {
+    const uint32_t tris[] = {0, 1, 2, 3, 4, 5};
+    const double e = 2.220446049250313e-16;
+    const double pos[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1 + e, 0, 0, 1, 1, 0, 0, 1, e};
+    che_build_options o = che_build_options_default();
+    o.weld_tolerance = 1e-9;
+    che_mesh *m = NULL;
+    CHECK_OK(che_mesh_from_triangles_ex(tris, 2, 6, pos, &o, &m));
+    CHECK(che_mesh_num_vertices(m) == 6 && che_mesh_num_edges(m) == 5);
+    CHECK(che_mesh_num_boundary_curves(m) == 1);
+    che_build_report r;
+    CHECK_OK(che_mesh_report(m, &r));
+    CHECK(r.welded_vertices == 2);
+    che_summary s;
+    CHECK_OK(che_mesh_summary(m, &s));
+    CHECK(s.vertices == 4 && s.isolated_vertices == 0 && s.euler_characteristic == 1);
+    uint32_t tv[3];
+    size_t len = 0;
+    CHECK_OK(che_triangle_vertices(m, 1, tv, 3, &len));
+    CHECK_IDS(tv, len, 1, 4, 2);
+    che_mesh_free(m);
+    /* The weld alone: each vertex's representative, the map the build applied. */
+    uint32_t rep[6];
+    CHECK_OK(topomesh_weld_representatives(pos, 6, 1e-9, NULL, 0, &len));
+    CHECK(len == 6);
+    CHECK_OK(topomesh_weld_representatives(pos, 6, 1e-9, rep, 6, &len));
+    CHECK_IDS(rep, len, 0, 1, 2, 1, 4, 2);
+    CHECK_STATUS(topomesh_weld_representatives(pos, 6, 1e-9, rep, 5, &len),
+                 TOPOMESH_STATUS_BUFFER_TOO_SMALL);
+    CHECK(len == 6);
+    CHECK_STATUS(topomesh_weld_representatives(NULL, 6, 1e-9, rep, 6, &len),
+                 TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_DETAIL("positions");
+    CHECK_STATUS(topomesh_weld_representatives(pos, 6, 0.0, rep, 6, &len),
+                 TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK_DETAIL("weld_tolerance 0");
+    o.weld_tolerance = 0.0;
+    CHECK_OK(che_mesh_from_triangles_ex(tris, 2, 6, pos, &o, &m));
+    CHECK(che_mesh_num_edges(m) == 6 && che_mesh_num_boundary_curves(m) == 2);
+    che_mesh_free(m);
+    /* Without positions, or with a negative tolerance: INVALID_INPUT naming the option. */
+    o.weld_tolerance = 1e-9;
+    m = NULL;
+    CHECK_STATUS(che_mesh_from_triangles_ex(tris, 2, 6, NULL, &o, &m), TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK(m == NULL);
+    CHECK_DETAIL("without vertex positions");
+    o.weld_tolerance = -1.0;
+    CHECK_STATUS(che_mesh_from_triangles_ex(tris, 2, 6, pos, &o, &m), TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK_DETAIL("weld_tolerance");
+}
+
 int main(void) {
     test_argument_errors();
     test_validate();
@@ -333,5 +386,6 @@ int main(void) {
     test_degenerate_and_isolated();
     test_moebius();
     test_orientation_repair();
+    test_weld();
     return finish("test_che_build");
 }

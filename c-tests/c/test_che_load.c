@@ -59,7 +59,7 @@ static void test_readers(void) {
         che_mesh_free(m);
     }
 
-    che_build_options o = {1, true, 0, 0};
+    che_build_options o = {1, true, 0, 0, 0.0};
     m = NULL;
     CHECK_OK(che_mesh_load_ex("tetra.off", &o, &m));
     CHECK(m != NULL && che_mesh_level(m) == 1);

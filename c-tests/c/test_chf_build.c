@@ -37,7 +37,7 @@ static void test_argument_errors(void) {
 
     /* Options. */
     chf_build_options o = chf_build_options_default();
-    CHECK(o.level == 2 && !o.strict && o.threads == 0);
+    CHECK(o.level == 2 && !o.strict && o.threads == 0 && o.weld_tolerance == 0.0);
     m = NULL;
     CHECK_OK(chf_mesh_from_tetrahedra_ex(PAIR, 2, 5, NULL, NULL, &m));
     CHECK(chf_mesh_level(m) == 2);
@@ -258,7 +258,7 @@ static void test_non_manifold_face(void) {
     chf_mesh_free(m);
 
     /* Strict: NON_MANIFOLD, the detail names the face and its tetrahedra. */
-    chf_build_options o = {2, true, 0, 0};
+    chf_build_options o = {2, true, 0, 0, 0.0};
     m = (chf_mesh *)&o;
     CHECK_STATUS(chf_mesh_from_tetrahedra_ex(BOOK, 3, 6, NULL, &o, &m),
                  TOPOMESH_STATUS_NON_MANIFOLD);
@@ -393,6 +393,36 @@ static void test_validate(void) {
     CHECK_DETAIL("m");
 }
 
+/* The weld: two tetrahedra on a shared face, each with its own corners, the shared ones a
+ * unit in the last place apart, share the face with it and none without. */
+static void test_weld(void) {
+    const uint32_t tets[] = {0, 1, 2, 3, 4, 6, 5, 7};
+    const double e = 2.220446049250313e-16;
+    const double pos[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1,
+                          1 + e, 0, 0, 0, 1 + e, 0, 0, 0, 1, 1, 1, 1};
+    chf_build_options o = chf_build_options_default();
+    o.weld_tolerance = 1e-9;
+    chf_mesh *m = NULL;
+    CHECK_OK(chf_mesh_from_tetrahedra_ex(tets, 2, 8, pos, &o, &m));
+    CHECK(chf_mesh_num_faces(m) == 7 && chf_mesh_num_boundary_faces(m) == 6);
+    chf_build_report r;
+    CHECK_OK(chf_mesh_report(m, &r));
+    CHECK(r.welded_vertices == 3);
+    chf_summary s;
+    CHECK_OK(chf_mesh_summary(m, &s));
+    CHECK(s.vertices == 5 && s.isolated_vertices == 0 && s.components == 1);
+    chf_mesh_free(m);
+    o.weld_tolerance = 0.0;
+    CHECK_OK(chf_mesh_from_tetrahedra_ex(tets, 2, 8, pos, &o, &m));
+    CHECK(chf_mesh_num_faces(m) == 8 && chf_mesh_num_boundary_faces(m) == 8);
+    chf_mesh_free(m);
+    o.weld_tolerance = 1e-9;
+    m = NULL;
+    CHECK_STATUS(chf_mesh_from_tetrahedra_ex(tets, 2, 8, NULL, &o, &m), TOPOMESH_STATUS_INVALID_INPUT);
+    CHECK(m == NULL);
+    CHECK_DETAIL("without vertex positions");
+}
+
 int main(void) {
     test_argument_errors();
     test_validate();
@@ -402,5 +432,6 @@ int main(void) {
     test_non_manifold_face();
     test_degenerate_and_isolated();
     test_geometry();
+    test_weld();
     return finish("test_chf_build");
 }

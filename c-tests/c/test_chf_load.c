@@ -14,7 +14,7 @@ static const any_loader LOADER = {load, load_ex, ".mesh"};
 static void test_args(void) {
     check_load_args(&LOADER, "chf-not-a-volume.xyz");
     chf_mesh *m = NULL;
-    chf_build_options o = {9, false, 0, 0};
+    chf_build_options o = {9, false, 0, 0, 0.0};
     CHECK_STATUS(chf_mesh_load_ex("x.mesh", &o, &m), TOPOMESH_STATUS_OUT_OF_RANGE);
 }
 
@@ -58,7 +58,7 @@ static void test_readers(void) {
         CHECK_STATUS(chf_mesh_warning(m, 1, w, sizeof w, &wl), TOPOMESH_STATUS_OUT_OF_RANGE);
         chf_mesh_free(m);
     }
-    chf_build_options o = {1, true, 0, 0};
+    chf_build_options o = {1, true, 0, 0, 0.0};
     chf_mesh *m = NULL;
     CHECK_OK(chf_mesh_load_ex("chf-pair.mesh", &o, &m));
     CHECK(m != NULL && chf_mesh_level(m) == 1);

@@ -111,7 +111,7 @@ int main(void) {
     che_mesh_free(m);
 
     /* Option flags are bytes where any non-zero value is true: strict = 2 is strict. */
-    CHECK(sizeof(che_build_options) == 24 && sizeof(chf_build_options) == 24);
+    CHECK(sizeof(che_build_options) == 32 && sizeof(chf_build_options) == 32);
     CHECK(offsetof(che_build_options, strict) == 4 && offsetof(chf_build_options, threads) == 8);
     che_build_options o = che_build_options_default();
     o.strict = 2;

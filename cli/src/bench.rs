@@ -31,6 +31,9 @@ pub struct BenchOptions {
     /// Print JSON: per level, the build and sweep times (median, fastest, slowest).
     #[arg(long)]
     json: bool,
+    /// Weld vertices at most TOLERANCE apart before building (0: off).
+    #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
+    weld: f64,
 }
 
 impl BenchOptions {
@@ -115,6 +118,7 @@ fn bench_surface(
             strict: false,
             threads: options.threads,
             memory_limit_bytes: 0,
+            weld_tolerance: options.weld,
         };
         let (che, timing) = timed_builds(repeat, progress, || build_surface(data, build))?;
         let sweeps = if level >= 1 {
@@ -150,6 +154,7 @@ fn bench_volume(
             strict: false,
             threads: options.threads,
             memory_limit_bytes: 0,
+            weld_tolerance: options.weld,
         };
         let (chf, timing) = timed_builds(repeat, progress, || build_volume(data, build))?;
         levels.push(Level {

@@ -22,6 +22,9 @@ pub struct CheckOptions {
     /// Print JSON: `ok`, and each problem with its count and first ids.
     #[arg(long)]
     json: bool,
+    /// Weld vertices at most TOLERANCE apart before building (0: off).
+    #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
+    weld: f64,
 }
 
 pub fn run(options: &CheckOptions) -> Result<ExitCode, Failure> {
@@ -29,9 +32,9 @@ pub fn run(options: &CheckOptions) -> Result<ExitCode, Failure> {
     let (name, data) = load(Some(&options.file), &progress)?;
     progress.step("building level 1".to_string());
     let checked = if data.is_volume() {
-        check_volume(name, &data)?
+        check_volume(name, &data, options.weld)?
     } else {
-        check_surface(name, &data)?
+        check_surface(name, &data, options.weld)?
     };
     drop(progress);
     let mut out = Out::new();
@@ -134,8 +137,12 @@ impl Checked {
     }
 }
 
-fn check_surface(file: String, data: &MeshData) -> Result<Checked, Error> {
-    let che = build_surface(data, BuildOptions::level(1))?;
+fn check_surface(file: String, data: &MeshData, weld: f64) -> Result<Checked, Error> {
+    let options = BuildOptions {
+        weld_tolerance: weld,
+        ..BuildOptions::level(1)
+    };
+    let che = build_surface(data, options)?;
     let r = che.report().clone();
     let mut p = Problems::default();
     let deg = (
@@ -197,9 +204,10 @@ fn check_surface(file: String, data: &MeshData) -> Result<Checked, Error> {
     Ok(Checked { json, report })
 }
 
-fn check_volume(file: String, data: &MeshData) -> Result<Checked, Error> {
+fn check_volume(file: String, data: &MeshData, weld: f64) -> Result<Checked, Error> {
     let options = chf::BuildOptions {
         level: 1,
+        weld_tolerance: weld,
         ..chf::BuildOptions::default()
     };
     let chf = build_volume(data, options)?;

@@ -40,6 +40,10 @@ pub struct ConvertOptions {
     /// TetGen files of the built mesh).
     #[arg(long)]
     no_origin: bool,
+    /// Weld vertices at most TOLERANCE apart: every corner goes to its cluster's smallest
+    /// vertex id and the others are left out of the output (0: off).
+    #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
+    weld: f64,
 }
 
 /// The standard stream's name in messages.
@@ -61,7 +65,16 @@ fn format_named(flag: &str, ext: &str) -> Result<Format, Error> {
 
 pub fn run(options: &ConvertOptions) -> Result<ExitCode, Failure> {
     let progress = Progress::new();
-    let (name, data) = read_input(options, &progress)?;
+    let (name, mut data) = read_input(options, &progress)?;
+    if options.weld != 0.0 {
+        let MeshData {
+            positions,
+            triangles,
+            tetrahedra,
+            ..
+        } = &mut data;
+        topomesh::weld_arrays(positions, triangles, tetrahedra, options.weld)?;
+    }
     let write = WriteOptions {
         format: options
             .format

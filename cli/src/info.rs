@@ -35,6 +35,9 @@ pub struct InfoOptions {
     /// Threads for the build (0: as many as the machine runs at once).
     #[arg(long, default_value_t = 0)]
     threads: usize,
+    /// Weld vertices at most TOLERANCE apart before building (0: off).
+    #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
+    weld: f64,
 }
 
 /// What `topomesh` with no subcommand runs: `info` on the embedded torus at level 3.
@@ -46,6 +49,7 @@ impl Default for InfoOptions {
             strict: false,
             json: false,
             threads: 0,
+            weld: 0.0,
         }
     }
 }
@@ -68,6 +72,7 @@ impl InfoOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
+            weld_tolerance: self.weld,
             ..BuildOptions::default()
         }
     }
@@ -77,6 +82,7 @@ impl InfoOptions {
             level: self.level,
             strict: self.strict,
             threads: self.threads,
+            weld_tolerance: self.weld,
             ..chf::BuildOptions::default()
         }
     }

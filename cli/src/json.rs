@@ -71,6 +71,7 @@ json_fields!(SurfaceReport(che::BuildReport) {
     non_manifold_edge_examples, split_vertices, split_vertex_examples, seam_split_vertices,
     added_vertices, flipped_triangles, non_orientable_components, non_orientable_examples,
     seam_edges, non_finite_vertices, non_finite_vertex_examples,
+    welded_vertices,
 });
 
 json_fields!(SurfaceMemory(che::Memory) {
@@ -92,7 +93,7 @@ json_fields!(VolumeReport(chf::BuildReport) {
     kept_non_manifold_edges, kept_non_manifold_edge_examples, split_vertices,
     split_vertex_examples, seam_split_vertices, added_vertices, flipped_tetrahedra,
     non_orientable_components, non_orientable_examples, seam_faces, non_finite_vertices,
-    non_finite_vertex_examples,
+    non_finite_vertex_examples, welded_vertices,
 });
 
 json_fields!(VolumeMemory(chf::Memory) {

@@ -40,6 +40,7 @@ pub fn surface(out: &mut Out, r: &BuildReport) -> io::Result<()> {
     )?;
     report_line::<u32>(out, "seam edges left unpaired", r.seam_edges, &[])?;
     report_line::<u32>(out, "vertices added by splits", r.added_vertices, &[])?;
+    report_line::<u32>(out, "welded vertices", r.welded_vertices, &[])?;
     non_finite(out, r.non_finite_vertices, &r.non_finite_vertex_examples)
 }
 
@@ -106,5 +107,6 @@ pub fn volume(out: &mut Out, r: &chf::BuildReport) -> io::Result<()> {
     )?;
     report_line::<u32>(out, "seam faces left unpaired", r.seam_faces, &[])?;
     report_line::<u32>(out, "vertices added by splits", r.added_vertices, &[])?;
+    report_line::<u32>(out, "welded vertices", r.welded_vertices, &[])?;
     non_finite(out, r.non_finite_vertices, &r.non_finite_vertex_examples)
 }

@@ -324,3 +324,31 @@ fn a_huge_thread_count_gives_the_single_threaded_answer() {
     assert_eq!(one["triangles"], 40000);
     assert_eq!(run("100000"), one);
 }
+/// Two triangles of a square as an STL-like OFF: each triangle with its own corners, the
+/// shared ones a few units in the last place apart.
+const SPLIT_SQUARE: &str = "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n1.0000000000000002 0 0\n1 1 0\n0 1.0000000000000004 0\n3 0 1 2\n3 3 4 5\n";
+
+#[test]
+fn weld_joins_nearly_equal_corners() {
+    let input = temp("split-square.off", SPLIT_SQUARE);
+    let path = input.to_str().unwrap();
+    let (loose, _) = text(&topomesh(&["info", path]));
+    assert!(loose.contains("boundary curves      2"), "{loose}");
+    let (welded, _) = text(&topomesh(&["info", "--weld", "1e-9", path]));
+    assert!(welded.contains("boundary curves      1"), "{welded}");
+    assert!(welded.contains("vertices             4"), "{welded}");
+    assert!(welded.contains("welded vertices           2"), "{welded}");
+    let out = input.with_file_name("welded-square.off");
+    let run = topomesh(&["convert", "--weld", "1e-9", path, out.to_str().unwrap()]);
+    let (stdout, _) = text(&run);
+    assert!(
+        run.status.success() && stdout.contains("4 vertices, 2 triangles"),
+        "{stdout}"
+    );
+    let bad = topomesh(&["check", "--weld", "nan", path]);
+    let (_, stderr) = text(&bad);
+    assert!(
+        !bad.status.success() && stderr.contains("weld_tolerance"),
+        "{stderr}"
+    );
+}

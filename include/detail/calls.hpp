@@ -118,6 +118,27 @@ template <class M> Csr csr(typename Calls<M>::CsrFn f, const M *m);
 inline void check_arrays(std::size_t ids, std::size_t arity, const char *what, std::size_t positions,
                   std::size_t n_vertices);
 
+/// The C build options of `options`, from the C defaults so that a field the C struct adds
+/// keeps its default.
+inline che_build_options che_options(const Options &options) noexcept {
+    che_build_options o = che_build_options_default();
+    o.level = options.level;
+    o.strict = options.strict;
+    o.threads = options.threads;
+    o.memory_limit_bytes = options.memory_limit_bytes;
+    o.weld_tolerance = options.weld_tolerance;
+    return o;
+}
+inline chf_build_options chf_options(const Options &options) noexcept {
+    chf_build_options o = chf_build_options_default();
+    o.level = options.level;
+    o.strict = options.strict;
+    o.threads = options.threads;
+    o.memory_limit_bytes = options.memory_limit_bytes;
+    o.weld_tolerance = options.weld_tolerance;
+    return o;
+}
+
 } // namespace detail
 } // namespace topomesh
 

@@ -17,8 +17,7 @@ namespace topomesh {
 inline Surface Surface::from_triangles(const std::uint32_t *triangles, std::size_t n_triangles,
                                        std::size_t n_vertices, const double *positions,
                                        Options options) {
-    che_build_options o{options.level, options.strict, options.threads,
-                        options.memory_limit_bytes};
+    che_build_options o = detail::che_options(options);
     che_mesh *m = nullptr;
     detail::check(
         che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &o, &m));
@@ -34,8 +33,7 @@ inline Surface Surface::from_triangles(const std::vector<std::uint32_t> &triangl
 }
 
 inline Surface Surface::load(const std::string &path, Options options) {
-    che_build_options o{options.level, options.strict, options.threads,
-                        options.memory_limit_bytes};
+    che_build_options o = detail::che_options(options);
     che_mesh *m = nullptr;
     detail::check(che_mesh_load_ex(path.c_str(), &o, &m));
     return Surface(m);
@@ -312,6 +310,7 @@ inline SurfaceReport Surface::report() const {
     out.flipped_triangles = r.flipped_triangles;
     out.non_orientable_components = r.non_orientable_components;
     out.seam_edges = r.seam_edges;
+    out.welded_vertices = r.welded_vertices;
     return out;
 }
 inline std::vector<std::uint32_t> Surface::report_examples(che_report_kind kind) const {

@@ -18,8 +18,7 @@ namespace topomesh {
 inline Volume Volume::from_tetrahedra(const std::uint32_t *tetrahedra, std::size_t n_tets,
                                       std::size_t n_vertices, const double *positions,
                                       Options options) {
-    chf_build_options o{options.level, options.strict, options.threads,
-                        options.memory_limit_bytes};
+    chf_build_options o = detail::chf_options(options);
     chf_mesh *m = nullptr;
     detail::check(
         chf_mesh_from_tetrahedra_ex(tetrahedra, n_tets, n_vertices, positions, &o, &m));
@@ -35,8 +34,7 @@ inline Volume Volume::from_tetrahedra(const std::vector<std::uint32_t> &tetrahed
 }
 
 inline Volume Volume::load(const std::string &path, Options options) {
-    chf_build_options o{options.level, options.strict, options.threads,
-                        options.memory_limit_bytes};
+    chf_build_options o = detail::chf_options(options);
     chf_mesh *m = nullptr;
     detail::check(chf_mesh_load_ex(path.c_str(), &o, &m));
     return Volume(m);
@@ -271,6 +269,7 @@ inline VolumeReport Volume::report() const {
     out.flipped_tetrahedra = r.flipped_tetrahedra;
     out.non_orientable_components = r.non_orientable_components;
     out.seam_faces = r.seam_faces;
+    out.welded_vertices = r.welded_vertices;
     return out;
 }
 inline std::vector<std::uint32_t> Volume::report_examples(chf_report_kind kind) const {

@@ -27,6 +27,7 @@ mod mesh_arrays;
 mod shapes;
 #[cfg(test)]
 mod tests;
+pub mod weld;
 
 #[doc(hidden)]
 pub use boundary::guarded_panic;

@@ -228,6 +228,7 @@ macro_rules! handle {
                     strict: d.strict.into(),
                     threads: d.threads as u32,
                     memory_limit_bytes: d.memory_limit_bytes,
+                    weld_tolerance: d.weld_tolerance,
                 }
             }
         }
@@ -245,6 +246,7 @@ macro_rules! handle {
                     strict: self.strict != 0,
                     threads: self.threads as usize,
                     memory_limit_bytes: self.memory_limit_bytes,
+                    weld_tolerance: self.weld_tolerance,
                 })
             }
         }

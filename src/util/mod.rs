@@ -1,7 +1,7 @@
 //! Helpers below both structures: build options and size checks, orientation, origin
 //! maps, the accessors both structures share, CSR arrays, threads, huge pages, rank
-//! directories, union-find, small id lists, closing the holes of dropped elements, and the
-//! build reports' example lists.
+//! directories, union-find, small id lists, closing the holes of dropped elements, the weld
+//! of nearly equal vertices, and the build reports' example lists.
 
 #[allow(dead_code)]
 pub(crate) mod alloc;
@@ -19,6 +19,7 @@ pub(crate) mod rank;
 pub(crate) mod rank_directory;
 pub(crate) mod small_ids;
 pub(crate) mod structure;
+pub(crate) mod weld;
 
 /// How many offending ids a build report keeps of each kind.
 pub const REPORT_EXAMPLES: usize = 16;

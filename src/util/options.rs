@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 
 /// How to build: the level (0..=3) and whether non-manifold input is an error. The same
 /// for CHE and CHF (`che::BuildOptions`, `chf::BuildOptions`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BuildOptions {
     pub level: u8,
     /// Reject non-manifold input (edges, faces, vertices and duplicate elements) instead of
@@ -22,6 +22,11 @@ pub struct BuildOptions {
     /// with an [`ErrorKind::OutOfMemory`](crate::ErrorKind::OutOfMemory) error, before
     /// allocating, when the estimate exceeds it.
     pub memory_limit_bytes: u64,
+    /// Weld before building: vertices at most this distance apart (Euclidean, on the
+    /// positions, which the weld needs) become one, the smallest id of each cluster of
+    /// close vertices winning (`util::weld` gives the exact rule). 0 (the default) is off:
+    /// the topology is that of the vertex ids as given.
+    pub weld_tolerance: f64,
 }
 
 impl Default for BuildOptions {
@@ -31,6 +36,7 @@ impl Default for BuildOptions {
             strict: false,
             threads: 0,
             memory_limit_bytes: 0,
+            weld_tolerance: 0.0,
         }
     }
 }

@@ -61,6 +61,9 @@ pub(crate) fn build(
         non_finite_vertex_examples,
         ..BuildReport::default()
     };
+    let welded = crate::util::weld::weld_elements(triangles, positions, options.weld_tolerance)?;
+    report.welded_vertices = welded.welded_vertices;
+    let triangles = &*welded.elements;
     let threads = crate::util::par::build_threads(options.threads, triangles.len());
     let (mut v, triangle_origin) = soup::soup(triangles, n_vertices, &mut report, threads)?;
     let triangle_origin = OriginMap::from(triangle_origin);

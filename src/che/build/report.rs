@@ -38,6 +38,9 @@ pub struct BuildReport {
     /// positions, but a host computing geometry must skip them).
     pub non_finite_vertices: u64,
     pub non_finite_vertex_examples: Vec<u32>,
+    /// Vertices merged into another by the weld (`BuildOptions::weld_tolerance`): no
+    /// element uses them any more; they keep their ids.
+    pub welded_vertices: usize,
 }
 
 impl BuildReport {

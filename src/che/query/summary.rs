@@ -40,6 +40,9 @@ impl Che {
         let n = self.n_input_vertices;
         let components = element_components::<3>(&self.v, n, |x| self.vertex_origin(x));
         let (components, isolated) = or_panic(components);
+        // The vertices the weld merged into another are not vertices of the welded complex.
+        let isolated = isolated - r.welded_vertices as u64;
+        let kept = n - r.welded_vertices;
 
         // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
         let o = self.opposites_or_computed();
@@ -60,7 +63,7 @@ impl Che {
         }
         let boundary_curves = dsu.roots_among(&on_boundary);
 
-        let euler = n as i64 - r.input_edges as i64 + self.num_triangles() as i64;
+        let euler = kept as i64 - r.input_edges as i64 + self.num_triangles() as i64;
         let orientable = r.non_orientable_components == 0;
         let manifold = r.non_manifold_edges == 0 && r.split_vertices == 0;
         let genus = if orientable && manifold {
@@ -75,7 +78,7 @@ impl Che {
             -1
         };
         Summary {
-            vertices: n as u64,
+            vertices: kept as u64,
             edges: r.input_edges as u64,
             triangles: self.num_triangles() as u64,
             boundary_edges: r.boundary_edges as u64,

@@ -99,6 +99,7 @@ pub(crate) fn build(chf: &Chf, threads: usize, memory_limit_bytes: u64) -> Resul
         strict: false,
         threads,
         memory_limit_bytes,
+        weld_tolerance: 0.0,
     };
     let che = surface(chf, &p, options)?;
     let n_hf = chf.v.len();

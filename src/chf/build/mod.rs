@@ -50,6 +50,9 @@ pub(crate) fn build(
         report.non_finite_vertices,
         report.non_finite_vertex_examples,
     ) = crate::util::non_finite_vertices(positions);
+    let welded = crate::util::weld::weld_elements(tets, positions, options.weld_tolerance)?;
+    report.welded_vertices = welded.welded_vertices;
+    let tets = &*welded.elements;
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
     let Oriented {

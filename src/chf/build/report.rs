@@ -60,6 +60,9 @@ pub struct BuildReport {
     /// zero-volume nor as inverted.
     pub non_finite_vertices: u64,
     pub non_finite_vertex_examples: Vec<u32>,
+    /// Vertices merged into another by the weld (`BuildOptions::weld_tolerance`): no
+    /// element uses them any more; they keep their ids.
+    pub welded_vertices: usize,
 }
 
 impl BuildReport {

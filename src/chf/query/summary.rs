@@ -48,6 +48,9 @@ impl Chf {
         let n = self.n_input_vertices;
         let components = element_components::<4>(&self.v, n, |x| self.vertex_origin(x));
         let (components, isolated) = or_panic(components);
+        // The vertices the weld merged into another are not vertices of the welded complex.
+        let isolated = isolated - r.welded_vertices as u64;
+        let kept = n - r.welded_vertices;
 
         // Input boundary faces: unpaired half-faces that are neither non-manifold nor seams.
         let view = self.view(Need::NOTHING);
@@ -73,9 +76,9 @@ impl Chf {
         let boundary_components = dsu.roots_among(&on_boundary);
 
         let t = self.num_tetrahedra() as i64;
-        let euler = n as i64 - r.input_edges as i64 + r.input_faces as i64 - t;
+        let euler = kept as i64 - r.input_edges as i64 + r.input_faces as i64 - t;
         Summary {
-            vertices: n as u64,
+            vertices: kept as u64,
             edges: r.input_edges as u64,
             faces: r.input_faces as u64,
             tetrahedra: t as u64,

@@ -80,12 +80,16 @@ pub struct CheBuildReport {
     pub seam_edges: u64,
     /// Input vertices with a NaN or infinite coordinate (kept).
     pub non_finite_vertices: u64,
+    /// Vertices merged into another by the weld (`weld_tolerance` of the build options):
+    /// no element uses them any more; they keep their ids.
+    pub welded_vertices: u64,
 }
 
 mirror!(BuildReport => CheBuildReport {
     input_triangles, input_vertices, dropped_degenerate, duplicate_triangles, input_edges,
     boundary_edges, non_manifold_edges, split_vertices, seam_split_vertices, added_vertices,
     flipped_triangles, non_orientable_components, seam_edges, non_finite_vertices,
+    welded_vertices,
 });
 
 /// The build report into `*out`. O(1).

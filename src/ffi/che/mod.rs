@@ -32,7 +32,7 @@ handle!(CheMesh { che: Che, vertex_origins, triangle_origins, warnings }, CheBui
 
 /// How to build a CHE.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CheBuildOptions {
     /// The level, 0..3 (default 2).
     pub level: u32,
@@ -51,14 +51,19 @@ pub struct CheBuildOptions {
     /// budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
     /// estimate and the budget).
     pub memory_limit_bytes: u64,
+    /// Weld before building: vertices at most this distance apart (on the positions, which
+    /// it needs) become one, the smallest id of each cluster of close vertices winning;
+    /// the others keep their ids but lose their elements. 0 (default) is off.
+    pub weld_tolerance: f64,
 }
 
-// The layout C hosts compile against: `strict` where the `bool` was, then the budget.
+// The layout C hosts compile against: `strict` where the `bool` was, then the budget and the weld.
 const _: () = {
-    assert!(core::mem::size_of::<CheBuildOptions>() == 24);
+    assert!(core::mem::size_of::<CheBuildOptions>() == 32);
     assert!(core::mem::offset_of!(CheBuildOptions, strict) == 4);
     assert!(core::mem::offset_of!(CheBuildOptions, threads) == 8);
     assert!(core::mem::offset_of!(CheBuildOptions, memory_limit_bytes) == 16);
+    assert!(core::mem::offset_of!(CheBuildOptions, weld_tolerance) == 24);
 };
 
 /// The default build options: level 2, not strict, every thread of the machine.

@@ -104,6 +104,9 @@ pub struct ChfBuildReport {
     /// Input vertices with a NaN or infinite coordinate (their tetrahedra are oriented by
     /// their neighbours).
     pub non_finite_vertices: u64,
+    /// Vertices merged into another by the weld (`weld_tolerance` of the build options):
+    /// no element uses them any more; they keep their ids.
+    pub welded_vertices: u64,
 }
 
 mirror!(Report => ChfBuildReport {
@@ -111,7 +114,7 @@ mirror!(Report => ChfBuildReport {
     duplicate_tetrahedra, input_faces, boundary_faces, non_manifold_faces, input_edges,
     non_manifold_edges, kept_non_manifold_edges, split_vertices, seam_split_vertices,
     added_vertices, flipped_tetrahedra, non_orientable_components, seam_faces,
-    non_finite_vertices,
+    non_finite_vertices, welded_vertices,
 });
 
 /// The build report into `*out`. O(1).

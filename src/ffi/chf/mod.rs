@@ -36,7 +36,7 @@ handle!(ChfMesh { chf: Chf, vertex_origins, tetrahedron_origins, warnings }, Chf
 
 /// How to build a CHF.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ChfBuildOptions {
     /// The level, 0..3 (default 2).
     pub level: u32,
@@ -55,14 +55,19 @@ pub struct ChfBuildOptions {
     /// budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
     /// estimate and the budget).
     pub memory_limit_bytes: u64,
+    /// Weld before building: vertices at most this distance apart (on the positions, which
+    /// it needs) become one, the smallest id of each cluster of close vertices winning;
+    /// the others keep their ids but lose their elements. 0 (default) is off.
+    pub weld_tolerance: f64,
 }
 
-// The layout C hosts compile against: `strict` where the `bool` was, then the budget.
+// The layout C hosts compile against: `strict` where the `bool` was, then the budget and the weld.
 const _: () = {
-    assert!(core::mem::size_of::<ChfBuildOptions>() == 24);
+    assert!(core::mem::size_of::<ChfBuildOptions>() == 32);
     assert!(core::mem::offset_of!(ChfBuildOptions, strict) == 4);
     assert!(core::mem::offset_of!(ChfBuildOptions, threads) == 8);
     assert!(core::mem::offset_of!(ChfBuildOptions, memory_limit_bytes) == 16);
+    assert!(core::mem::offset_of!(ChfBuildOptions, weld_tolerance) == 24);
 };
 
 /// The default CHF build options: level 2, not strict, every thread of the machine.

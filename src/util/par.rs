@@ -6,16 +6,21 @@ use std::sync::Mutex;
 /// threads, several times per build, would cost more than they save on a mesh this small.
 const PARALLEL_MIN_ELEMENTS: usize = 1 << 15;
 
+/// The most threads a build starts, whatever its `threads` option says: each thread takes a
+/// stack of its own, and a host passing a huge count (`UINT32_MAX`) must get a build, not
+/// a process aborted when the system runs out of memory for stacks.
+pub(crate) const MAX_BUILD_THREADS: usize = 256;
+
 /// The threads a build of `n` triangles or tetrahedra takes for its `threads` option (0: as
-/// many as the machine runs at once). Every step of the build shares its work among that
-/// many, or runs alone when it is 1.
+/// many as the machine runs at once), at most `MAX_BUILD_THREADS`. Every step of the build
+/// shares its work among that many, or runs alone when it is 1.
 pub(crate) fn build_threads(option: usize, n: usize) -> usize {
     if n < PARALLEL_MIN_ELEMENTS {
         1
     } else if option == 0 {
-        std::thread::available_parallelism().map_or(1, |n| n.get())
+        std::thread::available_parallelism().map_or(1, |n| n.get().min(MAX_BUILD_THREADS))
     } else {
-        option
+        option.min(MAX_BUILD_THREADS)
     }
 }
 
@@ -59,6 +64,17 @@ pub(crate) fn run_all<J: Send, T: Send>(jobs: Vec<J>, f: impl Fn(J) -> T + Sync)
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_huge_thread_count_is_capped() {
+        let n = super::PARALLEL_MIN_ELEMENTS;
+        assert_eq!(
+            super::build_threads(u32::MAX as usize, n),
+            super::MAX_BUILD_THREADS
+        );
+        assert_eq!(super::build_threads(3, n), 3);
+        assert_eq!(super::build_threads(u32::MAX as usize, n - 1), 1);
+    }
+
     #[test]
     fn answers_come_in_the_jobs_order() {
         for n in 0..6u32 {

@@ -56,6 +56,9 @@ for target in "${targets[@]}"; do
         dirs=("$scratch/$target" "$corpus")
     fi
     [ -d "seeds/$target" ] && dirs+=("seeds/$target")
+    # A reader's bad-input fixtures are seeds too (tests/fixtures/bad/FORMAT/).
+    bad="../tests/fixtures/bad/${target#read_}"
+    [[ "$target" == read_* && -d "$bad" ]] && dirs+=("$bad")
     echo "== fuzz $target ${limit[*]}"
     rm -rf "artifacts/$target"
     log="$scratch/$target.log"
@@ -66,5 +69,7 @@ for target in "${targets[@]}"; do
         echo "fuzz $target failed: the input is in fuzz/artifacts/$target" >&2
         exit 1
     fi
-    grep -E "^(#[0-9]+ *(DONE|INITED)|Done )" "$log" | tail -n 1 || tail -n 3 "$log"
+    # The coverage line (cov: edges, ft: features, corp: inputs) and the count of inputs run.
+    grep -E "^#[0-9]+ +(INITED|DONE) " "$log" | tail -n 1 || true
+    grep -E "^Done " "$log" || tail -n 3 "$log"
 done

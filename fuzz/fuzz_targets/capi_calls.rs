@@ -44,6 +44,10 @@ impl Bytes<'_> {
             _ => (u32::from(self.u8()) | u32::from(self.u8()) << 8) % (n as u32).max(1),
         }
     }
+    /// True once in `n` values of the next byte.
+    fn one_in(&mut self, n: u8) -> bool {
+        self.u8().is_multiple_of(n)
+    }
     fn is_empty(&self) -> bool {
         self.0.is_empty()
     }
@@ -199,16 +203,16 @@ fn che_build(b: &mut Bytes) -> *mut CheMesh {
     let positions: Vec<f64> = (0..3 * n_vertices)
         .map(|i| f64::from(b.u8()) + i as f64)
         .collect();
-    let pos = if b.u8() % 2 == 0 {
+    let pos = if b.one_in(2) {
         null()
     } else {
         positions.as_ptr()
     };
     let mut options = che_build_options_default();
     options.level = u32::from(b.u8() % 6);
-    options.strict = b.u8() % 4 == 0;
+    options.strict = b.one_in(4);
     options.threads = u32::from(b.u8() % 3);
-    let opt = if b.u8() % 8 == 0 {
+    let opt = if b.one_in(8) {
         null()
     } else {
         &options as *const _
@@ -242,7 +246,7 @@ fn che_call(m: *mut CheMesh, b: &mut Bytes, seen: &mut Seen) {
             let n = [nv, nv, nv, ne, ne, ne, nt, nt, nt, nc][usize::from(k)];
             let id = b.id(n);
             let cap = usize::from(b.u8() % 12);
-            let null = b.u8() % 16 == 0;
+            let null = b.one_in(16);
             let got = ids_call(
                 |p, c, l| unsafe { CHE_IDS[usize::from(k)](m, id, p, c, l) },
                 cap,
@@ -254,17 +258,8 @@ fn che_call(m: *mut CheMesh, b: &mut Bytes, seen: &mut Seen) {
             let k = usize::from(op / 12) % CHE_VALUES.len();
             let id = b.id([nh, nh, nh, nv, ne][k]);
             let mut out = 0;
-            let s = unsafe {
-                CHE_VALUES[k](
-                    m,
-                    id,
-                    if b.u8() % 16 == 0 {
-                        null_mut()
-                    } else {
-                        &mut out
-                    },
-                )
-            };
+            let s =
+                unsafe { CHE_VALUES[k](m, id, if b.one_in(16) { null_mut() } else { &mut out }) };
             assert_ne!(s, Status::Panic);
             remember(
                 seen,
@@ -413,16 +408,16 @@ fn chf_build(b: &mut Bytes) -> *mut ChfMesh {
     let positions: Vec<f64> = (0..3 * n_vertices)
         .map(|i| f64::from(b.u8()) - i as f64)
         .collect();
-    let pos = if b.u8() % 2 == 0 {
+    let pos = if b.one_in(2) {
         null()
     } else {
         positions.as_ptr()
     };
     let mut options = chf_build_options_default();
     options.level = u32::from(b.u8() % 6);
-    options.strict = b.u8() % 4 == 0;
+    options.strict = b.one_in(4);
     options.threads = u32::from(b.u8() % 3);
-    let opt = if b.u8() % 8 == 0 {
+    let opt = if b.one_in(8) {
         null()
     } else {
         &options as *const _
@@ -463,7 +458,7 @@ fn chf_call(m: *mut ChfMesh, b: &mut Bytes, seen: &mut Seen) {
             let k = (op / 10) % CHF_IDS.len() as u8;
             let id = b.id([nv, ne, nf, nt][usize::from(k / 4)]);
             let cap = usize::from(b.u8() % 24);
-            let null = b.u8() % 16 == 0;
+            let null = b.one_in(16);
             let got = ids_call(
                 |p, c, l| unsafe { CHF_IDS[usize::from(k)](m, id, p, c, l) },
                 cap,
@@ -475,17 +470,8 @@ fn chf_call(m: *mut ChfMesh, b: &mut Bytes, seen: &mut Seen) {
             let k = usize::from(op / 10) % CHF_VALUES.len();
             let id = b.id([nh, nh, nf, nv, nb, nv, nbv, nh, nf, nb, nv][k]);
             let mut out = 0;
-            let s = unsafe {
-                CHF_VALUES[k](
-                    m,
-                    id,
-                    if b.u8() % 16 == 0 {
-                        null_mut()
-                    } else {
-                        &mut out
-                    },
-                )
-            };
+            let s =
+                unsafe { CHF_VALUES[k](m, id, if b.one_in(16) { null_mut() } else { &mut out }) };
             assert_ne!(s, Status::Panic);
             remember(
                 seen,
@@ -566,7 +552,7 @@ fn chf_call(m: *mut ChfMesh, b: &mut Bytes, seen: &mut Seen) {
 fuzz_target!(|data: &[u8]| {
     let mut b = Bytes(data);
     let mut seen = Seen::new();
-    if b.u8() % 2 == 0 {
+    if b.one_in(2) {
         let m = che_build(&mut b);
         if m.is_null() {
             return last_error(&mut b);

@@ -70,6 +70,6 @@ for target in "${targets[@]}"; do
         exit 1
     fi
     # The coverage line (cov: edges, ft: features, corp: inputs) and the count of inputs run.
-    grep -E "^#[0-9]+ +(INITED|DONE) " "$log" | tail -n 1 || true
+    grep -E "^#[0-9]+[[:space:]]+(INITED|DONE)[[:space:]]" "$log" | tail -n 1 || true
     grep -E "^Done " "$log" || tail -n 3 "$log"
 done

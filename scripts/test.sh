@@ -25,8 +25,9 @@ bash scripts/check-windows.sh
 step "cargo test"
 cargo test --workspace --locked
 
-step "fuzzing: every reader and both builders, fixed seed (scripts/fuzz.sh)"
+step "fuzzing: every target, fixed seed, then the kept corpus (scripts/fuzz.sh)"
 bash scripts/fuzz.sh --runs 20000
+bash scripts/fuzz.sh --replay
 
 step "real meshes (libcgal-demo) and tetrahedral meshes (tetgen)"
 bash scripts/fetch-meshes.sh
@@ -34,5 +35,8 @@ bash scripts/fetch-tets.sh --no-large
 
 step "C and C++ tests (install, find_package, ctest, differential, valgrind)"
 bash scripts/c-tests.sh
+
+step "C and C++ tests under ASan+UBSan, stress tests under TSan (scripts/sanitize.sh)"
+bash scripts/sanitize.sh
 
 step "all tests passed"

@@ -12,8 +12,8 @@ const PARALLEL_MIN_ELEMENTS: usize = 1 << 15;
 const MIN_ELEMENTS_PER_THREAD: usize = 1 << 13;
 
 /// The threads a build of `n` triangles or tetrahedra takes for its `threads` option (0: as
-/// many as the machine runs at once). Every step of the build shares its work among that
-/// many, or runs alone when it is 1.
+/// many as the machine runs at once), as `planned_threads` plans them. Every step of the build
+/// shares its work among that many, or runs alone when it is 1.
 pub(crate) fn build_threads(option: usize, n: usize) -> usize {
     planned_threads(option, n)
 }

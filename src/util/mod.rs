@@ -3,6 +3,7 @@
 //! directories, union-find, small id lists, closing the holes of dropped elements, and the
 //! build reports' example lists.
 
+pub(crate) mod betti;
 pub(crate) mod csr;
 pub(crate) mod dsu;
 pub(crate) mod holes;
@@ -14,6 +15,7 @@ pub(crate) mod par;
 pub(crate) mod rank;
 pub(crate) mod rank_directory;
 pub(crate) mod small_ids;
+pub mod sparse;
 pub(crate) mod structure;
 
 /// How many offending ids a build report keeps of each kind.

@@ -45,6 +45,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHE: summary, build report, memory and validation", &[
         "che_mesh_summary", "che_mesh_report*", "che_mesh_memory", "che_mesh_validate",
     ]),
+    ("CHE: exports (half-edge, winged-edge, corner table, lists, matrices, Betti, strips)", &[
+        "che_mesh_export_*", "che_mesh_betti_numbers",
+    ]),
     ("CHE: zero-copy views of the structure's arrays", &["che_mesh_*"]),
     ("CHF: create, load, build levels and free", &[
         "chf_build_options_default", "chf_mesh_from_*", "chf_mesh_load*", "chf_mesh_free",

@@ -3,6 +3,7 @@
 
 mod build;
 mod csr;
+mod export;
 mod info;
 mod relations;
 mod star;
@@ -10,7 +11,7 @@ mod star;
 mod tests;
 mod views;
 
-pub use {build::*, csr::*, info::*, relations::*, star::*, views::*};
+pub use {build::*, csr::*, export::*, info::*, relations::*, star::*, views::*};
 
 use super::shapes::handle;
 use crate::che::{BuildOptions, Che};

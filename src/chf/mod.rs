@@ -40,12 +40,14 @@
 
 mod build;
 mod edges;
+pub mod export;
 pub mod ids;
 mod query;
 mod star_pass;
 
 pub use crate::Ids;
 pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA};
+pub use export::{HalfFaceArrays, VolumeMatrixKind};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use query::{Csr, EdgeIds, Memory, STAR_INLINE, Summary, VertexIds};
 

@@ -342,6 +342,72 @@ typedef uint32_t che_strip_list;
 #endif // __cplusplus
 
 /**
+ * Which array `chf_mesh_export_half_faces` writes. Half-face hf = 4t + i is face i of
+ * tetrahedron t (opposite its vertex i).
+ */
+enum chf_half_face_array
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * 1 per half-face: its twin (the same face in the other tetrahedron), TOPOMESH_NONE on
+     * the boundary.
+     */
+    CHF_HALF_FACE_ARRAY_TWIN = 0,
+    /**
+     * 3 per half-face: its vertices, in the order that points out of its tetrahedron.
+     */
+    CHF_HALF_FACE_ARRAY_VERTICES = 1,
+    /**
+     * 1 per half-face: its face id.
+     */
+    CHF_HALF_FACE_ARRAY_FACE = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum chf_half_face_array chf_half_face_array;
+#else
+typedef uint32_t chf_half_face_array;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Which matrix `chf_mesh_export_matrix` writes (the structure's elements).
+ */
+enum chf_matrix_kind
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * V x E: edge e from a to b (chf_edge_vertices) has -1 in row a, +1 in row b.
+     */
+    CHF_MATRIX_KIND_D1 = 0,
+    /**
+     * E x F: +1 where the face's cycle (chf_face_vertices) runs along the edge, -1
+     * against it.
+     */
+    CHF_MATRIX_KIND_D2 = 1,
+    /**
+     * F x T: +1 where the tetrahedron holds the face's canonical half-face, -1 where it
+     * holds the twin. d1 * d2 == 0 and d2 * d3 == 0.
+     */
+    CHF_MATRIX_KIND_D3 = 2,
+    /**
+     * T x T, the dual graph: 1 where two tetrahedra share a face.
+     */
+    CHF_MATRIX_KIND_DUAL_ADJACENCY = 3,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum chf_matrix_kind chf_matrix_kind;
+#else
+typedef uint32_t chf_matrix_kind;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * Opaque handle to a CHE surface. Create with `che_mesh_from_triangles` or
  * `che_mesh_load`, free with `che_mesh_free`.
  */
@@ -550,6 +616,16 @@ typedef struct chf_build_options {
      */
     uint32_t threads;
 } chf_build_options;
+
+/**
+ * Betti numbers over Z/2.
+ */
+typedef struct chf_betti {
+    uint64_t b0;
+    uint64_t b1;
+    uint64_t b2;
+    uint64_t b3;
+} chf_betti;
 
 /**
  * The topology of the input complex as given (input vertices, unique input edges and
@@ -1786,6 +1862,47 @@ topomesh_status chf_mesh_memory(const struct chf_mesh *m, struct chf_memory *out
  * wrong) in `topomesh_last_error`. O(T); the mesh is unchanged.
  */
 topomesh_status chf_mesh_validate(const struct chf_mesh *m);
+
+/* ---- CHF: exports (half-face arrays, dual graph, matrices, Betti) ---- */
+
+/**
+ * Half-face array `which` (a `ChfHalfFaceArray`). O(T) at every level.
+ */
+topomesh_status chf_mesh_export_half_faces(const struct chf_mesh *m,
+                                           uint32_t which,
+                                           uint32_t *buf,
+                                           size_t cap,
+                                           size_t *out_len);
+
+/**
+ * The dual graph: 4 entries per tetrahedron t, the tetrahedron across each of its faces
+ * (TOPOMESH_NONE on the boundary), as `chf_tetrahedron_tetrahedra`. O(T) at every level.
+ */
+topomesh_status chf_mesh_export_dual_graph(const struct chf_mesh *m,
+                                           uint32_t *buf,
+                                           size_t cap,
+                                           size_t *out_len);
+
+/**
+ * Betti numbers over Z/2 of the structure's complex into `*out`; b0 - b1 + b2 - b3 is
+ * its Euler characteristic.
+ */
+topomesh_status chf_mesh_betti_numbers(const struct chf_mesh *m, struct chf_betti *out);
+
+/**
+ * Sparse matrix `kind` (a `ChfMatrixKind`) in CSR, with the layout and buffer rules of
+ * `che_mesh_export_matrix`.
+ */
+topomesh_status chf_mesh_export_matrix(const struct chf_mesh *m,
+                                       uint32_t kind,
+                                       uint64_t *offsets,
+                                       size_t offsets_cap,
+                                       uint32_t *columns,
+                                       size_t columns_cap,
+                                       double *values,
+                                       size_t values_cap,
+                                       size_t *n_offsets,
+                                       size_t *n_entries);
 
 /* ---- CHF: zero-copy views of the structure's arrays ---- */
 

@@ -73,6 +73,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHF: summary, build report, memory and validation", &[
         "chf_mesh_summary", "chf_mesh_report*", "chf_mesh_memory", "chf_mesh_validate",
     ]),
+    ("CHF: exports (half-face arrays, dual graph, matrices, Betti)", &[
+        "chf_mesh_export_*", "chf_mesh_betti_numbers",
+    ]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),
     ("Status, errors and version", &["topomesh_*"]),
 ];

@@ -5,9 +5,9 @@
 //! core (`crate::che::export`).
 
 use super::CheMesh;
-use crate::che::{HalfEdgeArrays, HalfEdgeOptions, MatrixKind, WingedEdges};
+use crate::che::{HalfEdgeArrays, HalfEdgeOptions, MatrixKind, SparseMatrix, WingedEdges};
 use crate::error::{Error, Result};
-use crate::ffi::boundary::{Sink, core, guard, options_arg, report_kind};
+use crate::ffi::boundary::{Handle, Sink, core, guard, options_arg, report_kind};
 use crate::ffi::shapes::{ids, value};
 use crate::ffi::status::Status;
 
@@ -124,10 +124,6 @@ fn winged_array(w: WingedEdges, which: u32) -> Result<Vec<u32>> {
     report_kind(all, which, "che_winged_array")
 }
 
-fn matrix_kind(kind: u32) -> Result<MatrixKind> {
-    report_kind(MatrixKind::ALL, kind, "che_matrix_kind")
-}
-
 /// Half-edge (DCEL) array `which` (a `CheHalfEdgeArray`) with `options` (NULL: marked
 /// boundary). Half-edges 0..3T are CHE's own: 3t, 3t+1, 3t+2 go round triangle t
 /// counter-clockwise, half-edge h from vertex[h] (its tail) to vertex[next[h]]. O(T) at
@@ -221,26 +217,50 @@ pub unsafe extern "C" fn che_mesh_export_matrix(
     columns_cap: usize, values: *mut f64, values_cap: usize, n_offsets: *mut usize,
     n_entries: *mut usize,
 ) -> Status {
+    // SAFETY: forwarded caller contract.
+    unsafe {
+        matrix_out(
+            m,
+            [offsets.cast(), columns.cast(), values.cast()],
+            [offsets_cap, columns_cap, values_cap],
+            [n_offsets, n_entries],
+            |c| c.matrix(report_kind(MatrixKind::ALL, kind, "che_matrix_kind")?),
+        )
+    }
+}
+
+/// The body of a matrix export: `bufs` are the offsets (`u64`), columns (`u32`) and
+/// values (`f64`) buffers as the caller gave them (all NULL: a size query), `lens` the
+/// offsets' and entries' out-lengths; `make` gives the matrix from the handle's core.
+pub(crate) unsafe fn matrix_out<H: Handle>(
+    m: *const H, bufs: [*mut u8; 3], caps: [usize; 3], lens: [*mut usize; 2],
+    make: impl FnOnce(&H::Core) -> Result<SparseMatrix>,
+) -> Status {
     guard(|| {
-        let nulls = [offsets.is_null(), columns.is_null(), values.is_null()];
-        if nulls.iter().any(|&n| n != nulls[0]) {
-            let name = ["offsets", "columns", "values"][nulls.iter().position(|&n| n).unwrap_or(0)];
-            return Err(Error::new(
-                crate::ErrorKind::NullArgument,
-                format!("argument '{name}' is NULL while the other buffers are not"),
-            ));
+        let names = ["offsets", "columns", "values"];
+        let nulls = bufs.map(|b| b.is_null());
+        if let Some(k) = nulls
+            .iter()
+            .position(|&n| n)
+            .filter(|_| nulls.contains(&false))
+        {
+            let message = format!(
+                "argument '{}' is NULL while the other buffers are not",
+                names[k]
+            );
+            return Err(Error::new(crate::ErrorKind::NullArgument, message));
         }
         let mut n_values = 0usize;
         // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
         let (c, mut o, mut k, mut v) = unsafe {
             (
                 core(m)?,
-                Sink::new(offsets, offsets_cap, n_offsets, "offsets")?,
-                Sink::new(columns, columns_cap, n_entries, "columns")?,
-                Sink::new(values, values_cap, &mut n_values, "values")?,
+                Sink::<u64>::new(bufs[0].cast(), caps[0], lens[0], "offsets")?,
+                Sink::<u32>::new(bufs[1].cast(), caps[1], lens[1], "columns")?,
+                Sink::<f64>::new(bufs[2].cast(), caps[2], &mut n_values, "values")?,
             )
         };
-        let a = c.matrix(matrix_kind(kind)?)?;
+        let a = make(c)?;
         o.extend(a.offsets);
         k.extend(a.columns);
         v.extend(a.values);

@@ -3,6 +3,7 @@
 
 mod build;
 mod csr;
+mod export;
 mod half_faces;
 mod info;
 mod relations;
@@ -11,7 +12,7 @@ mod surface;
 mod tests;
 mod views;
 
-pub use {build::*, csr::*, half_faces::*, info::*, relations::*, surface::*, views::*};
+pub use {build::*, csr::*, export::*, half_faces::*, info::*, relations::*, surface::*, views::*};
 
 use super::shapes::handle;
 use crate::chf::{BuildOptions, Chf};

@@ -1162,7 +1162,9 @@ topomesh_status che_mesh_validate(const struct che_mesh *m);
  * Half-edge (DCEL) array `which` (a `CheHalfEdgeArray`) with `options` (NULL: marked
  * boundary). Half-edges 0..3T are CHE's own: 3t, 3t+1, 3t+2 go round triangle t
  * counter-clockwise, half-edge h from vertex[h] (its tail) to vertex[next[h]]. O(T) at
- * every level.
+ * every level. Without explicit boundary, `vertex` and `twin` are the structure's own
+ * arrays, lent without a copy by `che_mesh_half_edge_vertices` and (from level 1)
+ * `che_mesh_opposites`.
  */
 topomesh_status che_mesh_export_half_edges(const struct che_mesh *m,
                                            const struct che_half_edge_options *options,

@@ -217,7 +217,7 @@ fn boundary_of_boundary_and_arrays() {
                 .collect();
             let dual = chf.tetrahedron_dual_graph().unwrap();
             let adjacency = m(VolumeMatrixKind::DualAdjacency);
-            for hf in 0..a.twin.len() {
+            for (hf, &across) in dual.iter().enumerate() {
                 let (t, i) = (hf / 4, hf % 4);
                 let mut got = a.vertices[3 * hf..3 * hf + 3].to_vec();
                 let mut want: Vec<u32> = (0..4).filter(|&k| k != i).map(|k| v[t][k]).collect();
@@ -226,7 +226,7 @@ fn boundary_of_boundary_and_arrays() {
                 assert_eq!(got, want);
                 let g = a.twin[hf];
                 if g == NONE {
-                    assert_eq!(dual[hf], NONE);
+                    assert_eq!(across, NONE);
                     continue;
                 }
                 let g = g as usize;
@@ -240,7 +240,7 @@ fn boundary_of_boundary_and_arrays() {
                     (0..3).any(|r| (0..3).all(|k| x[k] == y[(r + 3 - k) % 3])),
                     "reversed"
                 );
-                assert_eq!(dual[hf], (g / 4) as u32);
+                assert_eq!(across, (g / 4) as u32);
                 assert_eq!(adjacency.get(&(t as u32, (g / 4) as u32)), Some(&1.0));
             }
         }

@@ -23,10 +23,10 @@ impl Che {
         let (used, isolated) = element_components::<3>(&self.v, n_in, |x| self.vertex_origin(x));
         let b0 = used + isolated;
         let rank1 = n_in as u64 - b0;
-        let t = self.export_tables()?;
+        let o = self.opposites_or_computed();
         let special = self.rejoined_edges();
         let n_edges = (self.num_edges - special.len() + distinct_pairs(&special)) as u64;
-        let rank2 = self.rank_d2(&t.o, &special) as u64;
+        let rank2 = self.rank_d2(&o, &special) as u64;
         let nt = self.num_triangles() as u64;
         Ok([b0, n_edges - rank1 - rank2, nt - rank2])
     }

@@ -575,6 +575,16 @@ fn betti_numbers_of_known_surfaces() {
                 "{name} level {}",
                 che.level()
             );
+            // b0 counts the components; on one closed orientable surface b1 = 2g.
+            let s = che.summary();
+            assert_eq!(
+                want[0],
+                s.components + s.isolated_vertices,
+                "{name}: components"
+            );
+            if s.components == 1 && s.orientable && s.boundary_edges == 0 {
+                assert_eq!(want[1] as i64, 2 * s.genus, "{name}: genus");
+            }
         }
     }
 }

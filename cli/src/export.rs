@@ -58,9 +58,10 @@ pub fn run(options: &ExportOptions) -> Result<ExitCode, Failure> {
     let che = build_surface(&data, BuildOptions::level(options.level))?;
     drop(progress);
     if options.output.as_os_str() == "-" {
-        let mut out = Out::new();
+        // Stdout flushes at every line: a buffer in front of it for the many rows.
+        let mut out = BufWriter::new(Out::new());
         write(&mut out, &che, options)?;
-        out.finish()?;
+        out.into_inner().map_err(|e| e.into_error())?.finish()?;
     } else {
         let file = File::create(&options.output)
             .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", options.output.display())))?;
@@ -71,19 +72,17 @@ pub fn run(options: &ExportOptions) -> Result<ExitCode, Failure> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// An id, `-1` for none.
-fn id(x: u32) -> String {
-    if x == NONE {
-        "-1".into()
-    } else {
-        x.to_string()
-    }
-}
-
-/// One row of ids.
+/// One row of ids, `-1` for none, written straight to the buffered output.
 fn row(out: &mut impl Write, ids: &[u32]) -> io::Result<()> {
-    let text: Vec<String> = ids.iter().map(|&x| id(x)).collect();
-    writeln!(out, "{}", text.join(" "))
+    for (k, &x) in ids.iter().enumerate() {
+        let sep = if k == 0 { "" } else { " " };
+        if x == NONE {
+            write!(out, "{sep}-1")?;
+        } else {
+            write!(out, "{sep}{x}")?;
+        }
+    }
+    writeln!(out)
 }
 
 /// `chunks` rows of `width` ids each.

@@ -14,7 +14,9 @@ impl Chf {
     ///
     /// `rank d1` and `rank d3` come from union-finds (an edge has two ends, a face one or
     /// two tetrahedra); `rank d2` from the column reduction of persistent homology over the
-    /// faces' edges.
+    /// faces' edges, which is not linear: reduced columns grow with the mesh, so on large
+    /// meshes this is much slower than the other exports (which is why `topomesh info`
+    /// prints Betti numbers for surfaces only).
     pub fn betti_numbers(&self) -> Result<[u64; 4]> {
         let view = self.view(Need {
             faces: true,

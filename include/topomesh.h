@@ -207,6 +207,232 @@ typedef uint32_t chf_report_kind;
 #endif // __cplusplus
 
 /**
+ * Which array `che_mesh_export_half_edges` writes (one entry per half-edge unless
+ * stated).
+ */
+enum che_half_edge_array
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * The next half-edge round the same triangle (or hole).
+     */
+    CHE_HALF_EDGE_ARRAY_NEXT = 0,
+    /**
+     * The previous half-edge round the same triangle (or hole).
+     */
+    CHE_HALF_EDGE_ARRAY_PREV = 1,
+    /**
+     * The opposite half-edge (TOPOMESH_NONE on a marked boundary).
+     */
+    CHE_HALF_EDGE_ARRAY_TWIN = 2,
+    /**
+     * The tail (origin) of the half-edge, CHE's V; the head is vertex[next[h]].
+     */
+    CHE_HALF_EDGE_ARRAY_VERTEX = 3,
+    /**
+     * The triangle (TOPOMESH_NONE for an explicit boundary half-edge).
+     */
+    CHE_HALF_EDGE_ARRAY_FACE = 4,
+    /**
+     * The edge id.
+     */
+    CHE_HALF_EDGE_ARRAY_EDGE = 5,
+    /**
+     * One entry per vertex: an outgoing half-edge, the boundary one on the boundary (the
+     * hole's when explicit), TOPOMESH_NONE when isolated.
+     */
+    CHE_HALF_EDGE_ARRAY_VERTEX_HALF_EDGE = 6,
+    /**
+     * One entry per triangle t: 3t.
+     */
+    CHE_HALF_EDGE_ARRAY_FACE_HALF_EDGE = 7,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum che_half_edge_array che_half_edge_array;
+#else
+typedef uint32_t che_half_edge_array;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Which array `che_mesh_export_winged_edges` writes.
+ */
+enum che_winged_array
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * 2 per edge: its ends, in the direction of its canonical half-edge.
+     */
+    CHE_WINGED_ARRAY_VERTICES = 0,
+    /**
+     * 2 per edge: the left triangle (which runs along that direction), then the right
+     * one (TOPOMESH_NONE on the boundary).
+     */
+    CHE_WINGED_ARRAY_FACES = 1,
+    /**
+     * 4 per edge: the edges before and after it counter-clockwise round the left
+     * triangle, then round the right one (TOPOMESH_NONE twice on the boundary).
+     */
+    CHE_WINGED_ARRAY_WINGS = 2,
+    /**
+     * 1 per vertex: an edge at it (TOPOMESH_NONE when isolated).
+     */
+    CHE_WINGED_ARRAY_VERTEX_EDGE = 3,
+    /**
+     * 1 per triangle t: the edge of half-edge 3t.
+     */
+    CHE_WINGED_ARRAY_FACE_EDGE = 4,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum che_winged_array che_winged_array;
+#else
+typedef uint32_t che_winged_array;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Which matrix `che_mesh_export_matrix` writes (vertices, edges and triangles are the
+ * structure's).
+ */
+enum che_matrix_kind
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * V x V: 1 where an edge joins two vertices (several edges count once).
+     */
+    CHE_MATRIX_KIND_VERTEX_ADJACENCY = 0,
+    /**
+     * E x E: 1 where two edges share a vertex.
+     */
+    CHE_MATRIX_KIND_EDGE_ADJACENCY = 1,
+    /**
+     * V x E, the boundary operator d1: edge e from a to b (its canonical direction,
+     * che_edge_vertices) has -1 in row a and +1 in row b.
+     */
+    CHE_MATRIX_KIND_D1 = 2,
+    /**
+     * E x T, the boundary operator d2: +1 where the triangle runs along the edge's
+     * canonical direction, -1 where it runs against it. d1 * d2 == 0.
+     */
+    CHE_MATRIX_KIND_D2 = 3,
+    /**
+     * V x V, the combinatorial Laplacian: the number of neighbours on the diagonal, -1
+     * where the vertex adjacency has 1.
+     */
+    CHE_MATRIX_KIND_LAPLACIAN = 4,
+    /**
+     * T x T, the dual graph: 1 where two triangles share an edge.
+     */
+    CHE_MATRIX_KIND_DUAL_ADJACENCY = 5,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum che_matrix_kind che_matrix_kind;
+#else
+typedef uint32_t che_matrix_kind;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Which list `che_mesh_export_strips` writes.
+ */
+enum che_strip_list
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * The strips one after another, separated by TOPOMESH_NONE (primitive restart).
+     */
+    CHE_STRIP_LIST_RESTARTS = 0,
+    /**
+     * One strip, the strips joined by degenerate triangles (repeated vertices).
+     */
+    CHE_STRIP_LIST_JOINED = 1,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum che_strip_list che_strip_list;
+#else
+typedef uint32_t che_strip_list;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Which array `chf_mesh_export_half_faces` writes. Half-face hf = 4t + i is face i of
+ * tetrahedron t (opposite its vertex i).
+ */
+enum chf_half_face_array
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * 1 per half-face: its twin (the same face in the other tetrahedron), TOPOMESH_NONE on
+     * the boundary.
+     */
+    CHF_HALF_FACE_ARRAY_TWIN = 0,
+    /**
+     * 3 per half-face: its vertices, in the order that points out of its tetrahedron.
+     */
+    CHF_HALF_FACE_ARRAY_VERTICES = 1,
+    /**
+     * 1 per half-face: its face id.
+     */
+    CHF_HALF_FACE_ARRAY_FACE = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum chf_half_face_array chf_half_face_array;
+#else
+typedef uint32_t chf_half_face_array;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Which matrix `chf_mesh_export_matrix` writes (the structure's elements).
+ */
+enum chf_matrix_kind
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * V x E: edge e from a to b (chf_edge_vertices) has -1 in row a, +1 in row b.
+     */
+    CHF_MATRIX_KIND_D1 = 0,
+    /**
+     * E x F: +1 where the face's cycle (chf_face_vertices) runs along the edge, -1
+     * against it.
+     */
+    CHF_MATRIX_KIND_D2 = 1,
+    /**
+     * F x T: +1 where the tetrahedron holds the face's canonical half-face, -1 where it
+     * holds the twin. d1 * d2 == 0 and d2 * d3 == 0.
+     */
+    CHF_MATRIX_KIND_D3 = 2,
+    /**
+     * T x T, the dual graph: 1 where two tetrahedra share a face.
+     */
+    CHF_MATRIX_KIND_DUAL_ADJACENCY = 3,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum chf_matrix_kind chf_matrix_kind;
+#else
+typedef uint32_t chf_matrix_kind;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * Opaque handle to a CHE surface. Create with `che_mesh_from_triangles` or
  * `che_mesh_load`, free with `che_mesh_free`.
  */
@@ -254,6 +480,28 @@ typedef struct che_build_options {
      */
     double weld_tolerance;
 } che_build_options;
+
+/**
+ * How `che_mesh_export_half_edges` shows the boundary.
+ */
+typedef struct che_half_edge_options {
+    /**
+     * false (default): only the 3T half-edges of the triangles, a boundary half-edge
+     * marked by twin == TOPOMESH_NONE. true (OpenMesh style): one extra half-edge per
+     * boundary half-edge, numbered from 3T in the order of the half-edges they twin, with
+     * face TOPOMESH_NONE, linked by next and prev into a loop round each hole.
+     */
+    bool explicit_boundary;
+} che_half_edge_options;
+
+/**
+ * Betti numbers over Z/2.
+ */
+typedef struct che_betti {
+    uint64_t b0;
+    uint64_t b1;
+    uint64_t b2;
+} che_betti;
 
 /**
  * The topology of the input complex as given (input vertices, unique input edges, kept
@@ -434,6 +682,16 @@ typedef struct chf_build_options {
      */
     double weld_tolerance;
 } chf_build_options;
+
+/**
+ * Betti numbers over Z/2.
+ */
+typedef struct chf_betti {
+    uint64_t b0;
+    uint64_t b1;
+    uint64_t b2;
+    uint64_t b3;
+} chf_betti;
 
 /**
  * The topology of the input complex as given (input vertices, unique input edges and
@@ -1038,6 +1296,101 @@ topomesh_status che_mesh_validate(const struct che_mesh *m);
  * surface (.node) `TOPOMESH_STATUS_INVALID_INPUT`.
  */
 topomesh_status che_mesh_write(const struct che_mesh *m, const char *path, uint32_t flags);
+
+/* ---- CHE: exports (half-edge, winged-edge, corner table, lists, matrices, Betti, strips) ---- */
+
+/**
+ * Half-edge (DCEL) array `which` (a `CheHalfEdgeArray`) with `options` (NULL: marked
+ * boundary). Half-edges 0..3T are CHE's own: 3t, 3t+1, 3t+2 go round triangle t
+ * counter-clockwise, half-edge h from vertex[h] (its tail) to vertex[next[h]]. O(T) at
+ * every level. Without explicit boundary, `vertex` and `twin` are the structure's own
+ * arrays, lent without a copy by `che_mesh_half_edge_vertices` and (from level 1)
+ * `che_mesh_opposites`.
+ */
+topomesh_status che_mesh_export_half_edges(const struct che_mesh *m,
+                                           const struct che_half_edge_options *options,
+                                           uint32_t which,
+                                           uint32_t *buf,
+                                           size_t cap,
+                                           size_t *out_len);
+
+/**
+ * Winged-edge array `which` (a `CheWingedArray`) over the edge ids of `che_half_edge_edge`.
+ * O(T) at every level.
+ */
+topomesh_status che_mesh_export_winged_edges(const struct che_mesh *m,
+                                             uint32_t which,
+                                             uint32_t *buf,
+                                             size_t cap,
+                                             size_t *out_len);
+
+/**
+ * The corner table's opposite corners, 3T entries. Corner c is half-edge c: the corner of
+ * triangle c / 3 at vertex V[c] (so the table's V is `che_mesh_half_edge_vertices`); the
+ * opposite corner of c faces the same edge (half-edge next(c)) from the other triangle:
+ * prev(O[next(c)]), TOPOMESH_NONE on the boundary. O(T) at every level.
+ */
+topomesh_status che_mesh_export_corner_opposites(const struct che_mesh *m,
+                                                 uint32_t *buf,
+                                                 size_t cap,
+                                                 size_t *out_len);
+
+/**
+ * The edge list, 2E entries: edge e from [2e] to [2e + 1], in the direction of its
+ * canonical half-edge. O(T) at every level.
+ */
+topomesh_status che_mesh_export_edge_list(const struct che_mesh *m,
+                                          uint32_t *buf,
+                                          size_t cap,
+                                          size_t *out_len);
+
+/**
+ * The face list with edge ids, 3T entries: entry 3t + i is the edge of half-edge 3t + i
+ * (from corner i to corner i + 1 of triangle t). O(T) at every level.
+ */
+topomesh_status che_mesh_export_triangle_edges(const struct che_mesh *m,
+                                               uint32_t *buf,
+                                               size_t cap,
+                                               size_t *out_len);
+
+/**
+ * Triangle strips covering every triangle once in its orientation (greedy, from the
+ * dual graph), as list `which` (a `CheStripList`). A strip s stands for the triangles
+ * (s[i], s[i+1], s[i+2]) for even i and (s[i+1], s[i], s[i+2]) for odd i. O(T) at every
+ * level.
+ */
+topomesh_status che_mesh_export_strips(const struct che_mesh *m,
+                                       uint32_t which,
+                                       uint32_t *buf,
+                                       size_t cap,
+                                       size_t *out_len);
+
+/**
+ * Betti numbers over Z/2 of the surface as given (seams and split vertices joined again,
+ * isolated vertices counted) into `*out`; b0 - b1 + b2 is the Euler characteristic of
+ * `che_mesh_summary`. Near-linear at every level.
+ */
+topomesh_status che_mesh_betti_numbers(const struct che_mesh *m, struct che_betti *out);
+
+/**
+ * Sparse matrix `kind` (a `CheMatrixKind`) in CSR, ready for Eigen (`Map<SparseMatrix<
+ * double, RowMajor, int64_t>>` after a cast of the columns) or SciPy (`csr_matrix((values,
+ * columns, offsets))`): row r holds `columns[offsets[r] .. offsets[r + 1]]` (sorted) with
+ * `values` at the same places; `*n_offsets` is rows + 1, `*n_entries` the entries. All
+ * three buffers NULL (capacities 0) is a size query; some NULL and not all is an error; a
+ * short buffer gives BUFFER_TOO_SMALL with both lengths written. O(T + entries) at every
+ * level.
+ */
+topomesh_status che_mesh_export_matrix(const struct che_mesh *m,
+                                       uint32_t kind,
+                                       uint64_t *offsets,
+                                       size_t offsets_cap,
+                                       uint32_t *columns,
+                                       size_t columns_cap,
+                                       double *values,
+                                       size_t values_cap,
+                                       size_t *n_offsets,
+                                       size_t *n_entries);
 
 /* ---- CHE: zero-copy views of the structure's arrays ---- */
 
@@ -1737,6 +2090,47 @@ topomesh_status chf_mesh_write(const struct chf_mesh *m, const char *path, uint3
  * vertex of the volume mesh it lies on. The same flags and statuses as `che_mesh_write`.
  */
 topomesh_status chf_mesh_write_boundary(const struct chf_mesh *m, const char *path, uint32_t flags);
+
+/* ---- CHF: exports (half-face arrays, dual graph, matrices, Betti) ---- */
+
+/**
+ * Half-face array `which` (a `ChfHalfFaceArray`). O(T) at every level.
+ */
+topomesh_status chf_mesh_export_half_faces(const struct chf_mesh *m,
+                                           uint32_t which,
+                                           uint32_t *buf,
+                                           size_t cap,
+                                           size_t *out_len);
+
+/**
+ * The dual graph: 4 entries per tetrahedron t, the tetrahedron across each of its faces
+ * (TOPOMESH_NONE on the boundary), as `chf_tetrahedron_tetrahedra`. O(T) at every level.
+ */
+topomesh_status chf_mesh_export_dual_graph(const struct chf_mesh *m,
+                                           uint32_t *buf,
+                                           size_t cap,
+                                           size_t *out_len);
+
+/**
+ * Betti numbers over Z/2 of the structure's complex into `*out`; b0 - b1 + b2 - b3 is
+ * its Euler characteristic.
+ */
+topomesh_status chf_mesh_betti_numbers(const struct chf_mesh *m, struct chf_betti *out);
+
+/**
+ * Sparse matrix `kind` (a `ChfMatrixKind`) in CSR, with the layout and buffer rules of
+ * `che_mesh_export_matrix`.
+ */
+topomesh_status chf_mesh_export_matrix(const struct chf_mesh *m,
+                                       uint32_t kind,
+                                       uint64_t *offsets,
+                                       size_t offsets_cap,
+                                       uint32_t *columns,
+                                       size_t columns_cap,
+                                       double *values,
+                                       size_t values_cap,
+                                       size_t *n_offsets,
+                                       size_t *n_entries);
 
 /* ---- CHF: zero-copy views of the structure's arrays ---- */
 

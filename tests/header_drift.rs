@@ -47,6 +47,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
         "che_mesh_summary", "che_mesh_report*", "che_mesh_memory", "che_mesh_validate",
     ]),
     ("CHE: writing files", &["che_mesh_write"]),
+    ("CHE: exports (half-edge, winged-edge, corner table, lists, matrices, Betti, strips)", &[
+        "che_mesh_export_*", "che_mesh_betti_numbers",
+    ]),
     ("CHE: zero-copy views of the structure's arrays", &["che_mesh_*"]),
     ("CHF: create, load, build levels and free", &[
         "chf_build_options_default", "chf_mesh_from_*", "chf_mesh_load*",
@@ -74,6 +77,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
         "chf_mesh_summary", "chf_mesh_report*", "chf_mesh_memory", "chf_mesh_validate",
     ]),
     ("CHF: writing files", &["chf_mesh_write", "chf_mesh_write_boundary"]),
+    ("CHF: exports (half-face arrays, dual graph, matrices, Betti)", &[
+        "chf_mesh_export_*", "chf_mesh_betti_numbers",
+    ]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),
     ("The weld of nearly equal vertices (what weld_tolerance applies)", &[
         "topomesh_weld_*",

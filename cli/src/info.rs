@@ -128,11 +128,13 @@ fn surface_info(
         build_surface(data, options.surface())
     })?;
     let (summary, memory) = (che.summary(), che.memory_bytes());
+    let betti = che.betti_numbers()?;
     let out = SurfaceInfo {
         file: name,
         kind: "surface",
         level: options.level,
         summary: SurfaceSummary(&summary),
+        betti,
         structure: SurfaceStructure::of(&che),
         report: SurfaceReport(che.report()),
         memory: SurfaceMemory(&memory),
@@ -150,6 +152,8 @@ struct SurfaceInfo<'a> {
     level: u8,
     #[serde(flatten)]
     summary: SurfaceSummary<'a>,
+    /// Betti numbers over Z/2 of the surface as given: `[b0, b1, b2]`.
+    betti: [u64; 3],
     structure: SurfaceStructure,
     report: SurfaceReport<'a>,
     memory: SurfaceMemory<'a>,
@@ -212,6 +216,8 @@ fn print_surface(out: &mut Out, i: &SurfaceInfo) -> io::Result<()> {
         s.genus.to_string()
     };
     line(out, "genus", genus)?;
+    let [b0, b1, b2] = i.betti;
+    line(out, "betti numbers (Z/2)", format!("{b0} {b1} {b2}"))?;
     line(out, "orientable", yes(s.orientable))?;
     line(out, "manifold", yes(s.manifold))?;
     report::surface(out, i.report.0)?;

@@ -6,6 +6,7 @@ mod bench;
 mod check;
 mod convert;
 mod exit;
+mod export;
 mod info;
 mod input;
 mod json;
@@ -79,6 +80,32 @@ enum Command {
         exit_code_table!()
     ))]
     Bench(bench::BenchOptions),
+    /// Write a surface as half-edge, winged-edge or corner arrays, lists, strips or matrices.
+    #[command(after_help = concat!(
+        "Examples:
+  topomesh export bunny.off --as halfedge -o bunny.he
+  topomesh export bunny.off --as laplacian -o L.mtx   Matrix Market, for SciPy or Eigen
+  topomesh export bunny.off --as strips -o -          to stdout\n\n",
+        "Layouts (one header line, then rows of space-separated numbers; ids from 0, -1 for none):
+  halfedge   'halfedge H V T', then H rows 'next prev twin tail face edge' (tail: the
+             origin; with --explicit-boundary the boundary twins are rows 3T.., face -1),
+             V rows 'outgoing half-edge', T rows 'half-edge'
+  winged     'winged E V T', then E rows 'a b left right left_prev left_next right_prev
+             right_next' (the edge runs a -> b along its left triangle), V rows 'edge',
+             T rows 'edge'
+  corner     'corner C', then C = 3T rows 'vertex opposite' (corner c is half-edge c)
+  edges      'edges E', then E rows 'a b'
+  dual       'dual T', then T rows 'n0 n1 n2': the triangle across each edge, -1 on the
+             boundary
+  strips     'strips S', then S rows: the vertices of one strip (triangle i of a strip
+             is (s[i], s[i+1], s[i+2]), its first two swapped when i is odd)
+  d1, d2, laplacian, vertex-adjacency, edge-adjacency, dual-adjacency
+             Matrix Market: '%%MatrixMarket matrix coordinate real general', then
+             'rows columns entries', then one 'row column value' row per entry, from 1,
+             sorted by row and column (scipy.io.mmread, Eigen's loadMarket)\n\n",
+        exit_code_table!()
+    ))]
+    Export(export::ExportOptions),
 }
 
 fn main() -> ExitCode {
@@ -99,5 +126,6 @@ fn main() -> ExitCode {
         Command::Check(options) => check::run(&options),
         Command::Convert(options) => convert::run(&options),
         Command::Bench(options) => bench::run(&options),
+        Command::Export(options) => export::run(&options),
     })
 }

@@ -9,16 +9,19 @@
 //! vertices split) so that the half-edge and edge ids are the same at every level.
 
 mod build;
+pub mod export;
 pub mod ids;
 mod pairs;
 mod query;
 mod tables;
 
 pub use crate::Ids;
+pub use crate::util::sparse::SparseMatrix;
 pub use build::{
     BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts,
     estimated_build_bytes,
 };
+pub use export::{CornerTable, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges};
 pub use ids::{first, next, prev, tri};
 pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
 pub(crate) use query::{Push, Rows};

@@ -40,6 +40,7 @@
 
 mod build;
 mod edges;
+pub mod export;
 pub mod ids;
 mod query;
 mod star_pass;
@@ -47,6 +48,7 @@ mod star_pass;
 pub use crate::Ids;
 pub use crate::util::options::MAX_UNUSED_VERTICES;
 pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA, check_counts, estimated_build_bytes};
+pub use export::{HalfFaceArrays, VolumeMatrixKind};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use query::{Csr, EdgeIds, Memory, STAR_INLINE, Summary, VertexIds};
 

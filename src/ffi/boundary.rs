@@ -176,12 +176,11 @@ pub(crate) fn write_flags_arg(flags: u32) -> Result<crate::io::WriteOptions> {
     })
 }
 
-/// The examples of report kind `kind` (`all` in the C enum's order), or OUT_OF_RANGE.
-pub(crate) fn report_kind<const N: usize>(
-    all: [Vec<u32>; N], kind: u32, name: &str,
-) -> Result<Vec<u32>> {
+/// The entry of `all` that C enum value `kind` names (`all` in the C enum's order: report
+/// kinds, export arrays), or OUT_OF_RANGE naming the enum.
+pub(crate) fn report_kind<T, const N: usize>(all: [T; N], kind: u32, name: &str) -> Result<T> {
     let max = N - 1;
-    let error = || Error::out_of_range(format!("report kind {kind} is not a {name} (0..{max})"));
+    let error = || Error::out_of_range(format!("kind {kind} is not a {name} (0..{max})"));
     all.into_iter().nth(kind as usize).ok_or_else(error)
 }
 
@@ -289,18 +288,18 @@ pub(crate) unsafe fn free_handle<T>(p: *mut T) {
 /// A caller buffer for a variable-size answer. `buf == NULL` with `cap == 0` is a size
 /// query; otherwise the first `cap` entries are written, the rest only counted, and
 /// `finish` reports the full length in `*out_len` and BUFFER_TOO_SMALL when it did not fit.
-pub(crate) struct Sink<'a> {
-    buf: &'a mut [MaybeUninit<u32>],
+pub(crate) struct Sink<'a, T = u32> {
+    buf: &'a mut [MaybeUninit<T>],
     query: bool,
     len: usize,
     out_len: Out<usize>,
     name: &'static str,
 }
 
-impl<'a> Sink<'a> {
+impl<'a, T: Copy> Sink<'a, T> {
     /// `buf` is NULL or valid for `cap` writes during `'a`; `out_len` NULL or writable.
     pub(crate) unsafe fn new(
-        buf: *mut u32, cap: usize, out_len: *mut usize, name: &'static str,
+        buf: *mut T, cap: usize, out_len: *mut usize, name: &'static str,
     ) -> Result<Self> {
         // SAFETY: forwarded contract.
         let out_len = unsafe { out_arg(out_len, "out_len")? };
@@ -310,7 +309,7 @@ impl<'a> Sink<'a> {
         }
         // No object is larger than isize::MAX bytes, so a larger `cap` (say SIZE_MAX for
         // "unbounded") cannot be the real size: clamp it rather than build an invalid slice.
-        let cap = cap.min(isize::MAX as usize / 4);
+        let cap = cap.min(isize::MAX as usize / size_of::<T>().max(1));
         let buf = if query {
             &mut []
         } else {
@@ -326,8 +325,17 @@ impl<'a> Sink<'a> {
         })
     }
 
-    pub(crate) fn extend(&mut self, xs: impl IntoIterator<Item = u32>) {
-        xs.into_iter().for_each(|x| self.push(x));
+    pub(crate) fn extend(&mut self, xs: impl IntoIterator<Item = T>) {
+        xs.into_iter().for_each(|x| self.put(x));
+    }
+
+    /// One entry: written when it fits, counted always.
+    #[inline(always)]
+    pub(crate) fn put(&mut self, x: T) {
+        if let Some(slot) = self.buf.get_mut(self.len) {
+            slot.write(x);
+        }
+        self.len += 1;
     }
 
     /// Writes `*out_len`; BUFFER_TOO_SMALL if the answer did not fit.
@@ -348,10 +356,7 @@ impl<'a> Sink<'a> {
 impl Push for Sink<'_> {
     #[inline(always)]
     fn push(&mut self, x: u32) {
-        if let Some(slot) = self.buf.get_mut(self.len) {
-            slot.write(x);
-        }
-        self.len += 1;
+        self.put(x);
     }
 }
 

@@ -5,6 +5,7 @@
 
 #[allow(dead_code)]
 pub(crate) mod alloc;
+pub(crate) mod betti;
 pub(crate) mod budget;
 pub(crate) mod csr;
 pub(crate) mod dsu;
@@ -18,6 +19,7 @@ pub(crate) mod par;
 pub(crate) mod rank;
 pub(crate) mod rank_directory;
 pub(crate) mod small_ids;
+pub mod sparse;
 pub(crate) mod structure;
 pub(crate) mod weld;
 

@@ -3,6 +3,7 @@
 
 mod build;
 mod csr;
+mod export;
 mod info;
 mod relations;
 mod star;
@@ -12,7 +13,9 @@ mod views;
 mod warnings;
 mod write;
 
-pub use {build::*, csr::*, info::*, relations::*, star::*, views::*, warnings::*, write::*};
+pub use {
+    build::*, csr::*, export::*, info::*, relations::*, star::*, views::*, warnings::*, write::*,
+};
 
 use super::shapes::handle;
 use crate::che::{BuildOptions, Che};

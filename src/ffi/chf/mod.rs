@@ -3,6 +3,7 @@
 
 mod build;
 mod csr;
+mod export;
 mod half_faces;
 mod info;
 mod relations;
@@ -14,8 +15,8 @@ mod warnings;
 mod write;
 
 pub use {
-    build::*, csr::*, half_faces::*, info::*, relations::*, surface::*, views::*, warnings::*,
-    write::*,
+    build::*, csr::*, export::*, half_faces::*, info::*, relations::*, surface::*, views::*,
+    warnings::*, write::*,
 };
 
 use super::shapes::handle;

@@ -1,0 +1,108 @@
+//! The incidence matrices of a CHF, in CSR with sorted columns (see `SparseMatrix`).
+
+use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::{half_edge, he_origin, he_target, tet};
+use crate::chf::query::view::{Need, View};
+use crate::error::Result;
+use crate::util::sparse::{Entry, SparseMatrix, reserve};
+
+/// Which matrix [`Chf::volume_matrix`] gives (the structure's vertices, edges, faces and
+/// tetrahedra). `D1 * D2 == 0` and `D2 * D3 == 0`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VolumeMatrixKind {
+    /// `V x E`: edge `e` from `a` to `b` (`Chf::edge_vertices`) has -1 at `a`, +1 at `b`.
+    D1 = 0,
+    /// `E x F`: +1 where the face's cycle (`Chf::face_vertices`) runs along the edge's
+    /// direction, -1 where it runs against it.
+    D2 = 1,
+    /// `F x T`: +1 where the tetrahedron's half-face is the face's canonical one (the
+    /// face's cycle points out of it), -1 where it is the twin.
+    D3 = 2,
+    /// `T x T`, the dual graph: 1 where two tetrahedra share a face.
+    DualAdjacency = 3,
+}
+
+impl VolumeMatrixKind {
+    pub const ALL: [VolumeMatrixKind; 4] = [
+        VolumeMatrixKind::D1,
+        VolumeMatrixKind::D2,
+        VolumeMatrixKind::D3,
+        VolumeMatrixKind::DualAdjacency,
+    ];
+}
+
+impl Chf {
+    /// The matrix `kind`; see [`VolumeMatrixKind`].
+    pub fn volume_matrix(&self, kind: VolumeMatrixKind) -> Result<SparseMatrix> {
+        let view = self.view(Need {
+            faces: true,
+            edges: true,
+        });
+        let (nv, ne, nf, nt) = (
+            self.n_vertices,
+            self.num_edges(),
+            self.num_faces(),
+            self.num_tetrahedra(),
+        );
+        let e = |row: u32, col: u32, value: f64| Entry { row, col, value };
+        let mut out = Vec::new();
+        match kind {
+            VolumeMatrixKind::D1 => {
+                reserve(&mut out, 2 * ne, "matrix entries")?;
+                for (id, [a, b]) in edge_ends(&view, ne).into_iter().enumerate() {
+                    out.extend([e(a, id as u32, -1.0), e(b, id as u32, 1.0)]);
+                }
+                SparseMatrix::from_entries(nv, ne, &out)
+            }
+            VolumeMatrixKind::D2 => {
+                let ends = edge_ends(&view, ne);
+                reserve(&mut out, 3 * nf, "matrix entries")?;
+                for f in 0..nf as u32 {
+                    let hf = view.face_half_face(f);
+                    for j in 0..3 {
+                        let he = half_edge(hf, j);
+                        let id = view.edge_of(he);
+                        let along = he_origin(view.v, he) == ends[id as usize][0];
+                        out.push(e(id, f, if along { 1.0 } else { -1.0 }));
+                    }
+                }
+                SparseMatrix::from_entries(ne, nf, &out)
+            }
+            VolumeMatrixKind::D3 => {
+                reserve(&mut out, view.o.len(), "matrix entries")?;
+                for hf in 0..view.o.len() as u32 {
+                    let sign = if view.canonical_half_face(hf) == hf {
+                        1.0
+                    } else {
+                        -1.0
+                    };
+                    out.push(e(view.face_of(hf), tet(hf), sign));
+                }
+                SparseMatrix::from_entries(nf, nt, &out)
+            }
+            VolumeMatrixKind::DualAdjacency => {
+                reserve(&mut out, view.o.len(), "matrix entries")?;
+                for (hf, &g) in view.o.iter().enumerate() {
+                    if g != NONE {
+                        out.push(e(tet(hf as u32), tet(g), 1.0));
+                    }
+                }
+                let mut m = SparseMatrix::from_entries(nt, nt, &out)?;
+                m.values.iter_mut().for_each(|x| *x = 1.0);
+                Ok(m)
+            }
+        }
+    }
+}
+
+/// The ends of every edge, in the direction of its canonical half-edge.
+pub(super) fn edge_ends(view: &View, ne: usize) -> Vec<[u32; 2]> {
+    (0..ne as u32)
+        .map(|e| {
+            let he = view.edge_half_edge(e);
+            [he_origin(view.v, he), he_target(view.v, he)]
+        })
+        .collect()
+}

@@ -1,0 +1,272 @@
+//! Classic representations of a CHE into caller buffers: half-edge (DCEL) arrays, the
+//! winged-edge table, the corner table, edge and face lists, sparse matrices, Betti
+//! numbers and triangle strips. Each is a size query first (`buf == NULL`, `cap == 0`)
+//! and then a fill, as the CSR calls; the layouts are stated on each call and in the
+//! core (`crate::che::export`).
+
+use super::CheMesh;
+use crate::che::{HalfEdgeArrays, HalfEdgeOptions, MatrixKind, SparseMatrix, WingedEdges};
+use crate::error::{Error, Result};
+use crate::ffi::boundary::{Handle, Sink, core, guard, options_arg, report_kind};
+use crate::ffi::shapes::{ids, value};
+use crate::ffi::status::Status;
+
+/// How `che_mesh_export_half_edges` shows the boundary.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CheHalfEdgeOptions {
+    /// false (default): only the 3T half-edges of the triangles, a boundary half-edge
+    /// marked by twin == TOPOMESH_NONE. true (OpenMesh style): one extra half-edge per
+    /// boundary half-edge, numbered from 3T in the order of the half-edges they twin, with
+    /// face TOPOMESH_NONE, linked by next and prev into a loop round each hole.
+    pub explicit_boundary: bool,
+}
+
+/// Which array `che_mesh_export_half_edges` writes (one entry per half-edge unless
+/// stated).
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheHalfEdgeArray {
+    /// The next half-edge round the same triangle (or hole).
+    Next = 0,
+    /// The previous half-edge round the same triangle (or hole).
+    Prev = 1,
+    /// The opposite half-edge (TOPOMESH_NONE on a marked boundary).
+    Twin = 2,
+    /// The tail (origin) of the half-edge, CHE's V; the head is vertex[next[h]].
+    Vertex = 3,
+    /// The triangle (TOPOMESH_NONE for an explicit boundary half-edge).
+    Face = 4,
+    /// The edge id.
+    Edge = 5,
+    /// One entry per vertex: an outgoing half-edge, the boundary one on the boundary (the
+    /// hole's when explicit), TOPOMESH_NONE when isolated.
+    VertexHalfEdge = 6,
+    /// One entry per triangle t: 3t.
+    FaceHalfEdge = 7,
+}
+
+/// Which array `che_mesh_export_winged_edges` writes.
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheWingedArray {
+    /// 2 per edge: its ends, in the direction of its canonical half-edge.
+    Vertices = 0,
+    /// 2 per edge: the left triangle (which runs along that direction), then the right
+    /// one (TOPOMESH_NONE on the boundary).
+    Faces = 1,
+    /// 4 per edge: the edges before and after it counter-clockwise round the left
+    /// triangle, then round the right one (TOPOMESH_NONE twice on the boundary).
+    Wings = 2,
+    /// 1 per vertex: an edge at it (TOPOMESH_NONE when isolated).
+    VertexEdge = 3,
+    /// 1 per triangle t: the edge of half-edge 3t.
+    FaceEdge = 4,
+}
+
+/// Which matrix `che_mesh_export_matrix` writes (vertices, edges and triangles are the
+/// structure's).
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheMatrixKind {
+    /// V x V: 1 where an edge joins two vertices (several edges count once).
+    VertexAdjacency = 0,
+    /// E x E: 1 where two edges share a vertex.
+    EdgeAdjacency = 1,
+    /// V x E, the boundary operator d1: edge e from a to b (its canonical direction,
+    /// che_edge_vertices) has -1 in row a and +1 in row b.
+    D1 = 2,
+    /// E x T, the boundary operator d2: +1 where the triangle runs along the edge's
+    /// canonical direction, -1 where it runs against it. d1 * d2 == 0.
+    D2 = 3,
+    /// V x V, the combinatorial Laplacian: the number of neighbours on the diagonal, -1
+    /// where the vertex adjacency has 1.
+    Laplacian = 4,
+    /// T x T, the dual graph: 1 where two triangles share an edge.
+    DualAdjacency = 5,
+}
+
+/// Which list `che_mesh_export_strips` writes.
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheStripList {
+    /// The strips one after another, separated by TOPOMESH_NONE (primitive restart).
+    Restarts = 0,
+    /// One strip, the strips joined by degenerate triangles (repeated vertices).
+    Joined = 1,
+}
+
+/// Betti numbers over Z/2.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CheBetti {
+    pub b0: u64,
+    pub b1: u64,
+    pub b2: u64,
+}
+
+fn half_edge_array(a: HalfEdgeArrays, which: u32) -> Result<Vec<u32>> {
+    let all = [
+        a.next,
+        a.prev,
+        a.twin,
+        a.vertex,
+        a.face,
+        a.edge,
+        a.vertex_half_edge,
+        a.face_half_edge,
+    ];
+    report_kind(all, which, "che_half_edge_array")
+}
+
+fn winged_array(w: WingedEdges, which: u32) -> Result<Vec<u32>> {
+    let all = [w.vertices, w.faces, w.wings, w.vertex_edge, w.face_edge];
+    report_kind(all, which, "che_winged_array")
+}
+
+/// Half-edge (DCEL) array `which` (a `CheHalfEdgeArray`) with `options` (NULL: marked
+/// boundary). Half-edges 0..3T are CHE's own: 3t, 3t+1, 3t+2 go round triangle t
+/// counter-clockwise, half-edge h from vertex[h] (its tail) to vertex[next[h]]. O(T) at
+/// every level. Without explicit boundary, `vertex` and `twin` are the structure's own
+/// arrays, lent without a copy by `che_mesh_half_edge_vertices` and (from level 1)
+/// `che_mesh_opposites`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_export_half_edges(
+    m: *const CheMesh, options: *const CheHalfEdgeOptions, which: u32, buf: *mut u32, cap: usize,
+    out_len: *mut usize,
+) -> Status {
+    // SAFETY: caller contract (see `ffi`): NULL or a valid options struct.
+    let o = unsafe { options_arg(options) };
+    let options = HalfEdgeOptions {
+        explicit_boundary: o.explicit_boundary,
+    };
+    ids!(m, buf, cap, out_len, try |c| c.half_edge_arrays(options).and_then(|a| half_edge_array(a, which)))
+}
+
+/// Winged-edge array `which` (a `CheWingedArray`) over the edge ids of `che_half_edge_edge`.
+/// O(T) at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_export_winged_edges(
+    m: *const CheMesh, which: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, try |c| c.winged_edges().and_then(|w| winged_array(w, which)))
+}
+
+/// The corner table's opposite corners, 3T entries. Corner c is half-edge c: the corner of
+/// triangle c / 3 at vertex V[c] (so the table's V is `che_mesh_half_edge_vertices`); the
+/// opposite corner of c faces the same edge (half-edge next(c)) from the other triangle:
+/// prev(O[next(c)]), TOPOMESH_NONE on the boundary. O(T) at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_export_corner_opposites(
+    m: *const CheMesh, buf: *mut u32, cap: usize, out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, try |c| c.corner_table().map(|t| t.o))
+}
+
+/// The edge list, 2E entries: edge e from [2e] to [2e + 1], in the direction of its
+/// canonical half-edge. O(T) at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_export_edge_list(
+    m: *const CheMesh, buf: *mut u32, cap: usize, out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, try |c| c.edge_list())
+}
+
+/// The face list with edge ids, 3T entries: entry 3t + i is the edge of half-edge 3t + i
+/// (from corner i to corner i + 1 of triangle t). O(T) at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_export_triangle_edges(
+    m: *const CheMesh, buf: *mut u32, cap: usize, out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, try |c| c.all_triangle_edges())
+}
+
+/// Triangle strips covering every triangle once in its orientation (greedy, from the
+/// dual graph), as list `which` (a `CheStripList`). A strip s stands for the triangles
+/// (s[i], s[i+1], s[i+2]) for even i and (s[i+1], s[i], s[i+2]) for odd i. O(T) at every
+/// level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_export_strips(
+    m: *const CheMesh, which: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, try |c| c.triangle_strips().and_then(|s| {
+        report_kind([s.with_restarts(), s.joined()], which, "che_strip_list")
+    }))
+}
+
+/// Betti numbers over Z/2 of the surface as given (seams and split vertices joined again,
+/// isolated vertices counted) into `*out`; b0 - b1 + b2 is the Euler characteristic of
+/// `che_mesh_summary`. Near-linear at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_betti_numbers(m: *const CheMesh, out: *mut CheBetti) -> Status {
+    value!(m, out, |c| c.betti_numbers().map(|[b0, b1, b2]| CheBetti {
+        b0,
+        b1,
+        b2
+    }))
+}
+
+/// Sparse matrix `kind` (a `CheMatrixKind`) in CSR, ready for Eigen (`Map<SparseMatrix<
+/// double, RowMajor, int64_t>>` after a cast of the columns) or SciPy (`csr_matrix((values,
+/// columns, offsets))`): row r holds `columns[offsets[r] .. offsets[r + 1]]` (sorted) with
+/// `values` at the same places; `*n_offsets` is rows + 1, `*n_entries` the entries. All
+/// three buffers NULL (capacities 0) is a size query; some NULL and not all is an error; a
+/// short buffer gives BUFFER_TOO_SMALL with both lengths written. O(T + entries) at every
+/// level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_export_matrix(
+    m: *const CheMesh, kind: u32, offsets: *mut u64, offsets_cap: usize, columns: *mut u32,
+    columns_cap: usize, values: *mut f64, values_cap: usize, n_offsets: *mut usize,
+    n_entries: *mut usize,
+) -> Status {
+    // SAFETY: forwarded caller contract.
+    unsafe {
+        matrix_out(
+            m,
+            [offsets.cast(), columns.cast(), values.cast()],
+            [offsets_cap, columns_cap, values_cap],
+            [n_offsets, n_entries],
+            |c| c.matrix(report_kind(MatrixKind::ALL, kind, "che_matrix_kind")?),
+        )
+    }
+}
+
+/// The body of a matrix export: `bufs` are the offsets (`u64`), columns (`u32`) and
+/// values (`f64`) buffers as the caller gave them (all NULL: a size query), `lens` the
+/// offsets' and entries' out-lengths; `make` gives the matrix from the handle's core.
+pub(crate) unsafe fn matrix_out<H: Handle>(
+    m: *const H, bufs: [*mut u8; 3], caps: [usize; 3], lens: [*mut usize; 2],
+    make: impl FnOnce(&H::Core) -> Result<SparseMatrix>,
+) -> Status {
+    guard(|| {
+        let names = ["offsets", "columns", "values"];
+        let nulls = bufs.map(|b| b.is_null());
+        if let Some(k) = nulls
+            .iter()
+            .position(|&n| n)
+            .filter(|_| nulls.contains(&false))
+        {
+            let message = format!(
+                "argument '{}' is NULL while the other buffers are not",
+                names[k]
+            );
+            return Err(Error::new(crate::ErrorKind::NullArgument, message));
+        }
+        let mut n_values = 0usize;
+        // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
+        let (c, mut o, mut k, mut v) = unsafe {
+            (
+                core(m)?,
+                Sink::<u64>::new(bufs[0].cast(), caps[0], lens[0], "offsets")?,
+                Sink::<u32>::new(bufs[1].cast(), caps[1], lens[1], "columns")?,
+                Sink::<f64>::new(bufs[2].cast(), caps[2], &mut n_values, "values")?,
+            )
+        };
+        let a = make(c)?;
+        o.extend(a.offsets);
+        k.extend(a.columns);
+        v.extend(a.values);
+        let (o, k) = (o.finish(), k.finish());
+        o.and(k).and(v.finish())
+    })
+}

@@ -1,0 +1,102 @@
+//! Classic representations of a CHF into caller buffers: half-face arrays, the dual graph
+//! of the tetrahedra, the incidence matrices and Betti numbers (the layouts are stated on
+//! each call and in the core, `crate::chf::export`). The matrix body is the CHE one.
+
+use super::ChfMesh;
+use crate::chf::{HalfFaceArrays, VolumeMatrixKind};
+use crate::error::Result;
+use crate::ffi::boundary::report_kind;
+use crate::ffi::che::matrix_out;
+use crate::ffi::shapes::{ids, value};
+use crate::ffi::status::Status;
+
+/// Which array `chf_mesh_export_half_faces` writes. Half-face hf = 4t + i is face i of
+/// tetrahedron t (opposite its vertex i).
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ChfHalfFaceArray {
+    /// 1 per half-face: its twin (the same face in the other tetrahedron), TOPOMESH_NONE on
+    /// the boundary.
+    Twin = 0,
+    /// 3 per half-face: its vertices, in the order that points out of its tetrahedron.
+    Vertices = 1,
+    /// 1 per half-face: its face id.
+    Face = 2,
+}
+
+/// Which matrix `chf_mesh_export_matrix` writes (the structure's elements).
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ChfMatrixKind {
+    /// V x E: edge e from a to b (chf_edge_vertices) has -1 in row a, +1 in row b.
+    D1 = 0,
+    /// E x F: +1 where the face's cycle (chf_face_vertices) runs along the edge, -1
+    /// against it.
+    D2 = 1,
+    /// F x T: +1 where the tetrahedron holds the face's canonical half-face, -1 where it
+    /// holds the twin. d1 * d2 == 0 and d2 * d3 == 0.
+    D3 = 2,
+    /// T x T, the dual graph: 1 where two tetrahedra share a face.
+    DualAdjacency = 3,
+}
+
+/// Betti numbers over Z/2.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ChfBetti {
+    pub b0: u64,
+    pub b1: u64,
+    pub b2: u64,
+    pub b3: u64,
+}
+
+fn half_face_array(a: HalfFaceArrays, which: u32) -> Result<Vec<u32>> {
+    report_kind([a.twin, a.vertices, a.face], which, "chf_half_face_array")
+}
+
+/// Half-face array `which` (a `ChfHalfFaceArray`). O(T) at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_export_half_faces(
+    m: *const ChfMesh, which: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, try |c| c.half_face_arrays().and_then(|a| half_face_array(a, which)))
+}
+
+/// The dual graph: 4 entries per tetrahedron t, the tetrahedron across each of its faces
+/// (TOPOMESH_NONE on the boundary), as `chf_tetrahedron_tetrahedra`. O(T) at every level.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_export_dual_graph(
+    m: *const ChfMesh, buf: *mut u32, cap: usize, out_len: *mut usize,
+) -> Status {
+    ids!(m, buf, cap, out_len, try |c| c.tetrahedron_dual_graph())
+}
+
+/// Betti numbers over Z/2 of the structure's complex into `*out`; b0 - b1 + b2 - b3 is
+/// its Euler characteristic.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_betti_numbers(m: *const ChfMesh, out: *mut ChfBetti) -> Status {
+    value!(m, out, |c| c
+        .betti_numbers()
+        .map(|[b0, b1, b2, b3]| ChfBetti { b0, b1, b2, b3 }))
+}
+
+/// Sparse matrix `kind` (a `ChfMatrixKind`) in CSR, with the layout and buffer rules of
+/// `che_mesh_export_matrix`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_mesh_export_matrix(
+    m: *const ChfMesh, kind: u32, offsets: *mut u64, offsets_cap: usize, columns: *mut u32,
+    columns_cap: usize, values: *mut f64, values_cap: usize, n_offsets: *mut usize,
+    n_entries: *mut usize,
+) -> Status {
+    let bufs = [offsets.cast(), columns.cast(), values.cast()];
+    // SAFETY: forwarded caller contract.
+    unsafe {
+        matrix_out(
+            m,
+            bufs,
+            [offsets_cap, columns_cap, values_cap],
+            [n_offsets, n_entries],
+            |c| c.volume_matrix(report_kind(VolumeMatrixKind::ALL, kind, "chf_matrix_kind")?),
+        )
+    }
+}

@@ -46,6 +46,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
         "che_mesh_summary", "che_mesh_report*", "che_mesh_memory", "che_mesh_validate",
     ]),
     ("CHE: writing files", &["che_mesh_write"]),
+    ("CHE: level files (save the built structure, open it again)", &[
+        "che_mesh_save", "che_mesh_open",
+    ]),
     ("CHE: zero-copy views of the structure's arrays", &["che_mesh_*"]),
     ("CHF: create, load, build levels and free", &[
         "chf_build_options_default", "chf_mesh_from_*", "chf_mesh_load*", "chf_mesh_free",
@@ -72,6 +75,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
         "chf_mesh_summary", "chf_mesh_report*", "chf_mesh_memory", "chf_mesh_validate",
     ]),
     ("CHF: writing files", &["chf_mesh_write", "chf_mesh_write_boundary"]),
+    ("CHF: level files (save the built structure, open it again)", &[
+        "chf_mesh_save", "chf_mesh_open",
+    ]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),
     ("Status, errors and version", &["topomesh_*"]),
 ];

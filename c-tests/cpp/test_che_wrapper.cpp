@@ -396,6 +396,18 @@ static void test_write() {
     CHECK(!std::ifstream("che-wrapper-write.off").good());
 }
 
+static void test_level_file() {
+    Surface s = Surface::from_triangles(STRIP, 4, STRIP_POS);
+    s.save("che-wrapper.che");
+    Surface back = Surface::open("che-wrapper.che");
+    CHECK(back.level() == s.level() && back.num_edges() == s.num_edges());
+    CHECK(std::equal(back.half_edge_vertices().begin(), back.half_edge_vertices().end(),
+                     s.half_edge_vertices().begin()));
+    CHECK_THROWS(Surface::open("che-wrapper-write.ply"), TOPOMESH_STATUS_PARSE, "magic");
+    CHECK_THROWS(Surface::open("che-wrapper.che", 8), TOPOMESH_STATUS_INVALID_INPUT,
+                 "unknown bits");
+}
+
 int main() {
     return run_tests("test_che_wrapper", [] {
         test_build_and_counts();
@@ -407,5 +419,6 @@ int main() {
         test_deprecated_names();
         test_ids();
         test_write();
+        test_level_file();
     });
 }

@@ -40,3 +40,10 @@ pub const TOPOMESH_WRITE_BINARY: u32 = 1;
 /// A `*_write` flag: leave out the input vertex of each vertex, which is otherwise written
 /// where the format has a vertex attribute (PLY, VTK, Medit, TetGen).
 pub const TOPOMESH_WRITE_NO_ORIGIN: u32 = 2;
+/// A `*_mesh_open` flag: check the checksums and the lengths but not the structure's
+/// invariants (`*_mesh_validate`): for a file this program wrote.
+pub const TOPOMESH_OPEN_CHECKSUMS_ONLY: u32 = 1;
+/// A `*_mesh_open` flag: check neither the checksums nor the invariants, only the header
+/// and the lengths (so a damaged file is never read out of bounds, but may answer wrongly):
+/// for a file this process just wrote. Wins over `TOPOMESH_OPEN_CHECKSUMS_ONLY`.
+pub const TOPOMESH_OPEN_TRUSTED: u32 = 2;

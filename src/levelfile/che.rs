@@ -114,6 +114,19 @@ fn id_count(x: u64, what: &str, name: &str) -> Result<usize> {
     Ok(x as usize)
 }
 
+/// The structure's vertices are the input vertices then the copies a split makes, at
+/// most one per half-edge (or half-face): checked before any per-vertex array is made.
+pub(crate) fn check_vertex_counts(
+    input: usize, n: usize, corners: usize, name: &str,
+) -> Result<()> {
+    if n < input || n - input > corners {
+        return Err(Error::parse(format!(
+            "section {name}: {n} vertices for {input} input vertices and {corners} corners"
+        )));
+    }
+    Ok(())
+}
+
 /// `len` bits packed in 64-bit words, none set past `len`.
 pub(crate) fn rank_bits(words: Vec<u64>, len: usize, name: &str) -> Result<RankBits> {
     let tail = len % 64;
@@ -147,6 +160,7 @@ pub(crate) fn read_che(file: &LevelFile, prefix: &str, level: u8, positions: boo
             "section {cname}: {h} half-edges, not 3 per triangle"
         )));
     }
+    check_vertex_counts(n_input_vertices, n_vertices, h, &cname)?;
     let maybe = |name: &str, len: usize| -> Result<Vec<u32>> {
         match file.count(name)? {
             0 => Ok(Vec::new()),

@@ -1,7 +1,7 @@
 //! A CHF as named sections (`docs/level-files.md` lists them) and back; at level 3 the
 //! boundary surface is a CHE, stored as its own sections under the prefix `b.`.
 
-use super::che::{flat_positions, rank_bits, read_che, read_positions};
+use super::che::{check_vertex_counts, flat_positions, rank_bits, read_che, read_positions};
 use super::format::{FLAG_POSITIONS, Kind};
 use super::read::LevelFile;
 use super::write::{Contents, Section, save};
@@ -139,6 +139,7 @@ fn read_chf(file: &LevelFile) -> Result<Chf> {
             "section counts: {h} half-faces, not 4 per tetrahedron"
         )));
     }
+    check_vertex_counts(chf.n_input_vertices, chf.n_vertices, h, "counts")?;
     let maybe = |name: &str, len: usize| -> Result<Vec<u32>> {
         match file.count(name)? {
             0 => Ok(Vec::new()),

@@ -4,6 +4,7 @@
 mod build;
 mod csr;
 mod info;
+mod levelfile;
 mod relations;
 mod star;
 #[cfg(test)]
@@ -11,7 +12,7 @@ mod tests;
 mod views;
 mod write;
 
-pub use {build::*, csr::*, info::*, relations::*, star::*, views::*, write::*};
+pub use {build::*, csr::*, info::*, levelfile::*, relations::*, star::*, views::*, write::*};
 
 use super::shapes::handle;
 use crate::che::{BuildOptions, Che};

@@ -5,6 +5,7 @@ mod build;
 mod csr;
 mod half_faces;
 mod info;
+mod levelfile;
 mod relations;
 mod surface;
 #[cfg(test)]
@@ -12,7 +13,10 @@ mod tests;
 mod views;
 mod write;
 
-pub use {build::*, csr::*, half_faces::*, info::*, relations::*, surface::*, views::*, write::*};
+pub use {
+    build::*, csr::*, half_faces::*, info::*, levelfile::*, relations::*, surface::*, views::*,
+    write::*,
+};
 
 use super::shapes::handle;
 use crate::chf::{BuildOptions, Chf};

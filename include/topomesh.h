@@ -49,8 +49,9 @@
 
 /**
  * A `*_mesh_open` flag: check neither the checksums nor the invariants, only the header
- * and the lengths (so a damaged file is never read out of bounds, but may answer wrongly):
- * for a file this process just wrote. Wins over `TOPOMESH_OPEN_CHECKSUMS_ONLY`.
+ * and the lengths (opening a damaged file never reads out of bounds, but its queries may
+ * answer wrongly or return `TOPOMESH_STATUS_PANIC`): for a file this process just wrote.
+ * Wins over `TOPOMESH_OPEN_CHECKSUMS_ONLY`.
  */
 #define TOPOMESH_OPEN_TRUSTED 2
 

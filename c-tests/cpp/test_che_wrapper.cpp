@@ -46,8 +46,7 @@ static void test_build_and_counts() {
     CHECK_THROWS(Surface::from_triangles(STRIP, 3), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex 3");
     CHECK_THROWS(Surface::from_triangles({0, 1, 2, 0, 3, 4}, 5, {}, {2, true}),
                  TOPOMESH_STATUS_NON_MANIFOLD, "vertex 0");
-    CHECK_THROWS(Surface::load("missing-file.xyz"), TOPOMESH_STATUS_INVALID_INPUT,
-                 "missing-file.xyz");
+    CHECK_THROWS(Surface::load("missing-file.xyz"), TOPOMESH_STATUS_IO, "missing-file.xyz");
 }
 
 static void test_moves() {

@@ -44,6 +44,7 @@ pub const TOPOMESH_WRITE_NO_ORIGIN: u32 = 2;
 /// invariants (`*_mesh_validate`): for a file this program wrote.
 pub const TOPOMESH_OPEN_CHECKSUMS_ONLY: u32 = 1;
 /// A `*_mesh_open` flag: check neither the checksums nor the invariants, only the header
-/// and the lengths (so a damaged file is never read out of bounds, but may answer wrongly):
-/// for a file this process just wrote. Wins over `TOPOMESH_OPEN_CHECKSUMS_ONLY`.
+/// and the lengths (opening a damaged file never reads out of bounds, but its queries may
+/// answer wrongly or return `TOPOMESH_STATUS_PANIC`): for a file this process just wrote.
+/// Wins over `TOPOMESH_OPEN_CHECKSUMS_ONLY`.
 pub const TOPOMESH_OPEN_TRUSTED: u32 = 2;

@@ -23,9 +23,10 @@ pub enum Verify {
     Full,
     /// Checksums only: a file this program wrote, kept where it could be damaged.
     Checksums,
-    /// Neither: a file this process just wrote. The lengths and the header are still
-    /// checked, so a damaged file is never read out of bounds; but its ids are not, so a
-    /// query may then answer wrongly or return an out-of-range error.
+    /// Neither: a file this process just wrote. The header and every length are still
+    /// checked, so opening a damaged file never reads out of bounds; but its ids are not,
+    /// so a later query may answer wrongly or panic on an id out of range (a C call
+    /// returns `TOPOMESH_STATUS_PANIC`).
     Trusted,
 }
 

@@ -42,6 +42,20 @@
 #define TOPOMESH_WRITE_NO_ORIGIN 2
 
 /**
+ * A `*_mesh_open` flag: check the checksums and the lengths but not the structure's
+ * invariants (`*_mesh_validate`): for a file this program wrote.
+ */
+#define TOPOMESH_OPEN_CHECKSUMS_ONLY 1
+
+/**
+ * A `*_mesh_open` flag: check neither the checksums nor the invariants, only the header
+ * and the lengths (opening a damaged file never reads out of bounds, but its queries may
+ * answer wrongly or return `TOPOMESH_STATUS_PANIC`): for a file this process just wrote.
+ * Wins over `TOPOMESH_OPEN_CHECKSUMS_ONLY`.
+ */
+#define TOPOMESH_OPEN_TRUSTED 2
+
+/**
  * What a call did. `TOPOMESH_STATUS_OK` (0) is success; every other value is an error
  * whose detail (file, line, element id, sizes) `topomesh_last_error` gives.
  */
@@ -1392,6 +1406,25 @@ topomesh_status che_mesh_export_matrix(const struct che_mesh *m,
                                        size_t *n_offsets,
                                        size_t *n_entries);
 
+/* ---- CHE: level files (save the built structure, open it again) ---- */
+
+/**
+ * Saves the built surface at its level to `path` as a level file (`.che` by convention;
+ * the layout is in `docs/level-files.md`), whole or not at all; `che_mesh_open` reads it
+ * back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path.
+ */
+topomesh_status che_mesh_save(const struct che_mesh *m, const char *path);
+
+/**
+ * Opens a level file written by `che_mesh_save`, with no parsing and no build. `flags`
+ * is 0 (check everything: the header, every length, every checksum and the structure's
+ * invariants), `TOPOMESH_OPEN_CHECKSUMS_ONLY` or `TOPOMESH_OPEN_TRUSTED`; another bit gives
+ * `TOPOMESH_STATUS_INVALID_INPUT`. A missing file gives `TOPOMESH_STATUS_IO`, a damaged
+ * one `TOPOMESH_STATUS_PARSE` (the detail names the section and the byte) or
+ * `TOPOMESH_STATUS_INVALID_INPUT` (an invariant broken). `*out` is NULL on failure.
+ */
+topomesh_status che_mesh_open(const char *path, uint32_t flags, struct che_mesh **out);
+
 /* ---- CHE: zero-copy views of the structure's arrays ---- */
 
 /**
@@ -2131,6 +2164,25 @@ topomesh_status chf_mesh_export_matrix(const struct chf_mesh *m,
                                        size_t values_cap,
                                        size_t *n_offsets,
                                        size_t *n_entries);
+
+/* ---- CHF: level files (save the built structure, open it again) ---- */
+
+/**
+ * Saves the built volume at its level to `path` as a level file (`.chf` by convention;
+ * the layout is in `docs/level-files.md`), whole or not at all; `chf_mesh_open` reads it
+ * back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path.
+ */
+topomesh_status chf_mesh_save(const struct chf_mesh *m, const char *path);
+
+/**
+ * Opens a level file written by `chf_mesh_save`, with no parsing and no build. `flags`
+ * is 0 (check everything: the header, every length, every checksum and the structure's
+ * invariants), `TOPOMESH_OPEN_CHECKSUMS_ONLY` or `TOPOMESH_OPEN_TRUSTED`; another bit gives
+ * `TOPOMESH_STATUS_INVALID_INPUT`. A missing file gives `TOPOMESH_STATUS_IO`, a damaged
+ * one `TOPOMESH_STATUS_PARSE` (the detail names the section and the byte) or
+ * `TOPOMESH_STATUS_INVALID_INPUT` (an invariant broken). `*out` is NULL on failure.
+ */
+topomesh_status chf_mesh_open(const char *path, uint32_t flags, struct chf_mesh **out);
 
 /* ---- CHF: zero-copy views of the structure's arrays ---- */
 

@@ -171,6 +171,10 @@ public:
                                   Options options = {});
     /// Reads a surface file (.off .obj .ply .stl ...).
     static Surface load(const std::string &path, Options options = {});
+    /// Opens a level file written by save() (no parsing, no build). `flags`: 0 checks
+    /// everything, or TOPOMESH_OPEN_CHECKSUMS_ONLY / TOPOMESH_OPEN_TRUSTED. Throws Error
+    /// naming the section and byte of a damaged file.
+    static Surface open(const std::string &path, std::uint32_t flags = 0);
     /// Takes ownership of a handle from the C API.
     explicit Surface(che_mesh *adopt) noexcept;
     Surface(const Surface &) = delete;
@@ -293,6 +297,9 @@ public:
     /// of TOPOMESH_WRITE_BINARY and TOPOMESH_WRITE_NO_ORIGIN. Whole or not at all; throws
     /// Error on failure.
     void write(const std::string &path, std::uint32_t flags = 0) const;
+    /// Saves the built structure at its level as a level file (.che), whole or not at
+    /// all; open() reads it back. Throws Error on failure.
+    void save(const std::string &path) const;
 
     // Old names, kept for one release.
     [[deprecated("use vertex_vertices")]] Ids<VertexId> vertices_around(VertexId v) const {
@@ -333,6 +340,8 @@ public:
                                   Options options = {});
     /// Reads a volume file (.mesh .msh .vtk .node/.ele).
     static Volume load(const std::string &path, Options options = {});
+    /// Opens a level file written by save(), as Surface::open does.
+    static Volume open(const std::string &path, std::uint32_t flags = 0);
     /// Takes ownership of a handle from the C API.
     explicit Volume(chf_mesh *adopt) noexcept : m_(adopt) {}
     Volume(const Volume &) = delete;
@@ -472,6 +481,9 @@ public:
     /// Writes boundary() to `path` as a surface file, as Surface::write does; the origins
     /// are the input vertices of the volume. Throws Error on failure.
     void write_boundary(const std::string &path, std::uint32_t flags = 0) const;
+    /// Saves the built structure at its level as a level file (.chf), whole or not at
+    /// all; open() reads it back. Throws Error on failure.
+    void save(const std::string &path) const;
 
 private:
     chf_mesh *m_ = nullptr;

@@ -9,6 +9,7 @@ pub mod error;
 pub mod ffi;
 pub mod generate;
 pub mod io;
+pub mod levelfile;
 mod util;
 
 pub use che::{BuildOptions, BuildReport, Che, Summary};

@@ -50,6 +50,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHE: exports (half-edge, winged-edge, corner table, lists, matrices, Betti, strips)", &[
         "che_mesh_export_*", "che_mesh_betti_numbers",
     ]),
+    ("CHE: level files (save the built structure, open it again)", &[
+        "che_mesh_save", "che_mesh_open",
+    ]),
     ("CHE: zero-copy views of the structure's arrays", &["che_mesh_*"]),
     ("CHF: create, load, build levels and free", &[
         "chf_build_options_default", "chf_mesh_from_*", "chf_mesh_load*",
@@ -79,6 +82,9 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHF: writing files", &["chf_mesh_write", "chf_mesh_write_boundary"]),
     ("CHF: exports (half-face arrays, dual graph, matrices, Betti)", &[
         "chf_mesh_export_*", "chf_mesh_betti_numbers",
+    ]),
+    ("CHF: level files (save the built structure, open it again)", &[
+        "chf_mesh_save", "chf_mesh_open",
     ]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),
     ("The weld of nearly equal vertices (what weld_tolerance applies)", &[

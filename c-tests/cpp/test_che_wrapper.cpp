@@ -46,8 +46,7 @@ static void test_build_and_counts() {
     CHECK_THROWS(Surface::from_triangles(STRIP, 3), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex 3");
     CHECK_THROWS(Surface::from_triangles({0, 1, 2, 0, 3, 4}, 5, {}, {2, true}),
                  TOPOMESH_STATUS_NON_MANIFOLD, "vertex 0");
-    CHECK_THROWS(Surface::load("missing-file.xyz"), TOPOMESH_STATUS_INVALID_INPUT,
-                 "missing-file.xyz");
+    CHECK_THROWS(Surface::load("missing-file.xyz"), TOPOMESH_STATUS_IO, "missing-file.xyz");
 }
 
 static void test_moves() {
@@ -396,6 +395,18 @@ static void test_write() {
     CHECK(!std::ifstream("che-wrapper-write.off").good());
 }
 
+static void test_level_file() {
+    Surface s = Surface::from_triangles(STRIP, 4, STRIP_POS);
+    s.save("che-wrapper.che");
+    Surface back = Surface::open("che-wrapper.che");
+    CHECK(back.level() == s.level() && back.num_edges() == s.num_edges());
+    CHECK(std::equal(back.half_edge_vertices().begin(), back.half_edge_vertices().end(),
+                     s.half_edge_vertices().begin()));
+    CHECK_THROWS(Surface::open("che-wrapper-write.ply"), TOPOMESH_STATUS_PARSE, "magic");
+    CHECK_THROWS(Surface::open("che-wrapper.che", 8), TOPOMESH_STATUS_INVALID_INPUT,
+                 "unknown bits");
+}
+
 int main() {
     return run_tests("test_che_wrapper", [] {
         test_build_and_counts();
@@ -407,5 +418,6 @@ int main() {
         test_deprecated_names();
         test_ids();
         test_write();
+        test_level_file();
     });
 }

@@ -224,6 +224,14 @@ static void test_write() {
                  "tetrahedra only");
 }
 
+static void test_level_file() {
+    Volume v = Volume::from_tetrahedra(PAIR, 5, PAIR_POS);
+    v.save("chf-wrapper.chf");
+    Volume back = Volume::open("chf-wrapper.chf", TOPOMESH_OPEN_CHECKSUMS_ONLY);
+    CHECK(back.level() == v.level() && back.num_faces() == 7 && back.num_edges() == v.num_edges());
+    CHECK_THROWS(Volume::open("no-such.chf"), TOPOMESH_STATUS_IO, "no-such.chf");
+}
+
 int main() {
     return run_tests("test_chf_wrapper", [] {
         test_build_and_counts();
@@ -231,5 +239,6 @@ int main() {
         test_relations();
         test_views_csr_boundary_summary();
         test_write();
+        test_level_file();
     });
 }

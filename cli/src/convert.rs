@@ -5,7 +5,7 @@
 //! `--from` or `--format`.
 
 use crate::exit::Failure;
-use crate::input::{build_surface, build_volume, load};
+use crate::input::{LevelFile, build_surface, build_volume, load};
 use crate::output::Out;
 use crate::progress::Progress;
 use std::io::{Read, Write};
@@ -18,7 +18,8 @@ use topomesh::{BuildOptions, Error, chf};
 pub struct ConvertOptions {
     /// The mesh to read; `-` for standard input (with --from).
     input: PathBuf,
-    /// The file to write; `-` for standard output (with --format).
+    /// The file to write; `-` for standard output (with --format). A level file (.che for a
+    /// surface, .chf for a volume) saves the built structure, which `info` opens.
     output: PathBuf,
     /// Write the input as read (the soup), not the built mesh.
     #[arg(long, conflicts_with = "boundary")]
@@ -91,7 +92,9 @@ pub fn run(options: &ConvertOptions) -> Result<ExitCode, Failure> {
         output.as_path()
     };
     progress.step(format!("writing {}", shown.display()));
-    let counts = if options.as_read {
+    let counts = if let Some(kind) = level_file_output(options, &name, &data)? {
+        save_level_file(output, kind, &data)?
+    } else if options.as_read {
         emit(output, &Mesh::from_data(&data), &write)?
     } else if data.is_volume() {
         let volume = build_volume(
@@ -156,6 +159,49 @@ fn read_input(options: &ConvertOptions, progress: &Progress) -> Result<(String, 
         .read_to_end(&mut bytes)
         .map_err(|e| Error::io(format!("{STDIN}: {e}")))?;
     Ok((STDIN.to_string(), io::parse(&bytes, format, STDIN)?))
+}
+
+/// The level file `convert` is asked for (`.che`, `.chf`), if any, once it is one the input
+/// can fill: a surface for `.che`, a volume for `.chf`, none of the options that shape a
+/// mesh file.
+fn level_file_output(
+    options: &ConvertOptions, name: &str, data: &MeshData,
+) -> Result<Option<LevelFile>, Error> {
+    let Some(kind) = LevelFile::of(&options.output) else {
+        return Ok(None);
+    };
+    let shown = options.output.display();
+    if options.as_read || options.boundary || options.binary || options.no_origin {
+        return Err(Error::invalid(format!(
+            "{shown}: a level file holds the built structure; --as-read, --boundary, --binary and --no-origin do not apply"
+        )));
+    }
+    match (kind, data.is_volume()) {
+        (LevelFile::Surface, true) => Err(Error::invalid(format!(
+            "{name}: a volume mesh (tetrahedra) goes to a .chf level file, not {shown}"
+        ))),
+        (LevelFile::Volume, false) => Err(Error::invalid(format!(
+            "{name}: a surface mesh goes to a .che level file, not {shown}"
+        ))),
+        _ => Ok(Some(kind)),
+    }
+}
+
+/// Builds `data` at the library's default level and saves it to `output`; the counts of
+/// the structure.
+fn save_level_file(output: &Path, kind: LevelFile, data: &MeshData) -> Result<[usize; 3], Error> {
+    match kind {
+        LevelFile::Surface => {
+            let che = build_surface(data, BuildOptions::default())?;
+            che.save(output)?;
+            Ok([che.num_vertices(), che.num_triangles(), 0])
+        }
+        LevelFile::Volume => {
+            let chf = build_volume(data, chf::BuildOptions::default())?;
+            chf.save(output)?;
+            Ok([chf.num_vertices(), 0, chf.num_tetrahedra()])
+        }
+    }
 }
 
 /// Writes `mesh` to `output` (a file, or standard output for `-`); the counts written.

@@ -2,7 +2,7 @@
 //! mesh, as text or JSON.
 
 use crate::exit::Failure;
-use crate::input::{build_surface, build_volume, load};
+use crate::input::{LevelFile, Opened, build_surface, build_volume, load, open};
 use crate::json::{
     INFO_SCHEMA, SurfaceMemory, SurfaceReport, SurfaceSummary, VolumeMemory, VolumeReport,
     VolumeSummary,
@@ -13,7 +13,7 @@ use crate::progress::Progress;
 use crate::report;
 use serde::Serialize;
 use std::io::{self, Write};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 use topomesh::io::MeshData;
@@ -21,7 +21,8 @@ use topomesh::{BuildOptions, Che, Chf, Error, chf};
 
 #[derive(clap::Args)]
 pub struct InfoOptions {
-    /// The mesh file, its format by extension (none: the embedded torus).
+    /// The mesh file, its format by extension (none: the embedded torus); a level file
+    /// (.che, .chf, written by `convert`) is opened instead of built.
     file: Option<PathBuf>,
     /// Structure level, 0 to 3 (the library's default is 2: see the README).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(0..=3))]
@@ -57,12 +58,52 @@ impl Default for InfoOptions {
 pub fn run(options: &InfoOptions) -> Result<ExitCode, Failure> {
     let progress = Progress::new();
     let start = Instant::now();
+    if let Some(path) = options.file.as_deref()
+        && let Some(kind) = LevelFile::of(path)
+    {
+        return opened_info(path, kind, options, progress);
+    }
     let (name, data) = load(options.file.as_deref(), &progress)?;
     let read_seconds = start.elapsed().as_secs_f64();
     if data.is_volume() {
         volume_info(&name, &data, options, progress)
     } else {
         surface_info(&name, &data, options, progress, read_seconds)
+    }
+}
+
+/// `info` on a level file: the structure opened (the read time), then raised or lowered
+/// to `--level` (the build time).
+fn opened_info(
+    path: &Path, kind: LevelFile, options: &InfoOptions, progress: Progress,
+) -> Result<ExitCode, Failure> {
+    let start = Instant::now();
+    let opened = open(path, kind, &progress)?;
+    let read_seconds = start.elapsed().as_secs_f64();
+    let name = path.display().to_string();
+    let message = format!("level {}", options.level);
+    match opened {
+        Opened::Surface(mut che) => {
+            let (che, build_seconds) = timed_build(&progress, message, || {
+                che.build_level(options.level)?;
+                Ok(che)
+            })?;
+            surface_out(
+                &name,
+                &che,
+                options,
+                progress,
+                [read_seconds, build_seconds],
+                Vec::new(),
+            )
+        }
+        Opened::Volume(mut chf) => {
+            let (chf, build_seconds) = timed_build(&progress, message, || {
+                chf.build_level(options.level)?;
+                Ok(chf)
+            })?;
+            volume_out(&name, &chf, options, progress, build_seconds, Vec::new())
+        }
     }
 }
 
@@ -127,6 +168,23 @@ fn surface_info(
     let (che, build_seconds) = timed_build(&progress, message, || {
         build_surface(data, options.surface())
     })?;
+    surface_out(
+        name,
+        &che,
+        options,
+        progress,
+        [read_seconds, build_seconds],
+        warning_lines(data),
+    )
+}
+
+/// Prints what `info` says of a surface.
+/// `seconds`: reading, then building; `warnings`: the reader's.
+fn surface_out(
+    name: &str, che: &Che, options: &InfoOptions, progress: Progress, seconds: [f64; 2],
+    warnings: Vec<String>,
+) -> Result<ExitCode, Failure> {
+    let [read_seconds, build_seconds] = seconds;
     let (summary, memory) = (che.summary(), che.memory_bytes());
     let betti = che.betti_numbers()?;
     let out = SurfaceInfo {
@@ -135,12 +193,12 @@ fn surface_info(
         level: options.level,
         summary: SurfaceSummary(&summary),
         betti,
-        structure: SurfaceStructure::of(&che),
+        structure: SurfaceStructure::of(che),
         report: SurfaceReport(che.report()),
         memory: SurfaceMemory(&memory),
         read_seconds,
         build_seconds,
-        warnings: warning_lines(data),
+        warnings,
     };
     emit(options, progress, &out, print_surface)
 }
@@ -300,17 +358,32 @@ fn volume_info(
     );
     let (chf, build_seconds) =
         timed_build(&progress, message, || build_volume(data, options.volume()))?;
+    volume_out(
+        name,
+        &chf,
+        options,
+        progress,
+        build_seconds,
+        warning_lines(data),
+    )
+}
+
+/// Prints what `info` says of a volume.
+fn volume_out(
+    name: &str, chf: &Chf, options: &InfoOptions, progress: Progress, build_seconds: f64,
+    warnings: Vec<String>,
+) -> Result<ExitCode, Failure> {
     let (summary, memory) = (chf.summary(), chf.memory_bytes());
     let out = VolumeInfo {
         file: name,
         kind: "volume",
         level: options.level,
         summary: VolumeSummary(&summary),
-        structure: VolumeStructure::of(&chf),
+        structure: VolumeStructure::of(chf),
         report: VolumeReport(chf.report()),
         memory: VolumeMemory(&memory),
         build_seconds,
-        warnings: warning_lines(data),
+        warnings,
     };
     emit(options, progress, &out, print_volume)
 }

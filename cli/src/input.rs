@@ -6,6 +6,7 @@ use std::fs::File;
 use std::io::{ErrorKind, Read};
 use std::path::Path;
 use topomesh::io::{self, Format, MeshData};
+use topomesh::levelfile::OpenOptions;
 use topomesh::{BuildOptions, Che, Chf, Error, chf};
 
 /// Bytes read between two steps of the progress bar.
@@ -74,6 +75,43 @@ fn read_bytes(path: &Path, progress: &Progress) -> std::io::Result<Vec<u8>> {
             n => progress.advance(n as u64),
         }
     }
+}
+
+/// A level file (a built structure saved by `Che::save` / `Chf::save`), by extension: the
+/// one place the command tells them from the mesh formats of the library.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LevelFile {
+    /// `.che`: a surface.
+    Surface,
+    /// `.chf`: a volume.
+    Volume,
+}
+
+impl LevelFile {
+    pub fn of(path: &Path) -> Option<LevelFile> {
+        let ext = path.extension()?.to_str()?.to_ascii_lowercase();
+        match ext.as_str() {
+            "che" => Some(LevelFile::Surface),
+            "chf" => Some(LevelFile::Volume),
+            _ => None,
+        }
+    }
+}
+
+/// A structure opened from a level file, every check on (the file may come from anywhere).
+pub enum Opened {
+    Surface(Box<Che>),
+    Volume(Box<Chf>),
+}
+
+/// Opens the level file `path` of kind `kind` under the spinner.
+pub fn open(path: &Path, kind: LevelFile, progress: &Progress) -> Result<Opened, Error> {
+    progress.step(format!("opening {}", path.display()));
+    let options = OpenOptions::default();
+    Ok(match kind {
+        LevelFile::Surface => Opened::Surface(Box::new(Che::open(path, options)?)),
+        LevelFile::Volume => Opened::Volume(Box::new(Chf::open(path, options)?)),
+    })
 }
 
 pub fn build_surface(data: &MeshData, options: BuildOptions) -> Result<Che, Error> {

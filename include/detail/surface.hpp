@@ -39,6 +39,12 @@ inline Surface Surface::load(const std::string &path, Options options) {
     return Surface(m);
 }
 
+inline Surface Surface::open(const std::string &path, std::uint32_t flags) {
+    che_mesh *m = nullptr;
+    detail::check(che_mesh_open(path.c_str(), flags, &m));
+    return Surface(m);
+}
+
 inline Surface::Surface(che_mesh *adopt) noexcept : m_(adopt) { views_.fetch(m_); }
 
 inline Surface::Surface(Surface &&other) noexcept
@@ -261,6 +267,9 @@ inline void Surface::validate() const { detail::check(che_mesh_validate(m_)); }
 
 inline void Surface::write(const std::string &path, std::uint32_t flags) const {
     detail::check(che_mesh_write(m_, path.c_str(), flags));
+}
+inline void Surface::save(const std::string &path) const {
+    detail::check(che_mesh_save(m_, path.c_str()));
 }
 
 inline che_summary Surface::raw_summary() const {

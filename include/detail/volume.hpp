@@ -40,6 +40,12 @@ inline Volume Volume::load(const std::string &path, Options options) {
     return Volume(m);
 }
 
+inline Volume Volume::open(const std::string &path, std::uint32_t flags) {
+    chf_mesh *m = nullptr;
+    detail::check(chf_mesh_open(path.c_str(), flags, &m));
+    return Volume(m);
+}
+
 inline Volume::Volume(Volume &&other) noexcept : m_(std::exchange(other.m_, nullptr)) {}
 
 inline Volume &Volume::operator=(Volume &&other) noexcept {
@@ -210,6 +216,9 @@ inline void Volume::write(const std::string &path, std::uint32_t flags) const {
 }
 inline void Volume::write_boundary(const std::string &path, std::uint32_t flags) const {
     detail::check(chf_mesh_write_boundary(m_, path.c_str(), flags));
+}
+inline void Volume::save(const std::string &path) const {
+    detail::check(chf_mesh_save(m_, path.c_str()));
 }
 
 inline chf_summary Volume::raw_summary() const {

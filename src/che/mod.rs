@@ -39,41 +39,41 @@ use std::sync::OnceLock;
 /// A triangle surface in the Compact Half-Edge structure.
 #[derive(Clone, Debug)]
 pub struct Che {
-    level: u8,
-    n_input_vertices: usize,
-    n_vertices: usize,
+    pub(crate) level: u8,
+    pub(crate) n_input_vertices: usize,
+    pub(crate) n_vertices: usize,
     /// `V[h]`: origin of half-edge `h`.
-    v: Vec<u32>,
+    pub(crate) v: Vec<u32>,
     /// Level 1: `O[h]`.
-    o: Vec<u32>,
+    pub(crate) o: Vec<u32>,
     /// Level 2: one outgoing half-edge per vertex, the boundary one on the boundary.
-    vh: Vec<u32>,
+    pub(crate) vh: Vec<u32>,
     /// Level 2: bit `h` set when `h` is the canonical half-edge of its edge
     /// (`O[h] == NONE || h < O[h]`); the edge id is the rank.
-    edge_bits: RankDirectory,
+    pub(crate) edge_bits: RankDirectory,
     /// Level 2: the canonical half-edge of each edge.
-    eh: Vec<u32>,
+    pub(crate) eh: Vec<u32>,
     /// Level 1 only: the edge-id directory computed from `O` on first request (see
     /// [`Che::edge_ranks`]); emptied when the level changes.
-    lazy_edge_bits: OnceLock<RankDirectory>,
+    pub(crate) lazy_edge_bits: OnceLock<RankDirectory>,
     /// Level 3: one boundary half-edge per boundary curve.
-    ch: Vec<u32>,
+    pub(crate) ch: Vec<u32>,
     /// Level 3: bit `h` set when `O[h] == NONE`; rank indexes `curve_of`.
-    boundary_bits: RankBits,
+    pub(crate) boundary_bits: RankBits,
     /// Level 3: the curve of each boundary half-edge, in half-edge order.
-    curve_of: Vec<u32>,
+    pub(crate) curve_of: Vec<u32>,
     /// Edge count, the same at every level.
-    num_edges: usize,
-    positions: Vec<DVec3>,
+    pub(crate) num_edges: usize,
+    pub(crate) positions: Vec<DVec3>,
     /// Structure vertex -> input vertex; empty when the identity.
-    vertex_origin: OriginMap,
+    pub(crate) vertex_origin: OriginMap,
     /// Structure triangle -> input triangle; empty when the identity.
-    triangle_origin: OriginMap,
+    pub(crate) triangle_origin: OriginMap,
     /// Sorted half-edges of non-manifold edges (3+ triangles), kept unpaired.
-    non_manifold: Vec<u32>,
+    pub(crate) non_manifold: Vec<u32>,
     /// Sorted half-edges on the seams of non-orientable components, kept unpaired.
-    seams: Vec<u32>,
-    report: BuildReport,
+    pub(crate) seams: Vec<u32>,
+    pub(crate) report: BuildReport,
 }
 
 impl Che {

@@ -74,54 +74,55 @@ use crate::util::rank::RankBits;
 use crate::util::structure::{as_elements, check_id};
 use build::level2;
 use build::level3;
-use edges::MultiFan;
+pub(crate) use build::level3::Boundary;
+pub(crate) use edges::MultiFan;
 use glam::DVec3;
 use star_pass as stars;
 
 /// A tetrahedral mesh in the Compact Half-Face structure.
 #[derive(Clone, Debug)]
 pub struct Chf {
-    level: u8,
-    n_input_vertices: usize,
-    n_vertices: usize,
+    pub(crate) level: u8,
+    pub(crate) n_input_vertices: usize,
+    pub(crate) n_vertices: usize,
     /// `V[hf]`: vertex `hf & 3` of tetrahedron `hf >> 2`.
-    v: Vec<u32>,
+    pub(crate) v: Vec<u32>,
     /// Level 1: `O[hf]`, the twin half-face.
-    o: Vec<u32>,
+    pub(crate) o: Vec<u32>,
     /// Level 2: a half-face holding each vertex, a boundary one on the boundary.
-    vh: Vec<u32>,
+    pub(crate) vh: Vec<u32>,
     /// Level 2: bit `hf` set on canonical half-faces (`O[hf] == NONE || hf < O[hf]`); the
     /// face id is the rank.
-    face_bits: RankBits,
+    pub(crate) face_bits: RankBits,
     /// Level 2: the canonical half-face of each face.
-    fh: Vec<u32>,
+    pub(crate) fh: Vec<u32>,
     /// Level 2: bit `s` set on the canonical edge slot of each fan; the edge id is the rank.
-    edge_bits: RankBits,
+    pub(crate) edge_bits: RankBits,
     /// Level 2: the tetrahedron of each edge's canonical slot (the slot is the right one
     /// among the six marked bits of that tetrahedron: 4 bytes per edge, not 8).
-    eh: Vec<u32>,
+    pub(crate) eh: Vec<u32>,
     /// Level 3.
-    boundary: Option<level3::Boundary>,
+    pub(crate) boundary: Option<level3::Boundary>,
     /// Counts, the same at every level.
-    num_edges: usize,
-    num_faces: usize,
-    positions: Vec<DVec3>,
+    pub(crate) num_edges: usize,
+    pub(crate) num_faces: usize,
+    pub(crate) positions: Vec<DVec3>,
     /// Structure vertex -> input vertex; empty when the identity.
-    vertex_origin: OriginMap,
+    pub(crate) vertex_origin: OriginMap,
     /// Structure tetrahedron -> input tetrahedron; empty when the identity.
-    tet_origin: OriginMap,
+    pub(crate) tet_origin: OriginMap,
     /// Sorted half-faces of non-manifold faces (3+ tetrahedra), unpaired at every level.
-    non_manifold: Vec<u32>,
+    pub(crate) non_manifold: Vec<u32>,
     /// Sorted half-faces on orientation seams, unpaired at every level.
-    seams: Vec<u32>,
+    pub(crate) seams: Vec<u32>,
     /// Structure vertex pairs carrying several fans (several edge ids), sorted.
-    multi_fan: Vec<MultiFan>,
-    report: BuildReport,
+    pub(crate) multi_fan: Vec<MultiFan>,
+    pub(crate) report: BuildReport,
 }
 
 impl Chf {
     /// No tetrahedron, no vertex: what the build fills in.
-    fn empty() -> Chf {
+    pub(crate) fn empty() -> Chf {
         Chf {
             level: 0,
             n_input_vertices: 0,

@@ -176,6 +176,26 @@ pub(crate) fn write_flags_arg(flags: u32) -> Result<crate::io::WriteOptions> {
     })
 }
 
+/// `TOPOMESH_OPEN_*` flags as open options; an unknown bit is an error.
+pub(crate) fn open_flags_arg(flags: u32) -> Result<crate::levelfile::OpenOptions> {
+    use super::{TOPOMESH_OPEN_CHECKSUMS_ONLY, TOPOMESH_OPEN_TRUSTED};
+    use crate::levelfile::{OpenOptions, Verify};
+    let unknown = flags & !(TOPOMESH_OPEN_CHECKSUMS_ONLY | TOPOMESH_OPEN_TRUSTED);
+    if unknown != 0 {
+        return Err(Error::invalid(format!(
+            "flags {flags:#x}: unknown bits {unknown:#x} (known: TOPOMESH_OPEN_CHECKSUMS_ONLY, TOPOMESH_OPEN_TRUSTED)"
+        )));
+    }
+    let verify = if flags & TOPOMESH_OPEN_TRUSTED != 0 {
+        Verify::Trusted
+    } else if flags & TOPOMESH_OPEN_CHECKSUMS_ONLY != 0 {
+        Verify::Checksums
+    } else {
+        Verify::Full
+    };
+    Ok(OpenOptions { verify })
+}
+
 /// The entry of `all` that C enum value `kind` names (`all` in the C enum's order: report
 /// kinds, export arrays), or OUT_OF_RANGE naming the enum.
 pub(crate) fn report_kind<T, const N: usize>(all: [T; N], kind: u32, name: &str) -> Result<T> {

@@ -43,3 +43,11 @@ pub const TOPOMESH_WRITE_BINARY: u32 = 1;
 /// A `*_write` flag: leave out the input vertex of each vertex, which is otherwise written
 /// where the format has a vertex attribute (PLY, VTK, Medit, TetGen).
 pub const TOPOMESH_WRITE_NO_ORIGIN: u32 = 2;
+/// A `*_mesh_open` flag: check the checksums and the lengths but not the structure's
+/// invariants (`*_mesh_validate`): for a file this program wrote.
+pub const TOPOMESH_OPEN_CHECKSUMS_ONLY: u32 = 1;
+/// A `*_mesh_open` flag: check neither the checksums nor the invariants, only the header
+/// and the lengths (opening a damaged file never reads out of bounds, but its queries may
+/// answer wrongly or return `TOPOMESH_STATUS_PANIC`): for a file this process just wrote.
+/// Wins over `TOPOMESH_OPEN_CHECKSUMS_ONLY`.
+pub const TOPOMESH_OPEN_TRUSTED: u32 = 2;

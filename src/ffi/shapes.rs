@@ -157,8 +157,22 @@ macro_rules! load {
 }
 
 /// A file written from a handle, with `TOPOMESH_WRITE_*` flags:
-/// `save!(m, path, flags => |c, path, options| c.write_with(path, &options))`.
+/// `save!(m, path, flags => |c, path, options| c.write_with(path, &options))`, or
+/// without: `save!(m, path => |c, path| c.save(path))`.
 macro_rules! save {
+    ($m:ident, $path:ident => |$c:ident, $p:ident| $call:expr) => {
+        $crate::ffi::boundary::guard(|| {
+            // SAFETY: caller contract (see `ffi`): NULL or a live handle and a NUL-terminated
+            // path.
+            let ($c, $p) = unsafe {
+                (
+                    $crate::ffi::boundary::core($m)?,
+                    $crate::ffi::boundary::path_arg($path, "path")?,
+                )
+            };
+            $call
+        })
+    };
     ($m:ident, $path:ident, $flags:ident => |$c:ident, $p:ident, $o:ident| $call:expr) => {
         $crate::ffi::boundary::guard(|| {
             // SAFETY: caller contract (see `ffi`): NULL or a live handle and a NUL-terminated
@@ -171,6 +185,17 @@ macro_rules! save {
             };
             let $o = $crate::ffi::boundary::write_flags_arg($flags)?;
             $call
+        })
+    };
+}
+
+/// A new handle from a level file, with `TOPOMESH_OPEN_*` flags:
+/// `open!(out, path, flags => Che::open)`.
+macro_rules! open {
+    ($out:ident, $path:ident, $flags:ident => $open:path) => {
+        $crate::ffi::shapes::make!($out, {
+            let options = $crate::ffi::boundary::open_flags_arg($flags)?;
+            $open($crate::ffi::boundary::path_arg($path, "path")?, options)
         })
     };
 }
@@ -267,5 +292,5 @@ macro_rules! mirror {
 }
 
 pub(crate) use {
-    build, count, csr, handle, ids, load, make, mirror, relevel, save, status, value, view,
+    build, count, csr, handle, ids, load, make, mirror, open, relevel, save, status, value, view,
 };

@@ -73,6 +73,12 @@ impl RankBits {
         self.ones
     }
 
+    /// The packed bits (bit `i` is bit `i & 63` of word `i >> 6`), as a level file stores
+    /// them.
+    pub fn words(&self) -> &[u64] {
+        &self.words
+    }
+
     #[inline]
     pub fn get(&self, i: usize) -> bool {
         (self.words[i >> 6] >> (i & 63)) & 1 == 1

@@ -37,6 +37,28 @@ impl RankDirectory {
         })
     }
 
+    /// From stored entries over `len` bits (a level file): `None` unless there is one entry
+    /// per 32 bits, each high half counts the set bits before it, and no bit past `len` is
+    /// set, so that `get` and `rank` answer as for the directory that was saved.
+    pub fn from_entries(entries: Vec<u64>, len: usize) -> Option<Self> {
+        if entries.len() != len.div_ceil(SPAN) {
+            return None;
+        }
+        let mut ones = 0u32;
+        for (k, &d) in entries.iter().enumerate() {
+            let flags = d as u32;
+            let tail = len - k * SPAN;
+            if (d >> 32) as u32 != ones || (tail < SPAN && flags >> tail != 0) {
+                return None;
+            }
+            ones = ones.checked_add(flags.count_ones())?;
+        }
+        Some(RankDirectory {
+            entries,
+            ones: ones as usize,
+        })
+    }
+
     /// The entries, as lent to C.
     pub fn entries(&self) -> &[u64] {
         &self.entries

@@ -93,7 +93,7 @@ impl Reference {
 
 /// Everything the structure answers, mapped to input ids, for comparison across levels.
 #[derive(Debug, PartialEq)]
-struct Answers {
+pub struct Answers {
     vv: Vec<Vec<u32>>,
     ve: Vec<Vec<u32>>,
     vf: Vec<Vec<u32>>,
@@ -108,7 +108,7 @@ struct Answers {
     summary: topomesh::Summary,
 }
 
-fn answers(che: &Che) -> Answers {
+pub fn answers(che: &Che) -> Answers {
     let nv = che.num_vertices() as u32;
     let ne = che.num_edges() as u32;
     let nt = che.num_triangles() as u32;

@@ -22,11 +22,11 @@ pub use matrices::MatrixKind;
 pub use strips::Strips;
 pub use winged::WingedEdges;
 
-use crate::util::alloc::try_collect;
 use crate::NONE;
 use crate::che::Che;
 use crate::che::tables::{edge_ids, vertex_half_edges};
 use crate::error::Result;
+use crate::util::alloc::try_collect;
 use crate::util::sparse::filled;
 use std::borrow::Cow;
 

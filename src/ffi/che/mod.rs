@@ -5,6 +5,7 @@ mod build;
 mod csr;
 mod export;
 mod info;
+mod levelfile;
 mod relations;
 mod star;
 #[cfg(test)]
@@ -14,7 +15,8 @@ mod warnings;
 mod write;
 
 pub use {
-    build::*, csr::*, export::*, info::*, relations::*, star::*, views::*, warnings::*, write::*,
+    build::*, csr::*, export::*, info::*, levelfile::*, relations::*, star::*, views::*,
+    warnings::*, write::*,
 };
 
 use super::shapes::handle;

@@ -6,6 +6,7 @@ mod csr;
 mod export;
 mod half_faces;
 mod info;
+mod levelfile;
 mod relations;
 mod surface;
 #[cfg(test)]
@@ -15,8 +16,8 @@ mod warnings;
 mod write;
 
 pub use {
-    build::*, csr::*, export::*, half_faces::*, info::*, relations::*, surface::*, views::*,
-    warnings::*, write::*,
+    build::*, csr::*, export::*, half_faces::*, info::*, levelfile::*, relations::*, surface::*,
+    views::*, warnings::*, write::*,
 };
 
 use super::shapes::handle;

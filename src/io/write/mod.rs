@@ -12,7 +12,7 @@
 //! Built structures are written by `Che::write`, `Chf::write` and `Chf::write_boundary`
 //! (`built.rs`), the input soup by [`write`].
 
-mod atomic;
+pub(crate) mod atomic;
 mod built;
 mod gmsh;
 mod medit;

@@ -1,0 +1,148 @@
+//! Writing a level file: the layout of `format.rs` over a list of named sections, written
+//! whole or not at all (`io::write::atomic`).
+
+use super::format::{self, ALIGN, Elem, Entry, Header, Kind};
+use crate::error::{Error, Result};
+use std::borrow::Cow;
+use std::io::Write;
+use std::path::Path;
+
+/// The elements of one section, borrowed from the structure where it holds them as they
+/// are stored.
+#[derive(Clone, Debug)]
+pub(crate) enum Data<'a> {
+    U32(Cow<'a, [u32]>),
+    U64(Cow<'a, [u64]>),
+    F64(Cow<'a, [f64]>),
+}
+
+impl Data<'_> {
+    fn elem(&self) -> Elem {
+        match self {
+            Data::U32(_) => Elem::U32,
+            Data::U64(_) => Elem::U64,
+            Data::F64(_) => Elem::F64,
+        }
+    }
+    fn len(&self) -> usize {
+        match self {
+            Data::U32(x) => x.len(),
+            Data::U64(x) => x.len(),
+            Data::F64(x) => x.len(),
+        }
+    }
+    /// Feeds the little-endian bytes to `out`, a chunk at a time.
+    fn bytes(&self, out: &mut dyn FnMut(&[u8]) -> std::io::Result<()>) -> std::io::Result<()> {
+        let mut buf = Vec::with_capacity(1 << 14);
+        macro_rules! chunks {
+            ($xs:expr) => {
+                for chunk in $xs.chunks(1 << 11) {
+                    buf.clear();
+                    chunk
+                        .iter()
+                        .for_each(|x| buf.extend_from_slice(&x.to_le_bytes()));
+                    out(&buf)?;
+                }
+            };
+        }
+        match self {
+            Data::U32(x) => chunks!(x),
+            Data::U64(x) => chunks!(x),
+            Data::F64(x) => chunks!(x),
+        }
+        Ok(())
+    }
+}
+
+/// One named section.
+#[derive(Clone, Debug)]
+pub(crate) struct Section<'a> {
+    pub name: String,
+    pub data: Data<'a>,
+}
+
+impl<'a> Section<'a> {
+    pub(crate) fn u32s(name: impl Into<String>, xs: impl Into<Cow<'a, [u32]>>) -> Self {
+        Section {
+            name: name.into(),
+            data: Data::U32(xs.into()),
+        }
+    }
+    pub(crate) fn u64s(name: impl Into<String>, xs: impl Into<Cow<'a, [u64]>>) -> Self {
+        Section {
+            name: name.into(),
+            data: Data::U64(xs.into()),
+        }
+    }
+    pub(crate) fn f64s(name: impl Into<String>, xs: Vec<f64>) -> Self {
+        Section {
+            name: name.into(),
+            data: Data::F64(Cow::Owned(xs)),
+        }
+    }
+}
+
+/// What the header says besides the sections.
+pub(crate) struct Contents<'a> {
+    pub kind: Kind,
+    pub level: u8,
+    pub flags: u32,
+    pub sections: Vec<Section<'a>>,
+}
+
+/// The table entries (with checksums) and the file length.
+fn layout(sections: &[Section]) -> Result<(Vec<Entry>, u64)> {
+    let mut at = format::table_end(sections.len());
+    let mut entries = Vec::with_capacity(sections.len());
+    for s in sections {
+        if s.name.len() > format::NAME_BYTES || !s.name.bytes().all(|c| c.is_ascii_graphic()) {
+            return Err(Error::invalid(format!("section name {:?}", s.name)));
+        }
+        let mut hasher = crc32fast::Hasher::new();
+        s.data
+            .bytes(&mut |b| {
+                hasher.update(b);
+                Ok(())
+            })
+            .map_err(|e| Error::io(e.to_string()))?;
+        let e = Entry {
+            name: s.name.clone(),
+            elem: s.data.elem(),
+            crc: hasher.finalize(),
+            offset: at,
+            count: s.data.len() as u64,
+        };
+        at = format::aligned(at + e.byte_len());
+        entries.push(e);
+    }
+    Ok((entries, at))
+}
+
+/// Writes `contents` to `path`, atomically.
+pub(crate) fn save(path: &Path, contents: &Contents) -> Result<()> {
+    let (entries, file_len) = layout(&contents.sections)?;
+    let table: Vec<u8> = entries.iter().flat_map(format::encode_entry).collect();
+    let header = format::encode_header(
+        &Header {
+            kind: contents.kind,
+            level: contents.level,
+            flags: contents.flags,
+            sections: entries.len() as u32,
+            file_len,
+        },
+        &table,
+    );
+    let zeros = [0u8; ALIGN as usize];
+    let mut body = |w: &mut dyn Write| -> std::io::Result<()> {
+        w.write_all(&header)?;
+        w.write_all(&table)?;
+        let mut at = (header.len() + table.len()) as u64;
+        for (s, e) in contents.sections.iter().zip(&entries) {
+            w.write_all(&zeros[..(e.offset - at) as usize])?;
+            s.data.bytes(&mut |b| w.write_all(b))?;
+            at = e.offset + e.byte_len();
+        }
+        w.write_all(&zeros[..(file_len - at) as usize])
+    };
+    crate::io::write::atomic::write(path, &mut body)
+}

@@ -1,0 +1,405 @@
+//! Level files: a built CHE or CHF saved and opened again equals the saved one (every array
+//! and every answer), at every level; a damaged file gives an error naming the place and
+//! never a panic.
+
+mod che_common;
+mod chf_common;
+
+use che_common::{Rng, answers as che_answers, perturb};
+use glam::DVec3;
+use std::path::{Path, PathBuf};
+use topomesh::generate::{grid, sphere, torus};
+use topomesh::levelfile::{OpenOptions, Verify};
+use topomesh::{BuildOptions, Che, Chf, ErrorKind, chf};
+
+/// A fresh folder under the temp dir for one test.
+fn folder(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("topomesh-level-{}-{tag}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+const FULL: OpenOptions = OpenOptions {
+    verify: Verify::Full,
+};
+
+/// Every array and count the structure holds (its `Debug` prints them all).
+fn che_state(che: &Che) -> String {
+    format!("{che:?}")
+}
+
+/// Surfaces with every kind of repair: closed, with boundary, perturbed (flips, splits,
+/// non-manifold edges, degenerate and duplicate triangles), a Möbius strip.
+fn surfaces() -> Vec<(Vec<[u32; 3]>, Vec<DVec3>)> {
+    let mut out = Vec::new();
+    for s in [grid(3, 2), torus(4, 3), sphere(4, 3)] {
+        out.push((s.triangles.clone(), s.positions.clone()));
+        let n = s.positions.len();
+        let mut rng = Rng(n as u64);
+        out.push((perturb(&s.triangles, n, &mut rng, 0.4), Vec::new()));
+    }
+    let moebius: Vec<[u32; 3]> = (0..6u32)
+        .flat_map(|i| {
+            let (t0, b0) = (i, 6 + i);
+            let (t1, b1) = if i < 5 { (i + 1, 7 + i) } else { (6, 0) };
+            [[t0, b0, b1], [t0, b1, t1]]
+        })
+        .collect();
+    out.push((moebius, Vec::new()));
+    let pinch = vec![
+        [0, 1, 2],
+        [0, 1, 3],
+        [0, 1, 4],
+        [2, 2, 5],
+        [0, 5, 6],
+        [0, 6, 5],
+    ];
+    out.push((pinch, Vec::new()));
+    out
+}
+
+fn che_n(tris: &[[u32; 3]], positions: &[DVec3]) -> usize {
+    positions.len().max(
+        tris.iter()
+            .flatten()
+            .map(|&x| x as usize + 1)
+            .max()
+            .unwrap_or(0),
+    )
+}
+
+#[test]
+fn surfaces_round_trip_at_every_level() {
+    let dir = folder("che");
+    for (i, (tris, positions)) in surfaces().into_iter().enumerate() {
+        let n = che_n(&tris, &positions);
+        for level in 0..=3 {
+            let che =
+                Che::from_triangles(&tris, n, &positions, BuildOptions::level(level)).unwrap();
+            let path = dir.join(format!("{i}-{level}.che"));
+            che.save(&path).unwrap();
+            // Before any query: a level-1 query fills the lazy edge directory.
+            let state = che_state(&che);
+            for verify in [Verify::Full, Verify::Checksums, Verify::Trusted] {
+                let back = Che::open(&path, OpenOptions { verify }).unwrap();
+                assert_eq!(che_state(&back), state, "mesh {i} level {level}");
+                assert_eq!(back.report(), che.report());
+                assert_eq!(
+                    che_answers(&back),
+                    che_answers(&che),
+                    "mesh {i} level {level}"
+                );
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Every array and count the structure holds.
+fn chf_state(chf: &Chf) -> String {
+    format!("{chf:?}")
+}
+
+fn volumes() -> Vec<chf_common::Mesh> {
+    let cube = chf_common::cube(2, 2, 1, false);
+    let mut out = vec![cube.clone(), chf_common::cube(2, 1, 2, true)];
+    out.push(chf_common::scramble(&cube, 7, 70));
+    // Two tetrahedra sharing only an edge, one sharing only a vertex, a degenerate one.
+    let mut pinched = chf_common::cube(1, 1, 1, true);
+    let base = pinched.positions.len() as u32;
+    pinched.positions.extend([
+        DVec3::new(3.0, 0.0, 0.0),
+        DVec3::new(3.0, 1.0, 0.0),
+        DVec3::new(3.0, 0.0, 1.0),
+    ]);
+    pinched.tets.push([0, base, base + 1, base + 2]);
+    pinched.tets.push([0, 0, base, base + 1]);
+    out.push(pinched);
+    out
+}
+
+#[test]
+fn volumes_round_trip_at_every_level() {
+    let dir = folder("chf");
+    for (i, mesh) in volumes().into_iter().enumerate() {
+        for level in 0..=3 {
+            for with_positions in [false, true] {
+                let built = mesh.build(level, with_positions);
+                let path = dir.join(format!("{i}-{level}.chf"));
+                built.save(&path).unwrap();
+                let back = Chf::open(&path, FULL).unwrap();
+                assert_eq!(
+                    chf_state(&back),
+                    chf_state(&built),
+                    "mesh {i} level {level}"
+                );
+                assert_eq!(
+                    chf_common::answers(&back),
+                    chf_common::answers(&built),
+                    "mesh {i} level {level}"
+                );
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+fn small_che() -> Che {
+    let s = grid(1, 1);
+    Che::from_triangles(
+        &s.triangles,
+        s.positions.len(),
+        &s.positions,
+        BuildOptions::level(3),
+    )
+    .unwrap()
+}
+
+fn saved(dir: &Path, name: &str) -> (PathBuf, Vec<u8>) {
+    let path = dir.join(name);
+    small_che().save(&path).unwrap();
+    let bytes = std::fs::read(&path).unwrap();
+    (path, bytes)
+}
+
+/// Opens `bytes` written to `path`, as a CHE.
+fn open_bytes(path: &Path, bytes: &[u8], verify: Verify) -> topomesh::error::Result<Che> {
+    std::fs::write(path, bytes).unwrap();
+    Che::open(path, OpenOptions { verify })
+}
+
+fn le_u64(b: &[u8], at: usize) -> u64 {
+    u64::from_le_bytes(b[at..at + 8].try_into().unwrap())
+}
+
+/// The offset and count fields of the section entry named `name`.
+fn entry(bytes: &[u8], name: &str) -> usize {
+    let n = u32::from_le_bytes(bytes[28..32].try_into().unwrap()) as usize;
+    (0..n)
+        .map(|i| 64 + 64 * i)
+        .find(|&at| bytes[at..at + 32].split(|&c| c == 0).next() == Some(name.as_bytes()))
+        .unwrap()
+}
+
+/// Recomputes the table checksum after an edit, so that the damage reaches the checks
+/// behind it.
+fn reseal(bytes: &mut [u8]) {
+    let n = u32::from_le_bytes(bytes[28..32].try_into().unwrap()) as usize;
+    let mut h = crc32fast::Hasher::new();
+    h.update(&bytes[..40]);
+    h.update(&bytes[64..64 + 64 * n]);
+    let crc = h.finalize();
+    bytes[40..44].copy_from_slice(&crc.to_le_bytes());
+}
+
+fn expect_err(r: topomesh::error::Result<Che>, kind: ErrorKind, words: &[&str]) {
+    let e = r.expect_err("an error");
+    assert_eq!(e.kind, kind, "{e}");
+    for w in words {
+        assert!(e.message.contains(w), "{w:?} not in {e}");
+    }
+}
+
+#[test]
+fn bad_headers_name_the_byte() {
+    let dir = folder("header");
+    let (path, good) = saved(&dir, "m.che");
+    let mut b = good.clone();
+    b[0] = b'X';
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::Parse,
+        &["byte 0", "magic"],
+    );
+    let mut b = good.clone();
+    b[12] = 2;
+    expect_err(
+        open_bytes(&path, &b, Verify::Trusted),
+        ErrorKind::Parse,
+        &["byte 12", "version 2"],
+    );
+    let mut b = good.clone();
+    b[16..20].copy_from_slice(&0x0102_0304u32.to_be_bytes());
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::Parse,
+        &["byte 16", "big-endian"],
+    );
+    let mut b = good.clone();
+    b[8..12].copy_from_slice(b"CHF\0");
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::Parse,
+        &["byte 8", "CHF file"],
+    );
+    expect_err(
+        open_bytes(&path, &good[..40], Verify::Full),
+        ErrorKind::Parse,
+        &["truncated"],
+    );
+    expect_err(
+        open_bytes(&path, &good[..good.len() - 64], Verify::Full),
+        ErrorKind::Parse,
+        &["byte 32", "the file has"],
+    );
+    // A CHE file is not a CHF.
+    std::fs::write(&path, &good).unwrap();
+    let e = Chf::open(&path, FULL).err().unwrap();
+    assert!(
+        e.message.contains("expected a CHF file, found a CHE file"),
+        "{e}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bad_sections_name_the_section() {
+    let dir = folder("sections");
+    let (path, good) = saved(&dir, "m.che");
+    // An offset past the end of the file.
+    let at = entry(&good, "O");
+    let mut b = good.clone();
+    b[at + 40..at + 48].copy_from_slice(&(good.len() as u64).to_le_bytes());
+    reseal(&mut b);
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::Parse,
+        &["section O", "past the end"],
+    );
+    // A huge count: refused against the file size, nothing allocated.
+    let mut b = good.clone();
+    b[at + 48..at + 56].copy_from_slice(&(u64::MAX / 8).to_le_bytes());
+    reseal(&mut b);
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::Parse,
+        &["section O"],
+    );
+    // A count that disagrees with the counts section.
+    let mut b = good.clone();
+    let count = le_u64(&b, at + 48);
+    b[at + 48..at + 56].copy_from_slice(&(count - 1).to_le_bytes());
+    reseal(&mut b);
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::Parse,
+        &["section O", "the counts say"],
+    );
+    // A misaligned offset.
+    let mut b = good.clone();
+    let offset = le_u64(&b, at + 40);
+    b[at + 40..at + 48].copy_from_slice(&(offset + 4).to_le_bytes());
+    reseal(&mut b);
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::Parse,
+        &["section O", "64-byte"],
+    );
+    // A damaged section.
+    let mut b = good.clone();
+    b[offset as usize] ^= 1;
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::Parse,
+        &["section O", "checksum"],
+    );
+    // An id out of range with the checksum redone: the structural check catches it.
+    let v = entry(&good, "V");
+    let v_at = le_u64(&good, v + 40) as usize;
+    let mut b = good.clone();
+    b[v_at..v_at + 4].copy_from_slice(&1000u32.to_le_bytes());
+    let v_len = le_u64(&good, v + 48) as usize * 4;
+    let crc = crc32fast::hash(&b[v_at..v_at + v_len]);
+    b[v + 36..v + 40].copy_from_slice(&crc.to_le_bytes());
+    reseal(&mut b);
+    expect_err(
+        open_bytes(&path, &b, Verify::Full),
+        ErrorKind::InvalidInput,
+        &["V[0] = 1000"],
+    );
+    // Checksums only: the file is read as it is.
+    assert!(open_bytes(&path, &b, Verify::Checksums).is_ok());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn every_prefix_of_a_file_is_refused() {
+    let dir = folder("prefix");
+    let (path, good) = saved(&dir, "m.che");
+    for len in 0..good.len() {
+        for verify in [Verify::Full, Verify::Trusted] {
+            assert!(
+                open_bytes(&path, &good[..len], verify).is_err(),
+                "prefix {len}"
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Every single-byte change gives an error, or (a byte of padding) the same mesh; never a
+/// panic, with checks on or off.
+#[test]
+fn every_flipped_byte_is_caught_or_harmless() {
+    let dir = folder("flip");
+    let (path, good) = saved(&dir, "m.che");
+    let expected = che_state(&small_che());
+    let mut harmless = 0;
+    for at in 0..good.len() {
+        let mut b = good.clone();
+        b[at] ^= 0x5a;
+        if let Ok(che) = open_bytes(&path, &b, Verify::Full) {
+            assert_eq!(che_state(&che), expected, "byte {at}");
+            harmless += 1;
+        }
+        let _ = open_bytes(&path, &b, Verify::Trusted);
+    }
+    assert!(
+        harmless < good.len() / 2,
+        "{harmless} of {} bytes unchecked",
+        good.len()
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_volume_with_a_flipped_byte_is_refused() {
+    let dir = folder("flip-chf");
+    let path = dir.join("m.chf");
+    let built = chf_common::cube(1, 1, 1, true).build(3, true);
+    built.save(&path).unwrap();
+    let good = std::fs::read(&path).unwrap();
+    for at in (0..good.len()).step_by(7) {
+        let mut b = good.clone();
+        b[at] ^= 0xff;
+        std::fs::write(&path, &b).unwrap();
+        if let Ok(back) = Chf::open(&path, FULL) {
+            assert_eq!(chf_state(&back), chf_state(&built), "byte {at}");
+        }
+        let _ = Chf::open(
+            &path,
+            OpenOptions {
+                verify: Verify::Trusted,
+            },
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn save_is_atomic_and_missing_files_are_io_errors() {
+    let dir = folder("io");
+    let e = Che::open(dir.join("absent.che"), FULL).err().unwrap();
+    assert_eq!(e.kind, ErrorKind::Io);
+    assert!(e.message.contains("absent.che"), "{e}");
+    let che = small_che();
+    che.save(dir.join("m.che")).unwrap();
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, vec![std::ffi::OsString::from("m.che")]);
+    let _ = chf::BuildOptions::level(0);
+    let _ = std::fs::remove_dir_all(&dir);
+}

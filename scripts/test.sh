@@ -22,16 +22,16 @@ cargo clippy --workspace --all-targets --locked -- -D warnings
 step "the library builds for Windows (scripts/check-windows.sh)"
 bash scripts/check-windows.sh
 
+step "real meshes (libcgal-demo) and tetrahedral meshes (tetgen), before the tests that read them"
+bash scripts/fetch-meshes.sh
+bash scripts/fetch-tets.sh --no-large
+
 step "cargo test"
 cargo test --workspace --locked
 
 step "fuzzing: every target, fixed seed, then the kept corpus (scripts/fuzz.sh)"
 bash scripts/fuzz.sh --runs 20000
 bash scripts/fuzz.sh --replay
-
-step "real meshes (libcgal-demo) and tetrahedral meshes (tetgen)"
-bash scripts/fetch-meshes.sh
-bash scripts/fetch-tets.sh --no-large
 
 step "C and C++ tests (install, find_package, ctest, differential, valgrind)"
 bash scripts/c-tests.sh

@@ -21,6 +21,7 @@ pub use chf::Chf;
 pub use chf::{ChfBuildOptions, ChfBuildReport, ChfSummary};
 pub use error::{Error, ErrorKind};
 pub use util::par::planned_threads;
+pub use util::progress::BuildProgress;
 pub use util::small_ids::Ids;
 pub use util::weld::{representatives as weld_representatives, weld_arrays};
 pub use util::{REPORT_EXAMPLES, non_finite_vertices};

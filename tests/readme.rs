@@ -7,6 +7,8 @@ fn readme_examples_are_the_tested_files() {
         (include_str!("../c-tests/examples/example.c"), "```c\n"),
         (include_str!("../c-tests/examples/example.cpp"), "```cpp\n"),
         (include_str!("../c-tests/examples/elements.cpp"), "```cpp\n"),
+        (include_str!("../c-tests/examples/repair.c"), "```c\n"),
+        (include_str!("../c-tests/examples/repair.cpp"), "```cpp\n"),
     ] {
         let block = format!("{lang}{file}```");
         assert!(

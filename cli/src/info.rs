@@ -2,7 +2,7 @@
 //! mesh, as text or JSON.
 
 use crate::exit::Failure;
-use crate::input::{LevelFile, Opened, build_surface, build_volume, load, open};
+use crate::input::{LevelFile, Opened, build_surface_shown, build_volume_shown, load, open};
 use crate::json::{
     INFO_SCHEMA, SurfaceMemory, SurfaceReport, SurfaceSummary, VolumeMemory, VolumeReport,
     VolumeSummary,
@@ -166,7 +166,7 @@ fn surface_info(
         count(n, "triangle", "triangles")
     );
     let (che, build_seconds) = timed_build(&progress, message, || {
-        build_surface(data, options.surface())
+        build_surface_shown(data, options.surface(), &progress)
     })?;
     surface_out(
         name,
@@ -356,8 +356,9 @@ fn volume_info(
         options.level,
         count(n, "tetrahedron", "tetrahedra")
     );
-    let (chf, build_seconds) =
-        timed_build(&progress, message, || build_volume(data, options.volume()))?;
+    let (chf, build_seconds) = timed_build(&progress, message, || {
+        build_volume_shown(data, options.volume(), &progress)
+    })?;
     volume_out(
         name,
         &chf,

@@ -7,7 +7,7 @@ use std::io::{ErrorKind, Read};
 use std::path::Path;
 use topomesh::io::{self, Format, MeshData};
 use topomesh::levelfile::OpenOptions;
-use topomesh::{BuildOptions, Che, Chf, Error, chf};
+use topomesh::{BuildOptions, BuildProgress, Che, Chf, Error, chf};
 
 /// Bytes read between two steps of the progress bar.
 const CHUNK: u64 = 1 << 22;
@@ -24,7 +24,16 @@ pub fn load(file: Option<&Path>, progress: &Progress) -> Result<(String, MeshDat
             DEFAULT_NAME.to_string(),
             io::parse(DEFAULT_MESH.as_bytes(), io::Format::Off, DEFAULT_NAME)?,
         )),
-        Some(path) => Ok((path.display().to_string(), read(path, progress)?)),
+        Some(path) => {
+            let (name, data) = (path.display().to_string(), read(path, progress)?);
+            // A volume: what the library's volume load checks and warns of.
+            let data = if data.is_volume() {
+                io::load::as_volume(data, &name)?
+            } else {
+                data
+            };
+            Ok((name, data))
+        }
     }
 }
 
@@ -112,6 +121,24 @@ pub fn open(path: &Path, kind: LevelFile, progress: &Progress) -> Result<Opened,
         LevelFile::Surface => Opened::Surface(Box::new(Che::open(path, options)?)),
         LevelFile::Volume => Opened::Volume(Box::new(Chf::open(path, options)?)),
     })
+}
+
+/// `build_surface` under a percentage bar of the build's steps.
+pub fn build_surface_shown(
+    data: &MeshData, options: BuildOptions, progress: &Progress,
+) -> Result<Che, Error> {
+    let hook = progress.build_hook(format!("building level {}", options.level));
+    let (triangles, n, positions) = (&data.triangles, data.num_vertices(), &data.positions);
+    Che::from_triangles_with_progress(triangles, n, positions, options, BuildProgress::new(&hook))
+}
+
+/// `build_volume` under a percentage bar of the build's steps.
+pub fn build_volume_shown(
+    data: &MeshData, options: chf::BuildOptions, progress: &Progress,
+) -> Result<Chf, Error> {
+    let hook = progress.build_hook(format!("building level {}", options.level));
+    let (tets, n, positions) = (&data.tetrahedra, data.num_vertices(), &data.positions);
+    Chf::from_tetrahedra_with_progress(tets, n, positions, options, BuildProgress::new(&hook))
 }
 
 pub fn build_surface(data: &MeshData, options: BuildOptions) -> Result<Che, Error> {

@@ -48,6 +48,18 @@ impl Progress {
         }
     }
 
+    /// A percentage bar with `msg` for a build, and the hook the build calls between its
+    /// steps to move it (`topomesh::BuildProgress`).
+    pub fn build_hook(&self, msg: String) -> impl Fn(f64, &str) + Sync + '_ {
+        self.start(msg.clone(), 100);
+        move |fraction, step| {
+            if let Some(bar) = &self.0 {
+                bar.set_message(format!("{msg}: {step}"));
+                bar.set_position((fraction * 100.0) as u64);
+            }
+        }
+    }
+
     /// `n` more units of the bar's work done.
     pub fn advance(&self, n: u64) {
         if let Some(bar) = &self.0 {

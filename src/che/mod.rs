@@ -30,6 +30,7 @@ pub(crate) use tables::edge_directory;
 use crate::NONE;
 use crate::error::Result;
 use crate::util::origin::OriginMap;
+use crate::util::progress::BuildProgress;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
 use crate::util::structure::{as_elements, check_id};
@@ -82,7 +83,21 @@ impl Che {
     pub fn from_triangles(
         triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     ) -> Result<Che> {
-        build::build(triangles, n_vertices, positions, options)
+        build::build(
+            triangles,
+            n_vertices,
+            positions,
+            options,
+            BuildProgress::default(),
+        )
+    }
+
+    /// [`Che::from_triangles`], telling `progress` how far the build is after each step.
+    pub fn from_triangles_with_progress(
+        triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
+        progress: BuildProgress,
+    ) -> Result<Che> {
+        build::build(triangles, n_vertices, positions, options, progress)
     }
 
     /// Builds from a flat array of `3 * n` vertex ids.

@@ -70,6 +70,7 @@ pub type ChfSummary = Summary;
 
 use crate::error::{Error, Result};
 use crate::util::origin::OriginMap;
+use crate::util::progress::BuildProgress;
 use crate::util::rank::RankBits;
 use crate::util::structure::{as_elements, check_id};
 use build::level2;
@@ -152,7 +153,21 @@ impl Chf {
     pub fn from_tetrahedra(
         tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     ) -> Result<Chf> {
-        build::build(tets, n_vertices, positions, options)
+        build::build(
+            tets,
+            n_vertices,
+            positions,
+            options,
+            BuildProgress::default(),
+        )
+    }
+
+    /// [`Chf::from_tetrahedra`], telling `progress` how far the build is after each step.
+    pub fn from_tetrahedra_with_progress(
+        tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
+        progress: BuildProgress,
+    ) -> Result<Chf> {
+        build::build(tets, n_vertices, positions, options, progress)
     }
 
     /// Builds from a flat array of `4 * n` vertex ids.

@@ -24,11 +24,15 @@ pub fn read_surface(path: &Path) -> Result<MeshData> {
 /// Reads `path` and checks that it holds a volume (tetrahedra) or points only; triangles
 /// beside tetrahedra are reported in a warning, since a volume build ignores them.
 pub fn read_volume(path: &Path) -> Result<MeshData> {
-    let mut data = read(path)?;
+    as_volume(read(path)?, &path.display().to_string())
+}
+
+/// What `read_volume` checks of data read from `name`: tetrahedra, or nothing but points;
+/// triangles beside tetrahedra get a warning.
+pub fn as_volume(mut data: MeshData, name: &str) -> Result<MeshData> {
     if !data.is_volume() && !data.triangles.is_empty() {
         return Err(Error::invalid(format!(
-            "{}: holds no tetrahedra ({} triangles: a surface, not a volume mesh)",
-            path.display(),
+            "{name}: holds no tetrahedra ({} triangles: a surface, not a volume mesh)",
             data.triangles.len()
         )));
     }
@@ -38,8 +42,7 @@ pub fn read_volume(path: &Path) -> Result<MeshData> {
             count(data.triangles.len() as u64, ("triangle", "triangles")),
             count(data.tetrahedra.len() as u64, ("tetrahedron", "tetrahedra"))
         );
-        data.warnings
-            .push(Warning::new(&path.display().to_string(), None, msg));
+        data.warnings.push(Warning::new(name, None, msg));
     }
     Ok(data)
 }

@@ -16,6 +16,7 @@ pub(crate) mod origin;
 pub(crate) mod pages;
 pub(crate) mod panics;
 pub(crate) mod par;
+pub mod progress;
 pub(crate) mod rank;
 pub(crate) mod rank_directory;
 pub(crate) mod small_ids;

@@ -176,7 +176,7 @@ pub(crate) fn reject_non_manifold_edges(
             .map(|&h| origin_of(h / 3).to_string())
             .collect();
         return Err(Error::non_manifold(format!(
-            "non-manifold edge ({a}, {b}) is shared by triangles {}; {} such edges",
+            "non-manifold edge ({a}, {b}) is shared by triangles {}; such edges in all: {}",
             tris.join(", "),
             report.non_manifold_edges
         )));

@@ -23,6 +23,7 @@ use crate::error::{Error, Result};
 use crate::util::alloc::{try_reserve, try_to_vec};
 use crate::util::options::check_input;
 use crate::util::origin::OriginMap;
+use crate::util::progress::BuildProgress;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
@@ -30,6 +31,7 @@ use report::push_example;
 
 pub(crate) fn build(
     triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
+    progress: BuildProgress,
 ) -> Result<Che> {
     let n = triangles.len();
     check_input(
@@ -65,18 +67,22 @@ pub(crate) fn build(
     report.welded_vertices = welded.welded_vertices;
     let triangles = &*welded.elements;
     let threads = crate::util::par::build_threads(options.threads, triangles.len());
+    progress.at(0.0, "the soup");
     let (mut v, triangle_origin) = soup::soup(triangles, n_vertices, &mut report, threads)?;
     let triangle_origin = OriginMap::from(triangle_origin);
     let origin_of = |t: u32| triangle_origin.get(t);
+    progress.at(0.15, "pairing half-edges");
     let mut matching = matching::match_pairs(&v, n_vertices, threads, &mut report)?;
     if options.strict {
         matching::reject_non_manifold_edges(&report, &v, &matching.non_manifold, origin_of)?;
     }
+    progress.at(0.45, "orienting");
     let (o, seams) = orient_step(&mut v, &mut matching, &mut report, origin_of)?;
     let mut non_manifold = std::mem::take(&mut matching.non_manifold);
     non_manifold.sort_unstable();
     duplicates_step(&o, matching.duplicates, &mut report, origin_of)?;
     reject_if_strict(&report, options.strict)?;
+    progress.at(0.6, "splitting vertices");
     let mut split = split::split(&mut v, &o, n_vertices, &seams, threads)?;
     split_step(&mut split, &mut report, options.strict)?;
     let vh = std::mem::take(&mut split.vh);
@@ -87,8 +93,11 @@ pub(crate) fn build(
         non_manifold,
         triangle_origin,
     };
+    progress.at(0.75, "assembling");
     let mut che = assemble(canonical, &split.copies, n_vertices, positions, report)?;
+    progress.at(0.8, "levels 2 and 3");
     finish_level(&mut che, options.level, vh)?;
+    progress.at(1.0, "done");
     Ok(che)
 }
 
@@ -142,7 +151,7 @@ fn duplicates_step(
 fn reject_if_strict(report: &BuildReport, strict: bool) -> Result<()> {
     if let (true, Some(&[s, t])) = (strict, report.duplicate_examples.first()) {
         return Err(Error::non_manifold(format!(
-            "triangles {s} and {t} have the same vertices; {} duplicate pairs",
+            "triangles {s} and {t} have the same vertices; duplicate pairs in all: {}",
             report.duplicate_triangles
         )));
     }
@@ -157,7 +166,7 @@ fn split_step(split: &mut split::Split, report: &mut BuildReport, strict: bool) 
     report.added_vertices = split.copies.len();
     if strict && report.split_vertices > 0 {
         return Err(Error::non_manifold(format!(
-            "non-manifold vertex {} (its star is several fans); {} such vertices",
+            "non-manifold vertex {} (its star is several fans); such vertices in all: {}",
             report.split_vertex_examples[0], report.split_vertices
         )));
     }

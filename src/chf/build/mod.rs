@@ -25,6 +25,7 @@ use crate::error::{Error, Result};
 use crate::util::alloc::{try_reserve, try_to_vec, try_vec};
 use crate::util::options::{Cells, check_input};
 use crate::util::origin::OriginMap;
+use crate::util::progress::BuildProgress;
 use glam::DVec3;
 
 pub use crate::util::options::BuildOptions;
@@ -36,25 +37,13 @@ pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
 /// The pipeline: each step is a function below, in this order.
 pub(crate) fn build(
     tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
+    progress: BuildProgress,
 ) -> Result<Chf> {
-    check_input(
-        &options,
-        &TETRAHEDRA,
-        tets.len(),
-        n_vertices,
-        positions.len(),
-    )?;
-    check_budget(tets.len(), n_vertices, !positions.is_empty(), &options)?;
-    let mut report = BuildReport::of_input(tets.len(), n_vertices);
-    (
-        report.non_finite_vertices,
-        report.non_finite_vertex_examples,
-    ) = crate::util::non_finite_vertices(positions);
-    let welded = crate::util::weld::weld_elements(tets, positions, options.weld_tolerance)?;
-    report.welded_vertices = welded.welded_vertices;
+    let (mut report, welded) = prepared(tets, n_vertices, positions, &options)?;
     let tets = &*welded.elements;
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
+    progress.at(0.0, "stars and orientation");
     let Oriented {
         mut v,
         o,
@@ -69,6 +58,7 @@ pub(crate) fn build(
     let origin_of = |t: u32| tet_origin.get(t);
     non_manifold.sort_unstable();
     // 4. Vertex split, when some star is in several pieces.
+    progress.at(0.5, "splitting vertices");
     let copies = if stars.split_needed {
         split_vertices(&mut v, &o, &links, n_vertices, &mut report)?
     } else {
@@ -78,6 +68,7 @@ pub(crate) fn build(
     let n_total = n_vertices + copies.len();
     let vertex_origin = OriginMap::with_copies(n_vertices, &copies)?;
     // 5. Edges: the census by input vertex pair (after a split, one more star pass).
+    progress.at(0.6, "edges");
     let census = if copies.is_empty() {
         std::mem::take(&mut stars.census)
     } else {
@@ -116,7 +107,32 @@ pub(crate) fn build(
         o,
         ..Chf::empty()
     };
-    raise(chf, options, stars, n_threads)
+    progress.at(0.75, "levels 2 and 3");
+    let chf = raise(chf, options, stars, n_threads)?;
+    progress.at(1.0, "done");
+    Ok(chf)
+}
+
+/// The checks before anything is allocated, the report of the input, and the weld.
+fn prepared<'a>(
+    tets: &'a [[u32; 4]], n_vertices: usize, positions: &[DVec3], options: &BuildOptions,
+) -> Result<(BuildReport, crate::util::weld::Welded<'a, 4>)> {
+    check_input(
+        options,
+        &TETRAHEDRA,
+        tets.len(),
+        n_vertices,
+        positions.len(),
+    )?;
+    check_budget(tets.len(), n_vertices, !positions.is_empty(), options)?;
+    let mut report = BuildReport::of_input(tets.len(), n_vertices);
+    (
+        report.non_finite_vertices,
+        report.non_finite_vertex_examples,
+    ) = crate::util::non_finite_vertices(positions);
+    let welded = crate::util::weld::weld_elements(tets, positions, options.weld_tolerance)?;
+    report.welded_vertices = welded.welded_vertices;
+    Ok((report, welded))
 }
 
 /// Refuses, before allocating, a build whose estimate exceeds the memory limit.

@@ -25,7 +25,7 @@ impl<F: Fn(u32) -> u32> Strict<'_, F> {
                 .map(|&hf| origin_of(tet(hf)).to_string())
                 .collect();
             return Err(Error::non_manifold(format!(
-                "non-manifold face ({}, {}, {}) is shared by tetrahedra {}; {} such faces",
+                "non-manifold face ({}, {}, {}) is shared by tetrahedra {}; such faces in all: {}",
                 triple[0],
                 triple[1],
                 triple[2],
@@ -35,7 +35,7 @@ impl<F: Fn(u32) -> u32> Strict<'_, F> {
         }
         if let Some(&[s, t]) = report.duplicate_examples.first() {
             return Err(Error::non_manifold(format!(
-                "tetrahedra {s} and {t} have the same vertices; {} duplicate pairs",
+                "tetrahedra {s} and {t} have the same vertices; duplicate pairs in all: {}",
                 report.duplicate_tetrahedra
             )));
         }
@@ -55,14 +55,14 @@ impl<F: Fn(u32) -> u32> Strict<'_, F> {
                 .map(|t| origin_of(t).to_string())
                 .collect();
             return Err(Error::non_manifold(format!(
-                "non-manifold edge ({a}, {b}): tetrahedra {} form several fans around it; {} such edges",
+                "non-manifold edge ({a}, {b}): tetrahedra {} form several fans around it; such edges in all: {}",
                 tets.join(", "),
                 report.non_manifold_edges
             )));
         }
         if let Some(&x) = report.split_vertex_examples.first() {
             return Err(Error::non_manifold(format!(
-                "non-manifold vertex {x} (its star is several face-connected pieces); {} such vertices",
+                "non-manifold vertex {x} (its star is several face-connected pieces); such vertices in all: {}",
                 report.split_vertices
             )));
         }

@@ -111,8 +111,11 @@ static topomesh_status run_call(const char *file) {
     }
     che_mesh *che = NULL;
     chf_mesh *chf = NULL;
-    che_build_options co = {c.level, c.strict, c.threads};
-    chf_build_options fo = {c.level, c.strict, c.threads};
+    che_build_options co = che_build_options_default();
+    chf_build_options fo = chf_build_options_default();
+    co.level = fo.level = c.level;
+    co.strict = fo.strict = c.strict;
+    co.threads = fo.threads = c.threads;
     const uint32_t *ids = c.elements_null ? NULL : c.elements;
     size_t n3 = c.elements_null ? c.n_elements : c.n_ids / 3;
     size_t n4 = c.elements_null ? c.n_elements : c.n_ids / 4;

@@ -46,7 +46,7 @@ int main(void) {
     }
     CHECK(strcmp(topomesh_status_str(TOPOMESH_STATUS_OK), "ok") == 0);
     /* Any other value is defined: "unknown status". */
-    CHECK(strcmp(topomesh_status_str(10), "unknown status") == 0);
+    CHECK(strcmp(topomesh_status_str(TOPOMESH_STATUS_OUT_OF_MEMORY + 1), "unknown status") == 0);
     CHECK(strcmp(topomesh_status_str(UINT32_MAX), "unknown status") == 0);
 
     /* The version is the package's. */

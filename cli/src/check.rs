@@ -87,6 +87,28 @@ enum Report {
 /// The nouns of one kind of problem: the JSON name, and the text for one and for many.
 type Nouns = (&'static str, &'static str, &'static str);
 
+/// The problems both kinds of mesh can have.
+const NON_MANIFOLD_EDGES: Nouns = (
+    "non_manifold_edges",
+    "non-manifold edge",
+    "non-manifold edges",
+);
+const NON_MANIFOLD_VERTICES: Nouns = (
+    "non_manifold_vertices",
+    "non-manifold vertex",
+    "non-manifold vertices",
+);
+const NON_ORIENTABLE: Nouns = (
+    "non_orientable_components",
+    "non-orientable component",
+    "non-orientable components",
+);
+const NON_FINITE: Nouns = (
+    "non_finite_vertices",
+    "vertex with a NaN or infinite coordinate",
+    "vertices with a NaN or infinite coordinate",
+);
+
 #[derive(Default)]
 struct Problems(Vec<Problem>);
 
@@ -157,32 +179,24 @@ fn check_surface(file: String, data: &MeshData, weld: f64) -> Result<Checked, Er
         "duplicate triangle pairs",
     );
     p.note(r.duplicate_triangles, dup, &r.duplicate_examples);
-    let nme = (
-        "non_manifold_edges",
-        "non-manifold edge",
-        "non-manifold edges",
+    p.note(
+        r.non_manifold_edges,
+        NON_MANIFOLD_EDGES,
+        &r.non_manifold_edge_examples,
     );
-    p.note(r.non_manifold_edges, nme, &r.non_manifold_edge_examples);
-    let nmv = (
-        "non_manifold_vertices",
-        "non-manifold vertex",
-        "non-manifold vertices",
+    p.note(
+        r.split_vertices,
+        NON_MANIFOLD_VERTICES,
+        &r.split_vertex_examples,
     );
-    p.note(r.split_vertices, nmv, &r.split_vertex_examples);
-    let no = (
-        "non_orientable_components",
-        "non-orientable component",
-        "non-orientable components",
-    );
-    p.note(r.non_orientable_components, no, &r.non_orientable_examples);
-    let nf = (
-        "non_finite_vertices",
-        "vertex with a NaN or infinite coordinate",
-        "vertices with a NaN or infinite coordinate",
+    p.note(
+        r.non_orientable_components,
+        NON_ORIENTABLE,
+        &r.non_orientable_examples,
     );
     p.note(
         r.non_finite_vertices as usize,
-        nf,
+        NON_FINITE,
         &r.non_finite_vertex_examples,
     );
     let flip = (
@@ -243,32 +257,24 @@ fn check_volume(file: String, data: &MeshData, weld: f64) -> Result<Checked, Err
         "non-manifold faces",
     );
     p.note(r.non_manifold_faces, nmf, &r.non_manifold_face_examples);
-    let nme = (
-        "non_manifold_edges",
-        "non-manifold edge",
-        "non-manifold edges",
+    p.note(
+        r.non_manifold_edges,
+        NON_MANIFOLD_EDGES,
+        &r.non_manifold_edge_examples,
     );
-    p.note(r.non_manifold_edges, nme, &r.non_manifold_edge_examples);
-    let nmv = (
-        "non_manifold_vertices",
-        "non-manifold vertex",
-        "non-manifold vertices",
+    p.note(
+        r.split_vertices,
+        NON_MANIFOLD_VERTICES,
+        &r.split_vertex_examples,
     );
-    p.note(r.split_vertices, nmv, &r.split_vertex_examples);
-    let no = (
-        "non_orientable_components",
-        "non-orientable component",
-        "non-orientable components",
-    );
-    p.note(r.non_orientable_components, no, &r.non_orientable_examples);
-    let nf = (
-        "non_finite_vertices",
-        "vertex with a NaN or infinite coordinate",
-        "vertices with a NaN or infinite coordinate",
+    p.note(
+        r.non_orientable_components,
+        NON_ORIENTABLE,
+        &r.non_orientable_examples,
     );
     p.note(
         r.non_finite_vertices as usize,
-        nf,
+        NON_FINITE,
         &r.non_finite_vertex_examples,
     );
     let flip = (

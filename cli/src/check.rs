@@ -25,6 +25,9 @@ pub struct CheckOptions {
     /// Weld vertices at most TOLERANCE apart before building (0: off).
     #[arg(long, value_name = "TOLERANCE", default_value_t = 0.0)]
     weld: f64,
+    /// Also draw the problems it lists on the mesh, to a `.png` or `.svg` image.
+    #[arg(long, value_name = "OUT")]
+    render: Option<PathBuf>,
 }
 
 pub fn run(options: &CheckOptions) -> Result<ExitCode, Failure> {
@@ -37,6 +40,9 @@ pub fn run(options: &CheckOptions) -> Result<ExitCode, Failure> {
         check_surface(name, &data, options.weld)?
     };
     drop(progress);
+    if let Some(image) = &options.render {
+        crate::render::problems(&checked.json.file, &data, options.weld, image)?;
+    }
     let mut out = Out::new();
     if options.json {
         crate::json::write(&mut out, CHECK_SCHEMA, &checked.json)?;

@@ -13,6 +13,7 @@ mod json;
 mod output;
 mod print;
 mod progress;
+mod render;
 mod report;
 
 use clap::{Parser, Subcommand};
@@ -106,6 +107,15 @@ enum Command {
         exit_code_table!()
     ))]
     Export(export::ExportOptions),
+    /// Draw a mesh's topology as PNG or SVG: boundary curves, problems, classes.
+    #[command(after_help = concat!(
+        "Examples:
+  topomesh render holes.off -o holes.png         boundary curves and problems, iso view
+  topomesh render scan.ply -o scan.svg --view front --show boundary,components
+  topomesh render part.mesh -o part.png --cut x=0.5   a volume cut in the middle\n\n",
+        exit_code_table!()
+    ))]
+    Render(render::RenderOptions),
 }
 
 fn main() -> ExitCode {
@@ -127,5 +137,6 @@ fn main() -> ExitCode {
         Command::Convert(options) => convert::run(&options),
         Command::Bench(options) => bench::run(&options),
         Command::Export(options) => export::run(&options),
+        Command::Render(options) => render::run(&options),
     })
 }

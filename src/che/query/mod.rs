@@ -3,6 +3,7 @@
 //! curves, whole relations as CSR, the summary and the memory used.
 
 mod bulk;
+mod components;
 mod curves;
 mod memory;
 mod relations;

@@ -5,6 +5,7 @@ mod boundary;
 pub(crate) mod bulk;
 pub(crate) mod fan;
 pub(crate) mod memory;
+mod non_manifold;
 pub(crate) mod relations;
 pub(crate) mod star;
 pub(crate) mod summary;

@@ -31,11 +31,12 @@ pub const BOUNDARY: Rgb = Rgb(0, 160, 60);
 pub const CUT: Rgb = Rgb(240, 190, 60);
 
 /// The `i`-th of a sequence of distinct colours: hues a golden angle apart, so that
-/// neighbours in the sequence differ most, with the lightness cycling over three steps so
-/// that long sequences stay apart. Saturated and mid-dark, to stand out on the grey.
+/// neighbours in the sequence differ most, and the lightness stepped by another
+/// irrational fraction (the plastic number's), so that two colours whose hues come close
+/// differ in lightness. Saturated and mid-dark, to stand out on the grey.
 pub fn palette(i: usize) -> Rgb {
     let hue = (i as f64 * 137.507_764_050_037_85) % 360.0;
-    let lightness = [0.45, 0.35, 0.55][(i / 7) % 3];
+    let lightness = 0.32 + 0.26 * ((i as f64 * 0.754_877_666_246_692_7) % 1.0);
     hsl(hue, 0.85, lightness)
 }
 
@@ -60,10 +61,10 @@ fn hsl(h: f64, s: f64, l: f64) -> Rgb {
 mod tests {
     use super::*;
 
-    /// The first thousand colours are all different, and none is a mark colour.
+    /// The first twenty thousand colours are all different, and none is a mark colour.
     #[test]
     fn palette_colours_are_distinct() {
-        let mut seen: Vec<Rgb> = (0..1000).map(palette).collect();
+        let mut seen: Vec<Rgb> = (0..20_000).map(palette).collect();
         let n = seen.len();
         seen.sort_by_key(|c| (c.0, c.1, c.2));
         seen.dedup();

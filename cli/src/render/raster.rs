@@ -20,10 +20,11 @@ pub fn png(
         .ok_or_else(|| format!("cannot make a {}x{} image", layout.width, layout.height))?;
     pixmap.fill(colour(BACKGROUND));
     shade(&mut pixmap, scene, cam, progress);
-    for layer in &scene.layers {
+    let (numbered, marks) = scene.numbered_then_marks();
+    for &layer in &numbered {
         draw_layer(&mut pixmap, layer, cam);
     }
-    for layer in &scene.layers {
+    for layer in numbered {
         if let Some((at, text)) = &layer.label {
             let [x, y, _] = cam.project(*at);
             label(
@@ -34,6 +35,9 @@ pub fn png(
                 layer.colour,
             );
         }
+    }
+    for layer in marks {
+        draw_layer(&mut pixmap, layer, cam);
     }
     legend(&mut pixmap, scene, layout);
     pixmap.encode_png().map_err(|e| e.to_string())

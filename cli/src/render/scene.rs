@@ -111,6 +111,12 @@ impl Scene<'_> {
         lines
     }
 
+    /// The layers in drawing order around the numbers: the numbered layers (boundary
+    /// curves) under them, the marks of problems over them, so that no number hides one.
+    pub fn numbered_then_marks(&self) -> (Vec<&Layer>, Vec<&Layer>) {
+        self.layers.iter().partition(|l| l.label.is_some())
+    }
+
     /// Every position the camera must see: the triangles' corners and the marks.
     pub fn extent(&self) -> impl Iterator<Item = DVec3> + '_ {
         let t = &self.triangles;

@@ -23,10 +23,11 @@ pub fn svg(scene: &Scene, cam: &Camera, layout: &Layout, progress: &Progress) ->
         BACKGROUND.hex()
     );
     triangles(&mut s, scene, cam, progress);
-    for layer in &scene.layers {
+    let (numbered, problems) = scene.numbered_then_marks();
+    for &layer in &numbered {
         marks(&mut s, layer, cam);
     }
-    for layer in &scene.layers {
+    for layer in numbered {
         if let Some((at, text)) = &layer.label {
             let [x, y, _] = cam.project(*at);
             let _ = writeln!(
@@ -39,6 +40,9 @@ pub fn svg(scene: &Scene, cam: &Camera, layout: &Layout, progress: &Progress) ->
                 escape(text)
             );
         }
+    }
+    for layer in problems {
+        marks(&mut s, layer, cam);
     }
     legend(&mut s, scene, layout);
     s.push_str("</svg>\n");

@@ -111,12 +111,9 @@ fn pixels(path: &Path) -> (Vec<u8>, usize) {
     let mut reader = decoder.read_info().unwrap();
     let mut buf = vec![0; reader.output_buffer_size()];
     let info = reader.next_frame(&mut buf).unwrap();
-    assert_eq!(info.color_type, png::ColorType::Rgba);
-    let rgb = buf
-        .chunks_exact(4)
-        .flat_map(|p| [p[0], p[1], p[2]])
-        .collect();
-    (rgb, info.width as usize)
+    assert_eq!(info.color_type, png::ColorType::Rgb);
+    buf.truncate(info.buffer_size());
+    (buf, info.width as usize)
 }
 
 fn pixel((rgb, width): &(Vec<u8>, usize), [x, y]: [f64; 2]) -> String {

@@ -11,8 +11,10 @@ impl Rgb {
         format!("#{:02x}{:02x}{:02x}", self.0, self.1, self.2)
     }
 
-    /// This colour lit by `light` in [0, 1].
+    /// This colour lit by `light` in [0, 1], in one of 16 steps: few colours make a small
+    /// PNG, and flat-shaded triangles show little banding.
     pub fn shaded(self, light: f32) -> Rgb {
+        let light = (light * 16.0).round() / 16.0;
         let f = |c: u8| (c as f32 * light).round().clamp(0.0, 255.0) as u8;
         Rgb(f(self.0), f(self.1), f(self.2))
     }

@@ -24,23 +24,38 @@ pub fn png(
     for &layer in &numbered {
         draw_layer(&mut pixmap, layer, cam);
     }
+    // Many numbers at full size would hide the mesh.
+    let scale = if numbered.len() > 24 { 1 } else { 2 };
     for layer in numbered {
         if let Some((at, text)) = &layer.label {
             let [x, y, _] = cam.project(*at);
-            label(
-                &mut pixmap,
-                x + 6.0,
-                y - 6.0 - (font::HEIGHT * 2) as f64,
-                text,
-                layer.colour,
-            );
+            let y = y - 6.0 - (font::HEIGHT * scale) as f64;
+            label(&mut pixmap, [x + 6.0, y], scale, text, layer.colour);
         }
     }
     for layer in marks {
         draw_layer(&mut pixmap, layer, cam);
     }
     legend(&mut pixmap, scene, layout);
-    pixmap.encode_png().map_err(|e| e.to_string())
+    encode(&pixmap).map_err(|e| e.to_string())
+}
+
+/// The pixels as an RGB PNG (every pixel is opaque), with the filter chosen per row and
+/// the strongest compression: flat-shaded meshes compress well so, for a small file.
+fn encode(pixmap: &Pixmap) -> Result<Vec<u8>, png::EncodingError> {
+    let rgb: Vec<u8> = (pixmap.data().chunks_exact(4))
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, pixmap.width(), pixmap.height());
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_compression(png::Compression::Best);
+    encoder.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(&rgb)?;
+    writer.finish()?;
+    Ok(bytes)
 }
 
 fn colour(c: Rgb) -> Color {
@@ -174,9 +189,9 @@ fn draw_layer(pixmap: &mut Pixmap, layer: &Layer, cam: &Camera) {
     }
 }
 
-/// `text` at (`x`, `y`) (its top left) on a white box, in `ink`.
-fn label(pixmap: &mut Pixmap, x: f64, y: f64, text: &str, ink: Rgb) {
-    let scale = 2;
+/// `text` at (`x`, `y`) (its top left) on a white box, in `ink`, each font pixel a
+/// `scale`-wide square.
+fn label(pixmap: &mut Pixmap, [x, y]: [f64; 2], scale: usize, text: &str, ink: Rgb) {
     let w = font::width(text, scale) as f32;
     let h = (font::HEIGHT * scale) as f32;
     if let Some(r) = Rect::from_xywh(x as f32 - 2.0, y as f32 - 2.0, w + 2.0, h + 4.0) {

@@ -19,7 +19,7 @@ pub fn scene<'a>(
 ) -> Result<Scene<'a>, Error> {
     let s = che.summary();
     let mut colours = Vec::new();
-    let mut notes = Vec::new();
+    let mut notes = vec![count(s.triangles, "triangle", "triangles")];
     if show.contains(&Show::Components) {
         let (labels, n) = che.triangle_components()?;
         colours = labels
@@ -29,7 +29,7 @@ pub fn scene<'a>(
         notes.push(count(n as u64, "component", "components"));
     }
     let mut scene = Scene {
-        title: format!("{name}: {}", count(s.triangles, "triangle", "triangles")),
+        title: name.to_string(),
         triangles: Triangles {
             positions: Cow::Borrowed(che.positions()),
             corners: Cow::Borrowed(che.half_edge_vertices()),

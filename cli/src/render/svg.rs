@@ -27,12 +27,14 @@ pub fn svg(scene: &Scene, cam: &Camera, layout: &Layout, progress: &Progress) ->
     for &layer in &numbered {
         marks(&mut s, layer, cam);
     }
+    // Many numbers at full size would hide the mesh.
+    let size = if numbered.len() > 24 { 7 } else { 14 };
     for layer in numbered {
         if let Some((at, text)) = &layer.label {
             let [x, y, _] = cam.project(*at);
             let _ = writeln!(
                 s,
-                r#"<text class="label {}" x="{:.2}" y="{:.2}" fill="{}" font-family="monospace" font-size="14">{}</text>"#,
+                r#"<text class="label {}" x="{:.2}" y="{:.2}" fill="{}" font-family="monospace" font-size="{size}">{}</text>"#,
                 layer.class,
                 x + 6.0,
                 y - 6.0,

@@ -68,10 +68,7 @@ pub fn scene<'a>(
     let side = Side::new(cut, positions);
     let (corners, colours) = triangles(chf, side.as_ref())?;
     let mut scene = Scene {
-        title: format!(
-            "{name}: {}",
-            count(s.tetrahedra, "tetrahedron", "tetrahedra")
-        ),
+        title: name.to_string(),
         triangles: Triangles {
             positions: Cow::Borrowed(positions),
             corners: Cow::Owned(corners),
@@ -79,7 +76,7 @@ pub fn scene<'a>(
             base: colour::SURFACE,
         },
         layers: Vec::new(),
-        notes: Vec::new(),
+        notes: vec![count(s.tetrahedra, "tetrahedron", "tetrahedra")],
     };
     if let Some(side) = &side {
         let axis = ["x", "y", "z"][side.axis];

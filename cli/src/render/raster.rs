@@ -143,48 +143,60 @@ impl Target<'_> {
     }
 }
 
-/// A layer's segments as one stroked path, then its points.
+/// Marks a layer draws with one path: small paths keep tiny-skia's edge lists short.
+const PATH_MARKS: usize = 4096;
+/// Above this many marks a layer is drawn thin (hairlines, square dots): at that density
+/// the marks are a texture, and the stroker's outlines would cost most of the time.
+const DENSE: usize = 50_000;
+
+/// A layer's segments, then its points, in paths of at most `PATH_MARKS` marks.
 fn draw_layer(pixmap: &mut Pixmap, layer: &Layer, cam: &Camera) {
     let paint = paint(layer.colour);
-    let mut pb = PathBuilder::new();
-    for [p, q] in &layer.segments {
-        let ([x0, y0, _], [x1, y1, _]) = (cam.project(*p), cam.project(*q));
-        pb.move_to(x0 as f32, y0 as f32);
-        pb.line_to(x1 as f32, y1 as f32);
-    }
+    let dense = layer.segments.len() + layer.points.len() > DENSE;
     let stroke = Stroke {
-        width: layer.width as f32,
+        width: if dense { 0.0 } else { layer.width as f32 },
         line_cap: tiny_skia::LineCap::Round,
         ..Stroke::default()
     };
-    if let Some(path) = pb.finish() {
-        pixmap.stroke_path(&path, &paint, &stroke, Transform::identity(), None);
-    }
-    let mut pb = PathBuilder::new();
-    let r = layer.radius as f32;
-    for p in &layer.points {
-        let [x, y, _] = cam.project(*p).map(|c| c as f32);
-        match layer.dot {
-            Dot::Disc | Dot::Ring => pb.push_circle(x, y, r),
-            Dot::Cross => {
-                pb.move_to(x - r, y - r);
-                pb.line_to(x + r, y + r);
-                pb.move_to(x - r, y + r);
-                pb.line_to(x + r, y - r);
-            }
+    let identity = Transform::identity();
+    for chunk in layer.segments.chunks(PATH_MARKS) {
+        let mut pb = PathBuilder::new();
+        for [p, q] in chunk {
+            let ([x0, y0, _], [x1, y1, _]) = (cam.project(*p), cam.project(*q));
+            pb.move_to(x0 as f32, y0 as f32);
+            pb.line_to(x1 as f32, y1 as f32);
+        }
+        if let Some(path) = pb.finish() {
+            pixmap.stroke_path(&path, &paint, &stroke, identity, None);
         }
     }
-    let Some(path) = pb.finish() else { return };
-    match layer.dot {
-        Dot::Disc => pixmap.fill_path(
-            &path,
-            &paint,
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        ),
-        Dot::Ring | Dot::Cross => {
-            pixmap.stroke_path(&path, &paint, &stroke, Transform::identity(), None)
+    let r = layer.radius as f32;
+    for chunk in layer.points.chunks(PATH_MARKS) {
+        let mut pb = PathBuilder::new();
+        for p in chunk {
+            let [x, y, _] = cam.project(*p).map(|c| c as f32);
+            match layer.dot {
+                Dot::Disc | Dot::Ring if dense => {
+                    if let Some(rect) = Rect::from_xywh(x - 1.0, y - 1.0, 2.0, 2.0) {
+                        pb.push_rect(rect);
+                    }
+                }
+                Dot::Disc | Dot::Ring => pb.push_circle(x, y, r),
+                Dot::Cross => {
+                    pb.move_to(x - r, y - r);
+                    pb.line_to(x + r, y + r);
+                    pb.move_to(x - r, y + r);
+                    pb.line_to(x + r, y - r);
+                }
+            }
+        }
+        let Some(path) = pb.finish() else { continue };
+        match layer.dot {
+            Dot::Disc => pixmap.fill_path(&path, &paint, FillRule::Winding, identity, None),
+            Dot::Ring if dense => {
+                pixmap.fill_path(&path, &paint, FillRule::Winding, identity, None)
+            }
+            Dot::Ring | Dot::Cross => pixmap.stroke_path(&path, &paint, &stroke, identity, None),
         }
     }
 }

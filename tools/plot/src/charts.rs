@@ -9,6 +9,16 @@ pub struct Labels<'a> {
     pub element: &'a str,
 }
 
+impl Labels<'_> {
+    /// The element's plural, for the axis and title labels.
+    pub fn elements(&self) -> String {
+        match self.element.strip_suffix("on") {
+            Some(stem) if self.element.ends_with("hedron") => format!("{stem}a"),
+            _ => format!("{}s", self.element),
+        }
+    }
+}
+
 const W: f64 = 760.0;
 const H: f64 = 460.0;
 
@@ -65,8 +75,8 @@ pub fn memory_chart(res: &Results, labels: &Labels) -> Result<String, String> {
         W,
         H,
         &format!(
-            "Memory against sweep time: {mesh} ({elements} {}s)",
-            labels.element
+            "Memory against sweep time: {mesh} ({elements} {})",
+            labels.elements()
         ),
     );
     svg.axes(&f);
@@ -97,7 +107,7 @@ pub fn build_chart(res: &Results, labels: &Labels) -> Result<String, String> {
     let xs: Vec<f64> = all.iter().map(|p| p.0).collect();
     let ys: Vec<f64> = all.iter().map(|p| p.1).collect();
     let f = frame(
-        Axis::log(&xs, &[], &format!("{}s (log)", labels.element)),
+        Axis::log(&xs, &[], &format!("{} (log)", labels.elements())),
         Axis::log(&ys, &[], "build time, ms (log)"),
     );
     let mut svg = Svg::new(

@@ -180,6 +180,10 @@ meshopt_v="$(dpkg-query -W -f '${Version}' libmeshoptimizer-dev 2>/dev/null || e
   echo
   echo "- Machine: $model, $cpus logical CPUs ($threads thread(s) per core), $mem, $os. Load average"
   echo "  (1, 5, 15 min) before the run: $load_before; after: $load_after."
+  if awk -v l="${load_before%% *}" -v n="$cpus" 'BEGIN { exit !(l > n) }'; then
+    echo "  The machine was busy (load above its $cpus CPUs): the CPU times are the fair comparison;"
+    echo "  the wall-clock times include the waits for a core."
+  fi
   echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`); OpenMesh $om_v (Debian, TriMesh_ArrayKernelT with"
   echo "  double points), CGAL $cgal_v (Surface_mesh of Epick points). Both peers get \`reserve()\` (vertex and face"
   echo "  counts, edges estimated as 3T/2) before the build."

@@ -7,13 +7,16 @@
 # what changed between runs, and why, goes to CHANGELOG.md.
 #
 #   scripts/bench-volumes.sh [--reps N] [--prefix DIR] [--out FILE] [MESH...]
+#   scripts/bench-volumes.sh --charts-only [--out FILE]
 #
 # MESH: names under <mesh dir>/tets (default: blobby-12k armadillo-101k bunny00-1m).
 # Makes the meshes (scripts/fetch-tets.sh: tetgen, the 1M one takes under a minute), builds
 # and installs the package into a temporary prefix (or uses --prefix, an installed one),
 # builds c-tests/diff_volume's topomesh_bench_vol (-O2 -DNDEBUG, no -march=native; the CGAL
-# translation unit takes about a minute) and runs it. Respects CARGO_TARGET_DIR and
-# TOPOMESH_MESH_DIR.
+# translation unit takes about a minute) and runs it. Then writes the charts of the page
+# (docs/bench-volumes-*.svg, by tools/plot from the page's tables); --charts-only redraws
+# them from the page as it is (adding the charts section if it has none), without running
+# anything. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,15 +25,75 @@ reps=5
 prefix=""
 out="$root/BENCHMARKS-volumes.md"
 meshes=()
+charts_only=0
 while (($#)); do
   case "$1" in
     --reps) reps="$2"; shift 2 ;;
     --prefix) prefix="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n 2,16p "$0"; exit 0 ;;
+    --charts-only) charts_only=1; shift ;;
+    -h|--help) sed -n 2,20p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
+
+# The measurements of the page's tables, one per line, as tools/plot reads them
+# (tools/plot/src/results.rs): mesh, tetrahedra, library, kind, path, quantity, value. The
+# builds are the one-thread ones, as CGAL's.
+volume_results() {
+  awk -F'|' -v OFS='\t' '
+    function trim(s) { gsub(/^[ \t]+|[ \t]+$/, "", s); return s }
+    function name(l) {
+      if (l ~ /^CGAL/) return "CGAL Triangulation_3"
+      sub(/^topomesh /, "CHF ", l); sub(/,.*/, "", l); return l
+    }
+    function emit(l, path, q, v) {
+      print mesh, tets, name(l), (l ~ /^CGAL/) ? "peer" : "topomesh", path, q, v
+    }
+    /^### / { split(substr($0, 5), h, ":"); mesh = h[1]; split(h[2], w, " "); tets = w[3]; table = ""; next }
+    /^\| \| ms \| CGAL/ { table = "build"; next }
+    /^\| \| structure \|/ { table = "memory"; next }
+    /^\| relation \| library \| access/ { table = "sweep"; next }
+    !/^\|/ { table = ""; next }
+    /^\|---/ { next }
+    table == "build" && (trim($2) ~ /^CGAL/ || trim($2) ~ /, 1 thread$/) { emit(trim($2), "", "build_ms", trim($3)) }
+    table == "memory" { emit(trim($2), "", "memory_bytes", sprintf("%.0f", trim($3) * 1048576)) }
+    table == "sweep" { emit(trim($3), trim($4), trim($2), trim($5)) }
+  ' "$1"
+}
+
+charts_section() {
+  echo "## Charts"
+  echo
+  echo "Drawn by \`tools/plot\` from the tables below (\`scripts/bench-volumes.sh --charts-only\` redraws"
+  echo "them). Memory against sweep time on the largest mesh (TT, VT, ET and VV, each library at its"
+  echo "fastest access path), the one-thread build against the mesh size, and topomesh against CGAL:"
+  echo
+  echo "![memory against sweep time](docs/bench-volumes-memory.svg)"
+  echo
+  echo "![build time against mesh size](docs/bench-volumes-build.svg)"
+  echo
+  echo "![ratios to CGAL](docs/bench-volumes-ratios.svg)"
+  echo
+}
+
+charts() {
+  local results="${TMPDIR:-/tmp}/topomesh-bench-vol-results.$$.tsv"
+  volume_results "$out" >"$results"
+  (cd "$root" && cargo run -q -p topomesh-plot -- --results "$results" --out-dir "$root/docs" \
+    --prefix bench-volumes --element tetrahedron)
+  rm -f "$results"
+}
+
+if ((charts_only)); then
+  if ! grep -q '^## Charts' "$out"; then
+    section="$(charts_section)"
+    awk -v s="$section" '/^## Results/ { print s; print "" } { print }' "$out" >"$out.new"
+    mv "$out.new" "$out"
+  fi
+  charts
+  exit 0
+fi
 ((${#meshes[@]})) || meshes=(blobby-12k armadillo-101k bunny00-1m)
 dir="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"
 
@@ -105,6 +168,7 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
   echo "  element."
   echo "- The Rust core alone: \`cargo bench --bench chf\` (criterion); it is not recorded here."
   echo
+  charts_section
   echo "## Results"
   echo
   echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty)."
@@ -124,3 +188,4 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
 } > "$out.new"
 mv "$out.new" "$out"
 echo "== wrote $out"
+charts

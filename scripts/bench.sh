@@ -5,26 +5,73 @@
 # machine, the compilers, the flags, the commit and this command. The page holds the latest
 # run only; what changed between runs, and why, goes to CHANGELOG.md.
 #
-#   scripts/bench.sh [--reps N] [MESH...]
+#   scripts/bench.sh [--reps N] [--export-meshes "A B"] [MESH...]
+#   scripts/bench.sh --charts-only
 #
 # MESH: names in the mesh cache (default: bunny00 armadillo holes polygon_mesh
 # blobby-shuffled bunny00-sub2 bunny00-sub3) or paths to .off files. Fetches the meshes
 # (scripts/fetch-meshes.sh), builds and installs the package into a temporary prefix
 # (the cmake/ project, as scripts/c-tests.sh does), builds c-tests/diff_surface's topomesh_bench
-# (-O2, no -march=native) and runs it. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
+# and topomesh_bench_export (-O2, no -march=native) and runs them, the export benchmark on
+# the --export-meshes (default: bunny00 bunny00-sub3). Then writes the charts of the page
+# (docs/bench-surfaces-*.svg, by tools/plot from the page's tables); --charts-only redraws
+# them from the page as it is, without running anything. Respects CARGO_TARGET_DIR and
+# TOPOMESH_MESH_DIR.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cmdline="scripts/bench.sh${*:+ $*}"
 reps=5
 meshes=()
+export_meshes=(bunny00 bunny00-sub3)
+charts_only=0
 while (($#)); do
   case "$1" in
     --reps) reps="$2"; shift 2 ;;
-    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
+    --export-meshes) read -r -a export_meshes <<<"$2"; shift 2 ;;
+    --charts-only) charts_only=1; shift ;;
+    -h|--help) sed -n 2,19p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
+out="$root/BENCHMARKS.md"
+
+# The measurements of the page's main tables, one per line, as tools/plot reads them
+# (tools/plot/src/results.rs): mesh, triangles, library, kind, path, quantity, value.
+surface_results() {
+  awk -F'|' -v OFS='\t' '
+    function trim(s) { gsub(/^[ \t]+|[ \t]+$/, "", s); return s }
+    function name(l) { if (l == "CGAL") return "CGAL Surface_mesh"; sub(/^topomesh /, "CHE ", l); return l }
+    /^### / { mesh = substr($0, 5); main = 0; next }
+    /^[0-9]+ vertices, [0-9]+ triangles/ { split($0, w, " "); tris = w[3]; next }
+    /^\| library \| path \| build/ { main = 1; next }
+    !/^\|/ { main = 0; next }
+    main && !/^\|---/ {
+      lib = trim($2); path = trim($3); kind = (lib ~ /^topomesh/) ? "topomesh" : "peer"
+      if (trim($4) != "″") {
+        print mesh, tris, name(lib), kind, "", "build_ms", trim($4)
+        print mesh, tris, name(lib), kind, "", "memory_bytes", sprintf("%.0f", trim($6) * 1048576)
+      }
+      split("VV VF FF EF curves", rel, " ")
+      for (i = 1; i <= 5; i++) {
+        v = trim($(7 + i))
+        if (v != "–" && v != "") print mesh, tris, name(lib), kind, path, rel[i], v
+      }
+    }' "$1"
+}
+
+charts() {
+  local results="${TMPDIR:-/tmp}/topomesh-bench-results.$$.tsv"
+  surface_results "$out" >"$results"
+  (cd "$root" && cargo run -q -p topomesh-plot -- --results "$results" --out-dir "$root/docs" \
+    --prefix bench-surfaces --element triangle)
+  rm -f "$results"
+}
+
+if ((charts_only)); then
+  charts
+  exit 0
+fi
 ((${#meshes[@]})) || meshes=(bunny00 armadillo holes polygon_mesh blobby-shuffled bunny00-sub2 bunny00-sub3)
 dir="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"
 
@@ -40,7 +87,7 @@ cmake --install "$work/pkg" >/dev/null
 echo "== topomesh_bench (OpenMesh and CGAL compile slowly: about a minute)"
 cmake -S "$root/c-tests/diff_surface" -B "$work/diff" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
   -DTOPOMESH_MESH_DIR="$dir" >/dev/null
-cmake --build "$work/diff" --target topomesh_bench >/dev/null
+cmake --build "$work/diff" --target topomesh_bench topomesh_bench_export >/dev/null
 
 files=()
 for m in "${meshes[@]}"; do
@@ -49,6 +96,15 @@ done
 echo "== running on ${#files[@]} meshes, $reps repetitions"
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 "$work/diff/topomesh_bench" --reps "$reps" --md "$work/tables.md" "${files[@]}"
+export_files=()
+for m in "${export_meshes[@]}"; do
+  if [[ -f "$m" ]]; then export_files+=("$m"); else export_files+=("$dir/$m.off"); fi
+done
+: >"$work/exports.md"
+if ((${#export_files[@]})); then
+  echo "== exports on ${#export_files[@]} meshes"
+  "$work/diff/topomesh_bench_export" --reps "$reps" --md "$work/exports.md" "${export_files[@]}"
+fi
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 # The machine and the toolchain.
@@ -64,7 +120,8 @@ cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
 commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
 dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
 
-out="$root/BENCHMARKS.md"
+eigen_v="$(dpkg-query -W -f '${Version}' libeigen3-dev 2>/dev/null || echo 'not installed')"
+meshopt_v="$(dpkg-query -W -f '${Version}' libmeshoptimizer-dev 2>/dev/null || echo 'not installed')"
 {
   echo "# Benchmarks: surfaces"
   echo
@@ -99,6 +156,23 @@ out="$root/BENCHMARKS.md"
   echo "- The Rust core alone: \`cargo bench --bench che\` (criterion; meshes from"
   echo "  \`\$TOPOMESH_MESH_DIR\`, else the cache of \`scripts/fetch-meshes.sh\`) times the build at"
   echo "  levels 1-3 on one thread and on all, and the VV, VF, FF and EF sweeps; it is not recorded here."
+  echo "- Exports (\`c-tests/diff_surface/bench_export.cpp\`, on the meshes of \`--export-meshes\`): the"
+  echo "  half-edge arrays against building OpenMesh's TriMesh from the arrays, the Laplacian as CSR"
+  echo "  against OpenMesh's one-rings and Eigen's triplets, triangle strips against meshoptimizer's"
+  echo "  \`meshopt_stripify\` (as given, and after its \`meshopt_optimizeVertexCacheStrip\`), Betti numbers"
+  echo "  against the build; same timing rules (CPU time, medians, interleaved rounds)."
+  echo
+  echo "## Charts"
+  echo
+  echo "Drawn by \`tools/plot\` from the tables below (\`scripts/bench.sh --charts-only\` redraws them)."
+  echo "Memory against sweep time on the largest mesh (the sweeps every library ran, each at its"
+  echo "fastest access path), the build against the mesh size, and topomesh against the faster peer:"
+  echo
+  echo "![memory against sweep time](docs/bench-surfaces-memory.svg)"
+  echo
+  echo "![build time against mesh size](docs/bench-surfaces-build.svg)"
+  echo
+  echo "![ratios to the faster peer](docs/bench-surfaces-ratios.svg)"
   echo
   echo "## Results"
   echo
@@ -106,6 +180,10 @@ out="$root/BENCHMARKS.md"
   echo
   echo "- Machine: $model, $cpus logical CPUs ($threads thread(s) per core), $mem, $os. Load average"
   echo "  (1, 5, 15 min) before the run: $load_before; after: $load_after."
+  if awk -v l="${load_before%% *}" -v n="$cpus" 'BEGIN { exit !(l > n) }'; then
+    echo "  The machine was busy (load above its $cpus CPUs): the CPU times are the fair comparison;"
+    echo "  the wall-clock times include the waits for a core."
+  fi
   echo "- C++: $cxx; \`-O2 -DNDEBUG\` (no \`-march=native\`); OpenMesh $om_v (Debian, TriMesh_ArrayKernelT with"
   echo "  double points), CGAL $cgal_v (Surface_mesh of Epick points). Both peers get \`reserve()\` (vertex and face"
   echo "  counts, edges estimated as 3T/2) before the build."
@@ -113,6 +191,14 @@ out="$root/BENCHMARKS.md"
   echo "  libtopomesh.so; single-threaded."
   echo "- $reps repetitions of each build and sweep."
   cat "$work/tables.md"
+  if [[ -s "$work/exports.md" ]]; then
+    echo
+    echo "## Exports"
+    echo
+    echo "Eigen $eigen_v, meshoptimizer $meshopt_v (Debian); the rest as above."
+    cat "$work/exports.md"
+  fi
 } > "$work/page.md"
 mv "$work/page.md" "$out"
 echo "== wrote $out"
+charts

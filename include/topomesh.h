@@ -56,6 +56,16 @@
 #define TOPOMESH_OPEN_TRUSTED 2
 
 /**
+ * A `*_mesh_open` flag: map the file read-only instead of reading it (zero-copy: the big
+ * arrays are the file's sections, paged in as queries touch them). Queries, CSR calls and
+ * views answer from the mapping; raising the level or editing copies what it writes into
+ * memory. The file must stay as it is while the handle lives: truncating it makes a later
+ * access raise SIGBUS. With `TOPOMESH_OPEN_TRUSTED`, a query on a corrupt file may answer
+ * wrongly or return `TOPOMESH_STATUS_PANIC`, but never reads outside the mapping.
+ */
+#define TOPOMESH_OPEN_MAPPED 4
+
+/**
  * What a call did. `TOPOMESH_STATUS_OK` (0) is success; every other value is an error
  * whose detail (file, line, element id, sizes) `topomesh_last_error` gives.
  */

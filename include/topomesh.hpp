@@ -172,8 +172,9 @@ public:
     /// Reads a surface file (.off .obj .ply .stl ...).
     static Surface load(const std::string &path, Options options = {});
     /// Opens a level file written by save() (no parsing, no build). `flags`: 0 checks
-    /// everything, or TOPOMESH_OPEN_CHECKSUMS_ONLY / TOPOMESH_OPEN_TRUSTED. Throws Error
-    /// naming the section and byte of a damaged file.
+    /// everything, or TOPOMESH_OPEN_CHECKSUMS_ONLY / TOPOMESH_OPEN_TRUSTED; or'ed with
+    /// TOPOMESH_OPEN_MAPPED, the file is mapped read-only and queried in place (zero-copy).
+    /// Throws Error naming the section and byte of a damaged file.
     static Surface open(const std::string &path, std::uint32_t flags = 0);
     /// Takes ownership of a handle from the C API.
     explicit Surface(che_mesh *adopt) noexcept;

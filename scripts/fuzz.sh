@@ -3,7 +3,8 @@
 # A crash, a panic or a failed assertion stops the run and leaves the input in
 # fuzz/artifacts/TARGET/. Targets: parse (every reader), che_build, chf_build, capi_calls
 # (sequences of C API calls on one handle), read_off, read_obj, read_ply, read_stl,
-# read_tetgen, read_mesh, read_msh, read_vtk (one reader each).
+# read_tetgen, read_mesh, read_msh, read_vtk (one reader each), levelfile (saved .che and
+# .chf files, mutated, opened loaded and mapped).
 #
 #   scripts/fuzz.sh                 # each target for 60 s, growing fuzz/corpus/TARGET/
 #   scripts/fuzz.sh --time 600      # longer
@@ -22,7 +23,7 @@ cd "$(dirname "$0")/.."
 limit=(-max_total_time=60)
 keep=1
 targets=(parse che_build chf_build capi_calls read_off read_obj read_ply read_stl read_tetgen
-    read_mesh read_msh read_vtk)
+    read_mesh read_msh read_vtk levelfile)
 chosen=()
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -62,8 +63,11 @@ for target in "${targets[@]}"; do
     echo "== fuzz $target ${limit[*]}"
     rm -rf "artifacts/$target"
     log="$scratch/$target.log"
-    # -max_len: the builders' inputs are small meshes; bigger ones only slow the search.
-    if ! cargo fuzz run -O "$target" "${dirs[@]}" -- "${limit[@]}" -max_len=4096 \
+    # -max_len: the builders' inputs are small meshes; bigger ones only slow the search. A
+    # level file of a small mesh has a table of some 30 sections, 64 bytes each.
+    max_len=4096
+    [ "$target" = levelfile ] && max_len=16384
+    if ! cargo fuzz run -O "$target" "${dirs[@]}" -- "${limit[@]}" -max_len="$max_len" \
         >"$log" 2>&1; then
         tail -n 60 "$log" >&2
         echo "fuzz $target failed: the input is in fuzz/artifacts/$target" >&2

@@ -9,7 +9,7 @@ use che_common::{Rng, answers as che_answers, perturb};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use topomesh::generate::{grid, sphere, torus};
-use topomesh::levelfile::{OpenOptions, Verify};
+use topomesh::levelfile::{Mode, OpenOptions, Verify};
 use topomesh::{BuildOptions, Che, Chf, ErrorKind, chf};
 
 /// A fresh folder under the temp dir for one test.
@@ -22,7 +22,10 @@ fn folder(tag: &str) -> PathBuf {
 
 const FULL: OpenOptions = OpenOptions {
     verify: Verify::Full,
+    mode: Mode::Loaded,
 };
+
+const MODES: [Mode; 2] = [Mode::Loaded, Mode::Mapped];
 
 /// Every array and count the structure holds (its `Debug` prints them all).
 fn che_state(che: &Che) -> String {
@@ -81,8 +84,12 @@ fn surfaces_round_trip_at_every_level() {
             che.save(&path).unwrap();
             // Before any query: a level-1 query fills the lazy edge directory.
             let state = che_state(&che);
-            for verify in [Verify::Full, Verify::Checksums, Verify::Trusted] {
-                let back = Che::open(&path, OpenOptions { verify }).unwrap();
+            for (verify, mode) in [Verify::Full, Verify::Checksums, Verify::Trusted]
+                .into_iter()
+                .flat_map(|v| MODES.map(|m| (v, m)))
+            {
+                let back = Che::open(&path, OpenOptions { verify, mode }).unwrap();
+                assert_eq!(back.is_mapped(), mode == Mode::Mapped);
                 assert_eq!(che_state(&back), state, "mesh {i} level {level}");
                 assert_eq!(back.report(), che.report());
                 assert_eq!(
@@ -128,17 +135,23 @@ fn volumes_round_trip_at_every_level() {
                 let built = mesh.build(level, with_positions);
                 let path = dir.join(format!("{i}-{level}.chf"));
                 built.save(&path).unwrap();
-                let back = Chf::open(&path, FULL).unwrap();
-                assert_eq!(
-                    chf_state(&back),
-                    chf_state(&built),
-                    "mesh {i} level {level}"
-                );
-                assert_eq!(
-                    chf_common::answers(&back),
-                    chf_common::answers(&built),
-                    "mesh {i} level {level}"
-                );
+                for mode in MODES {
+                    let options = OpenOptions {
+                        verify: Verify::Full,
+                        mode,
+                    };
+                    let back = Chf::open(&path, options).unwrap();
+                    assert_eq!(
+                        chf_state(&back),
+                        chf_state(&built),
+                        "mesh {i} level {level}"
+                    );
+                    assert_eq!(
+                        chf_common::answers(&back),
+                        chf_common::answers(&built),
+                        "mesh {i} level {level}"
+                    );
+                }
             }
         }
     }
@@ -163,10 +176,19 @@ fn saved(dir: &Path, name: &str) -> (PathBuf, Vec<u8>) {
     (path, bytes)
 }
 
-/// Opens `bytes` written to `path`, as a CHE.
+/// Opens `bytes` written to `path`, as a CHE, loaded and mapped: both give the same
+/// error, or the same structure (the loaded one is returned).
 fn open_bytes(path: &Path, bytes: &[u8], verify: Verify) -> topomesh::error::Result<Che> {
     std::fs::write(path, bytes).unwrap();
-    Che::open(path, OpenOptions { verify })
+    let mapped = Che::open(path, OpenOptions::mapped(verify));
+    let loaded = Che::open(path, OpenOptions::loaded(verify));
+    match (&loaded, &mapped) {
+        (Ok(a), Ok(b)) => assert_eq!(che_state(a), che_state(b)),
+        (Err(a), Err(b)) => assert_eq!((a.kind, &a.message), (b.kind, &b.message)),
+        _ => panic!("loaded {loaded:?}, mapped {mapped:?}"),
+    }
+    drop(mapped);
+    loaded
 }
 
 fn le_u64(b: &[u8], at: usize) -> u64 {
@@ -353,6 +375,11 @@ fn every_flipped_byte_is_caught_or_harmless() {
             assert_eq!(che_state(&che), expected, "byte {at}");
             harmless += 1;
         }
+        if let Ok(che) = Che::open(&path, OpenOptions::mapped(Verify::Trusted)) {
+            // Queries on a damaged trusted file may answer wrongly, but every read is
+            // bounds-checked against the mapping: the worst is a panic (a status in C).
+            let _ = std::panic::catch_unwind(|| che_answers(&che));
+        }
         let _ = open_bytes(&path, &b, Verify::Trusted);
     }
     assert!(
@@ -377,12 +404,17 @@ fn a_volume_with_a_flipped_byte_is_refused() {
         if let Ok(back) = Chf::open(&path, FULL) {
             assert_eq!(chf_state(&back), chf_state(&built), "byte {at}");
         }
-        let _ = Chf::open(
-            &path,
-            OpenOptions {
+        for mode in MODES {
+            let options = OpenOptions {
                 verify: Verify::Trusted,
-            },
-        );
+                mode,
+            };
+            if let Ok(back) = Chf::open(&path, options) {
+                // Queries on a damaged trusted file may answer wrongly but stay in bounds:
+                // an id out of range is a panic, which the C API turns into a status.
+                let _ = std::panic::catch_unwind(|| chf_common::answers(&back));
+            }
+        }
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -401,5 +433,92 @@ fn save_is_atomic_and_missing_files_are_io_errors() {
         .collect();
     assert_eq!(names, vec![std::ffi::OsString::from("m.che")]);
     let _ = chf::BuildOptions::level(0);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A mapped mesh raised to a higher level (its new arrays in memory) and saved equals the
+/// mesh built at that level; the file it came from stays as it was.
+#[test]
+fn a_mapped_mesh_is_raised_and_saved() {
+    let dir = folder("raise");
+    let s = torus(6, 5);
+    let n = s.positions.len();
+    let build = |level| {
+        Che::from_triangles(&s.triangles, n, &s.positions, BuildOptions::level(level)).unwrap()
+    };
+    let low = dir.join("low.che");
+    build(1).save(&low).unwrap();
+    let before = std::fs::read(&low).unwrap();
+    let mut che = Che::open(&low, OpenOptions::mapped(Verify::Trusted)).unwrap();
+    assert!(che.is_mapped());
+    che.build_level(3).unwrap();
+    let fresh = build(3);
+    assert_eq!(che_state(&che), che_state(&fresh));
+    let high = dir.join("high.che");
+    che.save(&high).unwrap();
+    let back = Che::open(&high, OpenOptions::mapped(Verify::Full)).unwrap();
+    assert_eq!(che_state(&back), che_state(&fresh));
+    assert_eq!(che_answers(&back), che_answers(&fresh));
+    assert_eq!(std::fs::read(&low).unwrap(), before);
+    // Lowered and raised again: the same.
+    che.build_level(0).unwrap();
+    che.build_level(2).unwrap();
+    assert_eq!(che_state(&che), che_state(&build(2)));
+
+    let path = dir.join("m.chf");
+    let mesh = chf_common::cube(2, 2, 2, true);
+    mesh.build(1, true).save(&path).unwrap();
+    let mut chf = Chf::open(&path, OpenOptions::mapped(Verify::Full)).unwrap();
+    assert!(chf.is_mapped());
+    chf.build_level(3).unwrap();
+    assert_eq!(chf_state(&chf), chf_state(&mesh.build(3, true)));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Queries are `&self` on a mapped mesh as on a built one: threads share it.
+#[test]
+fn a_mapped_mesh_answers_from_many_threads() {
+    let dir = folder("threads");
+    let s = torus(24, 17);
+    let n = s.positions.len();
+    for level in [1, 2, 3] {
+        let built =
+            Che::from_triangles(&s.triangles, n, &s.positions, BuildOptions::level(level)).unwrap();
+        let path = dir.join(format!("{level}.che"));
+        built.save(&path).unwrap();
+        let mapped = Che::open(&path, OpenOptions::mapped(Verify::Trusted)).unwrap();
+        let expected = che_answers(&built);
+        std::thread::scope(|scope| {
+            let threads: Vec<_> = (0..6)
+                .map(|_| scope.spawn(|| che_answers(&mapped)))
+                .collect();
+            for t in threads {
+                assert_eq!(t.join().unwrap(), expected, "level {level}");
+            }
+        });
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A trusted mapped file whose ids point outside the structure opens (nothing checks the
+/// ids), and its queries stay inside the mapping: an id out of range panics on a bounds
+/// check (a status in C) rather than reading past an array.
+#[test]
+fn trusted_ids_out_of_range_never_read_outside() {
+    let dir = folder("outside");
+    let (path, good) = saved(&dir, "m.che");
+    for name in ["V", "O", "VH", "EH", "CH", "curve_of"] {
+        let at = entry(&good, name);
+        let offset = le_u64(&good, at + 40) as usize;
+        for bad in [1000u32, u32::MAX - 1] {
+            let mut b = good.clone();
+            b[offset..offset + 4].copy_from_slice(&bad.to_le_bytes());
+            std::fs::write(&path, &b).unwrap();
+            let che = Che::open(&path, OpenOptions::mapped(Verify::Trusted)).unwrap();
+            let _ = std::panic::catch_unwind(|| che_answers(&che));
+            let full = Che::open(&path, OpenOptions::mapped(Verify::Checksums));
+            assert!(full.is_err(), "section {name}: the checksum catches it");
+        }
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1,10 +1,12 @@
 //! `topomesh bench`: the median time of the build of every level and of full sweeps of the
 //! relations, with the topology's bytes per element, as text or JSON. Every timed build
 //! and sweep follows one untimed warm-up run, so that the first repetition does not pay
-//! for cold caches and page faults alone.
+//! for cold caches and page faults alone. On a level file (`.che`, `.chf`), the time to
+//! open it (mapped or loaded, trusted or checked) and answer a first VV query, and the
+//! sweeps on the mapped structure.
 
 use crate::exit::Failure;
-use crate::input::{build_surface, build_volume, load};
+use crate::input::{LevelFile, build_surface, build_volume, load};
 use crate::json::BENCH_SCHEMA;
 use crate::output::{Out, verbose};
 use crate::print::count;
@@ -16,7 +18,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use topomesh::io::MeshData;
-use topomesh::{BuildOptions, Che, Error, chf};
+use topomesh::levelfile::{Mode, OpenOptions, Verify};
+use topomesh::{BuildOptions, Che, Chf, Error, chf};
 
 #[derive(clap::Args)]
 pub struct BenchOptions {
@@ -85,7 +88,41 @@ struct Sweep {
     seconds: Timing,
 }
 
+/// What `bench --json` prints for a level file.
+#[derive(Serialize)]
+struct OpenBench {
+    file: String,
+    kind: &'static str,
+    elements: usize,
+    level: u8,
+    repeat: usize,
+    /// Open then the first VV query, per mode and check.
+    opens: Vec<Open>,
+    /// On the mapped, trusted structure; `null` below the level the sweeps need.
+    sweeps: Option<Sweeps>,
+}
+
+#[derive(Serialize)]
+struct Open {
+    mode: &'static str,
+    verify: &'static str,
+    seconds: Timing,
+}
+
 pub fn run(options: &BenchOptions) -> Result<ExitCode, Failure> {
+    if let Some(path) = options.file.as_deref()
+        && let Some(kind) = LevelFile::of(path)
+    {
+        let bench = bench_level_file(path, kind, options.repeat())?;
+        let mut out = Out::new();
+        if options.json {
+            crate::json::write(&mut out, BENCH_SCHEMA, &bench)?;
+        } else {
+            print_opens(&mut out, &bench)?;
+        }
+        out.finish()?;
+        return Ok(ExitCode::SUCCESS);
+    }
     let progress = Progress::new();
     let (name, data) = load(options.file.as_deref(), &progress)?;
     // Four levels, each a warm-up build and the timed ones.
@@ -172,6 +209,122 @@ fn bench_volume(
         threads: options.threads,
         levels,
     })
+}
+
+/// The structure of a level file, either kind.
+enum Opened {
+    Surface(Box<Che>),
+    Volume(Box<Chf>),
+}
+
+impl Opened {
+    fn open(path: &std::path::Path, kind: LevelFile, options: OpenOptions) -> Result<Self, Error> {
+        Ok(match kind {
+            LevelFile::Surface => Opened::Surface(Box::new(Che::open(path, options)?)),
+            LevelFile::Volume => Opened::Volume(Box::new(Chf::open(path, options)?)),
+        })
+    }
+    /// The first VV query: the neighbours of vertex 0.
+    fn first_vv(&self) -> u64 {
+        match self {
+            Opened::Surface(che) if che.num_vertices() > 0 => sum(che.vertex_vertices(0)),
+            Opened::Volume(chf) if chf.num_vertices() > 0 => sum(chf.vertex_vertices(0)),
+            _ => 0,
+        }
+    }
+}
+
+/// Every way to open `path`, timed with the first query after it (the mapped ones first,
+/// so that the page cache holds the file for all, as it would for a file just written).
+fn bench_level_file(
+    path: &std::path::Path, kind: LevelFile, repeat: usize,
+) -> Result<OpenBench, Error> {
+    let ways = [
+        (Mode::Mapped, Verify::Trusted),
+        (Mode::Mapped, Verify::Checksums),
+        (Mode::Mapped, Verify::Full),
+        (Mode::Loaded, Verify::Trusted),
+        (Mode::Loaded, Verify::Full),
+    ];
+    let mut opens = Vec::new();
+    for (mode, verify) in ways {
+        let options = OpenOptions { verify, mode };
+        black_box(Opened::open(path, kind, options)?.first_vv());
+        let mut times = Vec::new();
+        for _ in 0..repeat {
+            let start = Instant::now();
+            black_box(Opened::open(path, kind, options)?.first_vv());
+            times.push(start.elapsed().as_secs_f64());
+        }
+        opens.push(Open {
+            mode: if mode == Mode::Mapped {
+                "mapped"
+            } else {
+                "loaded"
+            },
+            verify: match verify {
+                Verify::Full => "full",
+                Verify::Checksums => "checksums",
+                Verify::Trusted => "trusted",
+            },
+            seconds: Timing::of(times),
+        });
+    }
+    let mapped = Opened::open(path, kind, OpenOptions::mapped(Verify::Trusted))?;
+    let (kind, elements, level, sweeps) = match &mapped {
+        Opened::Surface(che) => {
+            let sweeps = (che.level() >= 1).then(|| surface_sweeps(che, repeat));
+            (
+                "surface",
+                che.num_triangles(),
+                che.level(),
+                sweeps.transpose()?,
+            )
+        }
+        Opened::Volume(chf) => (
+            "volume",
+            chf.num_tetrahedra(),
+            chf.level(),
+            (chf.level() >= 2).then(|| volume_sweeps(chf, repeat)),
+        ),
+    };
+    Ok(OpenBench {
+        file: path.display().to_string(),
+        kind,
+        elements,
+        level,
+        repeat,
+        opens,
+        sweeps,
+    })
+}
+
+fn print_opens(out: &mut Out, b: &OpenBench) -> io::Result<()> {
+    let (one, many) = match b.kind {
+        "volume" => ("tetrahedron", "tetrahedra"),
+        _ => ("triangle", "triangles"),
+    };
+    let elements = count(b.elements as u64, one, many);
+    writeln!(
+        out,
+        "{}: {elements}, level {}, median of {}",
+        b.file, b.level, b.repeat
+    )?;
+    for o in &b.opens {
+        let label = format!("open {} {} + first VV:", o.mode, o.verify);
+        write!(out, "{label:34} {:10.3} ms", o.seconds.median * 1e3)?;
+        spread(out, o.seconds)?;
+        writeln!(out)?;
+    }
+    if let Some(s) = &b.sweeps {
+        let parts: Vec<String> = s
+            .relations
+            .iter()
+            .map(|r| format!("{} {:.2} ms", r.relation, r.seconds.median * 1e3))
+            .collect();
+        writeln!(out, "sweeps on the mapping: {}", parts.join(", "))?;
+    }
+    Ok(())
 }
 
 /// One untimed warm-up build, then `repeat` timed ones; the last structure and the times.

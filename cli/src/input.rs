@@ -6,7 +6,7 @@ use std::fs::File;
 use std::io::{ErrorKind, Read};
 use std::path::Path;
 use topomesh::io::{self, Format, MeshData};
-use topomesh::levelfile::OpenOptions;
+use topomesh::levelfile::{OpenOptions, Verify};
 use topomesh::{BuildOptions, BuildProgress, Che, Chf, Error, chf};
 
 /// Bytes read between two steps of the progress bar.
@@ -107,7 +107,8 @@ impl LevelFile {
     }
 }
 
-/// A structure opened from a level file, every check on (the file may come from anywhere).
+/// A structure opened from a level file, mapped (queries answer from the file, paged in as
+/// they touch it), every check on (the file may come from anywhere).
 pub enum Opened {
     Surface(Box<Che>),
     Volume(Box<Chf>),
@@ -116,7 +117,7 @@ pub enum Opened {
 /// Opens the level file `path` of kind `kind` under the spinner.
 pub fn open(path: &Path, kind: LevelFile, progress: &Progress) -> Result<Opened, Error> {
     progress.step(format!("opening {}", path.display()));
-    let options = OpenOptions::default();
+    let options = OpenOptions::mapped(Verify::Full);
     Ok(match kind {
         LevelFile::Surface => Opened::Surface(Box::new(Che::open(path, options)?)),
         LevelFile::Volume => Opened::Volume(Box::new(Chf::open(path, options)?)),

@@ -33,6 +33,7 @@ use crate::util::origin::OriginMap;
 use crate::util::progress::BuildProgress;
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
+use crate::util::store::Store;
 use crate::util::structure::{as_elements, check_id};
 use glam::DVec3;
 use std::sync::OnceLock;
@@ -44,28 +45,28 @@ pub struct Che {
     pub(crate) n_input_vertices: usize,
     pub(crate) n_vertices: usize,
     /// `V[h]`: origin of half-edge `h`.
-    pub(crate) v: Vec<u32>,
+    pub(crate) v: Store<u32>,
     /// Level 1: `O[h]`.
-    pub(crate) o: Vec<u32>,
+    pub(crate) o: Store<u32>,
     /// Level 2: one outgoing half-edge per vertex, the boundary one on the boundary.
-    pub(crate) vh: Vec<u32>,
+    pub(crate) vh: Store<u32>,
     /// Level 2: bit `h` set when `h` is the canonical half-edge of its edge
     /// (`O[h] == NONE || h < O[h]`); the edge id is the rank.
     pub(crate) edge_bits: RankDirectory,
     /// Level 2: the canonical half-edge of each edge.
-    pub(crate) eh: Vec<u32>,
+    pub(crate) eh: Store<u32>,
     /// Level 1 only: the edge-id directory computed from `O` on first request (see
     /// [`Che::edge_ranks`]); emptied when the level changes.
     pub(crate) lazy_edge_bits: OnceLock<RankDirectory>,
     /// Level 3: one boundary half-edge per boundary curve.
-    pub(crate) ch: Vec<u32>,
+    pub(crate) ch: Store<u32>,
     /// Level 3: bit `h` set when `O[h] == NONE`; rank indexes `curve_of`.
     pub(crate) boundary_bits: RankBits,
     /// Level 3: the curve of each boundary half-edge, in half-edge order.
-    pub(crate) curve_of: Vec<u32>,
+    pub(crate) curve_of: Store<u32>,
     /// Edge count, the same at every level.
     pub(crate) num_edges: usize,
-    pub(crate) positions: Vec<DVec3>,
+    pub(crate) positions: Store<DVec3>,
     /// Structure vertex -> input vertex; empty when the identity.
     pub(crate) vertex_origin: OriginMap,
     /// Structure triangle -> input triangle; empty when the identity.

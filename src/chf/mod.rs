@@ -72,6 +72,7 @@ use crate::error::{Error, Result};
 use crate::util::origin::OriginMap;
 use crate::util::progress::BuildProgress;
 use crate::util::rank::RankBits;
+use crate::util::store::Store;
 use crate::util::structure::{as_elements, check_id};
 use build::level2;
 use build::level3;
@@ -87,27 +88,27 @@ pub struct Chf {
     pub(crate) n_input_vertices: usize,
     pub(crate) n_vertices: usize,
     /// `V[hf]`: vertex `hf & 3` of tetrahedron `hf >> 2`.
-    pub(crate) v: Vec<u32>,
+    pub(crate) v: Store<u32>,
     /// Level 1: `O[hf]`, the twin half-face.
-    pub(crate) o: Vec<u32>,
+    pub(crate) o: Store<u32>,
     /// Level 2: a half-face holding each vertex, a boundary one on the boundary.
-    pub(crate) vh: Vec<u32>,
+    pub(crate) vh: Store<u32>,
     /// Level 2: bit `hf` set on canonical half-faces (`O[hf] == NONE || hf < O[hf]`); the
     /// face id is the rank.
     pub(crate) face_bits: RankBits,
     /// Level 2: the canonical half-face of each face.
-    pub(crate) fh: Vec<u32>,
+    pub(crate) fh: Store<u32>,
     /// Level 2: bit `s` set on the canonical edge slot of each fan; the edge id is the rank.
     pub(crate) edge_bits: RankBits,
     /// Level 2: the tetrahedron of each edge's canonical slot (the slot is the right one
     /// among the six marked bits of that tetrahedron: 4 bytes per edge, not 8).
-    pub(crate) eh: Vec<u32>,
+    pub(crate) eh: Store<u32>,
     /// Level 3.
     pub(crate) boundary: Option<level3::Boundary>,
     /// Counts, the same at every level.
     pub(crate) num_edges: usize,
     pub(crate) num_faces: usize,
-    pub(crate) positions: Vec<DVec3>,
+    pub(crate) positions: Store<DVec3>,
     /// Structure vertex -> input vertex; empty when the identity.
     pub(crate) vertex_origin: OriginMap,
     /// Structure tetrahedron -> input tetrahedron; empty when the identity.
@@ -128,17 +129,17 @@ impl Chf {
             level: 0,
             n_input_vertices: 0,
             n_vertices: 0,
-            v: Vec::new(),
-            o: Vec::new(),
-            vh: Vec::new(),
+            v: Store::default(),
+            o: Store::default(),
+            vh: Store::default(),
             face_bits: RankBits::default(),
-            fh: Vec::new(),
+            fh: Store::default(),
             edge_bits: RankBits::default(),
-            eh: Vec::new(),
+            eh: Store::default(),
             boundary: None,
             num_edges: 0,
             num_faces: 0,
-            positions: Vec::new(),
+            positions: Store::default(),
             vertex_origin: OriginMap::default(),
             tet_origin: OriginMap::default(),
             non_manifold: Vec::new(),
@@ -194,20 +195,20 @@ impl Chf {
                 self.boundary = None;
             }
             if level < 2 {
-                self.vh = Vec::new();
+                self.vh = Store::default();
                 self.face_bits = RankBits::default();
-                self.fh = Vec::new();
+                self.fh = Store::default();
                 self.edge_bits = RankBits::default();
-                self.eh = Vec::new();
+                self.eh = Store::default();
             }
             if level < 1 {
-                self.o = Vec::new();
+                self.o = Store::default();
             }
             self.level = level;
             return Ok(());
         }
         if self.level < 1 && level >= 1 {
-            self.o = self.try_opposites_by_rule()?;
+            self.o = self.try_opposites_by_rule()?.into();
             self.level = 1;
         }
         if self.level < 2 && level >= 2 {

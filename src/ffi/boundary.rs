@@ -178,12 +178,13 @@ pub(crate) fn write_flags_arg(flags: u32) -> Result<crate::io::WriteOptions> {
 
 /// `TOPOMESH_OPEN_*` flags as open options; an unknown bit is an error.
 pub(crate) fn open_flags_arg(flags: u32) -> Result<crate::levelfile::OpenOptions> {
-    use super::{TOPOMESH_OPEN_CHECKSUMS_ONLY, TOPOMESH_OPEN_TRUSTED};
-    use crate::levelfile::{OpenOptions, Verify};
-    let unknown = flags & !(TOPOMESH_OPEN_CHECKSUMS_ONLY | TOPOMESH_OPEN_TRUSTED);
+    use super::{TOPOMESH_OPEN_CHECKSUMS_ONLY, TOPOMESH_OPEN_MAPPED, TOPOMESH_OPEN_TRUSTED};
+    use crate::levelfile::{Mode, OpenOptions, Verify};
+    let known = TOPOMESH_OPEN_CHECKSUMS_ONLY | TOPOMESH_OPEN_TRUSTED | TOPOMESH_OPEN_MAPPED;
+    let unknown = flags & !known;
     if unknown != 0 {
         return Err(Error::invalid(format!(
-            "flags {flags:#x}: unknown bits {unknown:#x} (known: TOPOMESH_OPEN_CHECKSUMS_ONLY, TOPOMESH_OPEN_TRUSTED)"
+            "flags {flags:#x}: unknown bits {unknown:#x} (known: TOPOMESH_OPEN_CHECKSUMS_ONLY, TOPOMESH_OPEN_TRUSTED, TOPOMESH_OPEN_MAPPED)"
         )));
     }
     let verify = if flags & TOPOMESH_OPEN_TRUSTED != 0 {
@@ -193,7 +194,12 @@ pub(crate) fn open_flags_arg(flags: u32) -> Result<crate::levelfile::OpenOptions
     } else {
         Verify::Full
     };
-    Ok(OpenOptions { verify })
+    let mode = if flags & TOPOMESH_OPEN_MAPPED != 0 {
+        Mode::Mapped
+    } else {
+        Mode::Loaded
+    };
+    Ok(OpenOptions { verify, mode })
 }
 
 /// The entry of `all` that C enum value `kind` names (`all` in the C enum's order: report

@@ -51,3 +51,10 @@ pub const TOPOMESH_OPEN_CHECKSUMS_ONLY: u32 = 1;
 /// answer wrongly or return `TOPOMESH_STATUS_PANIC`): for a file this process just wrote.
 /// Wins over `TOPOMESH_OPEN_CHECKSUMS_ONLY`.
 pub const TOPOMESH_OPEN_TRUSTED: u32 = 2;
+/// A `*_mesh_open` flag: map the file read-only instead of reading it (zero-copy: the big
+/// arrays are the file's sections, paged in as queries touch them). Queries, CSR calls and
+/// views answer from the mapping; raising the level or editing copies what it writes into
+/// memory. The file must stay as it is while the handle lives: truncating it makes a later
+/// access raise SIGBUS. With `TOPOMESH_OPEN_TRUSTED`, a query on a corrupt file may answer
+/// wrongly or return `TOPOMESH_STATUS_PANIC`, but never reads outside the mapping.
+pub const TOPOMESH_OPEN_MAPPED: u32 = 4;

@@ -1,6 +1,6 @@
 //! A CHE as named sections (`docs/level-files.md` lists them) and back.
 
-use super::format::{FLAG_POSITIONS, Kind};
+use super::format::{Elem, FLAG_POSITIONS, Kind};
 use super::read::LevelFile;
 use super::write::{Contents, Section, save};
 use super::{OpenOptions, Verify};
@@ -8,6 +8,7 @@ use crate::che::{BuildReport, Che};
 use crate::error::{Error, Result};
 use crate::util::rank::RankBits;
 use crate::util::rank_directory::{RankDirectory, SPAN};
+use crate::util::store::Store;
 use glam::DVec3;
 use std::path::Path;
 use std::sync::OnceLock;
@@ -137,12 +138,8 @@ pub(crate) fn rank_bits(words: Vec<u64>, len: usize, name: &str) -> Result<RankB
 }
 
 /// Positions from `3 * n` coordinates.
-pub(crate) fn read_positions(file: &LevelFile, name: &str, n: usize) -> Result<Vec<DVec3>> {
-    let flat = file.f64s(name, 3 * n)?;
-    Ok(flat
-        .chunks_exact(3)
-        .map(|c| DVec3::new(c[0], c[1], c[2]))
-        .collect())
+pub(crate) fn read_positions(file: &LevelFile, name: &str, n: usize) -> Result<Store<DVec3>> {
+    file.store(name, Elem::F64, n, 3)
 }
 
 /// The CHE whose sections are named after `prefix`, every length checked against the
@@ -171,17 +168,17 @@ pub(crate) fn read_che(file: &LevelFile, prefix: &str, level: u8, positions: boo
         level,
         n_input_vertices,
         n_vertices,
-        v: file.u32s(&n("V"), h)?,
-        o: Vec::new(),
-        vh: Vec::new(),
+        v: file.ids(&n("V"), h)?,
+        o: Store::default(),
+        vh: Store::default(),
         edge_bits: RankDirectory::default(),
-        eh: Vec::new(),
+        eh: Store::default(),
         lazy_edge_bits: OnceLock::new(),
-        ch: Vec::new(),
+        ch: Store::default(),
         boundary_bits: RankBits::default(),
-        curve_of: Vec::new(),
+        curve_of: Store::default(),
         num_edges,
-        positions: Vec::new(),
+        positions: Store::default(),
         vertex_origin: maybe(&n("vertex_origin"), n_vertices)?.into(),
         triangle_origin: maybe(&n("triangle_origin"), h / 3)?.into(),
         non_manifold: file.u32s_any(&n("non_manifold"))?,
@@ -192,26 +189,31 @@ pub(crate) fn read_che(file: &LevelFile, prefix: &str, level: u8, positions: boo
         che.positions = read_positions(file, &n("positions"), n_vertices)?;
     }
     if level >= 1 {
-        che.o = file.u32s(&n("O"), h)?;
+        che.o = file.ids(&n("O"), h)?;
     }
     if level >= 2 {
         read_level2(&mut che, file, prefix)?;
     }
     if level >= 3 {
-        che.ch = file.u32s_any(&n("CH"))?;
+        che.ch = file.ids(&n("CH"), file.count(&n("CH"))?)?;
         let name = n("boundary_bits");
         che.boundary_bits = rank_bits(file.u64s(&name, h.div_ceil(64))?, h, &name)?;
-        che.curve_of = file.u32s(&n("curve_of"), che.boundary_bits.ones())?;
+        che.curve_of = file.ids(&n("curve_of"), che.boundary_bits.ones())?;
     }
     Ok(che)
 }
 
 fn read_level2(che: &mut Che, file: &LevelFile, prefix: &str) -> Result<()> {
     let h = che.v.len();
-    che.vh = file.u32s(&format!("{prefix}VH"), che.n_vertices)?;
+    che.vh = file.ids(&format!("{prefix}VH"), che.n_vertices)?;
     let name = format!("{prefix}edge_ranks");
-    let entries = file.u64s(&name, h.div_ceil(SPAN))?;
-    che.edge_bits = RankDirectory::from_entries(entries, h)
+    let entries = file.words(&name, h.div_ceil(SPAN))?;
+    let directory = if file.verify == Verify::Trusted {
+        RankDirectory::from_entries_trusted(entries, h, che.num_edges)
+    } else {
+        RankDirectory::from_entries(entries, h)
+    };
+    che.edge_bits = directory
         .filter(|d| d.ones() == che.num_edges)
         .ok_or_else(|| {
             Error::parse(format!(
@@ -219,7 +221,7 @@ fn read_level2(che: &mut Che, file: &LevelFile, prefix: &str) -> Result<()> {
                 che.num_edges
             ))
         })?;
-    che.eh = file.u32s(&format!("{prefix}EH"), che.num_edges)?;
+    che.eh = file.ids(&format!("{prefix}EH"), che.num_edges)?;
     Ok(())
 }
 
@@ -235,5 +237,10 @@ impl Che {
     /// byte, never a panic).
     pub fn open(path: impl AsRef<Path>, options: OpenOptions) -> Result<Che> {
         open_che(path.as_ref(), options)
+    }
+
+    /// Whether the structure's arrays are (some of them) a mapped level file's sections.
+    pub fn is_mapped(&self) -> bool {
+        self.v.is_mapped() || self.o.is_mapped()
     }
 }

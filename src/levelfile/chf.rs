@@ -146,7 +146,7 @@ fn read_chf(file: &LevelFile) -> Result<Chf> {
             _ => file.u32s(name, len),
         }
     };
-    chf.v = file.u32s("V", h)?;
+    chf.v = file.ids("V", h)?;
     chf.vertex_origin = maybe("vertex_origin", chf.n_vertices)?.into();
     chf.tet_origin = maybe("tetrahedron_origin", h / 4)?.into();
     chf.non_manifold = file.u32s_any("non_manifold")?;
@@ -171,14 +171,14 @@ fn read_chf(file: &LevelFile) -> Result<Chf> {
     }
     chf.report = read_report(file, "")?;
     if chf.level >= 1 {
-        chf.o = file.u32s("O", h)?;
+        chf.o = file.ids("O", h)?;
     }
     if chf.level >= 2 {
-        chf.vh = file.u32s("VH", chf.n_vertices)?;
+        chf.vh = file.ids("VH", chf.n_vertices)?;
         chf.face_bits = counted_bits(file, "face_bits", h, chf.num_faces)?;
-        chf.fh = file.u32s("FH", chf.num_faces)?;
+        chf.fh = file.ids("FH", chf.num_faces)?;
         chf.edge_bits = counted_bits(file, "edge_bits", SLOTS * (h / 4), chf.num_edges)?;
-        chf.eh = file.u32s("EH", chf.num_edges)?;
+        chf.eh = file.ids("EH", chf.num_edges)?;
     }
     if chf.level >= 3 {
         chf.boundary = Some(read_boundary(file, h, chf.n_vertices)?);
@@ -236,5 +236,10 @@ impl Chf {
     /// byte, never a panic).
     pub fn open(path: impl AsRef<Path>, options: OpenOptions) -> Result<Chf> {
         open_chf(path.as_ref(), options)
+    }
+
+    /// Whether the structure's arrays are (some of them) a mapped level file's sections.
+    pub fn is_mapped(&self) -> bool {
+        self.v.is_mapped() || self.o.is_mapped()
     }
 }

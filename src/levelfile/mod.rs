@@ -12,6 +12,7 @@
 mod che;
 mod chf;
 mod format;
+mod map;
 mod read;
 mod write;
 
@@ -30,10 +31,45 @@ pub enum Verify {
     Trusted,
 }
 
+/// Where the arrays of an opened level file live.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Mode {
+    /// Read into owned arrays: the file can go away, and the structure is editable.
+    #[default]
+    Loaded,
+    /// Memory-mapped, read-only and zero-copy: the structure's big arrays (`V`, `O`, `VH`,
+    /// the edge ranks, `EH`, `CH`, the curves, positions) are the file's sections as they
+    /// lie, paged in by the system as queries touch them. Opening costs the checks
+    /// `verify` asks for and nothing more (with `Trusted`, the header and the table
+    /// only). Raising the level or editing copies the arrays it writes into memory first,
+    /// and `save` writes a new file. The file must not be truncated or rewritten in place
+    /// while it is open (a truncation makes a later access raise `SIGBUS`); `save` replaces
+    /// files by renaming, which is safe.
+    Mapped,
+}
+
 /// How to open a level file.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OpenOptions {
     pub verify: Verify,
+    pub mode: Mode,
+}
+
+impl OpenOptions {
+    /// Mapped, with `verify`.
+    pub fn mapped(verify: Verify) -> OpenOptions {
+        OpenOptions {
+            verify,
+            mode: Mode::Mapped,
+        }
+    }
+    /// Loaded, with `verify`.
+    pub fn loaded(verify: Verify) -> OpenOptions {
+        OpenOptions {
+            verify,
+            mode: Mode::Loaded,
+        }
+    }
 }
 
 /// The example lists of a build report: written flat, one section each.

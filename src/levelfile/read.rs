@@ -1,20 +1,42 @@
 //! Reading a level file into owned arrays: the header and the table are checked against
 //! the file's length before any section is touched, each section against its checksum
 //! (unless trusted) when it is taken, and every length against the counts by the caller
-//! (`che.rs`, `chf.rs`) before anything is indexed.
+//! (`che.rs`, `chf.rs`) before anything is indexed. A mapped file lends its sections as
+//! they lie (`Store::Mapped`); a loaded one copies them out.
 
 use super::format::{self, Elem, Entry, HEADER_BYTES, Header, Kind};
-use super::{OpenOptions, Verify};
+use super::{Mode, OpenOptions, Verify};
 use crate::error::{Error, Result};
+use crate::util::store::Store;
+use memmap2::Mmap;
 use std::io::Read;
+use std::ops::Deref;
 use std::path::Path;
+use std::sync::Arc;
+
+/// The bytes of a level file: read into memory, or mapped.
+pub(crate) enum Bytes {
+    Owned(Vec<u8>),
+    Mapped(Arc<Mmap>),
+}
+
+impl Deref for Bytes {
+    type Target = [u8];
+    fn deref(&self) -> &[u8] {
+        match self {
+            Bytes::Owned(b) => b,
+            Bytes::Mapped(m) => m,
+        }
+    }
+}
 
 /// A level file in memory, its header and table checked.
 pub(crate) struct LevelFile {
-    bytes: Vec<u8>,
+    bytes: Bytes,
     pub header: Header,
     entries: Vec<Entry>,
     checksums: bool,
+    pub verify: Verify,
 }
 
 fn io_error(path: &Path, e: std::io::Error) -> Error {
@@ -42,12 +64,15 @@ fn read_bytes(path: &Path) -> Result<Vec<u8>> {
 
 impl LevelFile {
     pub(crate) fn open(path: &Path, kind: Kind, options: OpenOptions) -> Result<LevelFile> {
-        let bytes = read_bytes(path)?;
+        let bytes = match options.mode {
+            Mode::Loaded => Bytes::Owned(read_bytes(path)?),
+            Mode::Mapped => Bytes::Mapped(super::map::map_file(path)?),
+        };
         Self::parse(bytes, kind, options)
             .map_err(|e| Error::new(e.kind, format!("{}: {}", path.display(), e.message)))
     }
 
-    pub(crate) fn parse(bytes: Vec<u8>, kind: Kind, options: OpenOptions) -> Result<LevelFile> {
+    pub(crate) fn parse(bytes: Bytes, kind: Kind, options: OpenOptions) -> Result<LevelFile> {
         let header = format::decode_header(&bytes, kind)?;
         let n = header.sections as usize;
         let table = &bytes[HEADER_BYTES..HEADER_BYTES + n * format::ENTRY_BYTES];
@@ -75,6 +100,7 @@ impl LevelFile {
             header,
             entries,
             checksums,
+            verify: options.verify,
         })
     }
 
@@ -124,13 +150,47 @@ impl LevelFile {
         )
     }
 
-    pub(crate) fn f64s(&self, name: &str, expected: usize) -> Result<Vec<f64>> {
-        let (e, b) = self.checked(name, Elem::F64, expected)?;
-        collect(
-            e,
-            b.chunks_exact(8)
-                .map(|c| f64::from_le_bytes(c.try_into().unwrap_or_default())),
-        )
+    /// Section `name` of `T`s (stored as `elem`), holding exactly `expected` elements of
+    /// `T` (`width` file elements each): lent from a mapped file as it lies when the host
+    /// is little-endian, else copied out.
+    pub(crate) fn store<T: bytemuck::Pod>(
+        &self, name: &str, elem: Elem, expected: usize, width: usize,
+    ) -> Result<Store<T>> {
+        debug_assert_eq!(size_of::<T>() as u64, width as u64 * elem.size());
+        let count = expected
+            .checked_mul(width)
+            .ok_or_else(|| Error::parse(format!("section {name}: {expected} elements")))?;
+        let (e, b) = self.checked(name, elem, count)?;
+        if let Bytes::Mapped(map) = &self.bytes
+            && cfg!(target_endian = "little")
+        {
+            let start = e.offset as usize;
+            if let Some(s) = Store::mapped(map, start..start + b.len()) {
+                return Ok(s);
+            }
+        }
+        let mut out = Vec::new();
+        out.try_reserve_exact(expected).map_err(|_| {
+            Error::too_large(format!(
+                "section {}: {} elements do not fit in memory",
+                e.name, e.count
+            ))
+        })?;
+        out.extend(
+            b.chunks_exact(size_of::<T>())
+                .map(|c| from_le::<T>(c, elem.size() as usize)),
+        );
+        Ok(Store::Owned(out))
+    }
+
+    /// Section `name` of `u32` ids, `expected` of them, as [`LevelFile::store`] lends them.
+    pub(crate) fn ids(&self, name: &str, expected: usize) -> Result<Store<u32>> {
+        self.store(name, Elem::U32, expected, 1)
+    }
+
+    /// Section `name` of `u64` words, `expected` of them, as [`LevelFile::store`] lends them.
+    pub(crate) fn words(&self, name: &str, expected: usize) -> Result<Store<u64>> {
+        self.store(name, Elem::U64, expected, 1)
     }
 
     /// The element count of section `name`.
@@ -162,6 +222,17 @@ impl LevelFile {
         }
         Ok((e, bytes))
     }
+}
+
+/// One `T` from its little-endian bytes, `word` bytes per file element.
+fn from_le<T: bytemuck::Pod>(c: &[u8], word: usize) -> T {
+    let mut x = T::zeroed();
+    let out = bytemuck::bytes_of_mut(&mut x);
+    out.copy_from_slice(c);
+    if cfg!(target_endian = "big") {
+        out.chunks_exact_mut(word).for_each(|w| w.reverse());
+    }
+    x
 }
 
 /// The elements into a vector reserved fallibly (its length is bounded by the file's).

@@ -21,6 +21,7 @@ pub(crate) mod rank;
 pub(crate) mod rank_directory;
 pub(crate) mod small_ids;
 pub mod sparse;
+pub(crate) mod store;
 pub(crate) mod structure;
 pub(crate) mod weld;
 

@@ -5,13 +5,14 @@
 //! inline with the same arithmetic (`che_edge_of` in `topomesh_inline.h`).
 
 use crate::error::{Error, Result};
+use crate::util::store::Store;
 
 /// Elements per entry.
 pub const SPAN: usize = 32;
 
 #[derive(Clone, Debug, Default)]
 pub struct RankDirectory {
-    entries: Vec<u64>,
+    entries: Store<u64>,
     ones: usize,
 }
 
@@ -32,7 +33,7 @@ impl RankDirectory {
                 .ok_or_else(|| Error::too_large(format!("more than 2^32 - 1 of {len} bits set")))?;
         }
         Ok(RankDirectory {
-            entries,
+            entries: entries.into(),
             ones: ones as usize,
         })
     }
@@ -40,7 +41,7 @@ impl RankDirectory {
     /// From stored entries over `len` bits (a level file): `None` unless there is one entry
     /// per 32 bits, each high half counts the set bits before it, and no bit past `len` is
     /// set, so that `get` and `rank` answer as for the directory that was saved.
-    pub fn from_entries(entries: Vec<u64>, len: usize) -> Option<Self> {
+    pub fn from_entries(entries: Store<u64>, len: usize) -> Option<Self> {
         if entries.len() != len.div_ceil(SPAN) {
             return None;
         }
@@ -57,6 +58,14 @@ impl RankDirectory {
             entries,
             ones: ones as usize,
         })
+    }
+
+    /// From stored entries over `len` bits, unchecked but for their number (a trusted level
+    /// file): a wrong entry makes `rank` answer wrongly, never read out of bounds.
+    pub(crate) fn from_entries_trusted(
+        entries: Store<u64>, len: usize, ones: usize,
+    ) -> Option<Self> {
+        (entries.len() == len.div_ceil(SPAN)).then_some(RankDirectory { entries, ones })
     }
 
     /// The entries, as lent to C.

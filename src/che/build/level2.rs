@@ -12,7 +12,7 @@ pub(crate) fn build(che: &mut Che) -> Result<()> {
     // level it had.
     let vh = vertex_half_edges(che.n_vertices, &che.v, &che.o)?;
     build_edges(che)?;
-    che.vh = vh;
+    che.vh = vh.into();
     Ok(())
 }
 
@@ -25,6 +25,6 @@ pub(crate) fn build_edges(che: &mut Che) -> Result<()> {
     eh.extend((0..v.len() as u32).filter(|&h| edge_bits.get(h as usize)));
     debug_assert_eq!(eh.len(), che.num_edges);
     che.edge_bits = edge_bits;
-    che.eh = eh;
+    che.eh = eh.into();
     Ok(())
 }

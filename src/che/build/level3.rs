@@ -30,7 +30,7 @@ pub(crate) fn build(che: &mut Che) -> Result<()> {
         }
     }
     che.boundary_bits = bits;
-    che.curve_of = curve_of;
-    che.ch = ch;
+    che.curve_of = curve_of.into();
+    che.ch = ch.into();
     Ok(())
 }

@@ -203,17 +203,17 @@ fn assemble(
         level: 1,
         n_input_vertices: n_vertices,
         n_vertices: n_vertices + copies.len(),
-        v: c.v,
-        o: c.o,
-        vh: Vec::new(),
+        v: c.v.into(),
+        o: c.o.into(),
+        vh: Vec::new().into(),
         edge_bits: RankDirectory::default(),
-        eh: Vec::new(),
+        eh: Vec::new().into(),
         lazy_edge_bits: Default::default(),
-        ch: Vec::new(),
+        ch: Vec::new().into(),
         boundary_bits: RankBits::default(),
-        curve_of: Vec::new(),
+        curve_of: Vec::new().into(),
         num_edges,
-        positions,
+        positions: positions.into(),
         vertex_origin,
         triangle_origin: c.triangle_origin,
         non_manifold: c.non_manifold,
@@ -225,11 +225,11 @@ fn assemble(
 /// Step 5 on a fresh build: `vh` is the split's (the same `VH` level 2 would compute).
 fn finish_level(che: &mut Che, level: u8, vh: Vec<u32>) -> Result<()> {
     if level == 0 {
-        che.o = Vec::new();
+        che.o = Vec::new().into();
         che.level = 0;
     }
     if level >= 2 {
-        che.vh = vh;
+        che.vh = vh.into();
         level2::build_edges(che)?;
         che.level = 2;
     }
@@ -246,23 +246,23 @@ pub(crate) fn change_level(che: &mut Che, level: u8) -> Result<()> {
     che.lazy_edge_bits = Default::default();
     if level < che.level {
         if level < 3 {
-            che.ch = Vec::new();
+            che.ch = Vec::new().into();
             che.boundary_bits = RankBits::default();
-            che.curve_of = Vec::new();
+            che.curve_of = Vec::new().into();
         }
         if level < 2 {
-            che.vh = Vec::new();
+            che.vh = Vec::new().into();
             che.edge_bits = RankDirectory::default();
-            che.eh = Vec::new();
+            che.eh = Vec::new().into();
         }
         if level < 1 {
-            che.o = Vec::new();
+            che.o = Vec::new().into();
         }
         che.level = level;
         return Ok(());
     }
     if che.level < 1 && level >= 1 {
-        che.o = super::pairs::opposites_by_rule(&che.v, che.n_vertices, &che.non_manifold)?;
+        che.o = super::pairs::opposites_by_rule(&che.v, che.n_vertices, &che.non_manifold)?.into();
         che.level = 1;
     }
     if che.level < 2 && level >= 2 {

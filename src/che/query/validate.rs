@@ -243,42 +243,42 @@ mod tests {
     #[test]
     fn each_invariant_fails_when_its_array_is_corrupted() {
         let mut c = mesh(3);
-        c.v[4] = 99;
+        c.v.to_mut("test").unwrap()[4] = 99;
         fails(&c, "is not a vertex");
         let mut c = mesh(3);
-        c.v[1] = c.v[0];
+        c.v.to_mut("test").unwrap()[1] = c.v[0];
         fails(&c, "degenerate");
         let mut c = mesh(3);
-        c.o.swap(1, 2);
+        c.o.to_mut("test").unwrap().swap(1, 2);
         fails(&c, "not an involution");
         let mut c = mesh(3);
         let t = *c.o.iter().find(|&&g| g != NONE).unwrap() as usize / 3;
-        c.v.swap(3 * t + 1, 3 * t + 2);
+        c.v.to_mut("test").unwrap().swap(3 * t + 1, 3 * t + 2);
         fails(&c, "same vertex pair");
         let mut c = mesh(3);
         c.non_manifold = vec![c.o.iter().position(|&g| g != NONE).unwrap() as u32];
         fails(&c, "flagged unpaired");
         let mut c = mesh(3);
         assert_eq!(c.vh[0], 0);
-        c.vh[0] = 3;
+        c.vh.to_mut("test").unwrap()[0] = 3;
         fails(&c, "not the boundary half-edge");
         let mut c = mesh(3);
-        c.vh[0] = 1;
+        c.vh.to_mut("test").unwrap()[0] = 1;
         fails(&c, "does not start at vertex 0");
         let mut c = mesh(3);
         c.edge_bits = crate::util::rank_directory::RankDirectory::from_fn(27, |h| h < 20).unwrap();
         fails(&c, "EH has");
         let mut c = mesh(3);
-        c.vh[1] = NONE;
+        c.vh.to_mut("test").unwrap()[1] = NONE;
         fails(&c, "VH[1] is NONE");
         let mut c = mesh(3);
-        c.eh.swap(0, 1);
+        c.eh.to_mut("test").unwrap().swap(0, 1);
         fails(&c, "EH[0]");
         let mut c = mesh(3);
-        c.curve_of[0] = 5;
+        c.curve_of.to_mut("test").unwrap()[0] = 5;
         fails(&c, "is filed as curve");
         let mut c = mesh(3);
-        c.ch[0] = 1;
+        c.ch.to_mut("test").unwrap()[0] = 1;
         fails(&c, "CH[0]");
     }
 }

@@ -22,10 +22,10 @@ pub(crate) fn build(chf: &mut Chf, edge_bits: RankBits, vh: Vec<u32>) -> Result<
     edge_bits.ones_map(&mut eh, |s| (s / 6) as u32, "the edge tetrahedra EH")?;
     debug_assert_eq!(eh.len(), chf.num_edges);
     debug_assert_eq!(v.len() % 4, 0);
-    chf.vh = vh;
+    chf.vh = vh.into();
     chf.face_bits = faces;
-    chf.fh = fh;
+    chf.fh = fh.into();
     chf.edge_bits = edge_bits;
-    chf.eh = eh;
+    chf.eh = eh.into();
     Ok(())
 }

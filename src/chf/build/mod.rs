@@ -96,15 +96,15 @@ pub(crate) fn build(
         n_vertices: n_total,
         num_edges: stars.num_edges,
         num_faces: count_faces(&o, &seams, v.len() - pairs),
-        positions: with_copies(positions, &copies)?,
+        positions: with_copies(positions, &copies)?.into(),
         vertex_origin,
         tet_origin,
         non_manifold,
         seams,
         multi_fan: census.multi_fan,
         report,
-        v,
-        o,
+        v: v.into(),
+        o: o.into(),
         ..Chf::empty()
     };
     progress.at(0.75, "levels 2 and 3");
@@ -378,7 +378,7 @@ fn raise(mut chf: Chf, options: BuildOptions, mut stars: Stars, n_threads: usize
     let level = options.level;
     let edge_bits = std::mem::take(&mut stars.edge_bits);
     if level == 0 {
-        chf.o = Vec::new();
+        chf.o = Vec::new().into();
         chf.level = 0;
     }
     if level >= 2 {

@@ -265,7 +265,7 @@ impl Chf {
         ensure_len("VH", vh.len(), self.n_vertices, "vertices")?;
         let mut used = try_vec(self.n_vertices, false, "the used vertices")?;
         let mut boundary = try_vec(self.n_vertices, false, "the boundary vertices")?;
-        for &x in &self.v {
+        for &x in self.v.iter() {
             used[x as usize] = true;
         }
         for hf in (0..o.len() as u32).filter(|&hf| o[hf as usize] == NONE) {
@@ -455,10 +455,10 @@ mod tests {
     fn each_array_corrupted_fails() {
         let chf = mesh();
         let mut c = chf.clone();
-        c.v[5] = 99;
+        c.v.to_mut("test").unwrap()[5] = 99;
         fails(&c, "V[5] = 99");
         let mut c = chf.clone();
-        c.v[5] = c.v[4];
+        c.v.to_mut("test").unwrap()[5] = c.v[4];
         fails(&c, "degenerate");
         let mut c = chf.clone();
         let mut map = c.vertex_origin.to_vec();
@@ -473,11 +473,11 @@ mod tests {
         fails(&c, "does not increase");
         let paired = chf.o.iter().position(|&g| g != NONE).unwrap();
         let mut c = chf.clone();
-        c.o[paired] = NONE;
+        c.o.to_mut("test").unwrap()[paired] = NONE;
         fails(&c, &format!("O[{}]", chf.o[paired]));
         let mut c = chf.clone();
         let g = c.o[paired] as usize;
-        c.o.swap(paired, g);
+        c.o.to_mut("test").unwrap().swap(paired, g);
         fails(&c, "O[");
         let mut c = chf.clone();
         c.num_faces += 1;
@@ -486,19 +486,19 @@ mod tests {
         c.num_edges += 1;
         fails(&c, "edges counted");
         let mut c = chf.clone();
-        c.fh.swap(0, 1);
+        c.fh.to_mut("test").unwrap().swap(0, 1);
         fails(&c, "FH[0]");
         let mut c = chf.clone();
-        c.eh[0] ^= 1;
+        c.eh.to_mut("test").unwrap()[0] ^= 1;
         fails(&c, "EH[0]");
         let mut c = chf.clone();
-        c.vh[0] = NONE;
+        c.vh.to_mut("test").unwrap()[0] = NONE;
         fails(&c, "VH[0] = NONE");
         let mut c = chf.clone();
         let foreign = (0..c.v.len() as u32)
             .find(|&h| !face_cycle(&c.v, h).contains(&0))
             .unwrap();
-        c.vh[0] = foreign;
+        c.vh.to_mut("test").unwrap()[0] = foreign;
         fails(&c, &format!("VH[0] = {foreign}"));
         let mut c = chf.clone();
         c.boundary.as_mut().unwrap().vertices.pop();

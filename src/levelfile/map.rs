@@ -1,0 +1,54 @@
+//! The one `unsafe` of the level files: mapping a file into memory, read-only.
+
+use crate::error::{Error, Result};
+use memmap2::Mmap;
+use std::path::Path;
+use std::sync::Arc;
+
+/// `path` mapped read-only, shared by every array a mapped structure borrows from it.
+pub(crate) fn map_file(path: &Path) -> Result<Arc<Mmap>> {
+    let io = |e: std::io::Error| Error::io(format!("{}: {e}", path.display()));
+    let file = std::fs::File::open(path).map_err(io)?;
+    // SAFETY: the file is opened read-only and mapped read-only (shared with the page
+    // cache), so nothing in this process writes through the mapping or aliases it
+    // mutably, and every access goes through `&[u8]` slices bounds-checked against the
+    // mapping's length (the sections were checked to lie inside it). What Rust cannot
+    // rule out is another process changing the file while it is mapped, which memmap2
+    // documents as the caveat of every mapping: a write in place changes bytes behind a
+    // shared slice (formally undefined behaviour; in practice a query answers as on a
+    // damaged trusted file), and a truncation makes an access past the new end raise
+    // SIGBUS, which ends the process. Level files are written once, replaced only by
+    // atomic rename (which leaves this mapping on the old file), and then only read; the
+    // contract is stated on `Mode::Mapped` and `TOPOMESH_OPEN_MAPPED`.
+    let map = unsafe { Mmap::map(&file) }.map_err(io)?;
+    Ok(Arc::new(map))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::util::store::Store;
+
+    #[test]
+    fn a_mapped_range_reads_in_place_and_copies_on_write() {
+        let path = std::env::temp_dir().join(format!("topomesh-map-{}", std::process::id()));
+        let words: Vec<u8> = (0u32..32).flat_map(|x| x.to_le_bytes()).collect();
+        std::fs::write(&path, &words).unwrap();
+        let map = map_file(&path).unwrap();
+        let mut s: Store<u32> = Store::mapped(&map, 64..128).unwrap();
+        assert!(s.is_mapped());
+        assert_eq!(&s[..], &(16u32..32).collect::<Vec<_>>()[..]);
+        assert!(Store::<u32>::mapped(&map, 2..6).is_none(), "misaligned");
+        assert!(
+            Store::<u32>::mapped(&map, 64..132).is_none(),
+            "past the end"
+        );
+        let shared = s.clone();
+        s.to_mut("test").unwrap()[0] = 7;
+        assert!(!s.is_mapped());
+        assert_eq!(s[0], 7);
+        assert_eq!(shared[0], 16, "the mapping is not written");
+        drop((s, shared, map));
+        let _ = std::fs::remove_file(&path);
+    }
+}

@@ -14,6 +14,7 @@ mod output;
 mod print;
 mod progress;
 mod report;
+mod simplify;
 
 use clap::{Parser, Subcommand};
 use exit::exit_code_table;
@@ -106,6 +107,14 @@ enum Command {
         exit_code_table!()
     ))]
     Export(export::ExportOptions),
+    /// Shortest-edge-first collapse until N triangles (or a ratio) remain.
+    #[command(after_help = concat!(
+        "Examples:
+  topomesh simplify bunny.off small.off --triangles 5000
+  topomesh simplify bunny.off half.ply --ratio 0.5\n\n",
+        exit_code_table!()
+    ))]
+    Simplify(simplify::SimplifyOptions),
 }
 
 fn main() -> ExitCode {
@@ -127,5 +136,6 @@ fn main() -> ExitCode {
         Command::Convert(options) => convert::run(&options),
         Command::Bench(options) => bench::run(&options),
         Command::Export(options) => export::run(&options),
+        Command::Simplify(options) => simplify::run(&options),
     })
 }

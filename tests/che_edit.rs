@@ -230,15 +230,15 @@ fn run(mut che: Che, seed: u64, steps: usize, every: usize) -> Che {
 #[test]
 fn random_edits_on_a_closed_mesh_at_every_level() {
     for level in 0..=3 {
-        run(built(&sphere(8, 6), level), 7 + level as u64, 1500, 100);
-        run(built(&torus(6, 5), level), 70 + level as u64, 800, 100);
+        run(built(&sphere(8, 6), level), 7 + level as u64, 1500, 250);
+        run(built(&torus(6, 5), level), 70 + level as u64, 800, 200);
     }
 }
 
 #[test]
 fn random_edits_on_a_mesh_with_boundary_at_every_level() {
     for level in 0..=3 {
-        run(built(&grid(7, 6), level), 17 + level as u64, 1500, 100);
+        run(built(&grid(7, 6), level), 17 + level as u64, 1500, 250);
     }
 }
 

@@ -39,7 +39,10 @@ fuzz_target!(|data: &[u8]| {
         );
         let r = match op[0] % 10 {
             0 => che.add_vertex(None).map(drop),
-            1 => che.add_triangle(id(nv), id(nv) / 2, (id(nv) + 1) % nv as u32).map(drop),
+            1 => {
+                let (a, b) = (id(nv), id(nv) / 2);
+                che.add_triangle(a, b, (a + 1) % (nv as u32).max(1)).map(drop)
+            }
             2 => che.remove_triangle(id(nt)),
             3 => che.remove_vertex(id(nv)),
             4 => che.flip_edge(id(ne)),

@@ -1033,6 +1033,21 @@ size_t che_mesh_num_half_edges(const struct che_mesh *m);
  */
 size_t che_mesh_num_boundary_curves(const struct che_mesh *m);
 
+/**
+ * Live vertices (`che_mesh_num_vertices` stays the id bound until garbage collection).
+ */
+size_t che_mesh_num_live_vertices(const struct che_mesh *m);
+
+/**
+ * Live triangles.
+ */
+size_t che_mesh_num_live_triangles(const struct che_mesh *m);
+
+/**
+ * Live edges.
+ */
+size_t che_mesh_num_live_edges(const struct che_mesh *m);
+
 /* ---- CHE: relations, one element at a time ---- */
 
 /**
@@ -1434,6 +1449,120 @@ topomesh_status che_mesh_save(const struct che_mesh *m, const char *path);
  * `TOPOMESH_STATUS_INVALID_INPUT` (an invariant broken). `*out` is NULL on failure.
  */
 topomesh_status che_mesh_open(const char *path, uint32_t flags, struct che_mesh **out);
+
+/* ---- CHE: editing in place (add, remove, flip, split, collapse, garbage collection) ---- */
+
+/**
+ * Adds an isolated vertex. `position` (3 doubles) is required when the mesh has
+ * positions and must be NULL when it has none. Its id goes to `out` (NULL: not wanted).
+ *
+ * Editing (this call and every `che_mesh_*` edit after it: add, remove, flip, split,
+ * collapse, set_position, the checks, garbage_collect) needs exclusive access. Every
+ * zero-copy view (`che_mesh_half_edge_vertices`, `_opposites`, `_vertex_half_edges`,
+ * `_edge_half_edges`, `_curve_half_edges`, `_edge_ranks`, the origins and positions) and
+ * every `che_star_iter` obtained before an edit is invalid after it, whatever its
+ * outcome: fetch them again. Removed elements keep their ids (`V = NONE` for a removed
+ * triangle's half-edges) until `che_mesh_garbage_collect`; until then `che_mesh_num_*`
+ * are the id bounds, `che_mesh_num_live_*` the counts, the edge-rank view is NULL (edge
+ * ids are not ranks), and exports and writers expect a collected mesh.
+ */
+topomesh_status che_mesh_add_vertex(struct che_mesh *m, const double *position_xyz, uint32_t *out);
+
+/**
+ * Adds triangle (a, b, c), paired with the boundary half-edges it meets. Refused
+ * (INVALID_INPUT, the detail naming the edge or vertex) when an edge already has a
+ * triangle on that side, would become non-manifold, or a corner would get a second fan;
+ * also for a degenerate or duplicate triangle.
+ */
+topomesh_status che_mesh_add_triangle(struct che_mesh *m,
+                                      uint32_t a,
+                                      uint32_t b,
+                                      uint32_t c,
+                                      uint32_t *out);
+
+/**
+ * Removes triangle `t` (marked: its id and the others stay until garbage collection).
+ */
+topomesh_status che_mesh_remove_triangle(struct che_mesh *m, uint32_t t);
+
+/**
+ * Removes vertex `v` and its star.
+ */
+topomesh_status che_mesh_remove_vertex(struct che_mesh *m, uint32_t v);
+
+/**
+ * Flips interior edge `e` (it keeps its id). Refused on a boundary edge or when the
+ * flipped edge exists.
+ */
+topomesh_status che_mesh_flip_edge(struct che_mesh *m, uint32_t e);
+
+/**
+ * Splits edge `e` at a new vertex (into `out`; position: `position_xyz`, or NULL for the
+ * midpoint when the mesh has positions).
+ */
+topomesh_status che_mesh_split_edge(struct che_mesh *m,
+                                    uint32_t e,
+                                    const double *position_xyz,
+                                    uint32_t *out);
+
+/**
+ * Collapses half-edge `h`: its target merges into its origin (the kept vertex goes to
+ * `out`). Refused, with the reason, when the link condition fails.
+ */
+topomesh_status che_mesh_collapse_edge(struct che_mesh *m, uint32_t h, uint32_t *out);
+
+/**
+ * Splits triangle `t` into 3 at a new vertex (into `out`; NULL position: the centroid).
+ */
+topomesh_status che_mesh_split_triangle(struct che_mesh *m,
+                                        uint32_t t,
+                                        const double *position_xyz,
+                                        uint32_t *out);
+
+/**
+ * Would `che_mesh_flip_edge(m, e)` succeed? Never modifies the mesh's elements.
+ */
+topomesh_status che_mesh_is_flip_ok(struct che_mesh *m, uint32_t e, bool *out);
+
+/**
+ * Would `che_mesh_collapse_edge(m, h)` succeed? Never modifies the mesh's elements.
+ */
+topomesh_status che_mesh_is_collapse_ok(struct che_mesh *m, uint32_t h, bool *out);
+
+/**
+ * Compacts the removed elements away (ids become `h = 3t + i` without holes, edge ids
+ * ranks again) and writes the old -> new maps (`UINT32_MAX` for a removed element) into
+ * the buffers given (NULL: not wanted), sized by the counts before the call
+ * (`che_mesh_num_vertices`, `_num_triangles`, `_num_edges`). A buffer too small is
+ * BUFFER_TOO_SMALL before anything changes. Every id and view from before is invalid.
+ */
+topomesh_status che_mesh_garbage_collect(struct che_mesh *m,
+                                         uint32_t *vertex_map,
+                                         size_t vertex_cap,
+                                         uint32_t *triangle_map,
+                                         size_t triangle_cap,
+                                         uint32_t *edge_map,
+                                         size_t edge_cap);
+
+/**
+ * Is vertex `v` removed (until garbage collection)?
+ */
+topomesh_status che_vertex_is_removed(const struct che_mesh *m, uint32_t v, bool *out);
+
+/**
+ * Is triangle `t` removed?
+ */
+topomesh_status che_triangle_is_removed(const struct che_mesh *m, uint32_t t, bool *out);
+
+/**
+ * Is edge `e` removed? (Below level 2 edge ids are the ranks of the live edges: never.)
+ */
+topomesh_status che_edge_is_removed(const struct che_mesh *m, uint32_t e, bool *out);
+
+/**
+ * Moves vertex `v` to `position_xyz` (3 doubles); refused on a mesh without positions.
+ */
+topomesh_status che_mesh_set_position(struct che_mesh *m, uint32_t v, const double *position_xyz);
 
 /* ---- CHE: zero-copy views of the structure's arrays ---- */
 

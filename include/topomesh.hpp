@@ -291,6 +291,38 @@ public:
     /// violation (element and rule). For tests and for data from untrusted code.
     void validate() const;
 
+    // Editing in place (include/detail/edit.hpp). A refusal throws Error and changes
+    // nothing; every edit invalidates the spans of the zero-copy views. Removed elements
+    // keep their ids (num_* stay the id bounds, num_live_* count) until garbage_collect().
+    VertexId add_vertex(const Vec3 *position = nullptr);
+    TriangleId add_triangle(VertexId a, VertexId b, VertexId c);
+    void remove(TriangleId t);
+    /// Removes v and its star.
+    void remove(VertexId v);
+    void flip(EdgeId e);
+    /// Splits edge e (or triangle t) at a new vertex, returned; position NULL: the
+    /// midpoint (centroid) when the surface has positions.
+    VertexId split(EdgeId e, const Vec3 *position = nullptr);
+    VertexId split(TriangleId t, const Vec3 *position = nullptr);
+    /// Merges the target of h into its origin (returned); refused by the link condition.
+    VertexId collapse(HalfEdgeId h);
+    /// Moves v (throws on a surface without positions).
+    void set_position(VertexId v, Vec3 p);
+    bool is_flip_ok(EdgeId e);
+    bool is_collapse_ok(HalfEdgeId h);
+    bool is_removed(VertexId v) const;
+    bool is_removed(TriangleId t) const;
+    bool is_removed(EdgeId e) const;
+    std::size_t num_live_vertices() const noexcept;
+    std::size_t num_live_triangles() const noexcept;
+    std::size_t num_live_edges() const noexcept;
+    /// Old id -> new id (`none` for a removed element).
+    struct GarbageMaps {
+        std::vector<std::uint32_t> vertices, triangles, edges;
+    };
+    /// Compacts the removed elements away; every id from before goes through the maps.
+    GarbageMaps garbage_collect();
+
     // Writing.
     /// Writes the built surface to `path`, the format from its extension (.off .obj .ply
     /// .stl .vtk .mesh .msh): its oriented triangles, split copies as vertices of their own,
@@ -316,6 +348,8 @@ public:
 private:
     che_mesh *m_ = nullptr;
     detail::SurfaceViews views_;
+    /// After an edit: the views fetched again, then `s` thrown if not OK.
+    void edited(topomesh_status s);
 };
 
 // ---------------------------------------------------------------------------------------
@@ -616,6 +650,7 @@ template <class T, std::size_t N> using SmallIds [[deprecated("use Ids<T, N>")]]
 
 #include "detail/error.hpp"
 #include "detail/surface.hpp"
+#include "detail/edit.hpp"
 #include "detail/volume.hpp"
 #include "detail/element_members.hpp"
 

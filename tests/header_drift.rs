@@ -53,6 +53,11 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHE: level files (save the built structure, open it again)", &[
         "che_mesh_save", "che_mesh_open",
     ]),
+    ("CHE: editing in place (add, remove, flip, split, collapse, garbage collection)", &[
+        "che_mesh_add_*", "che_mesh_remove_*", "che_mesh_flip_edge", "che_mesh_split_*",
+        "che_mesh_collapse_edge", "che_mesh_set_position", "che_mesh_is_*_ok",
+        "che_mesh_garbage_collect", "che_*_is_removed",
+    ]),
     ("CHE: zero-copy views of the structure's arrays", &["che_mesh_*"]),
     ("CHF: create, load, build levels and free", &[
         "chf_build_options_default", "chf_mesh_from_*", "chf_mesh_load*",

@@ -522,3 +522,41 @@ fn trusted_ids_out_of_range_never_read_outside() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Edits on a mapped mesh copy the arrays they write into memory first: the same edits on
+/// the mapped and the loaded copy of one file give the same structure, and the file
+/// stays as it was.
+#[test]
+fn a_mapped_mesh_is_edited_in_memory() {
+    let dir = folder("edit");
+    let s = torus(6, 5);
+    let n = s.positions.len();
+    for level in 0..=3 {
+        let path = dir.join(format!("t{level}.che"));
+        Che::from_triangles(&s.triangles, n, &s.positions, BuildOptions::level(level))
+            .unwrap()
+            .save(&path)
+            .unwrap();
+        let before = std::fs::read(&path).unwrap();
+        let open = |mode| {
+            Che::open(
+                &path,
+                OpenOptions {
+                    verify: Verify::Full,
+                    mode,
+                },
+            )
+            .unwrap()
+        };
+        let (mut mapped, mut loaded) = (open(Mode::Mapped), open(Mode::Loaded));
+        for che in [&mut mapped, &mut loaded] {
+            che.split_triangle(3, None).unwrap();
+            che.flip_edge(0).unwrap();
+            che.garbage_collect().unwrap();
+        }
+        assert_eq!(che_state(&mapped), che_state(&loaded), "level {level}");
+        assert_eq!(che_answers(&mapped), che_answers(&loaded), "level {level}");
+        assert_eq!(std::fs::read(&path).unwrap(), before);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

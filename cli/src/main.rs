@@ -15,6 +15,7 @@ mod print;
 mod progress;
 mod render;
 mod report;
+mod simplify;
 
 use clap::{Parser, Subcommand};
 use exit::exit_code_table;
@@ -116,6 +117,14 @@ enum Command {
         exit_code_table!()
     ))]
     Render(render::RenderOptions),
+    /// Shortest-edge-first collapse until N triangles (or a ratio) remain.
+    #[command(after_help = concat!(
+        "Examples:
+  topomesh simplify bunny.off small.off --triangles 5000
+  topomesh simplify bunny.off half.ply --ratio 0.5\n\n",
+        exit_code_table!()
+    ))]
+    Simplify(simplify::SimplifyOptions),
 }
 
 fn main() -> ExitCode {
@@ -138,5 +147,6 @@ fn main() -> ExitCode {
         Command::Bench(options) => bench::run(&options),
         Command::Export(options) => export::run(&options),
         Command::Render(options) => render::run(&options),
+        Command::Simplify(options) => simplify::run(&options),
     })
 }

@@ -9,6 +9,7 @@
 //! vertices split) so that the half-edge and edge ids are the same at every level.
 
 mod build;
+mod edit;
 pub mod export;
 pub mod ids;
 mod pairs;
@@ -21,6 +22,7 @@ pub use build::{
     BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts,
     estimated_build_bytes,
 };
+pub use edit::GarbageMaps;
 pub use export::{CornerTable, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges};
 pub use ids::{first, next, prev, tri};
 pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
@@ -76,6 +78,8 @@ pub struct Che {
     /// Sorted half-edges on the seams of non-orientable components, kept unpaired.
     pub(crate) seams: Vec<u32>,
     pub(crate) report: BuildReport,
+    /// What the first edit materialises (see `edit/`); `None` on a CHE never edited.
+    pub(crate) edit: Option<Box<edit::EditState>>,
 }
 
 impl Che {
@@ -113,6 +117,9 @@ impl Che {
 
     /// Raises (or lowers) the level in place. Ids do not change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
+        if self.edit.is_some() {
+            return self.change_edited_level(level);
+        }
         build::change_level(self, level)
     }
 
@@ -134,29 +141,43 @@ impl Che {
     /// The edge-id directory, from level 2: one entry per 32 half-edges, the canonical
     /// flags in its low half and the canonical half-edges before them in its high half
     /// (the edge of a canonical half-edge `c` is its rank; see `rank_directory.rs`).
+    /// `None` on an edited CHE until [`Che::garbage_collect`] (the ids are then not ranks).
     pub fn edge_rank_directory(&self) -> Option<&[u64]> {
+        if self.edits().is_some_and(|s| !s.edge_of.is_empty()) {
+            return None;
+        }
         (self.level >= 2).then_some(self.edge_bits.entries())
     }
     /// The edge-id directory from level 1: the structure's own from level 2 (as
-    /// [`Che::edge_rank_directory`]); at level 1 computed from `O` on the first request and
+    /// [`Che::edge_rank_directory`], so `None` on an edited CHE until garbage collection); at level 1 computed from `O` on the first request and
     /// kept until the level changes. `None` at level 0.
     pub fn edge_ranks(&self) -> Option<&[u64]> {
         match self.level {
             0 => None,
-            1 => Some(
-                self.lazy_edge_bits
-                    .get_or_init(|| crate::util::alloc::or_panic(edge_directory(&self.o)))
-                    .entries(),
-            ),
-            _ => Some(self.edge_bits.entries()),
+            1 => Some(self.level1_edge_bits().entries()),
+            _ => self.edge_rank_directory(),
         }
     }
     /// `EH`: the canonical half-edge of every edge, from level 2.
     pub fn edge_half_edges(&self) -> Option<&[u32]> {
         (self.level >= 2).then_some(&self.eh[..])
     }
-    /// `CH`: one boundary half-edge per curve, at level 3.
+    /// The level-1 edge-id directory, computed on the first request (over the live
+    /// half-edges on an edited CHE).
+    pub(crate) fn level1_edge_bits(&self) -> &RankDirectory {
+        self.lazy_edge_bits.get_or_init(|| {
+            crate::util::alloc::or_panic(match self.edits() {
+                Some(_) => self.live_edge_directory(&self.o),
+                None => edge_directory(&self.o),
+            })
+        })
+    }
+    /// `CH`: one boundary half-edge per curve, at level 3 (on an edited CHE, computed at
+    /// the first request after an edit).
     pub fn curve_half_edges(&self) -> Option<&[u32]> {
+        if self.level >= 3 && self.edits().is_some() {
+            return Some(&self.edited_curves().ch);
+        }
         (self.level >= 3).then_some(&self.ch[..])
     }
 

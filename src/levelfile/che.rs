@@ -184,6 +184,7 @@ pub(crate) fn read_che(file: &LevelFile, prefix: &str, level: u8, positions: boo
         non_manifold: file.u32s_any(&n("non_manifold"))?,
         seams: file.u32s_any(&n("seams"))?,
         report: read_report(file, prefix)?,
+        edit: None,
     };
     if positions {
         che.positions = read_positions(file, &n("positions"), n_vertices)?;

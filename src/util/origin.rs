@@ -34,6 +34,15 @@ impl OriginMap {
     pub(crate) fn explicit(&self) -> Option<&[u32]> {
         (!self.0.is_empty()).then_some(&self.0[..])
     }
+
+    /// The map as a vector of `len` entries, the identity written out first when it was
+    /// stored empty (an edit adds elements with another origin, or none).
+    pub(crate) fn written_out(&mut self, len: usize) -> crate::error::Result<&mut Vec<u32>> {
+        if self.0.is_empty() && len > 0 {
+            self.0 = crate::util::alloc::try_collect(0..len as u32, "the origin map")?;
+        }
+        Ok(&mut self.0)
+    }
 }
 
 /// The stored map (empty for the identity).

@@ -37,10 +37,6 @@ impl<T: Pod> Store<T> {
         matches!(self, Store::Mapped { .. })
     }
 
-    #[allow(
-        dead_code,
-        reason = "the way in for writers: the in-place editors of CHE and CHF"
-    )]
     /// The elements as an owned vector to write to: a mapped range is copied first, into
     /// memory reserved fallibly (`what` names the array in the error).
     pub(crate) fn to_mut(&mut self, what: &str) -> Result<&mut Vec<T>> {
@@ -52,6 +48,18 @@ impl<T: Pod> Store<T> {
         match self {
             Store::Owned(v) => Ok(v),
             Store::Mapped { .. } => unreachable!("promoted above"),
+        }
+    }
+}
+
+impl<T> Store<T> {
+    /// The owned vector of an array its writer has already promoted with
+    /// [`Store::to_mut`]: the editors promote every array at the start of an edit, where
+    /// running out of memory is still a status, so the writes after it cannot fail.
+    pub(crate) fn owned_mut(&mut self) -> &mut Vec<T> {
+        match self {
+            Store::Owned(v) => v,
+            Store::Mapped { .. } => unreachable!("a writer promotes the array before writing"),
         }
     }
 }

@@ -219,6 +219,7 @@ fn assemble(
         non_manifold: c.non_manifold,
         seams: c.seams,
         report,
+        edit: None,
     })
 }
 

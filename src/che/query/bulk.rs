@@ -98,6 +98,7 @@ impl Che {
         let o = self.try_opposites_or_computed()?;
         let vh = match self.vertex_half_edges() {
             Some(vh) => Cow::Borrowed(vh),
+            None if self.edits().is_some() => Cow::Owned(self.live_vertex_half_edges(&o)?),
             None => Cow::Owned(vertex_half_edges(self.n_vertices, &self.v, &o)?),
         };
         Ok(Tables { o, vh })
@@ -175,7 +176,7 @@ impl Che {
             self.star_rows(&t, out, |s| Some(self.ve_item(s)));
             return Ok(());
         }
-        let ids = edge_ids(&t.o)?;
+        let ids = self.edge_ids_below_2(&t.o)?;
         self.star_rows(&t, out, |s| match s {
             StarStep::Out(h) | StarStep::LastIn(h) => Some(ids[h as usize]),
         });
@@ -233,6 +234,14 @@ impl Che {
             let fe = (0..self.v.len() as u32).map(|h| self.edge_of(h));
             return try_collect(fe, "the triangle edges");
         }
-        edge_ids(&self.try_opposites_or_computed()?)
+        self.edge_ids_below_2(&self.try_opposites_or_computed()?)
+    }
+
+    /// The edge id of every half-edge below level 2 (over the live ones when edited).
+    fn edge_ids_below_2(&self, o: &[u32]) -> Result<Vec<u32>> {
+        match self.edits() {
+            Some(_) => self.live_edge_ids(o),
+            None => edge_ids(o),
+        }
     }
 }

@@ -36,13 +36,16 @@ impl Che {
     /// level 3; O(T) below.
     pub fn boundary_curve_starts(&self) -> Cow<'_, [u32]> {
         if self.level >= 3 {
+            if self.edits().is_some() {
+                return Cow::Borrowed(&self.edited_curves().ch);
+            }
             return Cow::Borrowed(&self.ch);
         }
         let o = self.opposites_or_computed();
         let mut seen = vec![false; self.v.len()];
         let mut starts = Vec::new();
         for h in 0..self.v.len() as u32 {
-            if o[h as usize] != NONE || seen[h as usize] {
+            if o[h as usize] != NONE || seen[h as usize] || self.v[h as usize] == NONE {
                 continue;
             }
             starts.push(h);
@@ -80,6 +83,9 @@ impl Che {
     /// O(T) below (the curves are walked), and O(T) memory at level 0.
     pub fn curve_of(&self, h: u32) -> u32 {
         if self.level >= 3 {
+            if self.edits().is_some() {
+                return self.edited_curve_of(h);
+            }
             if self.o[h as usize] != NONE {
                 return NONE;
             }

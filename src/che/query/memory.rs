@@ -30,7 +30,9 @@ impl Che {
             half_edge_vertices: ints(self.v.len()),
             opposites: ints(self.o.len()),
             vertex_half_edges: ints(self.vh.len()),
-            edges: ints(self.eh.len()) + self.edge_bits.memory_bytes(),
+            edges: ints(self.eh.len())
+                + self.edge_bits.memory_bytes()
+                + self.edits().map_or(0, |s| s.memory_bytes()),
             curves: ints(self.ch.len())
                 + ints(self.curve_of.len())
                 + self.boundary_bits.memory_bytes(),

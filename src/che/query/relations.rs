@@ -64,6 +64,8 @@ impl Che {
     pub(crate) fn try_opposites_or_computed(&self) -> Result<Cow<'_, [u32]>> {
         Ok(if self.level >= 1 {
             Cow::Borrowed(&self.o)
+        } else if self.edits().is_some() {
+            Cow::Owned(self.live_opposites()?)
         } else {
             Cow::Owned(pairs::opposites_by_rule(
                 &self.v,
@@ -76,6 +78,14 @@ impl Che {
     /// [`Che::try_opposites_or_computed`] for the queries without an error to return.
     pub(crate) fn opposites_or_computed(&self) -> Cow<'_, [u32]> {
         crate::util::alloc::or_panic(self.try_opposites_or_computed())
+    }
+
+    /// An edited CHE's edge ids from level 2 (`None`: the ranks are the ids).
+    #[inline]
+    pub(crate) fn edited_edge_ids(&self) -> Option<&[u32]> {
+        self.edits()
+            .map(|s| &s.edge_of[..])
+            .filter(|ids| !ids.is_empty())
     }
 
     /// Is `h` on the boundary (no opposite)?
@@ -164,6 +174,9 @@ impl Che {
     /// [`Che::edge_ranks`]); O(T) time and memory at level 0.
     pub fn edge_of(&self, h: u32) -> u32 {
         if self.level >= 2 {
+            if let Some(ids) = self.edited_edge_ids() {
+                return ids[h as usize];
+            }
             return self.edge_bits.rank(Self::canonical(&self.o, h) as usize) as u32;
         }
         self.edge_names().of(h)
@@ -175,13 +188,17 @@ impl Che {
     pub(crate) fn edge_names(&self) -> EdgeNames<'_> {
         let o = self.opposites_or_computed();
         let ranks = match self.level {
+            0 if self.edits().is_some() => Cow::Owned(or_panic(self.live_edge_directory(&o))),
             0 => Cow::Owned(or_panic(edge_directory(&o))),
-            1 => Cow::Borrowed(
-                (self.lazy_edge_bits).get_or_init(|| or_panic(edge_directory(&self.o))),
-            ),
+            1 => Cow::Borrowed(self.level1_edge_bits()),
             _ => Cow::Borrowed(&self.edge_bits),
         };
-        EdgeNames { o, ranks }
+        let ids = if self.level >= 2 {
+            self.edited_edge_ids()
+        } else {
+            None
+        };
+        EdgeNames { o, ranks, ids }
     }
 
     /// The canonical half-edge of edge `e` (the boundary one on a boundary edge).
@@ -193,7 +210,7 @@ impl Che {
         }
         let o = self.opposites_or_computed();
         (0..self.v.len() as u32)
-            .filter(|&g| Self::canonical(&o, g) == g)
+            .filter(|&g| self.v[g as usize] != NONE && Self::canonical(&o, g) == g)
             .nth(e as usize)
             .unwrap_or(NONE)
     }
@@ -262,12 +279,17 @@ impl Che {
 pub(crate) struct EdgeNames<'a> {
     o: Cow<'a, [u32]>,
     ranks: Cow<'a, RankDirectory>,
+    /// An edited CHE's edge ids, from level 2.
+    ids: Option<&'a [u32]>,
 }
 
 impl EdgeNames<'_> {
     /// The edge id of half-edge `h`: the rank of its canonical half-edge.
     #[inline]
     pub(crate) fn of(&self, h: u32) -> u32 {
+        if let Some(ids) = self.ids {
+            return ids[h as usize];
+        }
         self.ranks.rank(Che::canonical(&self.o, h) as usize) as u32
     }
 }

@@ -36,6 +36,9 @@ pub struct Summary {
 impl Che {
     /// The summary; O(T) at every level.
     pub fn summary(&self) -> Summary {
+        if self.edits().is_some() {
+            return self.edited_summary();
+        }
         let r = &self.report;
         let n = self.n_input_vertices;
         let components = element_components::<3>(&self.v, n, |x| self.vertex_origin(x));

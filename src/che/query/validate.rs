@@ -22,6 +22,9 @@ impl Che {
     /// them), the edge directory and `EH`, and the boundary curves. The first violation
     /// is an `InvalidInput` error naming the element.
     pub fn validate(&self) -> Result<()> {
+        if self.edits().is_some() {
+            return self.validate_edited();
+        }
         self.validate_v()?;
         if self.level >= 1 {
             self.validate_o()?;

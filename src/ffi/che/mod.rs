@@ -3,6 +3,7 @@
 
 mod build;
 mod csr;
+mod edit;
 mod export;
 mod info;
 mod levelfile;
@@ -15,7 +16,7 @@ mod warnings;
 mod write;
 
 pub use {
-    build::*, csr::*, export::*, info::*, levelfile::*, relations::*, star::*, views::*,
+    build::*, csr::*, edit::*, export::*, info::*, levelfile::*, relations::*, star::*, views::*,
     warnings::*, write::*,
 };
 

@@ -89,7 +89,8 @@ impl CheStarIter {
         che.check_vertex(v)?;
         let start = che.vertex_half_edge(v);
         // The arrays are lent to the inline step from level 2 only.
-        let inline = che.level() >= 2;
+        // (Not on an edited mesh before garbage collection: its edge ids are not ranks.)
+        let inline = che.level() >= 2 && che.edge_ranks().is_some();
         fn lent<T>(a: Option<&[T]>, inline: bool) -> *const T {
             a.filter(|_| inline).map_or(ptr::null(), <[T]>::as_ptr)
         }

@@ -1,0 +1,56 @@
+//! Every write to the arrays of a [`Che`] that an edit makes goes through these accessors,
+//! so that a change of the arrays' storage type changes this file only. Reads index the
+//! fields directly. [`promote`] copies mapped arrays into memory before an edit writes.
+
+use crate::che::Che;
+use crate::error::Result;
+use crate::util::origin::OriginMap;
+use glam::DVec3;
+
+pub(super) fn v_mut(che: &mut Che) -> &mut Vec<u32> {
+    che.v.owned_mut()
+}
+pub(super) fn o_mut(che: &mut Che) -> &mut Vec<u32> {
+    che.o.owned_mut()
+}
+pub(super) fn vh_mut(che: &mut Che) -> &mut Vec<u32> {
+    che.vh.owned_mut()
+}
+pub(super) fn eh_mut(che: &mut Che) -> &mut Vec<u32> {
+    che.eh.owned_mut()
+}
+pub(super) fn positions_mut(che: &mut Che) -> &mut Vec<DVec3> {
+    che.positions.owned_mut()
+}
+pub(super) fn non_manifold_mut(che: &mut Che) -> &mut Vec<u32> {
+    &mut che.non_manifold
+}
+pub(super) fn seams_mut(che: &mut Che) -> &mut Vec<u32> {
+    &mut che.seams
+}
+pub(super) fn vertex_origin_mut(che: &mut Che) -> &mut OriginMap {
+    &mut che.vertex_origin
+}
+pub(super) fn triangle_origin_mut(che: &mut Che) -> &mut OriginMap {
+    &mut che.triangle_origin
+}
+pub(super) fn ch_mut(che: &mut Che) -> &mut Vec<u32> {
+    che.ch.owned_mut()
+}
+pub(super) fn curve_of_mut(che: &mut Che) -> &mut Vec<u32> {
+    che.curve_of.owned_mut()
+}
+
+/// Copies every array an edit may write into owned memory (a mapped level file's arrays
+/// are read-only), fallibly, before the edit's first write.
+pub(super) fn promote(che: &mut Che) -> Result<()> {
+    che.v.to_mut("the half-edge vertices V")?;
+    che.o.to_mut("the opposites O")?;
+    che.vh.to_mut("the vertex half-edges VH")?;
+    che.eh.to_mut("the edge half-edges EH")?;
+    che.positions.to_mut("the positions")?;
+    che.ch.to_mut("the curve half-edges CH")?;
+    che.curve_of
+        .to_mut("the curve of each boundary half-edge")?;
+    Ok(())
+}

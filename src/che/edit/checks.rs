@@ -1,0 +1,211 @@
+//! Checks before an edit writes anything: ids live and in range, and the conditions of
+//! the Euler operators ([`Che::is_flip_ok`], [`Che::is_collapse_ok`]), which never modify.
+
+use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::{first, next, prev, tri};
+use crate::error::{Error, Result};
+
+/// A refused operation: an invalid-input error with the reason.
+pub(super) fn refuse<T>(what: String) -> Result<T> {
+    Err(Error::invalid(what))
+}
+
+impl Che {
+    /// Is vertex `x` removed (until [`Che::garbage_collect`])? `false` out of range.
+    pub fn is_vertex_removed(&self, x: u32) -> bool {
+        self.edits()
+            .and_then(|s| s.removed_vertex.get(x as usize).copied())
+            .unwrap_or(false)
+    }
+    /// Is triangle `t` removed? `false` out of range.
+    pub fn is_triangle_removed(&self, t: u32) -> bool {
+        self.v.get(first(t) as usize).is_some_and(|&x| x == NONE)
+    }
+    /// Is half-edge `h` removed (its triangle is)? `false` out of range.
+    pub fn is_half_edge_removed(&self, h: u32) -> bool {
+        self.is_triangle_removed(tri(h))
+    }
+    /// Is edge `e` removed? From level 2 only (below, edge ids are the ranks of the live
+    /// edges, so every id below the count is live). `false` out of range.
+    pub fn is_edge_removed(&self, e: u32) -> bool {
+        self.level >= 2 && self.eh.get(e as usize).is_some_and(|&h| h == NONE)
+    }
+
+    /// Live counts: the `num_*` counts are the id bounds until garbage collection.
+    pub fn num_live_vertices(&self) -> usize {
+        self.edits().map_or(self.n_vertices, |s| s.live_vertices)
+    }
+    pub fn num_live_triangles(&self) -> usize {
+        self.edits()
+            .map_or(self.num_triangles(), |s| s.live_triangles)
+    }
+    pub fn num_live_edges(&self) -> usize {
+        self.edits().map_or(self.num_edges, |s| s.live_edges)
+    }
+
+    pub(super) fn live_vertex(&self, x: u32) -> Result<()> {
+        self.check_vertex(x)?;
+        if self.is_vertex_removed(x) {
+            return refuse(format!("vertex {x} is removed"));
+        }
+        Ok(())
+    }
+    pub(super) fn live_triangle(&self, t: u32) -> Result<()> {
+        self.check_triangle(t)?;
+        if self.is_triangle_removed(t) {
+            return refuse(format!("triangle {t} is removed"));
+        }
+        Ok(())
+    }
+    pub(super) fn live_half_edge(&self, h: u32) -> Result<()> {
+        self.check_half_edge(h)?;
+        if self.is_half_edge_removed(h) {
+            return refuse(format!("half-edge {h} is removed (triangle {})", tri(h)));
+        }
+        Ok(())
+    }
+
+    /// The canonical half-edge of live edge `e`, on the working tables.
+    pub(super) fn live_edge(&self, e: u32) -> Result<u32> {
+        if self.level >= 2 {
+            self.check_edge(e)?;
+            return match self.eh[e as usize] {
+                NONE => refuse(format!("edge {e} is removed")),
+                h => Ok(h),
+            };
+        }
+        crate::util::structure::check_id(e, self.st().live_edges, "edge", "edges")?;
+        let o = &self.o;
+        Ok((0..o.len())
+            .filter(|&h| self.is_live_canonical(o, h))
+            .nth(e as usize)
+            .map_or(NONE, |h| h as u32))
+    }
+
+    /// Is there a half-edge from `a` to `b` or from `b` to `a`? O(degree of `a`).
+    pub(super) fn adjacent(&self, a: u32, b: u32) -> bool {
+        self.outgoing(a)
+            .iter()
+            .any(|&h| self.v[next(h) as usize] == b || self.v[prev(h) as usize] == b)
+    }
+
+    /// Why flipping the edge of half-edge `h` is refused, if it is.
+    pub(super) fn flip_refusal(&self, h: u32, e: u32) -> Option<String> {
+        let g = self.o[h as usize];
+        if g == NONE {
+            return Some(format!("edge {e} is on the boundary (or non-manifold)"));
+        }
+        let (c, d) = (self.v[prev(h) as usize], self.v[prev(g) as usize]);
+        if c == d {
+            return Some(format!(
+                "edge {e}: both triangles have the same third vertex {c}"
+            ));
+        }
+        if self.adjacent(c, d) {
+            return Some(format!("edge {e}: the flipped edge {c}-{d} exists already"));
+        }
+        None
+    }
+
+    /// Why collapsing half-edge `h` (its target into its origin) is refused, if it is:
+    /// the link condition (the common neighbours of the two ends are the third vertices of
+    /// its triangles, and no edge between them is in both links), no edge between two
+    /// boundary vertices unless on the boundary, no triangle left with two boundary edges.
+    pub(super) fn collapse_refusal(&self, h: u32) -> Option<String> {
+        let (a, b, g) = (
+            self.v[h as usize],
+            self.v[next(h) as usize],
+            self.o[h as usize],
+        );
+        let mut wings = vec![h];
+        if g != NONE {
+            wings.push(g);
+        }
+        for &w in &wings {
+            if [w, next(w), prev(w)].iter().any(|&x| self.is_flagged(x)) {
+                return Some(format!(
+                    "half-edge {h}: triangle {} is on a non-manifold edge or seam",
+                    tri(w)
+                ));
+            }
+            let (p, q) = (self.o[next(w) as usize], self.o[prev(w) as usize]);
+            if p == NONE && q == NONE {
+                return Some(format!(
+                    "half-edge {h}: triangle {} would fold onto its boundary",
+                    tri(w)
+                ));
+            }
+        }
+        let boundary = |x: u32| self.o[self.vh[x as usize] as usize] == NONE;
+        if g != NONE && boundary(a) && boundary(b) {
+            return Some(format!(
+                "half-edge {h}: interior edge {a}-{b} joins two boundary vertices"
+            ));
+        }
+        let thirds: Vec<u32> = wings.iter().map(|&w| self.v[prev(w) as usize]).collect();
+        if let [c, d] = thirds[..]
+            && c == d
+        {
+            return Some(format!(
+                "half-edge {h}: both triangles have the same third vertex {c}"
+            ));
+        }
+        let mut ring_a: Vec<u32> = self.neighbours(a);
+        ring_a.sort_unstable();
+        for y in self.neighbours(b) {
+            if y != a && ring_a.binary_search(&y).is_ok() && !thirds.contains(&y) {
+                return Some(format!(
+                    "half-edge {h}: the link condition fails ({a} and {b} share neighbour {y})"
+                ));
+            }
+        }
+        if let [c, d] = thirds[..]
+            && self.has_triangle_on(a, c, d)
+            && self.has_triangle_on(b, c, d)
+        {
+            return Some(format!(
+                "half-edge {h}: the link condition fails (edge {c}-{d} is in both links)"
+            ));
+        }
+        None
+    }
+
+    /// The vertices around `x` (each once, from its rotation).
+    fn neighbours(&self, x: u32) -> Vec<u32> {
+        let outs = self.outgoing(x);
+        let mut ring: Vec<u32> = outs.iter().map(|&h| self.v[next(h) as usize]).collect();
+        if let Some(&last) = outs.last() {
+            let p = prev(last);
+            if self.o[p as usize] == NONE {
+                ring.push(self.v[p as usize]);
+            }
+        }
+        ring
+    }
+
+    /// Is there a triangle on vertices `x`, `c`, `d`?
+    fn has_triangle_on(&self, x: u32, c: u32, d: u32) -> bool {
+        self.outgoing(x).iter().any(|&h| {
+            let (p, q) = (self.v[next(h) as usize], self.v[prev(h) as usize]);
+            (p == c && q == d) || (p == d && q == c)
+        })
+    }
+
+    /// Can edge `e` be flipped? Never modifies. `Err` for a bad or removed id, `Ok(false)`
+    /// when the flip would be refused (see [`Che::flip_edge`]).
+    pub fn is_flip_ok(&mut self, e: u32) -> Result<bool> {
+        self.edit_with(|c| {
+            let h = c.live_edge(e)?;
+            Ok(c.flip_refusal(h, e).is_none())
+        })
+    }
+
+    /// Can half-edge `h` be collapsed? Never modifies; see [`Che::collapse_edge`].
+    pub fn is_collapse_ok(&mut self, h: u32) -> Result<bool> {
+        self.edit_with(|c| {
+            c.live_half_edge(h)?;
+            Ok(c.collapse_refusal(h).is_none())
+        })
+    }
+}

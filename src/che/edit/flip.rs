@@ -1,0 +1,49 @@
+//! Flipping an interior edge: the diagonal of the quad of its two triangles turns.
+
+use super::arrays::v_mut;
+use super::checks::refuse;
+use crate::che::Che;
+use crate::che::ids::{next, prev};
+use crate::error::Result;
+
+impl Che {
+    /// Flips edge `e` between triangles `(a, b, c)` and `(b, a, d)` into `c-d`; the edge
+    /// keeps its id, the triangles theirs. Refused on a boundary (or non-manifold) edge,
+    /// and when `c-d` is an edge already (or `c == d`).
+    pub fn flip_edge(&mut self, e: u32) -> Result<()> {
+        self.edit_with(|m| {
+            let h = m.live_edge(e)?;
+            if let Some(why) = m.flip_refusal(h, e) {
+                return refuse(format!("flip_edge: {why}"));
+            }
+            m.flip_live(h);
+            Ok(())
+        })
+    }
+
+    /// Triangle `(a, b, c)` on slots `h, h1, h2` becomes `(d, b, c)`, `(b, a, d)` on
+    /// `g, g1, g2` becomes `(c, a, d)`: the diagonal is `h2 <-> g2`, the outer half-edges
+    /// `c -> a` and `d -> b` move to slots `g` and `h`.
+    fn flip_live(&mut self, h: u32) {
+        let g = self.o[h as usize];
+        let (h1, h2, g1, g2) = (next(h), prev(h), next(g), prev(g));
+        let (c, d) = (self.v[h2 as usize], self.v[g2 as usize]);
+        let (oh2, og2) = (self.o[h2 as usize], self.o[g2 as usize]);
+        let (e, e_ca, e_db) = (self.edge_id(h), self.edge_id(h2), self.edge_id(g2));
+        self.move_flags(h2, g);
+        self.move_flags(g2, h);
+        v_mut(self)[h as usize] = d;
+        v_mut(self)[g as usize] = c;
+        self.link(g, oh2);
+        self.link(h, og2);
+        self.link(h2, g2);
+        self.name_edge(g, e_ca);
+        self.name_edge(h, e_db);
+        self.name_edge(h2, e);
+        let a = self.v[g1 as usize];
+        let b = self.v[h1 as usize];
+        for (x, out) in [(a, g1), (b, h1), (c, h2), (d, g2)] {
+            self.fix_vh(x, out);
+        }
+    }
+}

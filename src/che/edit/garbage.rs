@@ -1,0 +1,202 @@
+//! Garbage collection: the live elements compacted (`h = 3t + i` without holes), every
+//! level's tables rebuilt from `V` and `O` in O(T), and old -> new id maps returned.
+
+use super::arrays::{
+    ch_mut, curve_of_mut, eh_mut, non_manifold_mut, o_mut, positions_mut, seams_mut,
+    triangle_origin_mut, v_mut, vertex_origin_mut, vh_mut,
+};
+use crate::NONE;
+use crate::che::Che;
+use crate::error::Result;
+use crate::util::alloc::{try_vec, try_with_capacity};
+use crate::util::origin::OriginMap;
+
+/// Old id -> new id after [`Che::garbage_collect`] (`NONE` for a removed element).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct GarbageMaps {
+    pub vertices: Vec<u32>,
+    pub triangles: Vec<u32>,
+    pub edges: Vec<u32>,
+}
+
+/// `map[i]`: the rank of `i` among the kept, `NONE` if not kept.
+fn ranks(n: usize, kept: impl Fn(usize) -> bool, what: &str) -> Result<(Vec<u32>, usize)> {
+    let mut map = try_vec(n, NONE, what)?;
+    let mut next = 0u32;
+    for (i, m) in map.iter_mut().enumerate() {
+        if kept(i) {
+            *m = next;
+            next += 1;
+        }
+    }
+    Ok((map, next as usize))
+}
+
+/// The kept entries of `list`, in order.
+fn compact<T: Copy>(list: &[T], map: &[u32], what: &str) -> Result<Vec<T>> {
+    let mut out = try_with_capacity(list.len(), what)?;
+    out.extend(
+        list.iter()
+            .zip(map)
+            .filter(|&(_, &m)| m != NONE)
+            .map(|(&x, _)| x),
+    );
+    Ok(out)
+}
+
+impl Che {
+    /// Compacts the removed elements away and returns the old -> new maps. The new ids are
+    /// those a fresh build of the live triangles gives (edge ids: ranks again). O(T); the
+    /// identity maps, and nothing touched, on a CHE never edited. Every id, borrowed slice
+    /// and C view from before is invalid after it.
+    pub fn garbage_collect(&mut self) -> Result<GarbageMaps> {
+        let level = self.level;
+        let (nv, nt) = (self.n_vertices, self.num_triangles());
+        if self.edit.is_none() {
+            let identity = |n: usize| crate::util::alloc::try_collect(0..n as u32, "an id map");
+            return Ok(GarbageMaps {
+                vertices: identity(nv)?,
+                triangles: identity(nt)?,
+                edges: identity(self.num_edges)?,
+            });
+        }
+        let old_o = match level {
+            0 if self.edit.is_some() => self.live_opposites()?,
+            _ => self.try_opposites_or_computed()?.into_owned(),
+        };
+        let (vmap, new_nv) = ranks(nv, |x| !self.is_vertex_removed(x as u32), "the vertex map")?;
+        let (tmap, _) = ranks(
+            nt,
+            |t| !self.is_triangle_removed(t as u32),
+            "the triangle map",
+        )?;
+        let hmap = |h: u32| match h {
+            NONE => NONE,
+            h => match tmap[h as usize / 3] {
+                NONE => NONE,
+                t => 3 * t + h % 3,
+            },
+        };
+        let mut v = try_with_capacity(self.v.len(), "the half-edge vertices V")?;
+        v.extend(
+            self.v
+                .iter()
+                .filter(|&&x| x != NONE)
+                .map(|&x| vmap[x as usize]),
+        );
+        let mut o = try_with_capacity(self.v.len(), "the opposites O")?;
+        o.extend(
+            (0..old_o.len())
+                .filter(|&h| self.v[h] != NONE)
+                .map(|h| hmap(old_o[h])),
+        );
+        let new_edge = crate::che::tables::edge_ids(&o)?;
+        let old_edge = self.old_edge_ids(&old_o)?;
+        let mut emap = try_vec(self.num_edges, NONE, "the edge map")?;
+        for (h, &e) in old_edge.iter().enumerate() {
+            if e != NONE && hmap(h as u32) != NONE {
+                emap[e as usize] = new_edge[hmap(h as u32) as usize];
+            }
+        }
+        let positions = if self.positions.is_empty() {
+            Vec::new()
+        } else {
+            compact(&self.positions, &vmap, "the positions")?
+        };
+        let vorigin = match self.vertex_origin.explicit() {
+            Some(map) => OriginMap::from(compact(map, &vmap, "the vertex origins")?),
+            None if new_nv == nv => OriginMap::default(),
+            None => OriginMap::from(compact(
+                &ranks(nv, |_| true, "")?.0,
+                &vmap,
+                "the vertex origins",
+            )?),
+        };
+        let torigin = match self.triangle_origin.explicit() {
+            Some(map) => OriginMap::from(compact(map, &tmap, "the triangle origins")?),
+            None => OriginMap::default(),
+        };
+        let tori_len = torigin.len();
+        let flags = |list: &[u32]| -> Vec<u32> {
+            list.iter()
+                .map(|&h| hmap(h))
+                .filter(|&h| h != NONE)
+                .collect()
+        };
+        let (nm, seams) = (flags(&self.non_manifold), flags(&self.seams));
+        // From here on nothing is allocated but the rebuilt levels.
+        *v_mut(self) = v;
+        *o_mut(self) = o;
+        *positions_mut(self) = positions;
+        *vertex_origin_mut(self) = vorigin;
+        *triangle_origin_mut(self) = if tori_len == 0 && tmap.contains(&NONE) {
+            // The identity over the old ids is not the identity over the new ones.
+            OriginMap::from(compact(
+                &ranks(nt, |_| true, "")?.0,
+                &tmap,
+                "the triangle origins",
+            )?)
+        } else {
+            torigin
+        };
+        *non_manifold_mut(self) = nm;
+        *seams_mut(self) = seams;
+        self.n_vertices = new_nv;
+        self.num_edges = new_edge
+            .iter()
+            .enumerate()
+            .filter(|&(h, &e)| {
+                e != NONE && {
+                    let g = self.o[h];
+                    g == NONE || (h as u32) < g
+                }
+            })
+            .count();
+        self.rebuild_levels(level)?;
+        Ok(GarbageMaps {
+            vertices: vmap,
+            triangles: tmap,
+            edges: emap,
+        })
+    }
+
+    /// The edge id of every half-edge before the collection (`NONE` when removed).
+    fn old_edge_ids(&self, old_o: &[u32]) -> Result<Vec<u32>> {
+        if self.level >= 2 {
+            let ids = (0..self.v.len() as u32).map(|h| {
+                if self.v[h as usize] == NONE {
+                    NONE
+                } else {
+                    self.edge_of(h)
+                }
+            });
+            return crate::util::alloc::try_collect(ids, "the edge ids");
+        }
+        self.live_edge_ids(old_o)
+    }
+
+    /// Every table of `level` again from `V` and `O` (or `V` alone at level 0), and the
+    /// edit state reset to "nothing removed".
+    fn rebuild_levels(&mut self, level: u8) -> Result<()> {
+        let st = self.edit.get_or_insert_with(Default::default);
+        st.edge_of = Vec::new();
+        st.curves = Default::default();
+        st.removed_vertex = try_vec(self.n_vertices, false, "the removed-vertex flags")?;
+        st.live_vertices = self.n_vertices;
+        st.live_triangles = self.v.len() / 3;
+        st.live_edges = self.num_edges;
+        self.lazy_edge_bits = Default::default();
+        if level == 0 {
+            *o_mut(self) = Vec::new();
+            return Ok(());
+        }
+        self.level = 1;
+        *vh_mut(self) = Vec::new();
+        *eh_mut(self) = Vec::new();
+        *ch_mut(self) = Vec::new();
+        *curve_of_mut(self) = Vec::new();
+        self.edge_bits = Default::default();
+        self.boundary_bits = Default::default();
+        crate::che::build::change_level(self, level)
+    }
+}

@@ -1,0 +1,85 @@
+//! Removing a triangle, and a vertex with its star. The ids are marked, not reused.
+
+use super::arrays::{o_mut, v_mut, vh_mut};
+use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::{first, next, prev};
+use crate::error::Result;
+
+impl Che {
+    /// Removes triangle `t`: its half-edges get `V = O = NONE`, its edges that no other
+    /// triangle holds are removed, its corners keep their other triangles. A corner whose
+    /// triangles fall into two fans is split (the second fan moves to a new vertex, as the
+    /// build splits such a vertex); a corner left without triangles stays, isolated.
+    pub fn remove_triangle(&mut self, t: u32) -> Result<()> {
+        self.edit_with(|c| {
+            c.live_triangle(t)?;
+            c.make_room(0, 3, 0)?;
+            c.remove_live_triangle(t);
+            Ok(())
+        })
+    }
+
+    /// Removes vertex `x` and every triangle around it; its neighbours stay (split as in
+    /// [`Che::remove_triangle`] where needed).
+    pub fn remove_vertex(&mut self, x: u32) -> Result<()> {
+        self.edit_with(|c| {
+            c.live_vertex(x)?;
+            let outs = c.outgoing(x);
+            c.make_room(0, outs.len() + 1, 0)?;
+            // All the star goes first, then each neighbour settles once: removing the
+            // triangles one at a time could split a neighbour into a copy left isolated.
+            let mut ring: Vec<u32> = outs.iter().map(|&h| c.v[next(h) as usize]).collect();
+            if let Some(&last) = outs.last() {
+                ring.push(c.v[prev(last) as usize]);
+            }
+            ring.sort_unstable();
+            ring.dedup();
+            let ring_outs: Vec<Vec<u32>> = ring.iter().map(|&y| c.outgoing(y)).collect();
+            for &h in &outs {
+                c.unlink_triangle(crate::che::ids::tri(h));
+            }
+            for (&y, outs) in ring.iter().zip(&ring_outs) {
+                c.settle(y, outs);
+            }
+            vh_mut(c)[x as usize] = NONE;
+            let st = c.st_mut();
+            st.removed_vertex[x as usize] = true;
+            st.live_vertices -= 1;
+            Ok(())
+        })
+    }
+
+    /// [`Che::remove_triangle`] after the checks, room made for 3 vertex copies.
+    pub(super) fn remove_live_triangle(&mut self, t: u32) {
+        let corners = self.triangle_vertices(t);
+        let outs: Vec<Vec<u32>> = corners.iter().map(|&x| self.outgoing(x)).collect();
+        self.unlink_triangle(t);
+        for (&x, outs) in corners.iter().zip(&outs) {
+            self.settle(x, outs);
+        }
+    }
+
+    /// Marks triangle `t` removed: its edges stay with the opposite half-edges, or go.
+    pub(super) fn unlink_triangle(&mut self, t: u32) {
+        for h in first(t)..first(t) + 3 {
+            let g = self.o[h as usize];
+            let e = self.edge_id(h);
+            if g == NONE {
+                self.drop_edge(e);
+            } else {
+                o_mut(self)[g as usize] = NONE;
+                self.name_edge(g, e);
+            }
+            o_mut(self)[h as usize] = NONE;
+            self.unflag(h);
+        }
+        for h in first(t)..first(t) + 3 {
+            v_mut(self)[h as usize] = NONE;
+            if self.level >= 2 {
+                self.st_mut().edge_of[h as usize] = NONE;
+            }
+        }
+        self.st_mut().live_triangles -= 1;
+    }
+}

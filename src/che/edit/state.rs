@@ -1,0 +1,252 @@
+//! The editable form: what the first edit materialises, and the working tables an edit
+//! below level 2 computes for itself (and drops) so that every operation is written once.
+
+use super::arrays::{o_mut, vh_mut};
+use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::next;
+use crate::che::tables::edge_ids;
+use crate::error::Result;
+use crate::util::alloc::try_vec;
+use std::sync::OnceLock;
+
+/// What an edited CHE keeps beside its arrays.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct EditState {
+    /// From level 2: the edge id of every half-edge (`NONE` on a removed one). Empty when
+    /// the ranks of the edge directory are the ids (right after garbage collection).
+    pub(crate) edge_of: Vec<u32>,
+    /// The removed vertices (an isolated vertex is not removed).
+    pub(crate) removed_vertex: Vec<bool>,
+    pub(crate) live_vertices: usize,
+    pub(crate) live_triangles: usize,
+    pub(crate) live_edges: usize,
+    /// Level 3: the curves, computed at the first curve query after an edit.
+    pub(crate) curves: OnceLock<Curves>,
+}
+
+/// Boundary curves of an edited CHE.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Curves {
+    /// The smallest half-edge of each curve, increasing.
+    pub(crate) ch: Vec<u32>,
+    /// The boundary half-edges, increasing, and the curve of each.
+    pub(crate) boundary: Vec<u32>,
+    pub(crate) curve: Vec<u32>,
+}
+
+impl EditState {
+    pub(crate) fn memory_bytes(&self) -> usize {
+        4 * self.edge_of.len() + self.removed_vertex.len()
+    }
+}
+
+impl Che {
+    /// The edit state, when the CHE has been edited.
+    #[inline]
+    pub(crate) fn edits(&self) -> Option<&EditState> {
+        self.edit.as_deref()
+    }
+
+    pub(super) fn st(&self) -> &EditState {
+        self.edit.as_deref().expect("an edit has begun")
+    }
+    pub(super) fn st_mut(&mut self) -> &mut EditState {
+        self.edit.as_deref_mut().expect("an edit has begun")
+    }
+
+    /// Runs one operation: the state materialised (first edit), the working tables below
+    /// level 2 computed, `op` (which checks everything before it writes), the working
+    /// tables dropped again, whatever `op` returned.
+    pub(super) fn edit_with<T>(&mut self, op: impl FnOnce(&mut Che) -> Result<T>) -> Result<T> {
+        self.begin_edit()?;
+        let r = op(self);
+        self.end_edit();
+        r
+    }
+
+    fn begin_edit(&mut self) -> Result<()> {
+        super::arrays::promote(self)?;
+        if self.edit.is_none() {
+            let st = EditState {
+                removed_vertex: try_vec(self.n_vertices, false, "the removed-vertex flags")?,
+                live_vertices: self.n_vertices,
+                live_triangles: self.num_triangles(),
+                live_edges: self.num_edges,
+                ..Default::default()
+            };
+            self.edit = Some(Box::new(st));
+        }
+        if self.level >= 2 && self.st().edge_of.is_empty() && !self.v.is_empty() {
+            let ids = edge_ids(&self.o)?;
+            self.st_mut().edge_of = ids;
+        }
+        if self.level == 0 {
+            let o = self.live_opposites()?;
+            *o_mut(self) = o;
+        }
+        if self.level < 2 {
+            let vh = self.live_vertex_half_edges(&self.o)?;
+            *vh_mut(self) = vh;
+        }
+        Ok(())
+    }
+
+    fn end_edit(&mut self) {
+        if self.level == 0 {
+            *o_mut(self) = Vec::new();
+        }
+        if self.level < 2 {
+            *vh_mut(self) = Vec::new();
+            self.num_edges = self.st().live_edges;
+        } else {
+            self.num_edges = self.eh.len();
+        }
+        self.lazy_edge_bits = OnceLock::new();
+        self.st_mut().curves = OnceLock::new();
+    }
+
+    /// `O` by the level-0 rule over the live triangles: a removed triangle's corners become
+    /// one phantom vertex, whose half-edges pair with nothing.
+    pub(crate) fn live_opposites(&self) -> Result<Vec<u32>> {
+        let phantom = self.n_vertices as u32;
+        let mut v = crate::util::alloc::try_to_vec(&self.v, "the live half-edges")?;
+        v.iter_mut()
+            .filter(|x| **x == NONE)
+            .for_each(|x| *x = phantom);
+        crate::che::pairs::opposites_by_rule(&v, self.n_vertices + 1, &self.non_manifold)
+    }
+
+    /// `VH` over the live half-edges, as the build computes it.
+    pub(crate) fn live_vertex_half_edges(&self, o: &[u32]) -> Result<Vec<u32>> {
+        let mut vh = try_vec(self.n_vertices, NONE, "the vertex half-edges VH")?;
+        for (h, (&x, &g)) in self.v.iter().zip(o).enumerate() {
+            if x == NONE {
+                continue;
+            }
+            let slot = &mut vh[x as usize];
+            if *slot == NONE || g == NONE {
+                *slot = h as u32;
+            }
+        }
+        Ok(vh)
+    }
+
+    /// Is `h` a live canonical half-edge (the one that names its edge by rank)?
+    #[inline]
+    pub(crate) fn is_live_canonical(&self, o: &[u32], h: usize) -> bool {
+        self.v[h] != NONE && crate::che::tables::is_canonical(o, h)
+    }
+
+    /// The edge ids below level 2 for an edited CHE: the ranks of the live canonical
+    /// half-edges.
+    pub(crate) fn live_edge_directory(
+        &self, o: &[u32],
+    ) -> Result<crate::util::rank_directory::RankDirectory> {
+        crate::util::rank_directory::RankDirectory::from_fn(o.len(), |h| {
+            self.is_live_canonical(o, h)
+        })
+    }
+
+    /// The edge id of every half-edge of an edited CHE below level 2 (`NONE` if removed).
+    pub(crate) fn live_edge_ids(&self, o: &[u32]) -> Result<Vec<u32>> {
+        let mut ids = edge_ids(o)?;
+        let mut next_id = 0;
+        for h in 0..o.len() {
+            if self.is_live_canonical(o, h) {
+                ids[h] = next_id;
+                if o[h] != NONE {
+                    ids[o[h] as usize] = next_id;
+                }
+                next_id += 1;
+            } else if self.v[h] == NONE {
+                ids[h] = NONE;
+            }
+        }
+        Ok(ids)
+    }
+
+    /// The curves of an edited CHE at level 3, computed on the first request after an edit.
+    pub(crate) fn edited_curves(&self) -> &Curves {
+        let st = self.edits().expect("an edited CHE");
+        st.curves.get_or_init(|| {
+            let boundary: Vec<u32> = (0..self.v.len() as u32)
+                .filter(|&h| self.v[h as usize] != NONE && self.o[h as usize] == NONE)
+                .collect();
+            let mut curve = vec![NONE; boundary.len()];
+            let mut ch = Vec::new();
+            for (i, &h) in boundary.iter().enumerate() {
+                if curve[i] != NONE {
+                    continue;
+                }
+                let c = ch.len() as u32;
+                ch.push(h);
+                let mut g = h;
+                loop {
+                    let r = boundary.binary_search(&g).expect("a boundary half-edge");
+                    curve[r] = c;
+                    g = self.vh[self.v[next(g) as usize] as usize];
+                    if g == h {
+                        break;
+                    }
+                }
+            }
+            Curves {
+                ch,
+                boundary,
+                curve,
+            }
+        })
+    }
+
+    /// The curve of half-edge `h` of an edited CHE at level 3 (`NONE` when interior).
+    pub(crate) fn edited_curve_of(&self, h: u32) -> u32 {
+        let c = self.edited_curves();
+        match c.boundary.binary_search(&h) {
+            Ok(r) => c.curve[r],
+            Err(_) => NONE,
+        }
+    }
+
+    /// [`Che::build_level`] on an edited CHE: the same tables over the live elements.
+    pub(crate) fn change_edited_level(&mut self, level: u8) -> Result<()> {
+        crate::util::options::check_level(level)?;
+        let o = match self.level {
+            0 if level >= 1 => self.live_opposites()?,
+            _ => std::mem::take(o_mut(self)),
+        };
+        let vh = if level >= 2 && self.level < 2 {
+            self.live_vertex_half_edges(&o)?
+        } else {
+            std::mem::take(vh_mut(self))
+        };
+        let edge_of = if level >= 2 && self.level < 2 {
+            self.live_edge_ids(&o)?
+        } else {
+            std::mem::take(&mut self.st_mut().edge_of)
+        };
+        let eh = if level >= 2 && self.level < 2 {
+            let mut eh = try_vec(self.st().live_edges, NONE, "the edge half-edges EH")?;
+            for h in (0..o.len()).filter(|&h| self.is_live_canonical(&o, h)) {
+                eh[edge_of[h] as usize] = h as u32;
+            }
+            eh
+        } else {
+            std::mem::take(super::arrays::eh_mut(self))
+        };
+        *o_mut(self) = if level >= 1 { o } else { Vec::new() };
+        let keep2 = level >= 2;
+        *vh_mut(self) = if keep2 { vh } else { Vec::new() };
+        *super::arrays::eh_mut(self) = if keep2 { eh } else { Vec::new() };
+        self.st_mut().edge_of = if keep2 { edge_of } else { Vec::new() };
+        self.level = level;
+        self.num_edges = if keep2 {
+            self.eh.len()
+        } else {
+            self.st().live_edges
+        };
+        self.lazy_edge_bits = OnceLock::new();
+        self.st_mut().curves = OnceLock::new();
+        Ok(())
+    }
+}

@@ -1,0 +1,302 @@
+//! The summary and the checks of an edited CHE: the live elements only, as a fresh build of
+//! the live triangles would report them (the build's repairs are history by then).
+
+use crate::NONE;
+use crate::che::Che;
+use crate::che::Summary;
+use crate::che::ids::{next, tri};
+use crate::error::{Error, Result};
+use crate::util::alloc::{or_panic, try_vec};
+use crate::util::dsu::Dsu;
+
+impl Che {
+    /// [`Che::summary`] of an edited CHE.
+    pub(crate) fn edited_summary(&self) -> Summary {
+        let st = self.edits().expect("an edited CHE");
+        let o = self.opposites_or_computed();
+        let n = self.n_vertices;
+        let mut used = or_panic(try_vec(n, false, "the summary's vertex marks"));
+        let mut dsu = or_panic(Dsu::new(n));
+        for c in self.v.chunks_exact(3).filter(|c| c[0] != NONE) {
+            c.iter().for_each(|&x| used[x as usize] = true);
+            dsu.union(c[0], c[1]);
+            dsu.union(c[1], c[2]);
+        }
+        let components = dsu.roots_among(&used);
+        let isolated = (st.live_vertices - used.iter().filter(|&&u| u).count()) as u64;
+        // Unpaired half-edges by vertex pair: one of a pair is on the boundary, two a seam,
+        // more a non-manifold edge.
+        let mut unpaired: Vec<(u32, u32)> = (0..self.v.len())
+            .filter(|&h| self.v[h] != NONE && o[h] == NONE)
+            .map(|h| {
+                let (a, b) = (self.v[h], self.v[next(h as u32) as usize]);
+                (a.min(b), a.max(b))
+            })
+            .collect();
+        unpaired.sort_unstable();
+        let paired = (0..o.len())
+            .filter(|&h| o[h] != NONE && (h as u32) < o[h])
+            .count();
+        let (mut edges, mut boundary_edges, mut non_manifold_edges) = (paired as u64, 0u64, 0u64);
+        let mut on_boundary = or_panic(try_vec(n, false, "the summary's boundary marks"));
+        let mut bdsu = or_panic(Dsu::new(n));
+        for group in unpaired.chunk_by(|x, y| x == y) {
+            edges += 1;
+            match group.len() {
+                1 => {
+                    let (a, b) = group[0];
+                    boundary_edges += 1;
+                    on_boundary[a as usize] = true;
+                    on_boundary[b as usize] = true;
+                    bdsu.union(a, b);
+                }
+                2 => {}
+                _ => non_manifold_edges += 1,
+            }
+        }
+        let boundary_curves = bdsu.roots_among(&on_boundary);
+        let mut seam_roots: Vec<u32> = self
+            .seams
+            .iter()
+            .map(|&h| dsu.find(self.v[h as usize]))
+            .collect();
+        seam_roots.sort_unstable();
+        seam_roots.dedup();
+        let triangles = st.live_triangles as u64;
+        let euler = st.live_vertices as i64 - edges as i64 + triangles as i64;
+        let orientable = seam_roots.is_empty();
+        let manifold = non_manifold_edges == 0;
+        let twice = 2 * components as i64 - (euler - isolated as i64) - boundary_curves as i64;
+        let genus = if orientable && manifold && twice >= 0 && twice % 2 == 0 {
+            twice / 2
+        } else {
+            -1
+        };
+        Summary {
+            vertices: st.live_vertices as u64,
+            edges,
+            triangles,
+            boundary_edges,
+            boundary_curves,
+            components,
+            isolated_vertices: isolated,
+            euler_characteristic: euler,
+            genus,
+            orientable,
+            manifold,
+            non_manifold_edges,
+            non_orientable_components: seam_roots.len() as u64,
+            ..Summary::default()
+        }
+    }
+
+    /// [`Che::validate`] of an edited CHE: the invariants over the live elements, plus the
+    /// edit state's counts, ids and curves.
+    pub(crate) fn validate_edited(&self) -> Result<()> {
+        let broken = |what: String| Err(Error::invalid(format!("invalid CHE: {what}")));
+        let st = self.edits().expect("an edited CHE");
+        let nt = self.num_triangles();
+        let mut live_t = 0;
+        for (t, c) in self.v.chunks_exact(3).enumerate() {
+            match c.iter().filter(|&&x| x == NONE).count() {
+                3 => continue,
+                0 => live_t += 1,
+                _ => return broken(format!("triangle {t} is partly removed ({c:?})")),
+            }
+            if let Some(&x) = c.iter().find(|&&x| x as usize >= self.n_vertices) {
+                return broken(format!(
+                    "triangle {t} names vertex {x} (of {})",
+                    self.n_vertices
+                ));
+            }
+            if let Some(&x) = c.iter().find(|&&x| st.removed_vertex[x as usize]) {
+                return broken(format!("triangle {t} names removed vertex {x}"));
+            }
+            if c[0] == c[1] || c[1] == c[2] || c[0] == c[2] {
+                return broken(format!("triangle {t} is degenerate ({c:?})"));
+            }
+        }
+        let live_v = st.removed_vertex.iter().filter(|&&r| !r).count();
+        if live_t != st.live_triangles || live_v != st.live_vertices || nt * 3 != self.v.len() {
+            return broken(format!(
+                "{live_t} live triangles and {live_v} live vertices, {} and {} counted",
+                st.live_triangles, st.live_vertices
+            ));
+        }
+        if st.removed_vertex.len() != self.n_vertices {
+            return broken("the removed-vertex flags do not cover the vertices".into());
+        }
+        if self.level >= 1 {
+            self.validate_edited_o()?;
+        } else {
+            let o = self.live_opposites()?;
+            let edges = (0..o.len())
+                .filter(|&h| self.is_live_canonical(&o, h))
+                .count();
+            if edges != st.live_edges || edges != self.num_edges {
+                return broken(format!("{edges} edges, {} counted", st.live_edges));
+            }
+        }
+        if self.level >= 2 {
+            self.validate_edited_vh()?;
+            self.validate_edited_edges()?;
+        }
+        if self.level >= 3 {
+            self.validate_edited_curves()?;
+        }
+        Ok(())
+    }
+
+    fn validate_edited_o(&self) -> Result<()> {
+        let (v, o) = (&self.v, &self.o);
+        let broken = |what: String| Err(Error::invalid(format!("invalid CHE: {what}")));
+        if o.len() != v.len() {
+            return broken(format!(
+                "O has {} entries for {} half-edges",
+                o.len(),
+                v.len()
+            ));
+        }
+        for (h, &g) in o.iter().enumerate() {
+            let h32 = h as u32;
+            if v[h] == NONE {
+                if g != NONE {
+                    return broken(format!("removed half-edge {h} has O = {g}"));
+                }
+                continue;
+            }
+            if g == NONE {
+                continue;
+            }
+            if g as usize >= o.len() || g == h32 || o[g as usize] != h32 || v[g as usize] == NONE {
+                return broken(format!("O[{h}] = {g}: not an involution"));
+            }
+            if v[g as usize] != v[next(h32) as usize] || v[next(g) as usize] != v[h] {
+                return broken(format!(
+                    "O[{h}] = {g}: not the same vertex pair run the other way"
+                ));
+            }
+        }
+        for &h in self.non_manifold.iter().chain(&self.seams) {
+            if h as usize >= o.len() || o[h as usize] != NONE || v[h as usize] == NONE {
+                return broken(format!("flagged half-edge {h} is paired or removed"));
+            }
+        }
+        let edges = (0..o.len())
+            .filter(|&h| self.is_live_canonical(o, h))
+            .count();
+        if edges != self.st().live_edges {
+            return broken(format!(
+                "{edges} edges in O, {} counted",
+                self.st().live_edges
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_edited_vh(&self) -> Result<()> {
+        let (v, o, vh) = (&self.v, &self.o, &self.vh);
+        let broken = |what: String| Err(Error::invalid(format!("invalid CHE: {what}")));
+        if vh.len() != self.n_vertices {
+            return broken(format!(
+                "VH has {} entries for {} vertices",
+                vh.len(),
+                self.n_vertices
+            ));
+        }
+        let mut degree = try_vec(self.n_vertices, 0u32, "the vertex degrees")?;
+        let mut on_boundary = try_vec(self.n_vertices, false, "the boundary vertices")?;
+        for (h, &x) in v.iter().enumerate().filter(|&(_, &x)| x != NONE) {
+            degree[x as usize] += 1;
+            on_boundary[x as usize] |= o[h] == NONE;
+        }
+        for (x, &h) in vh.iter().enumerate() {
+            if h == NONE {
+                if degree[x] != 0 {
+                    return broken(format!("VH[{x}] is NONE but vertex {x} has half-edges"));
+                }
+                continue;
+            }
+            if h as usize >= v.len() || v[h as usize] as usize != x {
+                return broken(format!("VH[{x}] = {h} does not start at vertex {x}"));
+            }
+            if on_boundary[x] && o[h as usize] != NONE {
+                return broken(format!("VH[{x}] = {h} is not the boundary half-edge"));
+            }
+            let steps = self.outgoing(x as u32).len() as u32;
+            if steps != degree[x] {
+                return broken(format!(
+                    "the rotation of vertex {x} meets {steps} of its {} half-edges",
+                    degree[x]
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_edited_edges(&self) -> Result<()> {
+        let broken = |what: String| Err(Error::invalid(format!("invalid CHE: {what}")));
+        let o = &self.o;
+        if self.eh.len() != self.num_edges {
+            return broken(format!(
+                "EH has {} entries, {} edge ids",
+                self.eh.len(),
+                self.num_edges
+            ));
+        }
+        let mut live = 0;
+        for (e, &h) in self.eh.iter().enumerate() {
+            if h == NONE {
+                continue;
+            }
+            live += 1;
+            if h as usize >= o.len()
+                || !self.is_live_canonical(o, h as usize)
+                || self.edge_of(h) != e as u32
+            {
+                return broken(format!(
+                    "EH[{e}] = {h} is not the canonical half-edge of edge {e}"
+                ));
+            }
+        }
+        if live != self.st().live_edges {
+            return broken(format!(
+                "{live} edges in EH, {} counted",
+                self.st().live_edges
+            ));
+        }
+        for h in (0..o.len() as u32).filter(|&h| self.v[h as usize] != NONE) {
+            let e = self.edge_of(h);
+            let c = if o[h as usize] != NONE && o[h as usize] < h {
+                o[h as usize]
+            } else {
+                h
+            };
+            if e as usize >= self.eh.len() || self.eh[e as usize] != c {
+                return broken(format!(
+                    "half-edge {h} (triangle {}) names edge {e} wrongly",
+                    tri(h)
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_edited_curves(&self) -> Result<()> {
+        let curves = self.edited_curves();
+        let boundary = (0..self.v.len())
+            .filter(|&h| self.v[h] != NONE && self.o[h] == NONE)
+            .count();
+        let walked: usize = curves
+            .ch
+            .iter()
+            .map(|&s| self.boundary_curve(s).count())
+            .sum();
+        if walked != boundary || curves.boundary.len() != boundary {
+            return Err(Error::invalid(format!(
+                "invalid CHE: the curves walk {walked} of {boundary} boundary half-edges"
+            )));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,231 @@
+//! The steps every operation is made of, on the working tables (`V`, `O`, `VH` at every
+//! level during an edit; edge ids from level 2): pairing, naming edges, finding and
+//! settling the star of a vertex, making room before the first write.
+
+use super::arrays::{
+    eh_mut, non_manifold_mut, o_mut, positions_mut, seams_mut, triangle_origin_mut, v_mut,
+    vertex_origin_mut, vh_mut,
+};
+use crate::NONE;
+use crate::che::Che;
+use crate::che::ids::{next, prev};
+use crate::error::Result;
+use crate::util::alloc::try_reserve;
+use glam::DVec3;
+
+impl Che {
+    /// Pairs `h` with `g` (`g == NONE`: `h` becomes a boundary half-edge).
+    pub(super) fn link(&mut self, h: u32, g: u32) {
+        o_mut(self)[h as usize] = g;
+        if g != NONE {
+            o_mut(self)[g as usize] = h;
+        }
+    }
+
+    /// The edge id of live `h` from level 2. Below, ids are ranks and an edit names no
+    /// edge: any id but `NONE` (which [`Che::name_edge`] reads as a new edge).
+    pub(super) fn edge_id(&self, h: u32) -> u32 {
+        if self.level >= 2 {
+            self.st().edge_of[h as usize]
+        } else {
+            0
+        }
+    }
+
+    /// Names `h` and its opposite edge `e` (`NONE`: a new edge), keeping `EH` canonical.
+    pub(super) fn name_edge(&mut self, h: u32, e: u32) {
+        if e == NONE {
+            self.st_mut().live_edges += 1;
+        }
+        if self.level < 2 {
+            return;
+        }
+        let g = self.o[h as usize];
+        let e = if e == NONE {
+            eh_mut(self).push(NONE);
+            (self.eh.len() - 1) as u32
+        } else {
+            e
+        };
+        let canonical = if g != NONE && g < h { g } else { h };
+        let st = self.st_mut();
+        st.edge_of[h as usize] = e;
+        if g != NONE {
+            st.edge_of[g as usize] = e;
+        }
+        eh_mut(self)[e as usize] = canonical;
+    }
+
+    /// Edge `e` is gone.
+    pub(super) fn drop_edge(&mut self, e: u32) {
+        self.st_mut().live_edges -= 1;
+        if self.level >= 2 {
+            eh_mut(self)[e as usize] = NONE;
+        }
+    }
+
+    /// The outgoing half-edges of `x` in rotation order (from `VH`).
+    pub(super) fn outgoing(&self, x: u32) -> Vec<u32> {
+        let s = self.vh[x as usize];
+        let mut out = Vec::new();
+        if s == NONE {
+            return out;
+        }
+        let mut h = s;
+        loop {
+            out.push(h);
+            let g = self.o[prev(h) as usize];
+            if g == NONE || g == s {
+                return out;
+            }
+            h = g;
+        }
+    }
+
+    /// Sets `VH[x]` from `out`, a live outgoing half-edge of `x` (`NONE`: isolated): the
+    /// boundary one reached clockwise, else `out`.
+    pub(super) fn fix_vh(&mut self, x: u32, out: u32) {
+        let mut h = out;
+        if h != NONE {
+            loop {
+                let g = self.o[h as usize];
+                if g == NONE || next(g) == out {
+                    break;
+                }
+                h = next(g);
+            }
+        }
+        vh_mut(self)[x as usize] = h;
+    }
+
+    /// After triangles around `x` were removed: `outs` held its outgoing half-edges before.
+    /// Each fan but the first moves to a new copy of `x` (the build splits a vertex whose
+    /// triangles form several fans the same way), so every vertex keeps one rotation.
+    pub(super) fn settle(&mut self, x: u32, outs: &[u32]) {
+        let live: Vec<u32> = outs
+            .iter()
+            .copied()
+            .filter(|&h| self.v[h as usize] == x)
+            .collect();
+        let starts: Vec<u32> = live
+            .iter()
+            .copied()
+            .filter(|&h| self.o[h as usize] == NONE)
+            .collect();
+        if starts.len() <= 1 {
+            self.fix_vh(x, live.first().copied().unwrap_or(NONE));
+            return;
+        }
+        vh_mut(self)[x as usize] = starts[0];
+        for &s in &starts[1..] {
+            let copy = self.push_vertex(self.position_of(x), self.vertex_origin.get(x));
+            let mut h = s;
+            loop {
+                v_mut(self)[h as usize] = copy;
+                let g = self.o[prev(h) as usize];
+                if g == NONE {
+                    break;
+                }
+                h = g;
+            }
+            vh_mut(self)[copy as usize] = s;
+        }
+    }
+
+    pub(super) fn position_of(&self, x: u32) -> Option<DVec3> {
+        self.positions.get(x as usize).copied()
+    }
+
+    /// Room for `t` triangles, `n` vertices and `e` edges more, so that the writes after
+    /// it cannot fail half-way.
+    pub(super) fn make_room(&mut self, t: usize, n: usize, e: usize) -> Result<()> {
+        let h = 3 * t;
+        let (nv, nt) = (self.n_vertices, self.num_triangles());
+        try_reserve(v_mut(self), h, "the half-edge vertices V")?;
+        try_reserve(o_mut(self), h, "the opposites O")?;
+        try_reserve(vh_mut(self), n, "the vertex half-edges VH")?;
+        let st = self.st_mut();
+        try_reserve(&mut st.removed_vertex, n, "the removed-vertex flags")?;
+        if self.level >= 2 {
+            try_reserve(&mut self.st_mut().edge_of, h, "the edge ids")?;
+            try_reserve(eh_mut(self), e, "the edge half-edges EH")?;
+        }
+        if !self.positions.is_empty() {
+            try_reserve(positions_mut(self), n, "the positions")?;
+        }
+        if n > 0 {
+            try_reserve(
+                vertex_origin_mut(self).written_out(nv)?,
+                n,
+                "the vertex origins",
+            )?;
+        }
+        if t > 0 {
+            let map = triangle_origin_mut(self).written_out(nt)?;
+            try_reserve(map, t, "the triangle origins")?;
+        }
+        Ok(())
+    }
+
+    /// A new vertex (room made first); its position is `p` when the mesh has positions.
+    pub(super) fn push_vertex(&mut self, p: Option<DVec3>, origin: u32) -> u32 {
+        let x = self.n_vertices as u32;
+        self.n_vertices += 1;
+        vh_mut(self).push(NONE);
+        let st = self.st_mut();
+        st.removed_vertex.push(false);
+        st.live_vertices += 1;
+        if !self.positions.is_empty() {
+            positions_mut(self).push(p.unwrap_or_default());
+        }
+        let n = self.n_vertices - 1;
+        vertex_origin_mut(self)
+            .written_out(n)
+            .expect("room made")
+            .push(origin);
+        x
+    }
+
+    /// A new triangle `(a, b, c)`, unpaired, with the input origin `origin` (room made first).
+    pub(super) fn push_triangle(&mut self, corners: [u32; 3], origin: u32) -> u32 {
+        let t = self.num_triangles() as u32;
+        v_mut(self).extend_from_slice(&corners);
+        o_mut(self).extend_from_slice(&[NONE; 3]);
+        if self.level >= 2 {
+            self.st_mut().edge_of.extend_from_slice(&[NONE; 3]);
+        }
+        let n = t as usize;
+        let map = triangle_origin_mut(self).written_out(n).expect("room made");
+        map.push(origin);
+        self.st_mut().live_triangles += 1;
+        t
+    }
+
+    /// Half-edge `from`'s flags (non-manifold, seam) now belong to `to`.
+    pub(super) fn move_flags(&mut self, from: u32, to: u32) {
+        move_in(non_manifold_mut(self), from, to);
+        move_in(seams_mut(self), from, to);
+    }
+
+    /// Is `h` flagged non-manifold or seam?
+    pub(super) fn is_flagged(&self, h: u32) -> bool {
+        self.non_manifold.binary_search(&h).is_ok() || self.seams.binary_search(&h).is_ok()
+    }
+
+    /// Half-edge `h` is gone: unflagged.
+    pub(super) fn unflag(&mut self, h: u32) {
+        move_in(non_manifold_mut(self), h, NONE);
+        move_in(seams_mut(self), h, NONE);
+    }
+}
+
+/// Replaces `from` by `to` in the sorted `list` (`to == NONE`: removes it).
+fn move_in(list: &mut Vec<u32>, from: u32, to: u32) {
+    if let Ok(i) = list.binary_search(&from) {
+        list.remove(i);
+        if to != NONE {
+            let j = list.binary_search(&to).unwrap_or_else(|j| j);
+            list.insert(j, to);
+        }
+    }
+}

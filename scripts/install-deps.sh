@@ -2,7 +2,7 @@
 # Installs the Debian packages the tests need (as root, or through sudo), only when missing.
 set -euo pipefail
 packages=(cmake g++ make pkg-config valgrind libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev
-  libboost-dev tetgen)
+  libboost-dev tetgen libeigen3-dev libmeshoptimizer-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

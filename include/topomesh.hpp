@@ -145,6 +145,8 @@ struct VolumeReport;
 // Vec3 (positions), IdRange<I> (vertices(), edges(), ...), ElementData<I, T> (VertexData<T>,
 // ...): the element ranges and the user's per-element data.
 #include "detail/elements.hpp"
+// HalfEdges, WingedEdges, CornerTable, CsrMatrix, SurfaceBetti, HalfFaces, ...: the exports.
+#include "detail/export_types.hpp"
 
 namespace topomesh {
 
@@ -276,6 +278,19 @@ public:
     Csr vertex_edges_csr() const;
     Csr vertex_triangles_csr() const;
     Csr triangle_triangles_csr() const;
+
+    // Exports: the classic representations (layouts in topomesh.h, che_mesh_export_*).
+    HalfEdges halfedge(HalfEdgeOptions options = {}) const;
+    WingedEdges winged() const;
+    CornerTable corner() const;
+    /// 2 per edge, in the direction of its canonical half-edge.
+    std::vector<std::uint32_t> edge_list() const;
+    /// 3 per triangle: the edge of each of its half-edges.
+    std::vector<std::uint32_t> triangle_edges() const;
+    CsrMatrix matrix(che_matrix_kind kind) const;
+    SurfaceBetti betti() const;
+    /// Triangle strips covering every triangle once in its orientation.
+    std::vector<std::uint32_t> strips(StripList which = StripList::restarts) const;
 
     // Summary, build report, memory, validation.
     Summary summary() const;
@@ -495,6 +510,13 @@ public:
     Csr edge_tetrahedra_csr() const;
     Csr tetrahedron_tetrahedra_csr() const;
 
+    // Exports (layouts in topomesh.h, chf_mesh_export_*).
+    HalfFaces halfface() const;
+    /// 4 per tetrahedron: the tetrahedron across each face, `none` on the boundary.
+    std::vector<std::uint32_t> dual_graph() const;
+    CsrMatrix matrix(chf_matrix_kind kind) const;
+    VolumeBetti betti() const;
+
     // Summary, build report, memory, validation.
     Summary summary() const;
     /// The C struct of summary().
@@ -653,5 +675,6 @@ template <class T, std::size_t N> using SmallIds [[deprecated("use Ids<T, N>")]]
 #include "detail/edit.hpp"
 #include "detail/volume.hpp"
 #include "detail/element_members.hpp"
+#include "detail/export.hpp"
 
 #endif // TOPOMESH_HPP

@@ -1,7 +1,8 @@
 # Configures, builds and runs the consumer project (CONSUMER_DIR) against the installed
 # package (topomesh_DIR) in BUILD_DIR, asking for COMPONENTS (a ;-list, passed with | in
 # place of ;). With EXPECT_ERROR set, the configure step must fail and its output contain
-# EXPECT_ERROR (the name of the missing component).
+# EXPECT_ERROR (the name of the missing component). EXES (a |-list) names the programs to
+# run, by default those of c-tests/cmake/consumer.
 string(REPLACE "|" ";" components "${COMPONENTS}")
 file(REMOVE_RECURSE "${BUILD_DIR}")
 execute_process(
@@ -33,7 +34,12 @@ unset(ENV{LD_LIBRARY_PATH})
 set(want_consumer_shared "consumer: 4 vertices 5 edges 1 curves, sum of x\\+y 4")
 set(want_consumer_static "${want_consumer_shared}")
 set(want_consumer_c "consumer_c: [0-9.]+, 5 edges")
-foreach(exe consumer_shared consumer_static consumer_c)
+set(want_consumer_eigen "consumer_eigen: V 4x3, F 2x3, laplacian 4x4 with 14 entries")
+if(NOT DEFINED EXES)
+  set(EXES "consumer_shared|consumer_static|consumer_c")
+endif()
+string(REPLACE "|" ";" EXES "${EXES}")
+foreach(exe IN LISTS EXES)
   execute_process(COMMAND "${BUILD_DIR}/${exe}" RESULT_VARIABLE rc OUTPUT_VARIABLE out
                   ERROR_VARIABLE err)
   if(NOT rc EQUAL 0 OR NOT out MATCHES "${want_${exe}}")
@@ -42,7 +48,8 @@ foreach(exe consumer_shared consumer_static consumer_c)
   message(STATUS "${out}")
 endforeach()
 find_program(READELF readelf)
-if(READELF)
+list(FIND EXES consumer_static static_index)
+if(READELF AND static_index GREATER -1)
   execute_process(COMMAND "${READELF}" -d "${BUILD_DIR}/consumer_static" OUTPUT_VARIABLE out)
   if(out MATCHES "libtopomesh")
     message(FATAL_ERROR "consumer_static links libtopomesh dynamically:\n${out}")

@@ -5,18 +5,20 @@ use crate::chf::Chf;
 use crate::chf::ids::{half_edge, tet};
 use crate::chf::query::view::Need;
 use crate::error::Result;
-use crate::util::betti::{Grounded, column_rank};
+use crate::util::alloc::try_collect;
+use crate::util::betti::{forest_lines, peeled_rank};
 
 impl Chf {
     /// `[b0, b1, b2, b3]` over Z/2 of the structure's complex (its vertices, an isolated
     /// one a component of its own, edges, faces and tetrahedra; what the build split stays
     /// apart). `b0 - b1 + b2 - b3` is its Euler characteristic.
     ///
-    /// `rank d1` and `rank d3` come from union-finds (an edge has two ends, a face one or
-    /// two tetrahedra); `rank d2` from the column reduction of persistent homology over the
-    /// faces' edges, which is not linear: reduced columns grow with the mesh, so on large
-    /// meshes this is much slower than the other exports (which is why `topomesh info`
-    /// prints Betti numbers for surfaces only).
+    /// `rank d1` and `rank d3` come from spanning forests (an edge has two ends, a face one
+    /// or two tetrahedra). `rank d2` is the rank of `d2` without the forests' lines: the
+    /// faces of the forest of tetrahedra are sums of the other faces' columns and the edges
+    /// of the forest of vertices carry no boundary (see `forest_lines`); what is left is
+    /// peeled of its rows and columns with one entry, and the column reduction of
+    /// persistent homology runs on the core only.
     pub fn betti_numbers(&self) -> Result<[u64; 4]> {
         let view = self.view(Need {
             faces: true,
@@ -29,22 +31,30 @@ impl Chf {
             self.num_tetrahedra(),
         );
         let ends = super::matrices::edge_ends(&view, ne);
-        let r1 = Grounded::new(nv, ends.iter().map(|&[a, b]| (a, b)))?.rank();
-        let tets = (0..view.o.len() as u32)
-            .filter(|&hf| view.canonical_half_face(hf) == hf)
-            .map(|hf| {
+        let edge_forest = forest_lines(nv, ends.iter().map(|&[a, b]| (a, b)))?;
+        let face_forest = forest_lines(
+            nt,
+            (0..nf as u32).map(|f| {
+                let hf = view.face_half_face(f);
                 let g = view.opposite(hf);
                 (tet(hf), if g == NONE { NONE } else { tet(g) })
-            });
-        let r3 = Grounded::new(nt, tets)?.rank();
-        let columns = (0..nf as u32).map(|f| {
-            let hf = view.face_half_face(f);
-            let mut c: Vec<u32> = (0..3).map(|j| view.edge_of(half_edge(hf, j))).collect();
-            c.sort_unstable();
-            c
-        });
-        let r2 = column_rank(ne, columns);
-        let (r1, r2, r3) = (r1 as u64, r2 as u64, r3 as u64);
+            }),
+        )?;
+        let columns = try_collect(
+            (0..nf as u32)
+                .filter(|&f| !face_forest[f as usize])
+                .map(|f| {
+                    let hf = view.face_half_face(f);
+                    [0, 1, 2].map(|j| {
+                        let e = view.edge_of(half_edge(hf, j));
+                        if edge_forest[e as usize] { NONE } else { e }
+                    })
+                }),
+            "the columns of d2",
+        )?;
+        let r2 = peeled_rank(ne, &columns)? as u64;
+        let count = |forest: &[bool]| forest.iter().filter(|&&x| x).count() as u64;
+        let (r1, r3) = (count(&edge_forest), count(&face_forest));
         Ok([
             nv as u64 - r1,
             ne as u64 - r1 - r2,

@@ -1759,6 +1759,26 @@ size_t chf_mesh_num_edges(const struct chf_mesh *m);
 size_t chf_mesh_num_half_faces(const struct chf_mesh *m);
 
 /**
+ * Live tetrahedra (the `chf_mesh_num_*` counts are id bounds, removed ids included).
+ */
+size_t chf_mesh_num_live_tetrahedra(const struct chf_mesh *m);
+
+/**
+ * Live vertices.
+ */
+size_t chf_mesh_num_live_vertices(const struct chf_mesh *m);
+
+/**
+ * Live faces.
+ */
+size_t chf_mesh_num_live_faces(const struct chf_mesh *m);
+
+/**
+ * Live edges.
+ */
+size_t chf_mesh_num_live_edges(const struct chf_mesh *m);
+
+/**
  * Boundary faces: faces with exactly one tetrahedron (as `boundary_faces` in
  * `chf_summary`). The half-faces of faces shared by 3+ tetrahedra
  * (`chf_mesh_num_non_manifold_half_faces`) and of orientation seams
@@ -2324,6 +2344,142 @@ topomesh_status chf_mesh_save(const struct chf_mesh *m, const char *path);
 topomesh_status chf_mesh_open(const char *path, uint32_t flags, struct chf_mesh **out);
 
 /* ---- CHF: zero-copy views of the structure's arrays ---- */
+
+/**
+ * Adds an isolated vertex at `position` (required when the mesh has positions, NULL when
+ * it has none); its id into `*out_v` (may be NULL).
+ */
+topomesh_status chf_mesh_add_vertex(struct chf_mesh *m, const double *position, uint32_t *out_v);
+
+/**
+ * Adds the tetrahedron of the four vertices `vertices[4]` (any order: oriented by the
+ * determinant with positions, else by the faces it pairs with); its id into `*out_t`.
+ */
+topomesh_status chf_mesh_add_tetrahedron(struct chf_mesh *m,
+                                         const uint32_t *vertices,
+                                         uint32_t *out_t);
+
+/**
+ * Would `chf_mesh_add_tetrahedron` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_add_tetrahedron(const struct chf_mesh *m, const uint32_t *vertices);
+
+/**
+ * Removes tetrahedron `t` (refused when that pinches a vertex or an edge).
+ */
+topomesh_status chf_mesh_remove_tetrahedron(struct chf_mesh *m, uint32_t t);
+
+/**
+ * Would `chf_mesh_remove_tetrahedron` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_remove_tetrahedron(const struct chf_mesh *m, uint32_t t);
+
+/**
+ * Removes vertex `v` with every tetrahedron around it.
+ */
+topomesh_status chf_mesh_remove_vertex(struct chf_mesh *m, uint32_t v);
+
+/**
+ * Would `chf_mesh_remove_vertex` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_remove_vertex(const struct chf_mesh *m, uint32_t v);
+
+/**
+ * Splits tetrahedron `t` in four (1-4) at a new vertex (id into `*out_v`), at `position`
+ * or the centroid; refused unless the position is strictly inside.
+ */
+topomesh_status chf_mesh_split_tetrahedron(struct chf_mesh *m,
+                                           uint32_t t,
+                                           const double *position,
+                                           uint32_t *out_v);
+
+/**
+ * Would `chf_mesh_split_tetrahedron` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_split_tetrahedron(const struct chf_mesh *m,
+                                                 uint32_t t,
+                                                 const double *position);
+
+/**
+ * Splits face `f` (2-6, or 1-3 on the boundary) at a new vertex (id into `*out_v`).
+ */
+topomesh_status chf_mesh_split_face(struct chf_mesh *m,
+                                    uint32_t f,
+                                    const double *position,
+                                    uint32_t *out_v);
+
+/**
+ * Would `chf_mesh_split_face` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_split_face(const struct chf_mesh *m,
+                                          uint32_t f,
+                                          const double *position);
+
+/**
+ * Splits edge `e` at a new vertex (id into `*out_v`): each tetrahedron around it in two.
+ */
+topomesh_status chf_mesh_split_edge(struct chf_mesh *m,
+                                    uint32_t e,
+                                    const double *position,
+                                    uint32_t *out_v);
+
+/**
+ * Would `chf_mesh_split_edge` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_split_edge(const struct chf_mesh *m,
+                                          uint32_t e,
+                                          const double *position);
+
+/**
+ * Flips interior face `f` (2-3); the three new tetrahedra into `out_tets[3]` (may be
+ * NULL). Refused on the boundary, when the apexes share an edge already, or (with
+ * positions) when the union is not strictly convex.
+ */
+topomesh_status chf_mesh_flip_23(struct chf_mesh *m, uint32_t f, uint32_t *out_tets);
+
+/**
+ * Would `chf_mesh_flip_23` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_flip_23(const struct chf_mesh *m, uint32_t f);
+
+/**
+ * Flips interior edge `e` with three tetrahedra around it (3-2); the two new tetrahedra
+ * into `out_tets[2]` (may be NULL).
+ */
+topomesh_status chf_mesh_flip_32(struct chf_mesh *m, uint32_t e, uint32_t *out_tets);
+
+/**
+ * Would `chf_mesh_flip_32` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_flip_32(const struct chf_mesh *m, uint32_t e);
+
+/**
+ * Collapses half-edge `he` (`3 * hf + j`): its origin merges into its target (id into
+ * `*out_v`). Refused when the link condition fails or a tetrahedron would invert.
+ */
+topomesh_status chf_mesh_collapse_edge(struct chf_mesh *m, uint64_t he, uint32_t *out_v);
+
+/**
+ * Would `chf_mesh_collapse_edge` succeed? Changes nothing.
+ */
+topomesh_status chf_mesh_check_collapse_edge(const struct chf_mesh *m, uint64_t he);
+
+/**
+ * Compacts the mesh: removed elements go, the others take the ids a fresh build of the
+ * live tetrahedra gives. Each map (NULL: not wanted) receives old id -> new id
+ * (`TOPOMESH_NONE` for removed ones) and needs room for the count before the call
+ * (`chf_mesh_num_vertices`, `_tetrahedra`, `_faces`, `_edges`); too little room gives
+ * `TOPOMESH_STATUS_BUFFER_TOO_SMALL` before anything changes. O(T log T).
+ */
+topomesh_status chf_mesh_garbage_collect(struct chf_mesh *m,
+                                         uint32_t *vertex_map,
+                                         size_t vertex_cap,
+                                         uint32_t *tetrahedron_map,
+                                         size_t tetrahedron_cap,
+                                         uint32_t *face_map,
+                                         size_t face_cap,
+                                         uint32_t *edge_map,
+                                         size_t edge_cap);
 
 /**
  * `V`: vertex `i` of tetrahedron `t` at `V[4t + i]` (`4 * num_tetrahedra` entries); also

@@ -40,6 +40,7 @@
 
 mod build;
 mod edges;
+pub mod edit;
 pub mod export;
 pub mod ids;
 mod query;
@@ -48,6 +49,7 @@ mod star_pass;
 pub use crate::Ids;
 pub use crate::util::options::MAX_UNUSED_VERTICES;
 pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA, check_counts, estimated_build_bytes};
+pub use edit::GarbageMaps;
 pub use export::{HalfFaceArrays, VolumeMatrixKind};
 pub use ids::{HalfEdge, NO_HALF_EDGE};
 pub use query::{Csr, EdgeIds, Memory, STAR_INLINE, Summary, VertexIds};
@@ -120,6 +122,9 @@ pub struct Chf {
     /// Structure vertex pairs carrying several fans (several edge ids), sorted.
     pub(crate) multi_fan: Vec<MultiFan>,
     pub(crate) report: BuildReport,
+    /// Marks and explicit ids, from the first edit on (see `edit/`); `None` on a CHF
+    /// never edited, which keeps its memory and speed.
+    pub(crate) edit: Option<Box<edit::EditState>>,
 }
 
 impl Chf {
@@ -146,6 +151,7 @@ impl Chf {
             seams: Vec::new(),
             multi_fan: Vec::new(),
             report: BuildReport::default(),
+            edit: None,
         }
     }
 
@@ -190,6 +196,9 @@ impl Chf {
     /// change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
         crate::util::options::check_level(level)?;
+        if self.edit.is_some() {
+            return self.build_edited_level(level);
+        }
         if level < self.level {
             if level < 3 {
                 self.boundary = None;
@@ -254,11 +263,14 @@ impl Chf {
     }
     /// `FH`: the canonical half-face of every face, from level 2.
     pub fn face_half_faces(&self) -> Option<&[u32]> {
+        if let Some(s) = &self.edit {
+            return (self.level >= 2).then_some(&s.face_hf[..]);
+        }
         (self.level >= 2).then_some(&self.fh[..])
     }
     /// The tetrahedron holding the canonical slot of every edge, from level 2.
     pub fn edge_slot_tetrahedra(&self) -> Option<&[u32]> {
-        (self.level >= 2).then_some(&self.eh[..])
+        (self.level >= 2 && self.edit.is_none()).then_some(&self.eh[..])
     }
 
     /// The input tetrahedron a structure tetrahedron comes from.
@@ -280,10 +292,12 @@ impl Chf {
     }
 
     pub fn check_face(&self, f: u32) -> Result<()> {
-        check_id(f, self.num_faces, "face", "faces")
+        check_id(f, self.num_faces, "face", "faces")?;
+        edit::removed(self.is_face_removed(f), "face", f)
     }
     pub fn check_tetrahedron(&self, t: u32) -> Result<()> {
-        check_id(t, self.num_tetrahedra(), "tetrahedron", "tetrahedra")
+        check_id(t, self.num_tetrahedra(), "tetrahedron", "tetrahedra")?;
+        edit::removed(self.is_tetrahedron_removed(t), "tetrahedron", t)
     }
     pub fn check_half_face(&self, hf: u32) -> Result<()> {
         check_id(hf, self.v.len(), "half-face", "half-faces")

@@ -30,6 +30,11 @@ impl OriginMap {
         origin(&self.0, x)
     }
 
+    /// Appends the origin of a new element (an edit; the map must be explicit).
+    pub(crate) fn push(&mut self, x: u32, what: &str) -> crate::error::Result<()> {
+        crate::util::alloc::try_push(&mut self.0, x, what)
+    }
+
     /// The map, or `None` when it is the identity.
     pub(crate) fn explicit(&self) -> Option<&[u32]> {
         (!self.0.is_empty()).then_some(&self.0[..])

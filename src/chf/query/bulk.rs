@@ -39,6 +39,24 @@ fn by_counting(n: usize, each: impl Fn(&mut dyn FnMut(u32, u32))) -> Result<Csr>
 }
 
 impl Chf {
+    /// The rows of an edited CHF from the one-element calls (removed vertices get empty
+    /// rows); `None` on a CHF never edited.
+    fn edited_rows<'a, I: Iterator<Item = u32>>(
+        &'a self, row: impl Fn(u32) -> I,
+    ) -> Option<Result<Csr>> {
+        self.edit.as_ref()?;
+        let mut offsets = Vec::new();
+        let mut indices = Vec::new();
+        offsets.push(0u32);
+        for x in 0..self.n_vertices as u32 {
+            if !self.is_vertex_removed(x) {
+                indices.extend(row(x));
+            }
+            offsets.push(indices.len() as u32);
+        }
+        Some(Ok(Csr { offsets, indices }))
+    }
+
     /// `O` at every level: borrowed from level 1, computed below (O(T), the rule level 1
     /// stores).
     ///
@@ -54,6 +72,9 @@ impl Chf {
 
     /// VT for every vertex: row `v` is [`Chf::vertex_tetrahedra`]`(v)`. O(T) at every level.
     pub fn all_vertex_tetrahedra(&self) -> Result<Csr> {
+        if let Some(rows) = self.edited_rows(|x| self.vertex_tetrahedra(x)) {
+            return rows;
+        }
         let v = &self.v;
         by_counting(self.n_vertices, |f| {
             for (hf, &x) in v.iter().enumerate() {
@@ -64,6 +85,9 @@ impl Chf {
 
     /// VF for every vertex: row `v` is [`Chf::vertex_faces`]`(v)`. O(T) at every level.
     pub fn all_vertex_faces(&self) -> Result<Csr> {
+        if let Some(rows) = self.edited_rows(|x| self.vertex_faces(x)) {
+            return rows;
+        }
         let view = self.try_view(Need::FACES)?;
         let mut fh = Vec::new();
         let fh: &[u32] = match self.face_half_faces() {
@@ -85,6 +109,9 @@ impl Chf {
 
     /// VE for every vertex: row `v` is [`Chf::vertex_edges`]`(v)`. O(T) at every level.
     pub fn all_vertex_edges(&self) -> Result<Csr> {
+        if let Some(rows) = self.edited_rows(|x| self.vertex_edges(x)) {
+            return rows;
+        }
         let view = self.try_view(Need::EDGES)?;
         let mut slots = Vec::new();
         view.edges
@@ -104,6 +131,9 @@ impl Chf {
     /// tetrahedron order (sequential memory), then each row sorted and its repeats (a pair
     /// of vertices with several fans) dropped.
     pub fn all_vertex_vertices(&self) -> Result<Csr> {
+        if let Some(rows) = self.edited_rows(|x| self.vertex_vertices(x)) {
+            return rows;
+        }
         let view = self.try_view(Need::EDGES)?;
         let bits = &view.edges;
         let v = &self.v;
@@ -146,7 +176,12 @@ impl Chf {
     /// level 1).
     pub fn for_each_tetrahedron_tetrahedra(&self, mut row: impl FnMut([u32; 4])) {
         let view = self.view(Need::NOTHING);
-        for q in view.o.chunks_exact(4) {
+        for (t, q) in view.o.chunks_exact(4).enumerate() {
+            if self.is_tetrahedron_removed(t as u32) {
+                // A removed tetrahedron keeps its row, empty, so rows stay ids.
+                row([NONE; 4]);
+                continue;
+            }
             row([0, 1, 2, 3].map(|i| if q[i] == NONE { NONE } else { q[i] >> 2 }));
         }
     }
@@ -169,6 +204,9 @@ impl Chf {
     fn edge_rows(&self, need: Need, faces: bool, mut row: impl FnMut(u32, EdgeIds<'_>)) {
         let view: View<'_> = self.view(need);
         for e in 0..self.num_edges as u32 {
+            if self.is_edge_removed(e) {
+                continue;
+            }
             row(e, EdgeIds::on(view.reborrow(), e, faces));
         }
     }

@@ -14,7 +14,7 @@ impl Chf {
     /// level 0.
     #[inline]
     pub fn opposite(&self, hf: u32) -> u32 {
-        if self.level >= 1 {
+        if self.level >= 1 || self.edit.is_some() {
             return self.o[hf as usize];
         }
         self.opposite_by_scan(hf)
@@ -49,7 +49,7 @@ impl Chf {
     /// The radial of half-edge `he`: the same edge on the twin half-face, or
     /// [`crate::chf::NO_HALF_EDGE`] on the boundary. O(1) from level 1.
     pub fn radial(&self, he: HalfEdge) -> HalfEdge {
-        if self.level >= 1 {
+        if self.level >= 1 || self.edit.is_some() {
             ids::radial(&self.v, &self.o, he)
         } else {
             ids::radial(&self.v, &self.view(Need::NOTHING).o, he)
@@ -76,7 +76,7 @@ impl Chf {
     /// A half-face holding `v`, a boundary one when `v` is on the boundary; `NONE` for an
     /// isolated vertex. O(1) at level 2, a scan below.
     pub fn vertex_half_face(&self, v: u32) -> u32 {
-        if self.level >= 2 {
+        if self.level >= 2 || self.edit.is_some() {
             self.vh[v as usize]
         } else {
             self.view(Need::NOTHING).start_half_face(v)

@@ -326,23 +326,23 @@ fn collect(view: &View, x: u32, kind: Kind, into: &mut Ids) {
             }
         }
         Kind::Faces => {
-            while let Some((t, i)) = star.next(view, |t| view.faces.word(4 * t as usize)) {
+            while let Some((t, i)) = star.next(view, |t| view.ahead_faces(t)) {
                 for k in 1..4 {
                     // Each face once: from its canonical half-face.
                     let hf = first(t) + ((i + k) & 3);
-                    if view.canonical_half_face(hf) == hf {
-                        out.add(view.faces.rank(hf as usize) as u32);
+                    if let Some(f) = view.face_if_canonical(hf) {
+                        out.add(f);
                     }
                 }
             }
         }
         Kind::Edges => {
-            while let Some((t, i)) = star.next(view, |t| view.edges.word(6 * t as usize)) {
+            while let Some((t, i)) = star.next(view, |t| view.ahead_edges(t)) {
                 for k in 1..4 {
                     // Each edge once: from its canonical slot.
                     let s = 6 * t as usize + edge_index(i, (i + k) & 3) as usize;
-                    if view.edges.get(s) {
-                        out.add(view.edges.rank(s) as u32);
+                    if let Some(e) = view.edge_if_canonical(s) {
+                        out.add(e);
                     }
                 }
             }

@@ -44,6 +44,10 @@ pub struct Summary {
 impl Chf {
     /// The summary; O(T log T) at every level (it sorts the boundary edges).
     pub fn summary(&self) -> Summary {
+        if self.edit.is_some() {
+            // The live tetrahedra as a build sees them (O(T log T), like the rest).
+            return or_panic(self.compacted()).0.summary();
+        }
         let r = &self.report;
         let n = self.n_input_vertices;
         let components = element_components::<4>(&self.v, n, |x| self.vertex_origin(x));

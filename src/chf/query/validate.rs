@@ -60,6 +60,9 @@ impl Chf {
     ///
     /// O(T) time and memory.
     pub fn validate(&self) -> Result<()> {
+        if self.edit.is_some() {
+            return self.validate_edited();
+        }
         self.validate_tetrahedra()?;
         self.validate_maps()?;
         // The pairs and the edge slots by the rule, from `V` alone.

@@ -48,6 +48,8 @@ pub(crate) struct View<'a> {
     fh: Option<&'a [u32]>,
     eh: Option<&'a [u32]>,
     pub multi_fan: &'a [MultiFan],
+    /// The explicit ids of an edited CHF, which replace the ranks.
+    pub edit: Option<&'a crate::chf::edit::EditState>,
 }
 
 impl Chf {
@@ -58,6 +60,19 @@ impl Chf {
 
     /// The tables `need` asks for, borrowed or computed; an error when memory runs out.
     pub(crate) fn try_view(&self, need: Need) -> Result<View<'_>> {
+        if let Some(edit) = &self.edit {
+            return Ok(View {
+                v: &self.v,
+                o: Cow::Borrowed(&self.o),
+                faces: Cow::Owned(RankBits::default()),
+                edges: Cow::Owned(RankBits::default()),
+                vh: Some(&self.vh),
+                fh: None,
+                eh: None,
+                multi_fan: &self.multi_fan,
+                edit: Some(edit),
+            });
+        }
         let o: Cow<'_, [u32]> = if self.level >= 1 {
             Cow::Borrowed(&self.o)
         } else {
@@ -98,6 +113,7 @@ impl Chf {
             fh: stored.then_some(&self.fh[..]),
             eh: stored.then_some(&self.eh[..]),
             multi_fan: &self.multi_fan,
+            edit: None,
         })
     }
 
@@ -171,6 +187,40 @@ impl View<'_> {
         self.o[hf as usize]
     }
 
+    /// What a star walk reads ahead for the face ids of `t` (see `star.rs`).
+    #[inline]
+    pub fn ahead_faces(&self, t: u32) -> u32 {
+        match self.edit {
+            Some(e) => e.hf_face[4 * t as usize],
+            None => self.faces.word(4 * t as usize),
+        }
+    }
+
+    /// What a star walk reads ahead for the edge ids of `t`.
+    #[inline]
+    pub fn ahead_edges(&self, t: u32) -> u32 {
+        match self.edit {
+            Some(e) => e.slot_edge[6 * t as usize],
+            None => self.edges.word(6 * t as usize),
+        }
+    }
+
+    /// The face id of `hf` if `hf` names its face (is canonical), once per face.
+    #[inline]
+    pub fn face_if_canonical(&self, hf: u32) -> Option<u32> {
+        (self.canonical_half_face(hf) == hf).then(|| self.face_of(hf))
+    }
+
+    /// The edge id of slot `s` if it names its edge; every slot of an edited CHF (the
+    /// callers keep each id once).
+    #[inline]
+    pub fn edge_if_canonical(&self, s: usize) -> Option<u32> {
+        match self.edit {
+            Some(e) => Some(e.slot_edge[s]),
+            None => self.edges.get(s).then(|| self.edges.rank(s) as u32),
+        }
+    }
+
     /// The same view, borrowing what this one computed (for many queries on one view).
     pub fn reborrow(&self) -> View<'_> {
         View {
@@ -182,6 +232,7 @@ impl View<'_> {
             fh: self.fh,
             eh: self.eh,
             multi_fan: self.multi_fan,
+            edit: self.edit,
         }
     }
 
@@ -194,12 +245,18 @@ impl View<'_> {
 
     #[inline]
     pub fn face_of(&self, hf: u32) -> u32 {
+        if let Some(s) = self.edit {
+            return s.hf_face[hf as usize];
+        }
         self.faces.rank(self.canonical_half_face(hf) as usize) as u32
     }
 
     /// The canonical half-face of face `f`.
     #[inline]
     pub fn face_half_face(&self, f: u32) -> u32 {
+        if let Some(s) = self.edit {
+            return s.face_hf[f as usize];
+        }
         match self.fh {
             Some(fh) => fh[f as usize],
             None => select(&self.faces, self.v.len(), f as usize) as u32,
@@ -214,6 +271,9 @@ impl View<'_> {
 
     #[inline]
     pub fn edge_of(&self, he: HalfEdge) -> u32 {
+        if let Some(s) = self.edit {
+            return s.slot_edge[crate::chf::ids::slot_of(he) as usize];
+        }
         self.edges.rank(self.edge_slot_of(he) as usize) as u32
     }
 
@@ -239,6 +299,9 @@ impl View<'_> {
     /// The canonical half-edge of edge `e`: where its rotation starts.
     #[inline]
     pub fn edge_half_edge(&self, e: u32) -> HalfEdge {
+        if let Some(s) = self.edit {
+            return s.edge_he[e as usize];
+        }
         edges::slot_canonical_half_edge(&self.o, self.edge_slot(e))
     }
 

@@ -3,6 +3,7 @@
 
 mod build;
 mod csr;
+mod edit;
 mod export;
 mod half_faces;
 mod info;
@@ -16,8 +17,8 @@ mod warnings;
 mod write;
 
 pub use {
-    build::*, csr::*, export::*, half_faces::*, info::*, levelfile::*, relations::*, surface::*,
-    views::*, warnings::*, write::*,
+    build::*, csr::*, edit::*, export::*, half_faces::*, info::*, levelfile::*, relations::*,
+    surface::*, views::*, warnings::*, write::*,
 };
 
 use super::shapes::handle;

@@ -1,0 +1,55 @@
+//! The 2-3 flip: the two tetrahedra of an interior face become three around the edge
+//! joining their apexes.
+
+use super::plan::{Plan, context, replaced};
+use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::{local, tet};
+use crate::error::{Error, Result};
+
+impl Chf {
+    fn plan_flip_23(&self, f: u32) -> Result<Plan> {
+        self.check_face(f)?;
+        let hf = self.face_half_face(f);
+        let g = self.opposite(hf);
+        if g == NONE {
+            return Err(Error::invalid(format!(
+                "refused: face {f} is on the boundary"
+            )));
+        }
+        let q = self.tetrahedron_vertices(tet(hf));
+        let apex = self.tetrahedron_vertices(tet(g))[local(g) as usize];
+        let tri = self.half_face_vertices_of(hf);
+        // With positions, the three new tetrahedra are positive exactly when the union
+        // is convex across the face (the segment between the apexes crosses it).
+        Ok(Plan {
+            remove: vec![tet(hf), tet(g)],
+            add: tri.iter().map(|&c| replaced(q, c, apex)).collect(),
+            ..Plan::default()
+        })
+    }
+
+    /// Flips interior face `f` (2-3); returns the three new tetrahedra. Refused on a
+    /// boundary face, when the edge between the apexes exists already, or, with
+    /// positions, when the union of the two tetrahedra is not strictly convex there (a
+    /// new tetrahedron would be flat or inverted). O(1) stars.
+    pub fn flip_23(&mut self, f: u32) -> Result<[u32; 3]> {
+        let plan = self
+            .plan_flip_23(f)
+            .map_err(context("flip_23", format!("face {f}")))?;
+        let ids = self
+            .run(plan)
+            .map_err(context("flip_23", format!("face {f}")))?;
+        Ok([ids[0], ids[1], ids[2]])
+    }
+
+    /// Would [`Chf::flip_23`] succeed? Changes nothing.
+    pub fn check_flip_23(&self, f: u32) -> Result<()> {
+        let plan = self
+            .plan_flip_23(f)
+            .map_err(context("flip_23", format!("face {f}")))?;
+        self.verify(plan)
+            .map(|_| ())
+            .map_err(context("flip_23", format!("face {f}")))
+    }
+}

@@ -1,0 +1,61 @@
+//! The 3-2 flip: the three tetrahedra around an interior edge become two sharing the
+//! triangle of their ring.
+
+use super::plan::{Plan, context, replaced};
+use crate::chf::Chf;
+use crate::error::{Error, Result};
+
+impl Chf {
+    fn plan_flip_32(&self, e: u32) -> Result<Plan> {
+        self.check_live_edge(e)?;
+        if self.is_boundary_edge(e) {
+            return Err(Error::invalid(format!(
+                "refused: edge {e} is on the boundary"
+            )));
+        }
+        let ring: Vec<u32> = self.edge_tetrahedra(e).collect();
+        if ring.len() != 3 {
+            return Err(Error::invalid(format!(
+                "refused: edge {e} has {} tetrahedra around it, not 3",
+                ring.len()
+            )));
+        }
+        let [a, b] = self.edge_vertices(e);
+        let q = self.tetrahedron_vertices(ring[0]);
+        let far = ring[1..]
+            .iter()
+            .flat_map(|&t| self.tetrahedron_vertices(t))
+            .find(|x| !q.contains(x))
+            .expect("a closed ring of three has a third vertex");
+        // The ring triangle separates `a` from `b` exactly when both new tetrahedra are
+        // positive (with positions), which is what makes the union convex.
+        Ok(Plan {
+            remove: ring,
+            add: vec![replaced(q, b, far), replaced(q, a, far)],
+            ..Plan::default()
+        })
+    }
+
+    /// Flips interior edge `e` with three tetrahedra around it (3-2); returns the two new
+    /// tetrahedra. Refused on a boundary edge, another number of tetrahedra, an existing
+    /// ring triangle, or, with positions, a union not strictly convex. O(1) stars.
+    pub fn flip_32(&mut self, e: u32) -> Result<[u32; 2]> {
+        let plan = self
+            .plan_flip_32(e)
+            .map_err(context("flip_32", format!("edge {e}")))?;
+        let ids = self
+            .run(plan)
+            .map_err(context("flip_32", format!("edge {e}")))?;
+        Ok([ids[0], ids[1]])
+    }
+
+    /// Would [`Chf::flip_32`] succeed? Changes nothing.
+    pub fn check_flip_32(&self, e: u32) -> Result<()> {
+        let plan = self
+            .plan_flip_32(e)
+            .map_err(context("flip_32", format!("edge {e}")))?;
+        self.verify(plan)
+            .map(|_| ())
+            .map_err(context("flip_32", format!("edge {e}")))
+    }
+}

@@ -1,0 +1,46 @@
+//! Editing a built CHF in place, at every level.
+//!
+//! **Ids.** Vertex and tetrahedron ids never move until [`Chf::garbage_collect`]: removed
+//! elements are marked, new ones appended. Face and edge ids are ranks of bit directories
+//! in a built CHF; an edit would shift them, so the first edit materialises explicit ids
+//! in an [`EditState`] (a face id per half-face, an edge id per edge slot, and their
+//! inverses), and from then on the queries read those. A CHF never edited has no
+//! `EditState` (one `None` pointer) and answers exactly as before, at the same cost.
+//!
+//! **Levels.** The first edit also stores `O` and `VH` whatever the level (the operations
+//! walk stars and pair faces through them), so an edited CHF at level 0 or 1 answers from
+//! them as level 2 would; a removed tetrahedron's half-faces are their own twins (so
+//! nothing sees them as boundary or canonical) and no live half-face points to them. The
+//! level-3 boundary surface is rebuilt after each operation that changes it: O(T) for
+//! each such operation at level 3 (editing at level 2, then `build_level(3)`, avoids it).
+//!
+//! **Operations** are transactions ([`plan`]): a set of tetrahedra to remove and a list to
+//! add, checked first (faces held at most twice and running opposite ways, every touched
+//! vertex star and edge fan in one piece, no flagged face touched, no inverted tetrahedron
+//! when positions exist), then applied by local updates of `V`, `O`, `VH` and the ids:
+//! O(the stars of the touched vertices). A refused operation returns an error naming the
+//! element and the reason, and changes nothing.
+//!
+//! **Memory** once edited: 1 byte per tetrahedron and vertex for the marks, 4 per
+//! half-face (face ids) and 6 x 4 per tetrahedron (edge ids), 4 per face and 8 per edge
+//! (inverses), plus `O` and `VH` if the level did not store them.
+
+mod add_tetrahedron;
+mod add_vertex;
+mod arrays;
+mod collapse_edge;
+mod flip_23;
+mod flip_32;
+mod garbage_collect;
+mod geometry;
+mod plan;
+mod remove_tetrahedron;
+mod remove_vertex;
+mod split_edge;
+mod split_face;
+mod split_tetrahedron;
+mod state;
+mod validate;
+
+pub use garbage_collect::GarbageMaps;
+pub(crate) use state::{EditState, removed};

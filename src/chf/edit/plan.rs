@@ -1,0 +1,571 @@
+//! An edit as a transaction: tetrahedra to remove, tetrahedra to add (new ones take the
+//! ids after the last), maybe a vertex to create first and vertices to retire after.
+//! [`Chf::verify`] checks it without writing anything; [`Chf::commit`] applies a verified
+//! plan by local updates.
+
+use super::arrays;
+use super::geometry::orient_of;
+use super::state::{canonical_half_edge, removed};
+use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::{EDGE, FACE, edge_index, first, slot_half_edges, tet};
+use crate::chf::query::star::Star;
+use crate::chf::query::view::{Need, View};
+use crate::error::{Error, Result};
+use glam::DVec3;
+
+/// What an operation does, before it is checked.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Plan {
+    pub remove: Vec<u32>,
+    pub add: Vec<[u32; 4]>,
+    /// A vertex to create first (id `n_vertices`), with its position when the mesh has
+    /// positions.
+    pub new_vertex: Option<Option<DVec3>>,
+    /// Vertices to retire afterwards (they end with no tetrahedron).
+    pub retire: Vec<u32>,
+}
+
+/// A checked plan: the twins of the new half-faces and the stars after the edit.
+pub(crate) struct Verified {
+    plan: Plan,
+    /// Twin of each new half-face (`4k + i` for new tetrahedron `k`), by post-edit id.
+    new_o: Vec<u32>,
+    /// Each touched vertex and its tetrahedra after the edit (post-edit ids).
+    stars: Vec<(u32, Vec<u32>)>,
+}
+
+/// The mesh as the plan would leave it, read without writing.
+struct After<'a> {
+    chf: &'a Chf,
+    plan: &'a Plan,
+    /// The first new tetrahedron id.
+    bound: u32,
+    view: View<'a>,
+}
+
+impl After<'_> {
+    fn verts(&self, t: u32) -> [u32; 4] {
+        if t >= self.bound {
+            self.plan.add[(t - self.bound) as usize]
+        } else {
+            self.chf.tetrahedron_vertices(t)
+        }
+    }
+
+    /// The tetrahedra around `x` after the edit.
+    fn star(&self, x: u32) -> Vec<u32> {
+        let mut out = Vec::new();
+        if (x as usize) < self.chf.n_vertices {
+            let mut star = Star::new(x, self.view.start_half_face(x));
+            while let Some((t, _)) = star.next(&self.view, |_| 0) {
+                if !self.plan.remove.contains(&t) {
+                    out.push(t);
+                }
+            }
+        }
+        for (k, q) in self.plan.add.iter().enumerate() {
+            if q.contains(&x) {
+                out.push(self.bound + k as u32);
+            }
+        }
+        out
+    }
+}
+
+/// The vertex triple of face `i` of `q`, in its outward order.
+fn cycle(q: [u32; 4], i: u32) -> [u32; 3] {
+    FACE[i as usize].map(|l| q[l as usize])
+}
+
+/// Do two cycles on the same triple run the same way?
+fn same_way(a: [u32; 3], b: [u32; 3]) -> bool {
+    let k = b.iter().position(|&x| x == a[0]).expect("same triple");
+    b[(k + 1) % 3] == a[1]
+}
+
+fn sorted3(mut t: [u32; 3]) -> [u32; 3] {
+    t.sort_unstable();
+    t
+}
+
+fn refuse(what: String) -> Error {
+    Error::invalid(format!("refused: {what}"))
+}
+
+impl Chf {
+    /// Checks `plan` against the mesh; nothing is written.
+    pub(crate) fn verify(&self, plan: Plan) -> Result<Verified> {
+        self.verify_inputs(&plan)?;
+        let after = After {
+            chf: self,
+            plan: &plan,
+            bound: self.num_tetrahedra() as u32,
+            view: self.try_view(Need::NOTHING)?,
+        };
+        let new_o = self.pair_new_faces(&after)?;
+        let mut touched: Vec<u32> = plan
+            .remove
+            .iter()
+            .flat_map(|&t| self.tetrahedron_vertices(t))
+            .collect();
+        touched.extend(plan.add.iter().flatten());
+        touched.sort_unstable();
+        touched.dedup();
+        let mut stars = Vec::with_capacity(touched.len());
+        for &x in &touched {
+            let star = after.star(x);
+            self.one_piece(&after, &new_o, &star, &[x], || {
+                format!("vertex {x} would be non-manifold (its star in pieces)")
+            })?;
+            stars.push((x, star));
+        }
+        self.check_fans(&after, &new_o, &stars)?;
+        for &x in &plan.retire {
+            if stars.iter().any(|(y, s)| *y == x && !s.is_empty()) {
+                return Err(refuse(format!("vertex {x} would keep tetrahedra")));
+            }
+        }
+        drop(after);
+        Ok(Verified { plan, new_o, stars })
+    }
+
+    /// Live ids, distinct vertices, no flagged face removed, positive volumes.
+    fn verify_inputs(&self, plan: &Plan) -> Result<()> {
+        let n = self.n_vertices as u32 + plan.new_vertex.is_some() as u32;
+        for &t in &plan.remove {
+            self.check_tetrahedron(t)?;
+            for hf in first(t)..first(t) + 4 {
+                if self.non_manifold.binary_search(&hf).is_ok()
+                    || self.seams.binary_search(&hf).is_ok()
+                {
+                    return Err(refuse(format!(
+                        "tetrahedron {t} has a non-manifold or seam face"
+                    )));
+                }
+            }
+        }
+        let positions = !self.positions.is_empty();
+        let at = |x: u32| match plan.new_vertex {
+            Some(Some(p)) if x as usize == self.n_vertices => p,
+            _ => self.positions[x as usize],
+        };
+        for q in &plan.add {
+            for (i, &x) in q.iter().enumerate() {
+                if x >= n {
+                    self.check_vertex(x)?;
+                }
+                removed(self.is_vertex_removed(x), "vertex", x)?;
+                if q[..i].contains(&x) {
+                    return Err(refuse(format!("tetrahedron {q:?} repeats vertex {x}")));
+                }
+            }
+            if positions && orient_of(*q, at) <= 0.0 {
+                return Err(refuse(format!(
+                    "tetrahedron {q:?} would be inverted or flat"
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// The twin of every new half-face: the one other tetrahedron holding its triple after
+    /// the edit, running the other way.
+    fn pair_new_faces(&self, after: &After) -> Result<Vec<u32>> {
+        let mut new_o = vec![NONE; 4 * after.plan.add.len()];
+        for (k, &q) in after.plan.add.iter().enumerate() {
+            let t = after.bound + k as u32;
+            for i in 0..4 {
+                let c = cycle(q, i);
+                let key = sorted3(c);
+                let holders: Vec<u32> = after
+                    .star(key[0])
+                    .into_iter()
+                    .filter(|&s| s != t && key.iter().all(|x| after.verts(s).contains(x)))
+                    .collect();
+                if holders.len() > 1 {
+                    return Err(Error::non_manifold(format!(
+                        "refused: face {key:?} would have three tetrahedra"
+                    )));
+                }
+                let Some(&s) = holders.first() else { continue };
+                let sv = after.verts(s);
+                if key.iter().chain([&q[i as usize]]).all(|x| sv.contains(x)) {
+                    return Err(refuse(format!("tetrahedron {q:?} already exists")));
+                }
+                let j = (0..4)
+                    .find(|&j| !key.contains(&sv[j as usize]))
+                    .expect("a fourth vertex");
+                let g = 4 * s + j;
+                if s < after.bound
+                    && (self.non_manifold.binary_search(&g).is_ok()
+                        || self.seams.binary_search(&g).is_ok())
+                {
+                    return Err(refuse(format!("face {key:?} is non-manifold or a seam")));
+                }
+                if same_way(c, cycle(sv, j)) {
+                    return Err(refuse(format!(
+                        "face {key:?} would be held by two tetrahedra running the same way"
+                    )));
+                }
+                new_o[4 * k + i as usize] = g;
+            }
+        }
+        Ok(new_o)
+    }
+
+    /// Twin of half-face `hf` (post-edit id) after the edit.
+    fn twin_after(&self, after: &After, new_o: &[u32], hf: u32) -> u32 {
+        let t = tet(hf);
+        if t >= after.bound {
+            return new_o[(hf - 4 * after.bound) as usize];
+        }
+        if let Some(k) = new_o.iter().position(|&g| g == hf) {
+            return 4 * after.bound + k as u32;
+        }
+        let g = after.view.o[hf as usize];
+        if g == NONE || after.plan.remove.contains(&tet(g)) {
+            NONE
+        } else {
+            g
+        }
+    }
+
+    /// The tetrahedra in `set` holding every vertex of `keep`, joined through their
+    /// faces that hold `keep`: one piece, or an error from `what`.
+    fn one_piece(
+        &self, after: &After, new_o: &[u32], set: &[u32], keep: &[u32],
+        what: impl FnOnce() -> String,
+    ) -> Result<()> {
+        if set.len() <= 1 {
+            return Ok(());
+        }
+        let mut reached = vec![false; set.len()];
+        let mut stack = vec![0usize];
+        reached[0] = true;
+        while let Some(i) = stack.pop() {
+            let q = after.verts(set[i]);
+            for j in 0..4 {
+                if keep.contains(&q[j]) {
+                    continue;
+                }
+                let g = self.twin_after(after, new_o, 4 * set[i] + j as u32);
+                if g == NONE {
+                    continue;
+                }
+                if let Some(k) = set.iter().position(|&s| s == tet(g)) {
+                    if !reached[k] {
+                        reached[k] = true;
+                        stack.push(k);
+                    }
+                }
+            }
+        }
+        if reached.iter().all(|&r| r) {
+            Ok(())
+        } else {
+            Err(Error::non_manifold(format!("refused: {}", what())))
+        }
+    }
+
+    /// Every touched vertex pair is one fan after the edit, and none carries several now.
+    fn check_fans(&self, after: &After, new_o: &[u32], stars: &[(u32, Vec<u32>)]) -> Result<()> {
+        for (a, b) in touched_pairs(self, after.plan) {
+            if self.multi_fan.iter().any(|m| (m.a, m.b) == (a, b)) {
+                return Err(refuse(format!("edge ({a}, {b}) carries several fans")));
+            }
+            let star = &stars.iter().find(|(x, _)| *x == a).expect("touched").1;
+            let fan: Vec<u32> = star
+                .iter()
+                .copied()
+                .filter(|&t| after.verts(t).contains(&b))
+                .collect();
+            self.one_piece(after, new_o, &fan, &[a, b], || {
+                format!("edge ({a}, {b}) would be non-manifold (several fans)")
+            })?;
+        }
+        Ok(())
+    }
+}
+
+/// The vertex pairs of the removed and added tetrahedra, each once.
+fn touched_pairs(chf: &Chf, plan: &Plan) -> Vec<(u32, u32)> {
+    let quads = plan
+        .remove
+        .iter()
+        .map(|&t| chf.tetrahedron_vertices(t))
+        .chain(plan.add.iter().copied());
+    let mut pairs: Vec<(u32, u32)> = quads
+        .flat_map(|q| {
+            EDGE.map(|[p, r]| {
+                (
+                    q[p as usize].min(q[r as usize]),
+                    q[p as usize].max(q[r as usize]),
+                )
+            })
+        })
+        .collect();
+    pairs.sort_unstable();
+    pairs.dedup();
+    pairs
+}
+
+impl Chf {
+    /// Applies a verified plan; returns the ids of the new tetrahedra. Allocation failures
+    /// are reported before anything is written.
+    pub(crate) fn commit(&mut self, verified: Verified) -> Result<Vec<u32>> {
+        let Verified { plan, new_o, stars } = verified;
+        let bound = self.num_tetrahedra() as u32;
+        self.reserve_for(&plan)?;
+        if let Some(p) = plan.new_vertex {
+            arrays::push_vertex(self, p)?;
+            let s = self.edit_state()?;
+            s.vertex_removed.push(false);
+            s.live_vertices += 1;
+        }
+        let old_ids = self.old_edge_ids(&plan, &stars);
+        let rep_faces = self.detach(&plan.remove);
+        for &q in &plan.add {
+            arrays::push_tetrahedron(self, q)?;
+            let s = self.edit_state()?;
+            s.tet_removed.push(false);
+            s.hf_face.extend_from_slice(&[NONE; 4]);
+            s.slot_edge.extend_from_slice(&[NONE; 6]);
+            s.live_tetrahedra += 1;
+        }
+        for (k, &g) in new_o.iter().enumerate() {
+            if g != NONE {
+                arrays::set_opposite(self, 4 * bound + k as u32, g);
+                arrays::set_opposite(self, g, 4 * bound + k as u32);
+            }
+        }
+        self.renumber_faces(bound, plan.add.len(), rep_faces);
+        self.renumber_edges(old_ids, &stars);
+        for (x, star) in &stars {
+            let hf = self.star_half_face(*x, star);
+            arrays::set_vertex_half_face(self, *x, hf);
+        }
+        for &x in &plan.retire {
+            let s = self.edit.as_mut().expect("edited");
+            if !s.vertex_removed[x as usize] {
+                s.vertex_removed[x as usize] = true;
+                s.live_vertices -= 1;
+            }
+            arrays::set_vertex_half_face(self, x, NONE);
+        }
+        self.num_faces = self.edit.as_ref().expect("edited").face_hf.len();
+        self.num_edges = self.edit.as_ref().expect("edited").edge_he.len();
+        if self.level >= 3 {
+            self.boundary = Some(crate::chf::build::level3::build(self, 1, 0)?);
+        }
+        Ok((bound..bound + plan.add.len() as u32).collect())
+    }
+
+    /// Room for everything the plan appends, so that the writes cannot fail halfway.
+    fn reserve_for(&mut self, plan: &Plan) -> Result<()> {
+        use crate::util::alloc::try_reserve;
+        let n = plan.add.len();
+        try_reserve(&mut self.v, 4 * n, "the tetrahedra V")?;
+        try_reserve(&mut self.o, 4 * n, "the opposites O")?;
+        let s = self.edit_state()?;
+        try_reserve(&mut s.tet_removed, n, "the tetrahedron marks")?;
+        try_reserve(&mut s.hf_face, 4 * n, "the face ids")?;
+        try_reserve(&mut s.slot_edge, 6 * n, "the edge ids")?;
+        try_reserve(&mut s.face_hf, 4 * n, "the face half-faces")?;
+        try_reserve(&mut s.edge_he, 6 * n, "the edge half-edges")?;
+        try_reserve(&mut s.vertex_removed, 1, "the vertex marks")
+    }
+
+    /// Marks `remove` removed and unpairs their neighbours; returns the faces that live on
+    /// through a surviving twin, with that twin.
+    fn detach(&mut self, remove: &[u32]) -> Vec<(u32, u32)> {
+        let mut reps = Vec::new();
+        for &t in remove {
+            self.edit.as_mut().expect("edited").tet_removed[t as usize] = true;
+        }
+        for &t in remove {
+            for hf in first(t)..first(t) + 4 {
+                let g = self.o[hf as usize];
+                let s = self.edit.as_mut().expect("edited");
+                let f = s.hf_face[hf as usize];
+                s.hf_face[hf as usize] = NONE;
+                if g != NONE && g != hf && !s.tet_removed[tet(g) as usize] {
+                    reps.push((f, g));
+                    arrays::set_opposite(self, g, NONE);
+                } else if s.face_hf[f as usize] != NONE {
+                    s.face_hf[f as usize] = NONE;
+                    s.live_faces -= 1;
+                }
+                arrays::set_opposite(self, hf, hf);
+            }
+            let s = self.edit.as_mut().expect("edited");
+            s.live_tetrahedra -= 1;
+            for k in 0..6 {
+                s.slot_edge[6 * t as usize + k] = NONE;
+            }
+        }
+        reps
+    }
+
+    /// Face ids of the new half-faces (inherited through an old twin, else new) and the
+    /// canonical half-face of every touched face.
+    fn renumber_faces(&mut self, bound: u32, n_new: usize, mut reps: Vec<(u32, u32)>) {
+        let s = self.edit.as_mut().expect("edited");
+        for h in 4 * bound..4 * (bound + n_new as u32) {
+            let g = self.o[h as usize];
+            if g != NONE && g < 4 * bound {
+                s.hf_face[h as usize] = s.hf_face[g as usize];
+            } else if g == NONE || g > h {
+                s.hf_face[h as usize] = s.face_hf.len() as u32;
+                if g != NONE {
+                    s.hf_face[g as usize] = s.face_hf.len() as u32;
+                }
+                s.face_hf.push(h);
+                s.live_faces += 1;
+            }
+            reps.push((s.hf_face[h as usize], h));
+        }
+        for (f, hf) in reps {
+            let g = self.o[hf as usize];
+            s.face_hf[f as usize] = if g != NONE && g < hf { g } else { hf };
+        }
+    }
+
+    /// Edge ids of the touched vertex pairs: kept while the pair has tetrahedra, new for a
+    /// new pair; the canonical half-edge of each by the build's rule.
+    fn renumber_edges(&mut self, old_ids: Vec<((u32, u32), u32)>, stars: &[(u32, Vec<u32>)]) {
+        for ((a, b), old) in old_ids {
+            let star = &stars.iter().find(|(x, _)| *x == a).expect("touched").1;
+            let fan: Vec<u32> = star
+                .iter()
+                .copied()
+                .filter(|&t| self.tetrahedron_vertices(t).contains(&b))
+                .collect();
+            let s = self.edit.as_mut().expect("edited");
+            let Some(&t0) = fan.first() else {
+                if old != NONE && s.edge_he[old as usize] != crate::chf::NO_HALF_EDGE {
+                    s.edge_he[old as usize] = crate::chf::NO_HALF_EDGE;
+                    s.live_edges -= 1;
+                }
+                continue;
+            };
+            let id = if old != NONE {
+                old
+            } else {
+                s.edge_he.push(0);
+                s.live_edges += 1;
+                s.edge_he.len() as u32 - 1
+            };
+            for &t in &fan {
+                let slot = self.pair_slot(t, a, b);
+                self.edit.as_mut().expect("edited").slot_edge[slot as usize] = id;
+            }
+            let he = slot_half_edges(self.pair_slot(t0, a, b))[0];
+            let canonical = canonical_half_edge(&self.v, &self.o, he);
+            self.edit.as_mut().expect("edited").edge_he[id as usize] = canonical;
+        }
+    }
+
+    /// The slot of the pair `(a, b)` in tetrahedron `t`.
+    fn pair_slot(&self, t: u32, a: u32, b: u32) -> u64 {
+        let q = self.tetrahedron_vertices(t);
+        let la = q.iter().position(|&x| x == a).expect("a in t") as u32;
+        let lb = q.iter().position(|&x| x == b).expect("b in t") as u32;
+        6 * t as u64 + edge_index(la, lb) as u64
+    }
+
+    /// Each touched pair with its edge id before the edit (from a removed tetrahedron or
+    /// a surviving one holding the pair), `NONE` for a new pair. Read before `detach`.
+    fn old_edge_ids(&self, plan: &Plan, stars: &[(u32, Vec<u32>)]) -> Vec<((u32, u32), u32)> {
+        let s = self.edit.as_ref().expect("edited");
+        let bound = self.num_tetrahedra() as u32;
+        let id_in = |t: u32, a: u32, b: u32| s.slot_edge[self.pair_slot(t, a, b) as usize];
+        let pairs = touched_pairs(self, plan);
+        let mut out = Vec::with_capacity(pairs.len());
+        for (a, b) in pairs {
+            let star = &stars.iter().find(|(x, _)| *x == a).expect("touched").1;
+            let holds = |t: &u32| {
+                self.tetrahedron_vertices(*t).contains(&a)
+                    && self.tetrahedron_vertices(*t).contains(&b)
+            };
+            let old = plan
+                .remove
+                .iter()
+                .chain(star.iter().filter(|&&t| t < bound))
+                .find(|t| holds(t))
+                .map_or(NONE, |&t| id_in(t, a, b));
+            out.push(((a, b), old));
+        }
+        out
+    }
+
+    /// A half-face of `star` holding `x`, a boundary one if any; `NONE` for no star.
+    fn star_half_face(&self, x: u32, star: &[u32]) -> u32 {
+        let mut any = NONE;
+        for &t in star {
+            let q = self.tetrahedron_vertices(t);
+            for i in 0..4u32 {
+                if q[i as usize] == x {
+                    continue;
+                }
+                let hf = first(t) + i;
+                if self.o[hf as usize] == NONE {
+                    return hf;
+                }
+                if any == NONE {
+                    any = hf;
+                }
+            }
+        }
+        any
+    }
+}
+
+impl Chf {
+    /// Verifies and applies `plan`; the new tetrahedra's ids. A refusal writes nothing.
+    pub(crate) fn run(&mut self, plan: Plan) -> Result<Vec<u32>> {
+        let verified = self.verify(plan)?;
+        self.edit_state()?;
+        self.commit(verified)
+    }
+
+    /// The position of a new vertex: `given`, else `default` when the mesh has positions;
+    /// `None` (and no position given) when it has none.
+    pub(crate) fn new_position(
+        &self, given: Option<DVec3>, default: impl FnOnce() -> DVec3,
+    ) -> Result<Option<DVec3>> {
+        match (self.positions.is_empty(), given) {
+            (true, Some(_)) => Err(Error::invalid(
+                "a position was given but the mesh has no positions",
+            )),
+            (true, None) => Ok(None),
+            (false, Some(p)) if !p.is_finite() => {
+                Err(Error::invalid(format!("position {p} is not finite")))
+            }
+            (false, p) => Ok(Some(p.unwrap_or_else(default))),
+        }
+    }
+
+    /// The mean position of `xs` (the mesh has positions).
+    pub(crate) fn centroid(&self, xs: &[u32]) -> DVec3 {
+        xs.iter()
+            .map(|&x| self.positions[x as usize])
+            .sum::<DVec3>()
+            / xs.len() as f64
+    }
+}
+
+/// `q` with vertex `from` replaced by `to`.
+pub(crate) fn replaced(mut q: [u32; 4], from: u32, to: u32) -> [u32; 4] {
+    for x in &mut q {
+        if *x == from {
+            *x = to;
+        }
+    }
+    q
+}
+
+/// An error saying why `op` on `what` was refused, keeping the kind of `e`.
+pub(crate) fn context(op: &str, what: String) -> impl FnOnce(Error) -> Error {
+    move |e| Error::new(e.kind, format!("{op} of {what}: {}", e.message))
+}

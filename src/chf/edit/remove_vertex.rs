@@ -1,0 +1,33 @@
+//! Removing a vertex with its star.
+
+use super::plan::{Plan, context};
+use crate::chf::Chf;
+use crate::error::Result;
+
+impl Chf {
+    fn plan_remove_vertex(&self, v: u32) -> Result<Plan> {
+        self.check_live_vertex(v)?;
+        Ok(Plan {
+            remove: self.vertex_tetrahedra(v).collect(),
+            retire: vec![v],
+            ..Plan::default()
+        })
+    }
+
+    /// Removes vertex `v` and every tetrahedron around it; refused when that would leave
+    /// a pinched vertex or edge around the hole. O(the stars of its neighbours).
+    pub fn remove_vertex(&mut self, v: u32) -> Result<()> {
+        let plan = self.plan_remove_vertex(v)?;
+        self.run(plan)
+            .map_err(context("remove_vertex", format!("vertex {v}")))?;
+        Ok(())
+    }
+
+    /// Would [`Chf::remove_vertex`] succeed? Changes nothing.
+    pub fn check_remove_vertex(&self, v: u32) -> Result<()> {
+        let plan = self.plan_remove_vertex(v)?;
+        self.verify(plan)
+            .map(|_| ())
+            .map_err(context("remove_vertex", format!("vertex {v}")))
+    }
+}

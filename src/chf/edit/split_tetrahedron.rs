@@ -1,0 +1,39 @@
+//! The 1-4 split: a new vertex inside a tetrahedron, joined to its four faces.
+
+use super::plan::{Plan, context, replaced};
+use crate::chf::Chf;
+use crate::error::Result;
+use glam::DVec3;
+
+impl Chf {
+    fn plan_split_tetrahedron(&self, t: u32, position: Option<DVec3>) -> Result<Plan> {
+        self.check_tetrahedron(t)?;
+        let q = self.tetrahedron_vertices(t);
+        let p = self.new_position(position, || self.centroid(&q))?;
+        let x = self.n_vertices as u32;
+        Ok(Plan {
+            remove: vec![t],
+            add: q.iter().map(|&c| replaced(q, c, x)).collect(),
+            new_vertex: Some(p),
+            retire: Vec::new(),
+        })
+    }
+
+    /// Splits tetrahedron `t` in four at a new vertex (returned), at `position` or the
+    /// centroid; refused when the position is not strictly inside. O(1) stars.
+    pub fn split_tetrahedron(&mut self, t: u32, position: Option<DVec3>) -> Result<u32> {
+        let plan = self.plan_split_tetrahedron(t, position)?;
+        let x = self.n_vertices as u32;
+        self.run(plan)
+            .map_err(context("split_tetrahedron", format!("tetrahedron {t}")))?;
+        Ok(x)
+    }
+
+    /// Would [`Chf::split_tetrahedron`] succeed? Changes nothing.
+    pub fn check_split_tetrahedron(&self, t: u32, position: Option<DVec3>) -> Result<()> {
+        let plan = self.plan_split_tetrahedron(t, position)?;
+        self.verify(plan)
+            .map(|_| ())
+            .map_err(context("split_tetrahedron", format!("tetrahedron {t}")))
+    }
+}

@@ -1,0 +1,150 @@
+//! The invariant checker of an edited CHF: its own tables (marks, `O`, `VH`, the explicit
+//! ids) checked element by element, then the live tetrahedra built afresh and compared
+//! with (the twins and the counts a build gives). O(T log T).
+
+use crate::NONE;
+use crate::chf::Chf;
+use crate::chf::ids::{first, slot_half_edges, tet};
+use crate::error::{Error, Result};
+
+fn ensure(ok: bool, what: impl FnOnce() -> String) -> Result<()> {
+    if ok {
+        Ok(())
+    } else {
+        Err(Error::invalid(format!("invalid edited CHF: {}", what())))
+    }
+}
+
+impl Chf {
+    /// [`Chf::validate`] of an edited CHF.
+    pub(crate) fn validate_edited(&self) -> Result<()> {
+        let s = self.edit.as_ref().expect("edited");
+        let n_t = self.num_tetrahedra();
+        ensure(
+            s.tet_removed.len() == n_t && s.hf_face.len() == 4 * n_t,
+            || "mark or face-id arrays of the wrong length".into(),
+        )?;
+        ensure(
+            s.slot_edge.len() == 6 * n_t && self.o.len() == 4 * n_t,
+            || "edge-id or O arrays of the wrong length".into(),
+        )?;
+        for t in 0..n_t as u32 {
+            self.validate_edited_tetrahedron(t)?;
+        }
+        self.validate_edited_ids()?;
+        let (fresh, vmap, tmap) = self.compacted()?;
+        fresh.validate()?;
+        ensure(fresh.num_faces() == s.live_faces, || {
+            format!(
+                "{} live faces, a build gives {}",
+                s.live_faces,
+                fresh.num_faces()
+            )
+        })?;
+        ensure(fresh.num_edges() == s.live_edges, || {
+            format!(
+                "{} live edges, a build gives {}",
+                s.live_edges,
+                fresh.num_edges()
+            )
+        })?;
+        for (t, &n) in tmap.iter().enumerate() {
+            if n == NONE {
+                continue;
+            }
+            for i in 0..4 {
+                let g = self.o[4 * t + i];
+                let mapped = if g == NONE {
+                    NONE
+                } else {
+                    4 * tmap[tet(g) as usize] + (g & 3)
+                };
+                ensure(fresh.opposite(4 * n + i as u32) == mapped, || {
+                    format!(
+                        "O[{}] = {g}, a build of the live tetrahedra differs",
+                        4 * t + i
+                    )
+                })?;
+            }
+        }
+        for (x, &n) in vmap.iter().enumerate() {
+            ensure(
+                n == NONE || fresh.is_boundary_vertex(n) == self.is_boundary_vertex(x as u32),
+                || format!("VH[{x}] does not say whether vertex {x} is on the boundary"),
+            )?;
+        }
+        Ok(())
+    }
+
+    /// One tetrahedron: removed ones are their own twins, live ones hold live vertices
+    /// and pair with live tetrahedra.
+    fn validate_edited_tetrahedron(&self, t: u32) -> Result<()> {
+        let s = self.edit.as_ref().expect("edited");
+        let q = self.tetrahedron_vertices(t);
+        for hf in first(t)..first(t) + 4 {
+            let g = self.o[hf as usize];
+            if s.tet_removed[t as usize] {
+                ensure(g == hf, || {
+                    format!("removed tetrahedron {t} has O[{hf}] = {g}")
+                })?;
+                continue;
+            }
+            ensure(
+                g == NONE || (!s.tet_removed[tet(g) as usize] && self.o[g as usize] == hf),
+                || format!("O[{hf}] = {g} is not a live twin"),
+            )?;
+        }
+        if s.tet_removed[t as usize] {
+            return Ok(());
+        }
+        for (i, &x) in q.iter().enumerate() {
+            ensure(
+                (x as usize) < self.n_vertices && !s.vertex_removed[x as usize],
+                || format!("tetrahedron {t} holds vertex {x}, removed or out of range"),
+            )?;
+            ensure(!q[..i].contains(&x), || {
+                format!("tetrahedron {t} repeats vertex {x}")
+            })?;
+        }
+        Ok(())
+    }
+
+    /// Face and edge ids: every live half-face and slot names a live id whose canonical
+    /// element is its own by the build's rule; `VH` holds its vertex.
+    fn validate_edited_ids(&self) -> Result<()> {
+        let s = self.edit.as_ref().expect("edited");
+        for hf in 0..self.v.len() as u32 {
+            if s.tet_removed[tet(hf) as usize] {
+                continue;
+            }
+            let f = s.hf_face[hf as usize];
+            let g = self.o[hf as usize];
+            let canonical = if g != NONE && g < hf { g } else { hf };
+            ensure(
+                (f as usize) < s.face_hf.len() && s.face_hf[f as usize] == canonical,
+                || format!("half-face {hf} names face {f}, whose half-face is not {canonical}"),
+            )?;
+        }
+        for slot in 0..s.slot_edge.len() as u64 {
+            if s.tet_removed[(slot / 6) as usize] {
+                continue;
+            }
+            let e = s.slot_edge[slot as usize];
+            let he = super::state::canonical_half_edge(&self.v, &self.o, slot_half_edges(slot)[0]);
+            ensure(
+                (e as usize) < s.edge_he.len() && s.edge_he[e as usize] == he,
+                || format!("slot {slot} names edge {e}, whose half-edge is not {he}"),
+            )?;
+        }
+        for (x, &hf) in self.vh.iter().enumerate() {
+            ensure(
+                hf == NONE || self.half_face_vertices_of(hf).contains(&(x as u32)),
+                || format!("VH[{x}] = {hf}, a half-face without vertex {x}"),
+            )?;
+            ensure(hf == NONE || !s.tet_removed[tet(hf) as usize], || {
+                format!("VH[{x}] = {hf} on a removed tetrahedron")
+            })?;
+        }
+        Ok(())
+    }
+}

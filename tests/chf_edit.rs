@@ -1,0 +1,445 @@
+//! In-place editing of a CHF: seeded random sequences of operations (valid and refused)
+//! on closed, bounded and damaged meshes at every level. Every few steps and at the end,
+//! every relation, the boundary flags and the summary equal those of a fresh build of the
+//! live tetrahedra (through the maps of `garbage_collect`), `validate()` passes, and a
+//! refused operation leaves the structure as it was.
+
+mod chf_common;
+
+use chf_common::{Answers, Mesh, Rng, answers, cube, scramble};
+use glam::DVec3;
+use topomesh::NONE;
+use topomesh::chf::{self, Chf, GarbageMaps};
+
+/// The boundary of the 4-simplex: a closed 3-sphere of five tetrahedra, no positions.
+fn four_simplex() -> Mesh {
+    let tets = (0..5u32)
+        .map(|skip| {
+            let q: Vec<u32> = (0..5).filter(|&x| x != skip).collect();
+            [q[0], q[1], q[2], q[3]]
+        })
+        .collect();
+    Mesh {
+        tets,
+        positions: vec![DVec3::ZERO; 5],
+    }
+}
+
+/// The boundary of the 4-dimensional cross-polytope: a closed 3-sphere, 16 tetrahedra.
+fn cross_polytope() -> Mesh {
+    let mut tets = Vec::new();
+    for signs in 0..16u32 {
+        let q = [0, 1, 2, 3].map(|axis| 2 * axis + ((signs >> axis) & 1));
+        tets.push(q);
+    }
+    Mesh {
+        tets,
+        positions: vec![DVec3::ZERO; 8],
+    }
+}
+
+/// The live tetrahedra of `chf` built afresh, with the maps `garbage_collect` gives.
+fn fresh(chf: &Chf, full: bool) -> (Chf, GarbageMaps) {
+    let mut gc = chf.clone();
+    let maps = gc.garbage_collect().expect("garbage_collect");
+    let mut tets = Vec::new();
+    for t in 0..chf.num_tetrahedra() as u32 {
+        if !chf.is_tetrahedron_removed(t) {
+            assert_eq!(maps.tetrahedra[t as usize], tets.len() as u32);
+            tets.push(
+                chf.tetrahedron_vertices(t)
+                    .map(|x| maps.vertices[x as usize]),
+            );
+        }
+    }
+    let n = maps.vertices.iter().filter(|&&x| x != NONE).count();
+    let positions: Vec<DVec3> = if chf.positions().is_empty() {
+        Vec::new()
+    } else {
+        (0..chf.num_vertices())
+            .filter(|&x| maps.vertices[x] != NONE)
+            .map(|x| chf.positions()[x])
+            .collect()
+    };
+    // Ids and answers are the same at every level; level 2 answers fast.
+    let options = chf::BuildOptions::level(chf.level().max(2));
+    let built = Chf::from_tetrahedra(&tets, n, &positions, options).expect("fresh build");
+    assert_eq!(gc.level(), chf.level());
+    if full || chf.level() >= 2 {
+        assert_eq!(
+            answers(&gc),
+            answers(&built),
+            "garbage_collect is a fresh build"
+        );
+    }
+    if chf.is_edited() {
+        // An unedited mesh keeps what its own build reported (flips, splits).
+        assert_eq!(gc.summary(), built.summary());
+    }
+    gc.validate().expect("the collected mesh is valid");
+    (built, maps)
+}
+
+fn map_all(map: &[u32], xs: impl IntoIterator<Item = u32>) -> Vec<u32> {
+    xs.into_iter()
+        .map(|x| if x == NONE { NONE } else { map[x as usize] })
+        .collect()
+}
+
+fn sorted(mut xs: Vec<u32>) -> Vec<u32> {
+    xs.sort_unstable();
+    xs
+}
+
+/// The answers of the edited mesh on its live elements, mapped to the fresh ids.
+fn mapped_answers(chf: &Chf, f: &Chf, m: &GarbageMaps) -> Answers {
+    let mut a = answers(f);
+    let (mv, me, mf, mt) = (&m.vertices, &m.edges, &m.faces, &m.tetrahedra);
+    let arr = |map: &[u32], x: &[u32]| map_all(map, x.iter().copied());
+    for v in 0..chf.num_vertices() as u32 {
+        let n = mv[v as usize];
+        if n == NONE {
+            assert!(chf.is_vertex_removed(v));
+            continue;
+        }
+        a.vv[n as usize] = sorted(map_all(mv, chf.vertex_vertices(v)));
+        a.ve[n as usize] = sorted(map_all(me, chf.vertex_edges(v)));
+        a.vf[n as usize] = sorted(map_all(mf, chf.vertex_faces(v)));
+        a.vt[n as usize] = sorted(map_all(mt, chf.vertex_tetrahedra(v)));
+        a.boundary.0[n as usize] = chf.is_boundary_vertex(v);
+    }
+    for e in 0..chf.num_edges() as u32 {
+        let n = me[e as usize];
+        if n == NONE {
+            assert!(chf.is_edge_removed(e));
+            continue;
+        }
+        let ev = arr(mv, &chf.edge_vertices(e));
+        a.ev[n as usize] = [ev[0], ev[1]];
+        a.ee[n as usize] = map_all(me, chf.edge_edges(e));
+        a.ef[n as usize] = map_all(mf, chf.edge_faces(e));
+        a.et[n as usize] = map_all(mt, chf.edge_tetrahedra(e));
+        a.boundary.1[n as usize] = chf.is_boundary_edge(e);
+    }
+    for face in 0..chf.num_faces() as u32 {
+        let n = mf[face as usize];
+        if n == NONE {
+            assert!(chf.is_face_removed(face));
+            continue;
+        }
+        let fv = arr(mv, &chf.face_vertices(face));
+        a.fv[n as usize] = [fv[0], fv[1], fv[2]];
+        let fe = arr(me, &chf.face_edges(face));
+        a.fe[n as usize] = [fe[0], fe[1], fe[2]];
+        a.ff[n as usize] = map_all(mf, chf.face_faces(face).to_vec());
+        a.ft[n as usize] = map_all(mt, chf.face_tetrahedra(face).to_vec());
+        a.boundary.2[n as usize] = chf.is_boundary_face(face);
+    }
+    for t in 0..chf.num_tetrahedra() as u32 {
+        let n = mt[t as usize];
+        if n == NONE {
+            assert!(chf.is_tetrahedron_removed(t));
+            continue;
+        }
+        let tv = arr(mv, &chf.tetrahedron_vertices(t));
+        a.tv[n as usize] = [tv[0], tv[1], tv[2], tv[3]];
+        let te = arr(me, &chf.tetrahedron_edges(t));
+        a.te[n as usize] = [te[0], te[1], te[2], te[3], te[4], te[5]];
+        let tf = arr(mf, &chf.tetrahedron_faces(t));
+        a.tf[n as usize] = [tf[0], tf[1], tf[2], tf[3]];
+        let tt = arr(mt, &chf.tetrahedron_tetrahedra(t));
+        a.tt[n as usize] = [tt[0], tt[1], tt[2], tt[3]];
+    }
+    a
+}
+
+/// FF in a set order on both sides: the edited face ids map to fresh ids out of order.
+fn normalise(mut a: Answers) -> Answers {
+    for row in a.ff.iter_mut() {
+        row.sort_unstable();
+    }
+    a
+}
+
+/// Every relation, flag and the summary of `chf` equal a fresh build's.
+fn check(chf: &Chf, at: &str, full: bool) {
+    if std::env::var_os("TOPOMESH_EDIT_TRACE").is_some() {
+        eprintln!("{at}: {} live tetrahedra", chf.num_live_tetrahedra());
+    }
+    let trace = |what: &str| {
+        if std::env::var_os("TOPOMESH_EDIT_TRACE").is_some() {
+            eprintln!("  {what}");
+        }
+    };
+    chf.validate().unwrap_or_else(|e| panic!("{at}: {e}"));
+    trace("validated");
+    let (f, maps) = fresh(chf, full);
+    trace("fresh");
+    let mine = normalise(mapped_answers(chf, &f, &maps));
+    trace("mapped");
+    let theirs = normalise(answers(&f));
+    if mine != theirs {
+        for (name, x, y) in [
+            ("vv", format!("{:?}", mine.vv), format!("{:?}", theirs.vv)),
+            ("ve", format!("{:?}", mine.ve), format!("{:?}", theirs.ve)),
+            ("vf", format!("{:?}", mine.vf), format!("{:?}", theirs.vf)),
+            ("ev", format!("{:?}", mine.ev), format!("{:?}", theirs.ev)),
+            ("ee", format!("{:?}", mine.ee), format!("{:?}", theirs.ee)),
+            ("ef", format!("{:?}", mine.ef), format!("{:?}", theirs.ef)),
+            ("et", format!("{:?}", mine.et), format!("{:?}", theirs.et)),
+            ("fv", format!("{:?}", mine.fv), format!("{:?}", theirs.fv)),
+            ("fe", format!("{:?}", mine.fe), format!("{:?}", theirs.fe)),
+            ("ft", format!("{:?}", mine.ft), format!("{:?}", theirs.ft)),
+            ("te", format!("{:?}", mine.te), format!("{:?}", theirs.te)),
+            ("tt", format!("{:?}", mine.tt), format!("{:?}", theirs.tt)),
+            (
+                "bd",
+                format!("{:?}", mine.boundary),
+                format!("{:?}", theirs.boundary),
+            ),
+        ] {
+            assert_eq!(x, y, "{at}: {name}");
+        }
+        panic!("{at}: answers differ");
+    }
+    if chf.is_edited() {
+        assert_eq!(chf.summary(), f.summary(), "{at}: summary");
+    }
+    assert_eq!(chf.num_live_tetrahedra(), f.num_tetrahedra(), "{at}");
+    assert_eq!(chf.num_live_faces(), f.num_faces(), "{at}");
+    assert_eq!(chf.num_live_edges(), f.num_edges(), "{at}");
+    assert_eq!(chf.num_live_vertices(), f.num_vertices(), "{at}");
+}
+
+/// A random id below `n`, live by `live` when it can find one, else anything (maybe
+/// removed, out of range or `NONE`: the refusals are tested too).
+fn pick(rng: &mut Rng, n: usize, live: impl Fn(u32) -> bool) -> u32 {
+    match rng.below(20) {
+        0 => return NONE,
+        1 => return n as u32 + rng.below(3) as u32,
+        _ => {}
+    }
+    for _ in 0..20 {
+        let x = rng.below(n.max(1)) as u32;
+        if live(x) {
+            return x;
+        }
+    }
+    rng.below(n.max(1)) as u32
+}
+
+/// One random operation; whether it was accepted.
+fn step(chf: &mut Chf, rng: &mut Rng, removed: &mut Vec<[u32; 4]>) -> bool {
+    let nt = chf.num_tetrahedra();
+    let t = pick(rng, nt, |t| !chf.is_tetrahedron_removed(t));
+    let positions = !chf.positions().is_empty();
+    let r = match rng.below(12) {
+        0 | 1 => chf.split_tetrahedron(t, None).map(|_| ()),
+        2 => {
+            let f = pick(rng, chf.num_faces(), |f| !chf.is_face_removed(f));
+            chf.split_face(f, None).map(|_| ())
+        }
+        3 => {
+            let e = pick(rng, chf.num_edges(), |e| !chf.is_edge_removed(e));
+            chf.split_edge(e, None).map(|_| ())
+        }
+        4 | 5 => {
+            let f = pick(rng, chf.num_faces(), |f| !chf.is_face_removed(f));
+            chf.flip_23(f).map(|_| ())
+        }
+        6 => {
+            let e = pick(rng, chf.num_edges(), |e| !chf.is_edge_removed(e));
+            chf.flip_32(e).map(|_| ())
+        }
+        7 => {
+            let he = 12 * t as u64 + rng.below(12) as u64;
+            chf.collapse_edge(he).map(|_| ())
+        }
+        8 => {
+            let q = if t < nt as u32 && !chf.is_tetrahedron_removed(t) {
+                Some(chf.tetrahedron_vertices(t))
+            } else {
+                None
+            };
+            let r = chf.remove_tetrahedron(t);
+            if let (Ok(()), Some(q)) = (&r, q) {
+                removed.push(q);
+            }
+            r
+        }
+        9 => match removed.pop() {
+            Some(q) => chf.add_tetrahedron(q).map(|_| ()),
+            None => {
+                let q = [0, 1, 2, 3].map(|_| rng.below(chf.num_vertices()) as u32);
+                chf.add_tetrahedron(q).map(|_| ())
+            }
+        },
+        10 => {
+            let v = pick(rng, chf.num_vertices(), |v| !chf.is_vertex_removed(v));
+            chf.remove_vertex(v)
+        }
+        _ => {
+            let p = positions.then(|| DVec3::new(rng.below(100) as f64, 0.5, 7.0));
+            chf.add_vertex(p).map(|_| ())
+        }
+    };
+    r.is_ok()
+}
+
+/// `steps` random operations on `mesh` at `level`, checked every `every` steps.
+fn run(
+    name: &str, mesh: &Mesh, with_positions: bool, level: u8, seed: u64, steps: usize, every: usize,
+) {
+    let mut chf = mesh.build(level, with_positions);
+    let mut rng = Rng(seed);
+    let mut removed = Vec::new();
+    let (mut ok, mut refused) = (0, 0);
+    check(&chf, name, false);
+    for i in 0..steps {
+        let before = (i % 7 == 0).then(|| format!("{chf:?}"));
+        if std::env::var_os("TOPOMESH_EDIT_TRACE").is_some() {
+            eprintln!("step {i}");
+        }
+        if step(&mut chf, &mut rng, &mut removed) {
+            ok += 1;
+        } else {
+            refused += 1;
+            if let Some(before) = before {
+                assert_eq!(
+                    before,
+                    format!("{chf:?}"),
+                    "{name}: a refusal changed the mesh"
+                );
+            }
+        }
+        if (i + 1) % every == 0 {
+            check(&chf, &format!("{name} level {level} step {i}"), false);
+        }
+    }
+    check(&chf, &format!("{name} level {level} end"), true);
+    assert!(
+        ok > steps / 10 && refused > 0,
+        "{name}: {ok} accepted, {refused} refused"
+    );
+}
+
+#[test]
+fn closed_meshes_at_every_level() {
+    for level in 0..=3 {
+        run(
+            "4-simplex",
+            &four_simplex(),
+            false,
+            level,
+            11 + level as u64,
+            300,
+            50,
+        );
+        run(
+            "cross-polytope",
+            &cross_polytope(),
+            false,
+            level,
+            17 + level as u64,
+            200,
+            50,
+        );
+    }
+}
+
+#[test]
+fn bounded_meshes_with_positions_at_every_level() {
+    for level in 0..=3 {
+        run(
+            "cube",
+            &cube(2, 2, 2, false),
+            true,
+            level,
+            23 + level as u64,
+            300,
+            60,
+        );
+        run(
+            "cube5",
+            &cube(2, 2, 1, true),
+            true,
+            level,
+            29 + level as u64,
+            200,
+            50,
+        );
+    }
+}
+
+#[test]
+fn bounded_meshes_without_positions() {
+    for level in [0, 2, 3] {
+        run(
+            "cube-nopos",
+            &cube(2, 2, 2, false),
+            false,
+            level,
+            31 + level as u64,
+            300,
+            60,
+        );
+    }
+}
+
+#[test]
+fn damaged_meshes() {
+    for (level, seed) in [(0u8, 1u64), (1, 2), (2, 3), (3, 4)] {
+        let mesh = scramble(&cube(3, 3, 2, false), seed, 70);
+        run("damaged", &mesh, true, level, 37 + seed, 200, 50);
+        run("damaged-nopos", &mesh, false, level, 41 + seed, 200, 50);
+    }
+}
+
+#[test]
+fn each_operation_on_a_cube() {
+    let mut chf = cube(1, 1, 1, false).build(2, true);
+    let x = chf.split_tetrahedron(0, None).unwrap();
+    assert_eq!(x as usize, chf.num_vertices() - 1);
+    assert!(chf.is_tetrahedron_removed(0));
+    check(&chf, "1-4", true);
+    let interior = (0..chf.num_faces() as u32)
+        .find(|&f| {
+            !chf.is_face_removed(f) && !chf.is_boundary_face(f) && chf.check_flip_23(f).is_ok()
+        })
+        .expect("a flippable face");
+    let new = chf.flip_23(interior).unwrap();
+    check(&chf, "2-3", true);
+    let e = chf
+        .tetrahedron_edges(new[0])
+        .into_iter()
+        .find(|&e| chf.check_flip_32(e).is_ok())
+        .expect("the new edge");
+    chf.flip_32(e).unwrap();
+    check(&chf, "3-2", true);
+    let err = chf.remove_tetrahedron(0).unwrap_err();
+    assert!(err.message.contains("removed"), "{err}");
+    let err = chf.split_tetrahedron(NONE, None).unwrap_err();
+    assert_eq!(err.kind, topomesh::ErrorKind::OutOfRange);
+    let maps = chf.garbage_collect().unwrap();
+    assert_eq!(maps.tetrahedra[0], NONE);
+    chf.validate().unwrap();
+    assert!(!chf.is_edited());
+}
+
+#[test]
+fn an_unedited_mesh_has_no_edit_state_and_answers_as_built() {
+    let mesh = cube(2, 1, 1, false);
+    let chf = mesh.build(2, true);
+    assert!(!chf.is_edited());
+    let mut probe = chf.clone();
+    assert!(probe.check_split_tetrahedron(0, None).is_ok());
+    assert!(!probe.is_edited(), "a check changes nothing");
+    assert!(probe.flip_32(NONE).is_err());
+    assert_eq!(answers(&probe), answers(&chf));
+    let f = (0..chf.num_faces() as u32)
+        .find(|&f| chf.is_boundary_face(f))
+        .unwrap();
+    let err = probe.flip_23(f).unwrap_err();
+    assert!(err.message.contains("boundary"), "{err}");
+    assert!(!probe.is_edited());
+}

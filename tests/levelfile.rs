@@ -558,5 +558,26 @@ fn a_mapped_mesh_is_edited_in_memory() {
         assert_eq!(che_answers(&mapped), che_answers(&loaded), "level {level}");
         assert_eq!(std::fs::read(&path).unwrap(), before);
     }
+    let mesh = chf_common::cube(2, 2, 2, true);
+    for level in 0..=3 {
+        let path = dir.join(format!("c{level}.chf"));
+        mesh.build(level, true).save(&path).unwrap();
+        let open = |mode| {
+            Chf::open(
+                &path,
+                OpenOptions {
+                    verify: Verify::Full,
+                    mode,
+                },
+            )
+            .unwrap()
+        };
+        let (mut mapped, mut loaded) = (open(Mode::Mapped), open(Mode::Loaded));
+        for chf in [&mut mapped, &mut loaded] {
+            chf.split_tetrahedron(1, None).unwrap();
+            chf.garbage_collect().unwrap();
+        }
+        assert_eq!(chf_state(&mapped), chf_state(&loaded), "level {level}");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -365,8 +365,12 @@ impl Chf {
     fn reserve_for(&mut self, plan: &Plan) -> Result<()> {
         use crate::util::alloc::try_reserve;
         let n = plan.add.len();
-        try_reserve(&mut self.v, 4 * n, "the tetrahedra V")?;
-        try_reserve(&mut self.o, 4 * n, "the opposites O")?;
+        try_reserve(
+            self.v.to_mut("the tetrahedra V")?,
+            4 * n,
+            "the tetrahedra V",
+        )?;
+        try_reserve(self.o.to_mut("the opposites O")?, 4 * n, "the opposites O")?;
         let s = self.edit_state()?;
         try_reserve(&mut s.tet_removed, n, "the tetrahedron marks")?;
         try_reserve(&mut s.hf_face, 4 * n, "the face ids")?;

@@ -103,13 +103,14 @@ impl Chf {
     /// The edit state, made on the first edit (O(T) once): `O` and `VH` stored whatever
     /// the level, and the explicit ids.
     pub(crate) fn edit_state(&mut self) -> Result<&mut EditState> {
+        super::arrays::promote(self)?;
         if self.edit.is_none() {
             let state = EditState::of(self)?;
             if self.level < 1 {
-                self.o = self.try_opposites_by_rule()?;
+                self.o = self.try_opposites_by_rule()?.into();
             }
             if self.level < 2 {
-                self.vh = vertex_half_faces(self)?;
+                self.vh = vertex_half_faces(self)?.into();
             }
             if self.tet_origin.is_empty() {
                 let ids = (0..self.num_tetrahedra() as u32).collect::<Vec<_>>();

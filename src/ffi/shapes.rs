@@ -62,7 +62,7 @@ macro_rules! ids {
             let ($c, mut sink) = unsafe {
                 (
                     $crate::ffi::boundary::core($m)?,
-                    $crate::ffi::boundary::Sink::new($buf, $cap, $len, "buf")?,
+                    $crate::ffi::boundary::sink($buf, $cap, $len, "buf")?,
                 )
             };
             let $s = &mut sink;
@@ -96,7 +96,7 @@ macro_rules! csr {
         $crate::ffi::boundary::guard(|| {
             // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
             let ($c, mut sink) = unsafe {
-                let sink = $crate::ffi::boundary::CsrSink::new;
+                let sink = $crate::ffi::boundary::csr_sink;
                 ($crate::ffi::boundary::core($m)?, sink([($o, $oc, $no), ($i, $ic, $ni)])?)
             };
             let $s = &mut sink;

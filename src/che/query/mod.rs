@@ -7,6 +7,7 @@ mod curves;
 mod memory;
 mod relations;
 mod star;
+mod star_lent;
 mod summary;
 mod validate;
 
@@ -15,4 +16,5 @@ pub(crate) use bulk::{Push, Rows};
 pub use curves::BoundaryWalk;
 pub use memory::Memory;
 pub use star::{Rotation, StarCursor, StarStep};
+pub use star_lent::{LentStar, LentStep};
 pub use summary::Summary;

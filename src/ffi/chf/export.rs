@@ -88,12 +88,11 @@ pub unsafe extern "C" fn chf_mesh_export_matrix(
     columns_cap: usize, values: *mut f64, values_cap: usize, n_offsets: *mut usize,
     n_entries: *mut usize,
 ) -> Status {
-    let bufs = [offsets.cast(), columns.cast(), values.cast()];
     // SAFETY: forwarded caller contract.
     unsafe {
         matrix_out(
             m,
-            bufs,
+            (offsets, columns, values),
             [offsets_cap, columns_cap, values_cap],
             [n_offsets, n_entries],
             |c| c.volume_matrix(report_kind(VolumeMatrixKind::ALL, kind, "chf_matrix_kind")?),

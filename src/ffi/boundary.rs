@@ -164,6 +164,51 @@ pub(crate) fn level_arg(level: u32) -> Result<u8> {
     }
 }
 
+/// A field of a C options struct (`C`) as the core's field (`Self`) and back. The only
+/// `u8` field of the core's options is the level.
+pub(crate) trait CField<C>: Sized {
+    fn to_c(self) -> C;
+    fn from_c(c: C) -> Result<Self>;
+}
+
+impl<T> CField<T> for T {
+    fn to_c(self) -> T {
+        self
+    }
+    fn from_c(c: T) -> Result<T> {
+        Ok(c)
+    }
+}
+
+impl CField<u32> for u8 {
+    fn to_c(self) -> u32 {
+        self.into()
+    }
+    fn from_c(level: u32) -> Result<u8> {
+        level_arg(level)
+    }
+}
+
+/// `strict` and the like: any non-zero C value is true (a C `bool` field can hold values
+/// Rust may not read as a `bool`, hence the `u8`).
+impl CField<u8> for bool {
+    fn to_c(self) -> u8 {
+        self.into()
+    }
+    fn from_c(c: u8) -> Result<bool> {
+        Ok(c != 0)
+    }
+}
+
+impl CField<u32> for usize {
+    fn to_c(self) -> u32 {
+        self as u32
+    }
+    fn from_c(c: u32) -> Result<usize> {
+        Ok(c as usize)
+    }
+}
+
 /// `flags` checked against the `known` bits (and their C names), or INVALID_INPUT naming
 /// the unknown ones.
 fn flags_arg(flags: u32, known: [(u32, &str); 2]) -> Result<u32> {

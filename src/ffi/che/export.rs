@@ -64,28 +64,6 @@ pub enum CheWingedArray {
     FaceEdge = 4,
 }
 
-/// Which matrix `che_mesh_export_matrix` writes (vertices, edges and triangles are the
-/// structure's).
-#[repr(u32)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CheMatrixKind {
-    /// V x V: 1 where an edge joins two vertices (several edges count once).
-    VertexAdjacency = 0,
-    /// E x E: 1 where two edges share a vertex.
-    EdgeAdjacency = 1,
-    /// V x E, the boundary operator d1: edge e from a to b (its canonical direction,
-    /// che_edge_vertices) has -1 in row a and +1 in row b.
-    D1 = 2,
-    /// E x T, the boundary operator d2: +1 where the triangle runs along the edge's
-    /// canonical direction, -1 where it runs against it. d1 * d2 == 0.
-    D2 = 3,
-    /// V x V, the combinatorial Laplacian: the number of neighbours on the diagonal, -1
-    /// where the vertex adjacency has 1.
-    Laplacian = 4,
-    /// T x T, the dual graph: 1 where two triangles share an edge.
-    DualAdjacency = 5,
-}
-
 /// Which list `che_mesh_export_strips` writes.
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -14,6 +14,9 @@ fn generate() -> String {
     let bindings = cbindgen::Builder::new()
         .with_config(config)
         .with_src(root.join("src/ffi/mod.rs"))
+        // The C enums that are the core's own (`repr(u32)` there).
+        .with_src(root.join("src/che/export/matrices.rs"))
+        .with_src(root.join("src/chf/export/matrices.rs"))
         .generate()
         .expect("cbindgen could not generate the header");
     let mut out = Vec::new();

@@ -25,7 +25,9 @@ pub use build::{
 pub use edit::GarbageMaps;
 pub use export::{CornerTable, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges};
 pub use ids::{first, next, prev, tri};
-pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
+pub use query::{
+    BoundaryWalk, Csr, LentStar, LentStep, Memory, Rotation, StarCursor, StarStep, Summary,
+};
 pub(crate) use query::{Push, Rows};
 pub(crate) use tables::edge_directory;
 

@@ -1,11 +1,11 @@
 //! The one boundary every export runs behind (its shapes are the macros of `shapes`):
 //! `guard` / `guard_or` run a body under `catch_unwind` and turn a `crate::Error` into its
 //! status plus a thread-local detail; the `*_arg` helpers are the null checks, each naming
-//! the argument; `Sink` and `CsrSink` write variable-size answers into caller buffers.
+//! the argument, and turn C pointers into the slices the core's sinks (`util::sink`) write.
 
 use super::status::Status;
-use crate::che::{Push, Rows};
 use crate::error::{Error, ErrorKind, Result};
+pub(crate) use crate::util::sink::{CsrSink, Sink, pick as report_kind};
 use std::cell::RefCell;
 use std::ffi::{CStr, c_char};
 use std::mem::MaybeUninit;
@@ -25,7 +25,12 @@ pub(crate) fn with_last_error<R>(f: impl FnOnce(&str) -> R) -> R {
 /// Records `e` as the last error and returns its status.
 fn fail(e: Error) -> Status {
     LAST_ERROR.with(|last| *last.borrow_mut() = e.message);
-    super::status::STATUSES[e.kind as usize + 1].0
+    status_of(e.kind)
+}
+
+/// The status of an error kind (they map one to one onto the statuses after `Ok`).
+pub(crate) fn status_of(kind: ErrorKind) -> Status {
+    super::status::STATUSES[kind as usize + 1].0
 }
 
 fn caught(payload: Box<dyn std::any::Any + Send>) -> Status {
@@ -159,60 +164,107 @@ pub(crate) fn level_arg(level: u32) -> Result<u8> {
     }
 }
 
-/// The `TOPOMESH_WRITE_*` flags as write options, or INVALID_INPUT naming the unknown
-/// bits.
-pub(crate) fn write_flags_arg(flags: u32) -> Result<crate::io::WriteOptions> {
-    use super::{TOPOMESH_WRITE_BINARY, TOPOMESH_WRITE_NO_ORIGIN};
-    let unknown = flags & !(TOPOMESH_WRITE_BINARY | TOPOMESH_WRITE_NO_ORIGIN);
-    if unknown != 0 {
-        return Err(Error::invalid(format!(
-            "flags {flags:#x}: unknown bits {unknown:#x} (known: TOPOMESH_WRITE_BINARY, TOPOMESH_WRITE_NO_ORIGIN)"
-        )));
+/// A field of a C options struct (`C`) as the core's field (`Self`) and back. The only
+/// `u8` field of the core's options is the level.
+pub(crate) trait CField<C>: Sized {
+    fn to_c(self) -> C;
+    fn from_c(c: C) -> Result<Self>;
+}
+
+impl<T> CField<T> for T {
+    fn to_c(self) -> T {
+        self
     }
+    fn from_c(c: T) -> Result<T> {
+        Ok(c)
+    }
+}
+
+impl CField<u32> for u8 {
+    fn to_c(self) -> u32 {
+        self.into()
+    }
+    fn from_c(level: u32) -> Result<u8> {
+        level_arg(level)
+    }
+}
+
+/// `strict` and the like: any non-zero C value is true (a C `bool` field can hold values
+/// Rust may not read as a `bool`, hence the `u8`).
+impl CField<u8> for bool {
+    fn to_c(self) -> u8 {
+        self.into()
+    }
+    fn from_c(c: u8) -> Result<bool> {
+        Ok(c != 0)
+    }
+}
+
+impl CField<u32> for usize {
+    fn to_c(self) -> u32 {
+        self as u32
+    }
+    fn from_c(c: u32) -> Result<usize> {
+        Ok(c as usize)
+    }
+}
+
+/// `flags` checked against the `known` bits (and their C names), or INVALID_INPUT naming
+/// the unknown ones.
+fn flags_arg<const N: usize>(flags: u32, known: [(u32, &str); N]) -> Result<u32> {
+    let unknown = flags & !known.iter().fold(0, |all, (bit, _)| all | bit);
+    if unknown == 0 {
+        return Ok(flags);
+    }
+    let names = known.map(|(_, name)| name).join(", ");
+    let detail = format!("flags {flags:#x}: unknown bits {unknown:#x} (known: {names})");
+    Err(Error::invalid(detail))
+}
+
+/// The `TOPOMESH_WRITE_*` flags as write options.
+pub(crate) fn write_flags_arg(flags: u32) -> Result<crate::io::WriteOptions> {
+    use super::{TOPOMESH_WRITE_BINARY as B, TOPOMESH_WRITE_NO_ORIGIN as N};
+    let f = flags_arg(
+        flags,
+        [
+            (B, "TOPOMESH_WRITE_BINARY"),
+            (N, "TOPOMESH_WRITE_NO_ORIGIN"),
+        ],
+    )?;
+    let (binary, no_origin) = (f & B != 0, f & N != 0);
     Ok(crate::io::WriteOptions {
         format: None,
-        binary: flags & TOPOMESH_WRITE_BINARY != 0,
-        no_origin: flags & TOPOMESH_WRITE_NO_ORIGIN != 0,
+        binary,
+        no_origin,
     })
 }
 
-/// `TOPOMESH_OPEN_*` flags as open options; an unknown bit is an error.
+/// The `TOPOMESH_OPEN_*` flags as open options (TRUSTED wins over CHECKSUMS_ONLY).
 pub(crate) fn open_flags_arg(flags: u32) -> Result<crate::levelfile::OpenOptions> {
-    use super::{TOPOMESH_OPEN_CHECKSUMS_ONLY, TOPOMESH_OPEN_MAPPED, TOPOMESH_OPEN_TRUSTED};
-    use crate::levelfile::{Mode, OpenOptions, Verify};
-    let known = TOPOMESH_OPEN_CHECKSUMS_ONLY | TOPOMESH_OPEN_TRUSTED | TOPOMESH_OPEN_MAPPED;
-    let unknown = flags & !known;
-    if unknown != 0 {
-        return Err(Error::invalid(format!(
-            "flags {flags:#x}: unknown bits {unknown:#x} (known: TOPOMESH_OPEN_CHECKSUMS_ONLY, TOPOMESH_OPEN_TRUSTED, TOPOMESH_OPEN_MAPPED)"
-        )));
-    }
-    let verify = if flags & TOPOMESH_OPEN_TRUSTED != 0 {
-        Verify::Trusted
-    } else if flags & TOPOMESH_OPEN_CHECKSUMS_ONLY != 0 {
-        Verify::Checksums
-    } else {
-        Verify::Full
+    use super::{
+        TOPOMESH_OPEN_CHECKSUMS_ONLY as C, TOPOMESH_OPEN_MAPPED as M, TOPOMESH_OPEN_TRUSTED as T,
     };
-    let mode = if flags & TOPOMESH_OPEN_MAPPED != 0 {
+    use crate::levelfile::{Mode, Verify};
+    let f = flags_arg(
+        flags,
+        [
+            (C, "TOPOMESH_OPEN_CHECKSUMS_ONLY"),
+            (T, "TOPOMESH_OPEN_TRUSTED"),
+            (M, "TOPOMESH_OPEN_MAPPED"),
+        ],
+    )?;
+    let verify = [
+        Verify::Full,
+        Verify::Checksums,
+        Verify::Trusted,
+        Verify::Trusted,
+    ][(f & (C | T)) as usize];
+    let mode = if f & M != 0 {
         Mode::Mapped
     } else {
         Mode::Loaded
     };
-    Ok(OpenOptions { verify, mode })
-}
-
-/// The entry of `all` that C enum value `kind` names (`all` in the C enum's order: report
-/// kinds, export arrays), or OUT_OF_RANGE naming the enum.
-pub(crate) fn report_kind<T, const N: usize>(all: [T; N], kind: u32, name: &str) -> Result<T> {
-    let max = N - 1;
-    let error = || Error::out_of_range(format!("kind {kind} is not a {name} (0..{max})"));
-    all.into_iter().nth(kind as usize).ok_or_else(error)
-}
-
-/// Pairs (or triples) of ids, flattened.
-pub(crate) fn flat<const K: usize>(xs: &[[u32; K]]) -> Vec<u32> {
-    xs.iter().flatten().copied().collect()
+    Ok(crate::levelfile::OpenOptions { verify, mode })
 }
 
 /// The core's origin map, or the identity on `0..n` materialised once in `cell`.
@@ -238,28 +290,25 @@ pub(crate) trait Handle {
     fn warnings(&self) -> &[String];
 }
 
-/// Copies `text` into `buf` NUL-terminated, truncated to `cap` bytes (`buf` NULL is a size
-/// query); `*out_len` gets the capacity needed, NUL included. False when it did not fit.
-/// `buf` is NULL or valid for `cap` byte writes (caller contract).
+/// `text` into the caller's `(buf, cap)` NUL-terminated (see `util::sink::copy_text`),
+/// the capacity needed into `*out_len`; BUFFER_TOO_SMALL when it was truncated.
 pub(crate) unsafe fn text_out(
-    text: &str, buf: *mut c_char, cap: usize, out_len: &Out<usize>,
-) -> bool {
-    let bytes = text.as_bytes();
-    out_len.set(bytes.len() + 1);
-    match (buf.is_null(), cap.checked_sub(1)) {
-        (true, _) => true,
-        (false, None) => false,
-        (false, Some(room)) => {
-            let n = bytes.len().min(room);
-            // SAFETY: `buf` is valid for `cap > n` byte writes (caller contract), and
-            // `bytes` is a Rust string that cannot overlap the caller's buffer.
-            unsafe {
-                std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), n);
-                *buf.add(n) = 0;
-            }
-            n == bytes.len()
-        }
+    text: &str, buf: *mut c_char, cap: usize, out_len: *mut usize,
+) -> Result<()> {
+    // SAFETY: forwarded contract.
+    let (buf, out_len) = unsafe {
+        (
+            buf_arg(buf.cast::<u8>(), cap, "buf")?,
+            out_arg(out_len, "out_len")?,
+        )
+    };
+    let (needed, fits) = crate::util::sink::copy_text(text, buf);
+    out_len.set(needed);
+    if fits {
+        return Ok(());
     }
+    let detail = format!("buffer 'buf' holds {cap} bytes, {needed} needed");
+    Err(Error::new(ErrorKind::BufferTooSmall, detail))
 }
 
 /// Warning `i` of handle `m` into `buf` (the buffer rules of `topomesh_last_error`).
@@ -267,25 +316,15 @@ pub(crate) unsafe fn warning_out<H: Handle>(
     m: *const H, i: usize, buf: *mut c_char, cap: usize, out_len: *mut usize,
 ) -> Result<()> {
     // SAFETY: forwarded contract.
-    let (h, out_len) = unsafe { (handle(m, "m")?, out_arg(out_len, "out_len")?) };
-    if buf.is_null() && cap != 0 {
-        return Err(null("buf"));
-    }
-    let warnings = h.warnings();
-    let text = warnings.get(i).ok_or_else(|| {
-        let n = warnings.len();
+    let warnings = unsafe { handle(m, "m")? }.warnings();
+    let n = warnings.len();
+    let missing = || {
         Error::out_of_range(format!(
             "warning {i} out of range (the mesh has {n} warnings)"
         ))
-    })?;
+    };
     // SAFETY: forwarded contract.
-    if unsafe { text_out(text, buf, cap, &out_len) } {
-        return Ok(());
-    }
-    Err(Error::new(
-        ErrorKind::BufferTooSmall,
-        format!("buffer 'buf' holds {cap} bytes, {} needed", text.len() + 1),
-    ))
+    unsafe { text_out(warnings.get(i).ok_or_else(missing)?, buf, cap, out_len) }
 }
 
 /// Boxes a new handle into `*out`, which is NULL on every failure of `made`.
@@ -311,143 +350,49 @@ pub(crate) unsafe fn free_handle<T>(p: *mut T) {
     });
 }
 
-/// A caller buffer for a variable-size answer. `buf == NULL` with `cap == 0` is a size
-/// query; otherwise the first `cap` entries are written, the rest only counted, and
-/// `finish` reports the full length in `*out_len` and BUFFER_TOO_SMALL when it did not fit.
-pub(crate) struct Sink<'a, T = u32> {
-    buf: &'a mut [MaybeUninit<T>],
-    query: bool,
-    len: usize,
-    out_len: Out<usize>,
-    name: &'static str,
+/// A caller buffer `(buf, cap)` as the core's sinks take it: NULL with `cap == 0` is a size
+/// query (`None`), NULL with another `cap` a NULL_ARGUMENT error naming it.
+pub(crate) unsafe fn buf_arg<'a, T>(
+    buf: *mut T, cap: usize, name: &str,
+) -> Result<Option<&'a mut [MaybeUninit<T>]>> {
+    if buf.is_null() {
+        return if cap == 0 { Ok(None) } else { Err(null(name)) };
+    }
+    // No object is larger than isize::MAX bytes, so a larger `cap` (say SIZE_MAX for
+    // "unbounded") cannot be the real size: clamp it rather than build an invalid slice.
+    let cap = cap.min(isize::MAX as usize / size_of::<T>().max(1));
+    // SAFETY: non-NULL, valid for `cap` writes (contract); viewed as uninitialised.
+    Ok(Some(unsafe {
+        std::slice::from_raw_parts_mut(buf.cast(), cap)
+    }))
 }
 
-impl<'a, T: Copy> Sink<'a, T> {
-    /// `buf` is NULL or valid for `cap` writes during `'a`; `out_len` NULL or writable.
-    pub(crate) unsafe fn new(
-        buf: *mut T, cap: usize, out_len: *mut usize, name: &'static str,
-    ) -> Result<Self> {
-        // SAFETY: forwarded contract.
-        let out_len = unsafe { out_arg(out_len, "out_len")? };
-        let query = buf.is_null();
-        if query && cap != 0 {
-            return Err(null(name));
-        }
-        // No object is larger than isize::MAX bytes, so a larger `cap` (say SIZE_MAX for
-        // "unbounded") cannot be the real size: clamp it rather than build an invalid slice.
-        let cap = cap.min(isize::MAX as usize / size_of::<T>().max(1));
-        let buf = if query {
-            &mut []
-        } else {
-            // SAFETY: non-NULL, valid for `cap` writes (contract); viewed as uninitialised.
-            unsafe { std::slice::from_raw_parts_mut(buf.cast(), cap) }
-        };
-        Ok(Sink {
-            buf,
-            query,
-            len: 0,
-            out_len,
-            name,
-        })
-    }
+/// The core's sink over the caller's `(buf, cap, *out_len)`.
+pub(crate) unsafe fn sink<'a, T: Copy>(
+    buf: *mut T, cap: usize, out_len: *mut usize, name: &'static str,
+) -> Result<Sink<'a, T>> {
+    // SAFETY: forwarded contract; `out_len` is written, never read.
+    let out_len = unsafe { out_arg(out_len, "out_len")?.0.cast().as_mut() };
+    // SAFETY: forwarded contract.
+    Ok(Sink::new(
+        unsafe { buf_arg(buf, cap, name)? },
+        out_len,
+        name,
+    ))
+}
 
-    pub(crate) fn extend(&mut self, xs: impl IntoIterator<Item = T>) {
-        xs.into_iter().for_each(|x| self.put(x));
+/// The core's CSR sink over `(offsets, offsets_cap, n_offsets)` and the same for the
+/// indices: both NULL (capacities 0) is a size query, exactly one NULL an error.
+pub(crate) unsafe fn csr_sink<'a>(bufs: [(*mut u32, usize, *mut usize); 2]) -> Result<CsrSink<'a>> {
+    let [(o, oc, no), (i, ic, ni)] = bufs;
+    if o.is_null() != i.is_null() {
+        return Err(null(if o.is_null() { "offsets" } else { "indices" }));
     }
-
-    /// One entry: written when it fits, counted always.
-    #[inline(always)]
-    pub(crate) fn put(&mut self, x: T) {
-        if let Some(slot) = self.buf.get_mut(self.len) {
-            slot.write(x);
-        }
-        self.len += 1;
-    }
-
-    /// Writes `*out_len`; BUFFER_TOO_SMALL if the answer did not fit.
-    pub(crate) fn finish(self) -> Result<()> {
-        self.out_len.set(self.len);
-        if self.query || self.len <= self.buf.len() {
-            return Ok(());
-        }
-        let (name, cap, len) = (self.name, self.buf.len(), self.len);
-        Err(Error::new(
-            ErrorKind::BufferTooSmall,
-            format!("buffer '{name}' holds {cap} entries, {len} needed"),
+    // SAFETY: forwarded contract.
+    unsafe {
+        Ok(CsrSink::new(
+            sink(o, oc, no, "offsets")?,
+            sink(i, ic, ni, "indices")?,
         ))
-    }
-}
-
-// The core's walks write straight into the caller's buffers.
-impl Push for Sink<'_> {
-    #[inline(always)]
-    fn push(&mut self, x: u32) {
-        self.put(x);
-    }
-}
-
-/// A bulk answer in compressed sparse rows: row `i` is `indices[offsets[i] ..
-/// offsets[i + 1]]`, so `offsets` has one entry per row plus one. Both buffers NULL
-/// (capacities 0) is a size query; exactly one NULL is an error; either too small gives
-/// BUFFER_TOO_SMALL with both needed lengths written (the buffers then hold a prefix).
-pub(crate) struct CsrSink<'a> {
-    offsets: Sink<'a>,
-    indices: Sink<'a>,
-}
-
-impl CsrSink<'_> {
-    /// `(offsets, offsets_cap, n_offsets)` and the same for the indices, checked.
-    pub(crate) unsafe fn new(bufs: [(*mut u32, usize, *mut usize); 2]) -> Result<Self> {
-        let [(o, oc, no), (i, ic, ni)] = bufs;
-        if o.is_null() != i.is_null() {
-            return Err(null(if o.is_null() { "offsets" } else { "indices" }));
-        }
-        // SAFETY: forwarded contract.
-        let (offsets, indices) = unsafe {
-            (
-                Sink::new(o, oc, no, "offsets")?,
-                Sink::new(i, ic, ni, "indices")?,
-            )
-        };
-        Ok(CsrSink { offsets, indices })
-    }
-
-    /// One row.
-    pub(crate) fn stream(&mut self, row: impl IntoIterator<Item = u32>) {
-        self.row();
-        self.indices.extend(row);
-    }
-
-    /// The rows of a table computed in full.
-    pub(crate) fn copy(&mut self, csr: &crate::chf::Csr) {
-        (0..csr.len()).for_each(|i| self.stream(csr.row(i).iter().copied()));
-    }
-
-    /// Closes the last row and reports both lengths.
-    pub(crate) fn finish(mut self) -> Result<()> {
-        self.row();
-        if self.indices.len > u32::MAX as usize {
-            let n = self.indices.len;
-            return Err(Error::too_large(format!(
-                "{n} indices do not fit 32-bit offsets"
-            )));
-        }
-        let offsets = self.offsets.finish();
-        offsets.and(self.indices.finish())
-    }
-}
-
-impl Push for CsrSink<'_> {
-    #[inline(always)]
-    fn push(&mut self, x: u32) {
-        self.indices.push(x);
-    }
-}
-
-impl Rows for CsrSink<'_> {
-    #[inline(always)]
-    fn row(&mut self) {
-        let at = self.indices.len as u32;
-        self.offsets.push(at);
     }
 }

@@ -38,10 +38,8 @@ macro_rules! value {
         $crate::ffi::boundary::guard(|| {
             // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
             let ($c, out) = unsafe {
-                (
-                    $crate::ffi::boundary::core($m)?,
-                    $crate::ffi::boundary::out_arg($out, "out")?,
-                )
+                use $crate::ffi::boundary::{core, out_arg};
+                (core($m)?, out_arg($out, "out")?)
             };
             Ok(out.set($result?))
         })
@@ -51,19 +49,17 @@ macro_rules! value {
     };
 }
 
-/// A variable-size answer into the caller buffer `(buf, cap, *out_len)` (see `Sink`):
-/// `ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.walk_into(v, s))` (the core
-/// writes into the sink), `ids!(m, buf, cap, out_len, check_vertex(v) => |c| iterable)`,
-/// or `ids!(m, buf, cap, out_len, try |c| result)` (a `Result` of an iterable).
+/// A variable-size answer into the caller buffer `(buf, cap, *out_len)` (see
+/// `util::sink::Sink`): `ids!(m, buf, cap, out_len, check_vertex(v) => |c, s| c.walk_into(v,
+/// s))` (the core writes into the sink), `ids!(m, buf, cap, out_len, check_vertex(v) => |c|
+/// iterable)`, or `ids!(m, buf, cap, out_len, try |c| result)` (a `Result` of an iterable).
 macro_rules! ids {
     ($m:ident, $buf:ident, $cap:ident, $len:ident, |$c:ident, $s:ident| $fill:expr) => {
         $crate::ffi::boundary::guard(|| {
             // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
             let ($c, mut sink) = unsafe {
-                (
-                    $crate::ffi::boundary::core($m)?,
-                    $crate::ffi::boundary::Sink::new($buf, $cap, $len, "buf")?,
-                )
+                use $crate::ffi::boundary::{core, sink};
+                (core($m)?, sink($buf, $cap, $len, "buf")?)
             };
             let $s = &mut sink;
             $fill;
@@ -96,8 +92,8 @@ macro_rules! csr {
         $crate::ffi::boundary::guard(|| {
             // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
             let ($c, mut sink) = unsafe {
-                let sink = $crate::ffi::boundary::CsrSink::new;
-                ($crate::ffi::boundary::core($m)?, sink([($o, $oc, $no), ($i, $ic, $ni)])?)
+                use $crate::ffi::boundary::{core, csr_sink};
+                (core($m)?, csr_sink([($o, $oc, $no), ($i, $ic, $ni)])?)
             };
             let $s = &mut sink;
             $crate::util::alloc::Done::done($rows)?;
@@ -133,10 +129,10 @@ macro_rules! make {
     };
 }
 
-/// A new handle from C arrays, with options (NULL: the defaults):
-/// `build!(out, options, Che(TRIANGLES, triangles, n_triangles, n_vertices, positions))`.
+/// A new handle from C arrays, with options (a pointer, NULL: the defaults):
+/// `build!(out, options => Che(TRIANGLES, triangles, n_triangles, n_vertices, positions))`.
 macro_rules! build {
-    ($out:ident, $opt:ident, $core:ident($kind:expr, $ids:ident, $n:ident, $nv:ident, $pos:ident)) => {
+    ($out:ident, $opt:expr => $core:ident($kind:expr, $ids:ident, $n:ident, $nv:ident, $pos:ident)) => {
         $crate::ffi::shapes::make!($out, {
             let options = $crate::ffi::boundary::options_arg($opt).to_core()?;
             let (ids, points) = $crate::ffi::mesh_arrays::mesh_arrays($kind, $ids, $n, $nv, $pos)?;
@@ -145,10 +141,10 @@ macro_rules! build {
     };
 }
 
-/// A new handle from a file, with options (NULL: the defaults):
+/// A new handle from a file, with options (a pointer, NULL: the defaults):
 /// `load!(out, path, options => crate::io::load::che)`.
 macro_rules! load {
-    ($out:ident, $path:ident, $opt:ident => $load:path) => {
+    ($out:ident, $path:ident, $opt:expr => $load:path) => {
         $crate::ffi::shapes::make!($out, {
             let options = $crate::ffi::boundary::options_arg($opt).to_core()?;
             $load($crate::ffi::boundary::path_arg($path, "path")?, options)
@@ -156,33 +152,23 @@ macro_rules! load {
     };
 }
 
-/// A file written from a handle, with `TOPOMESH_WRITE_*` flags:
-/// `save!(m, path, flags => |c, path, options| c.write_with(path, &options))`, or
-/// without: `save!(m, path => |c, path| c.save(path))`.
+/// A file written from a handle: `save!(m, path => |c, path| c.save(path))`, or with
+/// `TOPOMESH_WRITE_*` flags: `save!(m, path, flags => |c, path, options| c.write_with(path,
+/// &options))`.
 macro_rules! save {
     ($m:ident, $path:ident => |$c:ident, $p:ident| $call:expr) => {
         $crate::ffi::boundary::guard(|| {
             // SAFETY: caller contract (see `ffi`): NULL or a live handle and a NUL-terminated
             // path.
             let ($c, $p) = unsafe {
-                (
-                    $crate::ffi::boundary::core($m)?,
-                    $crate::ffi::boundary::path_arg($path, "path")?,
-                )
+                use $crate::ffi::boundary::{core, path_arg};
+                (core($m)?, path_arg($path, "path")?)
             };
             $call
         })
     };
     ($m:ident, $path:ident, $flags:ident => |$c:ident, $p:ident, $o:ident| $call:expr) => {
-        $crate::ffi::boundary::guard(|| {
-            // SAFETY: caller contract (see `ffi`): NULL or a live handle and a NUL-terminated
-            // path.
-            let ($c, $p) = unsafe {
-                (
-                    $crate::ffi::boundary::core($m)?,
-                    $crate::ffi::boundary::path_arg($path, "path")?,
-                )
-            };
+        save!($m, $path => |$c, $p| {
             let $o = $crate::ffi::boundary::write_flags_arg($flags)?;
             $call
         })
@@ -212,8 +198,26 @@ macro_rules! relevel {
     };
 }
 
+/// The reader's warnings of a handle: `warnings!(m)` counts them (0 for NULL),
+/// `warnings!(m, i, buf, cap, out_len)` copies warning `i` (see `boundary::warning_out`).
+macro_rules! warnings {
+    ($m:ident) => {
+        $crate::ffi::boundary::guard_or(0, || {
+            // SAFETY: caller contract (see `ffi`): NULL or a live handle.
+            let h = unsafe { $crate::ffi::boundary::handle($m, "m")? };
+            Ok($crate::ffi::boundary::Handle::warnings(h).len())
+        })
+    };
+    ($m:ident, $i:ident, $buf:ident, $cap:ident, $len:ident) => {
+        // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
+        $crate::ffi::boundary::guard(|| unsafe {
+            $crate::ffi::boundary::warning_out($m, $i, $buf, $cap, $len)
+        })
+    };
+}
+
 /// The Rust side of a handle type and its options struct: `Handle` over the core field,
-/// the handle from a core structure, and the options' defaults and conversion.
+/// the handle from a core structure, the options' defaults, conversion and C layout.
 macro_rules! handle {
     ($h:ident { $field:ident: $core:ty, $($map:ident),* }, $opt:ident => $core_opt:ident) => {
         impl $crate::ffi::boundary::Handle for $h {
@@ -245,16 +249,27 @@ macro_rules! handle {
             }
         }
 
+        $crate::ffi::shapes::options!($opt => $core_opt {
+            level: 0, strict: 4, threads: 8, memory_limit_bytes: 16, weld_tolerance: 24,
+        } 32);
+    };
+}
+
+/// A C options struct over the core's, field by field with their C offsets (the layout C
+/// hosts compile against) and its size: the defaults, `at(level)` and `to_core`, each
+/// field converted by `boundary::CField`.
+macro_rules! options {
+    ($opt:ident => $core_opt:ident { $($f:ident: $at:literal),* $(,)? } $size:literal) => {
+        const _: () = {
+            assert!(core::mem::size_of::<$opt>() == $size);
+            $(assert!(core::mem::offset_of!($opt, $f) == $at);)*
+        };
+
         impl Default for $opt {
             fn default() -> Self {
+                use $crate::ffi::boundary::CField;
                 let d = $core_opt::default();
-                $opt {
-                    level: d.level as u32,
-                    strict: d.strict.into(),
-                    threads: d.threads as u32,
-                    memory_limit_bytes: d.memory_limit_bytes,
-                    weld_tolerance: d.weld_tolerance,
-                }
+                $opt { $($f: d.$f.to_c()),* }
             }
         }
 
@@ -265,14 +280,8 @@ macro_rules! handle {
             }
 
             fn to_core(self) -> $crate::error::Result<$core_opt> {
-                let level = $crate::ffi::boundary::level_arg(self.level)?;
-                Ok($core_opt {
-                    level,
-                    strict: self.strict != 0,
-                    threads: self.threads as usize,
-                    memory_limit_bytes: self.memory_limit_bytes,
-                    weld_tolerance: self.weld_tolerance,
-                })
+                use $crate::ffi::boundary::CField;
+                Ok($core_opt { $($f: CField::from_c(self.$f)?),* })
             }
         }
     };
@@ -292,5 +301,6 @@ macro_rules! mirror {
 }
 
 pub(crate) use {
-    build, count, csr, handle, ids, load, make, mirror, open, relevel, save, status, value, view,
+    build, count, csr, handle, ids, load, make, mirror, open, options, relevel, save, status,
+    value, view, warnings,
 };

@@ -74,19 +74,10 @@ pub unsafe extern "C" fn topomesh_last_error(
 ) -> Status {
     // Not behind `boundary::guard`: reading the detail must not overwrite it.
     let run = || {
-        // SAFETY: the caller passes NULL or a pointer valid for one write.
-        let out_len = unsafe { boundary::out_arg(out_len, "out_len") };
-        let (Ok(out_len), false) = (out_len, buf.is_null() && cap != 0) else {
-            return Status::NullArgument;
-        };
-        boundary::with_last_error(|msg| {
-            // SAFETY: `buf` is NULL or valid for `cap` byte writes (caller contract).
-            if unsafe { boundary::text_out(msg, buf, cap, &out_len) } {
-                Status::Ok
-            } else {
-                Status::BufferTooSmall
-            }
-        })
+        // SAFETY: caller contract: NULL or valid pointers of the stated sizes.
+        let copied =
+            boundary::with_last_error(|msg| unsafe { boundary::text_out(msg, buf, cap, out_len) });
+        copied.map_or_else(|e| boundary::status_of(e.kind), |()| Status::Ok)
     };
     boundary::catch(run).unwrap_or(Status::Panic)
 }

@@ -152,13 +152,13 @@ fn sinks_count_past_capacity() {
     let mut buf = [0u32; 2];
     let mut len = 0usize;
     // SAFETY: local buffers of the stated sizes.
-    let mut s = unsafe { Sink::new(buf.as_mut_ptr(), 2, &mut len, "buf") }.unwrap();
+    let mut s = unsafe { sink(buf.as_mut_ptr(), 2, &mut len, "buf") }.unwrap();
     s.extend([1, 2, 3]);
     let e = s.finish().unwrap_err();
     assert_eq!(e.kind, ErrorKind::BufferTooSmall);
     assert_eq!((len, buf), (3, [1, 2]));
     // SAFETY: a size query writes only `len`.
-    let mut s = unsafe { Sink::new(null_mut(), 0, &mut len, "buf") }.unwrap();
+    let mut s = unsafe { sink(null_mut(), 0, &mut len, "buf") }.unwrap();
     s.extend([1, 2, 3, 4]);
     s.push(5);
     s.finish().unwrap();

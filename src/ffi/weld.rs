@@ -1,6 +1,6 @@
 //! The weld alone, for a C host that wants the map the builds apply with `weld_tolerance`.
 
-use super::boundary::{Sink, guard};
+use super::boundary::{guard, sink};
 use super::mesh_arrays::{TRIANGLES, mesh_arrays};
 use super::status::Status;
 use crate::error::{Error, ErrorKind};
@@ -26,7 +26,7 @@ pub unsafe extern "C" fn topomesh_weld_representatives(
             ));
         }
         // SAFETY: forwarded contract.
-        let mut sink = unsafe { Sink::new(buf, cap, out_len, "buf")? };
+        let mut sink = unsafe { sink(buf, cap, out_len, "buf")? };
         sink.extend(crate::util::weld::representatives(points, tolerance)?);
         sink.finish()
     })

@@ -76,19 +76,10 @@ pub(crate) fn sections<'a>(che: &'a Che, prefix: &str) -> Vec<Section<'a>> {
 }
 
 pub(crate) fn save_che(che: &Che, path: &Path) -> Result<()> {
-    let flags = if che.positions.is_empty() {
-        0
-    } else {
-        FLAG_POSITIONS
-    };
+    let sections = sections(che, "");
     save(
         path,
-        &Contents {
-            kind: Kind::Che,
-            level: che.level,
-            flags,
-            sections: sections(che, ""),
-        },
+        &Contents::of(Kind::Che, che.level, &che.positions, sections),
     )
 }
 

@@ -89,19 +89,10 @@ fn sections(chf: &Chf) -> Vec<Section<'_>> {
 }
 
 pub(crate) fn save_chf(chf: &Chf, path: &Path) -> Result<()> {
-    let flags = if chf.positions.is_empty() {
-        0
-    } else {
-        FLAG_POSITIONS
-    };
+    let sections = sections(chf);
     save(
         path,
-        &Contents {
-            kind: Kind::Chf,
-            level: chf.level,
-            flags,
-            sections: sections(chf),
-        },
+        &Contents::of(Kind::Chf, chf.level, &chf.positions, sections),
     )
 }
 

@@ -90,6 +90,26 @@ pub(crate) struct Contents<'a> {
     pub sections: Vec<Section<'a>>,
 }
 
+impl<'a> Contents<'a> {
+    /// The contents of a structure of `kind` at `level`, flagged as holding positions
+    /// when `positions` is not empty.
+    pub(crate) fn of<T>(
+        kind: Kind, level: u8, positions: &[T], sections: Vec<Section<'a>>,
+    ) -> Self {
+        let flags = if positions.is_empty() {
+            0
+        } else {
+            super::format::FLAG_POSITIONS
+        };
+        Contents {
+            kind,
+            level,
+            flags,
+            sections,
+        }
+    }
+}
+
 /// The table entries (with checksums) and the file length.
 fn layout(sections: &[Section]) -> Result<(Vec<Entry>, u64)> {
     let mut at = format::table_end(sections.len());

@@ -54,3 +54,32 @@ pub(crate) fn element_components<const K: usize>(
     let isolated = used.iter().filter(|&&u| !u).count() as u64;
     Ok((components, isolated))
 }
+
+/// The input complex as the summaries count it (`v`, `n` and `origin` as for
+/// [`element_components`]): its components and isolated vertices and the vertices it keeps,
+/// the `welded` ones left out (the weld merged them into another: they are not vertices
+/// of the welded complex), plus the marks and the union-find over the input vertices that
+/// the summary's boundary pass fills. Panics only when memory runs out, as the summaries.
+pub(crate) struct InputComplex {
+    pub components: u64,
+    pub isolated: u64,
+    pub kept: usize,
+    pub on_boundary: Vec<bool>,
+    pub dsu: Dsu,
+}
+
+impl InputComplex {
+    pub(crate) fn new<const K: usize>(
+        v: &[u32], n: usize, welded: usize, origin: impl Fn(u32) -> u32,
+    ) -> Self {
+        use crate::util::alloc::{or_panic, try_vec};
+        let (components, isolated) = or_panic(element_components::<K>(v, n, origin));
+        InputComplex {
+            components,
+            isolated: isolated - welded as u64,
+            kept: n - welded,
+            on_boundary: or_panic(try_vec(n, false, "the summary's boundary marks")),
+            dsu: or_panic(Dsu::new(n)),
+        }
+    }
+}

@@ -19,6 +19,7 @@ pub(crate) mod par;
 pub mod progress;
 pub(crate) mod rank;
 pub(crate) mod rank_directory;
+pub(crate) mod sink;
 pub(crate) mod small_ids;
 pub mod sparse;
 pub(crate) mod store;

@@ -44,6 +44,18 @@ pub struct BuildReport {
 }
 
 impl BuildReport {
+    /// The example lists, flattened, in the order of the C API's `che_report_kind`.
+    pub fn example_lists(&self) -> [&[u32]; 6] {
+        [
+            &self.degenerate_examples,
+            self.duplicate_examples.as_flattened(),
+            self.non_manifold_edge_examples.as_flattened(),
+            &self.split_vertex_examples,
+            &self.non_orientable_examples,
+            &self.non_finite_vertex_examples,
+        ]
+    }
+
     /// True when the build changed nothing but orientation.
     pub fn is_clean(&self) -> bool {
         self.dropped_degenerate == 0

@@ -6,29 +6,30 @@ use crate::che::ids::{next, tri};
 use crate::error::Result;
 use crate::util::sparse::{Entry, SparseMatrix, reserve};
 
-/// Which matrix [`Che::matrix`] gives. Vertices, edges and triangles are the structure's
-/// (split vertices and edges count apart, as every other query counts them).
-#[repr(C)]
+/// Which matrix `che_mesh_export_matrix` writes (vertices, edges and triangles are the
+/// structure's).
+#[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MatrixKind {
-    /// `V x V`: 1 where an edge joins two vertices (several edges count once).
+    /// V x V: 1 where an edge joins two vertices (several edges count once).
     VertexAdjacency = 0,
-    /// `E x E`: 1 where two edges share a vertex.
+    /// E x E: 1 where two edges share a vertex.
     EdgeAdjacency = 1,
-    /// `V x E`, the boundary operator on edges: edge `e` from `a` to `b` in its canonical
-    /// direction (`Che::edge_vertices`) has -1 at row `a` and +1 at row `b`.
+    /// V x E, the boundary operator d1: edge e from a to b (its canonical direction,
+    /// che_edge_vertices) has -1 in row a and +1 in row b.
     D1 = 2,
-    /// `E x T`, the boundary operator on triangles: +1 where the triangle runs along the
-    /// edge's canonical direction (its half-edge is the canonical one), -1 where it runs
-    /// against it. `D1 * D2 == 0`.
+    /// E x T, the boundary operator d2: +1 where the triangle runs along the edge's
+    /// canonical direction, -1 where it runs against it. d1 * d2 == 0.
     D2 = 3,
-    /// `V x V`, the combinatorial Laplacian: the number of neighbours on the diagonal, -1
+    /// V x V, the combinatorial Laplacian: the number of neighbours on the diagonal, -1
     /// where the vertex adjacency has 1.
     Laplacian = 4,
-    /// `T x T`, the dual graph: 1 where two triangles share an edge.
+    /// T x T, the dual graph: 1 where two triangles share an edge.
     DualAdjacency = 5,
 }
 
+// cbindgen reads this file for the C enum (`tests/header_drift.rs`); the list is Rust's.
+/// cbindgen:ignore
 impl MatrixKind {
     pub const ALL: [MatrixKind; 6] = [
         MatrixKind::VertexAdjacency,

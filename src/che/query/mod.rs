@@ -8,6 +8,7 @@ mod curves;
 mod memory;
 mod relations;
 mod star;
+mod star_lent;
 mod summary;
 mod validate;
 
@@ -16,4 +17,5 @@ pub(crate) use bulk::{Push, Rows};
 pub use curves::BoundaryWalk;
 pub use memory::Memory;
 pub use star::{Rotation, StarCursor, StarStep};
+pub use star_lent::{LentStar, LentStep};
 pub use summary::Summary;

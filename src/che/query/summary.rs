@@ -4,8 +4,7 @@
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::next;
-use crate::util::alloc::{or_panic, try_vec};
-use crate::util::dsu::{Dsu, element_components};
+use crate::util::dsu::InputComplex;
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -41,16 +40,18 @@ impl Che {
         }
         let r = &self.report;
         let n = self.n_input_vertices;
-        let components = element_components::<3>(&self.v, n, |x| self.vertex_origin(x));
-        let (components, isolated) = or_panic(components);
-        // The vertices the weld merged into another are not vertices of the welded complex.
-        let isolated = isolated - r.welded_vertices as u64;
-        let kept = n - r.welded_vertices;
+        let input =
+            InputComplex::new::<3>(&self.v, n, r.welded_vertices, |x| self.vertex_origin(x));
+        let InputComplex {
+            components,
+            isolated,
+            kept,
+            mut on_boundary,
+            mut dsu,
+        } = input;
 
         // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
         let o = self.opposites_or_computed();
-        let mut on_boundary = or_panic(try_vec(n, false, "the summary's boundary marks"));
-        let mut dsu = or_panic(Dsu::new(n));
         for h in 0..self.v.len() as u32 {
             if o[h as usize] != NONE
                 || self.non_manifold.binary_search(&h).is_ok()

@@ -66,6 +66,22 @@ pub struct BuildReport {
 }
 
 impl BuildReport {
+    /// The example lists, flattened, in the order of the C API's `chf_report_kind`.
+    pub fn example_lists(&self) -> [&[u32]; 10] {
+        [
+            &self.degenerate_examples,
+            &self.zero_volume_examples,
+            &self.inverted_examples,
+            self.duplicate_examples.as_flattened(),
+            self.non_manifold_face_examples.as_flattened(),
+            self.non_manifold_edge_examples.as_flattened(),
+            self.kept_non_manifold_edge_examples.as_flattened(),
+            &self.split_vertex_examples,
+            &self.non_orientable_examples,
+            &self.non_finite_vertex_examples,
+        ]
+    }
+
     /// True when the build changed nothing but orientation.
     pub fn is_clean(&self) -> bool {
         self.dropped_degenerate == 0

@@ -7,23 +7,24 @@ use crate::chf::query::view::{Need, View};
 use crate::error::Result;
 use crate::util::sparse::{Entry, SparseMatrix, reserve};
 
-/// Which matrix [`Chf::volume_matrix`] gives (the structure's vertices, edges, faces and
-/// tetrahedra). `D1 * D2 == 0` and `D2 * D3 == 0`.
-#[repr(C)]
+/// Which matrix `chf_mesh_export_matrix` writes (the structure's elements).
+#[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum VolumeMatrixKind {
-    /// `V x E`: edge `e` from `a` to `b` (`Chf::edge_vertices`) has -1 at `a`, +1 at `b`.
+    /// V x E: edge e from a to b (chf_edge_vertices) has -1 in row a, +1 in row b.
     D1 = 0,
-    /// `E x F`: +1 where the face's cycle (`Chf::face_vertices`) runs along the edge's
-    /// direction, -1 where it runs against it.
+    /// E x F: +1 where the face's cycle (chf_face_vertices) runs along the edge, -1
+    /// against it.
     D2 = 1,
-    /// `F x T`: +1 where the tetrahedron's half-face is the face's canonical one (the
-    /// face's cycle points out of it), -1 where it is the twin.
+    /// F x T: +1 where the tetrahedron holds the face's canonical half-face, -1 where it
+    /// holds the twin. d1 * d2 == 0 and d2 * d3 == 0.
     D3 = 2,
-    /// `T x T`, the dual graph: 1 where two tetrahedra share a face.
+    /// T x T, the dual graph: 1 where two tetrahedra share a face.
     DualAdjacency = 3,
 }
 
+// cbindgen reads this file for the C enum (`tests/header_drift.rs`); the list is Rust's.
+/// cbindgen:ignore
 impl VolumeMatrixKind {
     pub const ALL: [VolumeMatrixKind; 4] = [
         VolumeMatrixKind::D1,

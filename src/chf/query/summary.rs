@@ -6,8 +6,8 @@ use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::face_cycle;
 use crate::chf::query::view::Need;
-use crate::util::alloc::{or_panic, try_vec};
-use crate::util::dsu::{Dsu, element_components};
+use crate::util::alloc::or_panic;
+use crate::util::dsu::InputComplex;
 
 /// Field names match `chf_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -50,16 +50,18 @@ impl Chf {
         }
         let r = &self.report;
         let n = self.n_input_vertices;
-        let components = element_components::<4>(&self.v, n, |x| self.vertex_origin(x));
-        let (components, isolated) = or_panic(components);
-        // The vertices the weld merged into another are not vertices of the welded complex.
-        let isolated = isolated - r.welded_vertices as u64;
-        let kept = n - r.welded_vertices;
+        let input =
+            InputComplex::new::<4>(&self.v, n, r.welded_vertices, |x| self.vertex_origin(x));
+        let InputComplex {
+            components,
+            isolated,
+            kept,
+            mut on_boundary,
+            mut dsu,
+        } = input;
 
         // Input boundary faces: unpaired half-faces that are neither non-manifold nor seams.
         let view = self.view(Need::NOTHING);
-        let mut on_boundary = or_panic(try_vec(n, false, "the summary's boundary marks"));
-        let mut dsu = or_panic(Dsu::new(n));
         let mut pairs: Vec<u64> = Vec::new();
         for hf in 0..self.v.len() as u32 {
             if view.o[hf as usize] != NONE

@@ -21,6 +21,12 @@ fn ensure_len(name: &str, len: usize, n: usize, of: &str) -> Result<()> {
     })
 }
 
+/// `Err` unless the stored list `got` is the recomputed `want`; `what` gives the detail
+/// from both lengths.
+fn ensure_same(got: &[u32], want: &[u32], what: impl FnOnce(usize, usize) -> String) -> Result<()> {
+    ensure(got == want, || what(got.len(), want.len()))
+}
+
 /// `Err` unless a directory of `kind` sets one bit (`ones` in all) for each of `n` elements.
 fn ensure_ones(kind: &str, ones: usize, n: usize) -> Result<()> {
     ensure(ones == n, || format!("{ones} {kind} bits for {n} {kind}s"))
@@ -307,12 +313,8 @@ impl Chf {
         let unpaired: Vec<u32> = (0..o.len() as u32)
             .filter(|&h| o[h as usize] == NONE)
             .collect();
-        ensure(b.half_faces == unpaired, || {
-            format!(
-                "{} boundary triangles for {} unpaired half-faces",
-                b.half_faces.len(),
-                unpaired.len()
-            )
+        ensure_same(&b.half_faces, &unpaired, |t, u| {
+            format!("{t} boundary triangles for {u} unpaired half-faces")
         })?;
         let flagged = self.non_manifold.len() + self.seams.len();
         ensure(b.true_faces + flagged == unpaired.len(), || {
@@ -346,12 +348,8 @@ impl Chf {
         let vertices: Vec<u32> = (0..self.n_vertices as u32)
             .filter(|&v| on[v as usize])
             .collect();
-        ensure(b.vertices == vertices, || {
-            format!(
-                "{} boundary vertices, {} vertices on unpaired half-faces",
-                b.vertices.len(),
-                vertices.len()
-            )
+        ensure_same(&b.vertices, &vertices, |b, v| {
+            format!("{b} boundary vertices, {v} vertices on unpaired half-faces")
         })?;
         for (v, &on) in on.iter().enumerate() {
             ensure(b.vertex_bits.get(v) == on, || {

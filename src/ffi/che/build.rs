@@ -26,9 +26,7 @@ pub unsafe extern "C" fn che_mesh_from_triangles(
     triangles: *const u32, n_triangles: usize, n_vertices: usize, positions: *const f64,
     level: u32, out: *mut *mut CheMesh,
 ) -> Status {
-    let o = CheBuildOptions::at(level);
-    // SAFETY: the same contract as the `_ex` variant; `o` is a local.
-    unsafe { che_mesh_from_triangles_ex(triangles, n_triangles, n_vertices, positions, &o, out) }
+    build!(out, &CheBuildOptions::at(level) => Che(TRIANGLES, triangles, n_triangles, n_vertices, positions))
 }
 
 /// `che_mesh_from_triangles` with options (NULL: `che_build_options_default()`). With
@@ -39,11 +37,7 @@ pub unsafe extern "C" fn che_mesh_from_triangles_ex(
     triangles: *const u32, n_triangles: usize, n_vertices: usize, positions: *const f64,
     options: *const CheBuildOptions, out: *mut *mut CheMesh,
 ) -> Status {
-    build!(
-        out,
-        options,
-        Che(TRIANGLES, triangles, n_triangles, n_vertices, positions)
-    )
+    build!(out, options => Che(TRIANGLES, triangles, n_triangles, n_vertices, positions))
 }
 
 /// Reads a surface file (the format from the extension: .off .obj .ply .stl; also .mesh
@@ -55,8 +49,7 @@ pub unsafe extern "C" fn che_mesh_from_triangles_ex(
 pub unsafe extern "C" fn che_mesh_load(
     path: *const c_char, level: u32, out: *mut *mut CheMesh,
 ) -> Status {
-    // SAFETY: the same contract as the `_ex` variant; the options are a local.
-    unsafe { che_mesh_load_ex(path, &CheBuildOptions::at(level), out) }
+    load!(out, path, &CheBuildOptions::at(level) => crate::io::load::che_loaded)
 }
 
 /// `che_mesh_load` with options (NULL: `che_build_options_default()`).

@@ -7,7 +7,7 @@
 use super::CheMesh;
 use crate::che::{HalfEdgeArrays, HalfEdgeOptions, MatrixKind, SparseMatrix, WingedEdges};
 use crate::error::{Error, Result};
-use crate::ffi::boundary::{Handle, Sink, core, guard, options_arg, report_kind};
+use crate::ffi::boundary::{Handle, core, guard, options_arg, report_kind, sink};
 use crate::ffi::shapes::{ids, value};
 use crate::ffi::status::Status;
 
@@ -62,28 +62,6 @@ pub enum CheWingedArray {
     VertexEdge = 3,
     /// 1 per triangle t: the edge of half-edge 3t.
     FaceEdge = 4,
-}
-
-/// Which matrix `che_mesh_export_matrix` writes (vertices, edges and triangles are the
-/// structure's).
-#[repr(u32)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CheMatrixKind {
-    /// V x V: 1 where an edge joins two vertices (several edges count once).
-    VertexAdjacency = 0,
-    /// E x E: 1 where two edges share a vertex.
-    EdgeAdjacency = 1,
-    /// V x E, the boundary operator d1: edge e from a to b (its canonical direction,
-    /// che_edge_vertices) has -1 in row a and +1 in row b.
-    D1 = 2,
-    /// E x T, the boundary operator d2: +1 where the triangle runs along the edge's
-    /// canonical direction, -1 where it runs against it. d1 * d2 == 0.
-    D2 = 3,
-    /// V x V, the combinatorial Laplacian: the number of neighbours on the diagonal, -1
-    /// where the vertex adjacency has 1.
-    Laplacian = 4,
-    /// T x T, the dual graph: 1 where two triangles share an edge.
-    DualAdjacency = 5,
 }
 
 /// Which list `che_mesh_export_strips` writes.
@@ -223,7 +201,7 @@ pub unsafe extern "C" fn che_mesh_export_matrix(
     unsafe {
         matrix_out(
             m,
-            [offsets.cast(), columns.cast(), values.cast()],
+            (offsets, columns, values),
             [offsets_cap, columns_cap, values_cap],
             [n_offsets, n_entries],
             |c| c.matrix(report_kind(MatrixKind::ALL, kind, "che_matrix_kind")?),
@@ -232,41 +210,34 @@ pub unsafe extern "C" fn che_mesh_export_matrix(
 }
 
 /// The body of a matrix export: `bufs` are the offsets (`u64`), columns (`u32`) and
-/// values (`f64`) buffers as the caller gave them (all NULL: a size query), `lens` the
-/// offsets' and entries' out-lengths; `make` gives the matrix from the handle's core.
+/// values (`f64`) buffers as the caller gave them (all NULL: a size query; some NULL and
+/// not all: an error), `lens` the offsets' and entries' out-lengths; `make` gives the
+/// matrix from the handle's core.
 pub(crate) unsafe fn matrix_out<H: Handle>(
-    m: *const H, bufs: [*mut u8; 3], caps: [usize; 3], lens: [*mut usize; 2],
+    m: *const H, bufs: (*mut u64, *mut u32, *mut f64), caps: [usize; 3], lens: [*mut usize; 2],
     make: impl FnOnce(&H::Core) -> Result<SparseMatrix>,
 ) -> Status {
     guard(|| {
-        let names = ["offsets", "columns", "values"];
-        let nulls = bufs.map(|b| b.is_null());
+        let nulls = [bufs.0.is_null(), bufs.1.is_null(), bufs.2.is_null()];
         if let Some(k) = nulls
             .iter()
             .position(|&n| n)
             .filter(|_| nulls.contains(&false))
         {
-            let message = format!(
-                "argument '{}' is NULL while the other buffers are not",
-                names[k]
-            );
+            let name = ["offsets", "columns", "values"][k];
+            let message = format!("argument '{name}' is NULL while the other buffers are not");
             return Err(Error::new(crate::ErrorKind::NullArgument, message));
         }
         let mut n_values = 0usize;
         // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-        let (c, mut o, mut k, mut v) = unsafe {
+        let (c, sinks) = unsafe {
+            let o = sink(bufs.0, caps[0], lens[0], "offsets")?;
+            let k = sink(bufs.1, caps[1], lens[1], "columns")?;
             (
                 core(m)?,
-                Sink::<u64>::new(bufs[0].cast(), caps[0], lens[0], "offsets")?,
-                Sink::<u32>::new(bufs[1].cast(), caps[1], lens[1], "columns")?,
-                Sink::<f64>::new(bufs[2].cast(), caps[2], &mut n_values, "values")?,
+                (o, k, sink(bufs.2, caps[2], &mut n_values, "values")?),
             )
         };
-        let a = make(c)?;
-        o.extend(a.offsets);
-        k.extend(a.columns);
-        v.extend(a.values);
-        let (o, k) = (o.finish(), k.finish());
-        o.and(k).and(v.finish())
+        make(c)?.write_into(sinks)
     })
 }

@@ -3,8 +3,7 @@
 
 use super::CheMesh;
 use crate::che::{BuildReport, Memory, Summary};
-use crate::error::Result;
-use crate::ffi::boundary::{flat, report_kind};
+use crate::ffi::boundary::report_kind;
 use crate::ffi::shapes::{ids, mirror, status, value};
 use crate::ffi::status::Status;
 
@@ -117,30 +116,13 @@ pub enum CheReportKind {
     NonFiniteVertex = 5,
 }
 
-/// The report's examples of kind `kind`, flattened.
-fn examples(r: &BuildReport, kind: u32) -> Result<Vec<u32>> {
-    let (pairs, edges) = (
-        flat(&r.duplicate_examples),
-        flat(&r.non_manifold_edge_examples),
-    );
-    let all = [
-        r.degenerate_examples.clone(),
-        pairs,
-        edges,
-        r.split_vertex_examples.clone(),
-        r.non_orientable_examples.clone(),
-        r.non_finite_vertex_examples.clone(),
-    ];
-    report_kind(all, kind, "che_report_kind")
-}
-
 /// The first offending ids of one kind (a `che_report_kind` value), flattened, into `buf`
 /// (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_report_examples(
     m: *const CheMesh, kind: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
-    ids!(m, buf, cap, out_len, try |c| examples(c.report(), kind))
+    ids!(m, buf, cap, out_len, try |c| report_kind(c.report().example_lists(), kind, "che_report_kind").map(|l| l.iter().copied()))
 }
 
 /// Bytes held by each container (lengths, not capacities).

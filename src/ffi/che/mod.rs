@@ -63,15 +63,6 @@ pub struct CheBuildOptions {
     pub weld_tolerance: f64,
 }
 
-// The layout C hosts compile against: `strict` where the `bool` was, then the budget and the weld.
-const _: () = {
-    assert!(core::mem::size_of::<CheBuildOptions>() == 32);
-    assert!(core::mem::offset_of!(CheBuildOptions, strict) == 4);
-    assert!(core::mem::offset_of!(CheBuildOptions, threads) == 8);
-    assert!(core::mem::offset_of!(CheBuildOptions, memory_limit_bytes) == 16);
-    assert!(core::mem::offset_of!(CheBuildOptions, weld_tolerance) == 24);
-};
-
 /// The default build options: level 2, not strict, every thread of the machine.
 #[unsafe(no_mangle)]
 pub extern "C" fn che_build_options_default() -> CheBuildOptions {

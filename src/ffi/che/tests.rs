@@ -30,7 +30,7 @@ fn star_iterator_matches_the_core_rotation() {
                 let mut got = Vec::new();
                 // SAFETY: the iterator was begun on a live mesh; `step` is a local.
                 while unsafe { che_star_advance(it.as_mut_ptr(), &mut step) } {
-                    got.push(step.vertex);
+                    got.push(step.0.vertex);
                 }
                 assert_eq!(
                     got,

@@ -29,9 +29,7 @@ pub unsafe extern "C" fn chf_mesh_from_tetrahedra(
     tetrahedra: *const u32, n_tets: usize, n_vertices: usize, positions: *const f64, level: u32,
     out: *mut *mut ChfMesh,
 ) -> Status {
-    // SAFETY: the same contract as the `_ex` variant; the options are a local.
-    let options = ChfBuildOptions::at(level);
-    unsafe { chf_mesh_from_tetrahedra_ex(tetrahedra, n_tets, n_vertices, positions, &options, out) }
+    build!(out, &ChfBuildOptions::at(level) => Chf(TETRAHEDRA, tetrahedra, n_tets, n_vertices, positions))
 }
 
 /// `chf_mesh_from_tetrahedra` with options (NULL: `chf_build_options_default()`). With
@@ -42,11 +40,7 @@ pub unsafe extern "C" fn chf_mesh_from_tetrahedra_ex(
     tetrahedra: *const u32, n_tets: usize, n_vertices: usize, positions: *const f64,
     options: *const ChfBuildOptions, out: *mut *mut ChfMesh,
 ) -> Status {
-    build!(
-        out,
-        options,
-        Chf(TETRAHEDRA, tetrahedra, n_tets, n_vertices, positions)
-    )
+    build!(out, options => Chf(TETRAHEDRA, tetrahedra, n_tets, n_vertices, positions))
 }
 
 /// Reads a volume file (the format from the extension: .mesh (Medit), .msh (Gmsh), .vtk,
@@ -59,8 +53,7 @@ pub unsafe extern "C" fn chf_mesh_from_tetrahedra_ex(
 pub unsafe extern "C" fn chf_mesh_load(
     path: *const c_char, level: u32, out: *mut *mut ChfMesh,
 ) -> Status {
-    // SAFETY: the same contract as the `_ex` variant; the options are a local.
-    unsafe { chf_mesh_load_ex(path, &ChfBuildOptions::at(level), out) }
+    load!(out, path, &ChfBuildOptions::at(level) => crate::io::load::chf_loaded)
 }
 
 /// `chf_mesh_load` with options (NULL: `chf_build_options_default()`).

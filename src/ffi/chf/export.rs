@@ -24,22 +24,6 @@ pub enum ChfHalfFaceArray {
     Face = 2,
 }
 
-/// Which matrix `chf_mesh_export_matrix` writes (the structure's elements).
-#[repr(u32)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ChfMatrixKind {
-    /// V x E: edge e from a to b (chf_edge_vertices) has -1 in row a, +1 in row b.
-    D1 = 0,
-    /// E x F: +1 where the face's cycle (chf_face_vertices) runs along the edge, -1
-    /// against it.
-    D2 = 1,
-    /// F x T: +1 where the tetrahedron holds the face's canonical half-face, -1 where it
-    /// holds the twin. d1 * d2 == 0 and d2 * d3 == 0.
-    D3 = 2,
-    /// T x T, the dual graph: 1 where two tetrahedra share a face.
-    DualAdjacency = 3,
-}
-
 /// Betti numbers over Z/2.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -88,12 +72,11 @@ pub unsafe extern "C" fn chf_mesh_export_matrix(
     columns_cap: usize, values: *mut f64, values_cap: usize, n_offsets: *mut usize,
     n_entries: *mut usize,
 ) -> Status {
-    let bufs = [offsets.cast(), columns.cast(), values.cast()];
     // SAFETY: forwarded caller contract.
     unsafe {
         matrix_out(
             m,
-            bufs,
+            (offsets, columns, values),
             [offsets_cap, columns_cap, values_cap],
             [n_offsets, n_entries],
             |c| c.volume_matrix(report_kind(VolumeMatrixKind::ALL, kind, "chf_matrix_kind")?),

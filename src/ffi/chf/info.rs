@@ -3,8 +3,7 @@
 
 use super::ChfMesh;
 use crate::chf::{BuildReport as Report, Memory, Summary};
-use crate::error::Result;
-use crate::ffi::boundary::{flat, report_kind};
+use crate::ffi::boundary::report_kind;
 use crate::ffi::shapes::{ids, mirror, status, value};
 use crate::ffi::status::Status;
 
@@ -150,30 +149,13 @@ pub enum ChfReportKind {
     NonFiniteVertex = 9,
 }
 
-/// The report's examples of kind `kind`, flattened.
-fn examples(r: &Report, kind: u32) -> Result<Vec<u32>> {
-    let all = [
-        r.degenerate_examples.clone(),
-        r.zero_volume_examples.clone(),
-        r.inverted_examples.clone(),
-        flat(&r.duplicate_examples),
-        flat(&r.non_manifold_face_examples),
-        flat(&r.non_manifold_edge_examples),
-        flat(&r.kept_non_manifold_edge_examples),
-        r.split_vertex_examples.clone(),
-        r.non_orientable_examples.clone(),
-        r.non_finite_vertex_examples.clone(),
-    ];
-    report_kind(all, kind, "chf_report_kind")
-}
-
 /// The first offending ids of one kind (a `chf_report_kind` value), flattened, into `buf`
 /// (the buffer rules of the relations). An unknown kind gives OUT_OF_RANGE.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_report_examples(
     m: *const ChfMesh, kind: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
 ) -> Status {
-    ids!(m, buf, cap, out_len, try |c| examples(c.report(), kind))
+    ids!(m, buf, cap, out_len, try |c| report_kind(c.report().example_lists(), kind, "chf_report_kind").map(|l| l.iter().copied()))
 }
 
 /// Bytes held by each container (lengths, not capacities).

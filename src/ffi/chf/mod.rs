@@ -64,15 +64,6 @@ pub struct ChfBuildOptions {
     pub weld_tolerance: f64,
 }
 
-// The layout C hosts compile against: `strict` where the `bool` was, then the budget and the weld.
-const _: () = {
-    assert!(core::mem::size_of::<ChfBuildOptions>() == 32);
-    assert!(core::mem::offset_of!(ChfBuildOptions, strict) == 4);
-    assert!(core::mem::offset_of!(ChfBuildOptions, threads) == 8);
-    assert!(core::mem::offset_of!(ChfBuildOptions, memory_limit_bytes) == 16);
-    assert!(core::mem::offset_of!(ChfBuildOptions, weld_tolerance) == 24);
-};
-
 /// The default CHF build options: level 2, not strict, every thread of the machine.
 #[unsafe(no_mangle)]
 pub extern "C" fn chf_build_options_default() -> ChfBuildOptions {

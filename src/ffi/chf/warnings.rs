@@ -3,7 +3,7 @@
 //! one `file:line: message` text each.
 
 use super::ChfMesh;
-use crate::ffi::boundary::{guard, guard_or, handle, warning_out};
+use crate::ffi::shapes::warnings;
 use crate::ffi::status::Status;
 use std::ffi::c_char;
 
@@ -11,8 +11,7 @@ use std::ffi::c_char;
 /// from arrays, and for NULL). O(1).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_warnings(m: *const ChfMesh) -> usize {
-    // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-    guard_or(0, || Ok(unsafe { handle(m, "m")? }.warnings.len()))
+    warnings!(m)
 }
 
 /// Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
@@ -24,6 +23,5 @@ pub unsafe extern "C" fn chf_mesh_num_warnings(m: *const ChfMesh) -> usize {
 pub unsafe extern "C" fn chf_mesh_warning(
     m: *const ChfMesh, i: usize, buf: *mut c_char, cap: usize, out_len: *mut usize,
 ) -> Status {
-    // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
-    guard(|| unsafe { warning_out(m, i, buf, cap, out_len) })
+    warnings!(m, i, buf, cap, out_len)
 }

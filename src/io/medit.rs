@@ -6,6 +6,7 @@ use super::MeshData;
 use super::text::{self, Lexer};
 use super::warning::Warning;
 use crate::error::Result;
+use crate::util::alloc::{try_push, try_reserve};
 use glam::DVec3;
 use std::path::Path;
 
@@ -113,11 +114,15 @@ impl Elements {
         if n > 0 && num_vertices == 0 {
             return Err(lx.error(format!("{keyword} before (or without) Vertices")));
         }
-        out.reserve(lx.capacity(n, self.tokens));
+        try_reserve(out, lx.capacity(n, self.tokens), keyword)?;
         let out_of_range =
             |id| format!("vertex id {id} out of range 1..={num_vertices} in {keyword}");
         for _ in 0..n {
-            out.push(lx.ids("a vertex id", (1, num_vertices), out_of_range)?);
+            try_push(
+                out,
+                lx.ids("a vertex id", (1, num_vertices), out_of_range)?,
+                keyword,
+            )?;
             lx.skip(self.tokens - K, "the rest of an element")?;
         }
         Ok(())
@@ -188,13 +193,14 @@ impl Sections {
         self.have_vertices = true;
         let n = lx.point_count("the number of vertices")?;
         let positions = &mut self.data.positions;
-        positions.reserve(lx.capacity(n, self.dim + 1));
+        try_reserve(positions, lx.capacity(n, self.dim + 1), "the vertices")?;
         for _ in 0..n {
-            positions.push(if self.dim == 3 {
+            let p = if self.dim == 3 {
                 lx.point()?
             } else {
                 DVec3::new(lx.f64("a coordinate")?, lx.f64("a coordinate")?, 0.0)
-            });
+            };
+            try_push(positions, p, "the vertices")?;
             lx.expect("a vertex reference")?;
         }
         Ok(())

@@ -108,9 +108,16 @@ pub fn read(path: &Path) -> Result<MeshData> {
     Ok(data)
 }
 
-/// Reads a whole file, naming it in the error.
+/// Reads a whole file, naming it in the error; a file too large for memory is an
+/// out-of-memory error (the standard library asks for the buffer fallibly).
 pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
-    std::fs::read(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
+    std::fs::read(path).map_err(|e| match e.kind() {
+        std::io::ErrorKind::OutOfMemory => {
+            let len = std::fs::metadata(path).map_or(0, |m| m.len());
+            Error::out_of_memory(len, &format!("the bytes of {}", path.display()))
+        }
+        _ => Error::io(format!("{}: {e}", path.display())),
+    })
 }
 
 /// Parses a mesh held in memory (`name` appears in errors). TetGen needs two files, so

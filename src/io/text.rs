@@ -6,6 +6,7 @@
 use super::MeshData;
 use crate::error::{Error, Result};
 use glam::DVec3;
+use std::borrow::Cow;
 use std::fmt::Display;
 use std::path::Path;
 
@@ -268,10 +269,28 @@ pub(in crate::io) fn quote(tok: &str) -> String {
 /// damaged file gets a parse error with a line instead of a bare I/O error.
 pub(in crate::io) fn read_text(path: &Path) -> Result<String> {
     let bytes = crate::io::read_bytes(path)?;
-    Ok(match String::from_utf8(bytes) {
-        Ok(s) => s,
-        Err(e) => String::from_utf8_lossy(e.as_bytes()).into_owned(),
-    })
+    match String::from_utf8(bytes) {
+        Ok(s) => Ok(s),
+        Err(e) => Ok(lossy(e.as_bytes())?.into_owned()),
+    }
+}
+
+/// `String::from_utf8_lossy`, asking for the copy (when one is needed) fallibly.
+pub(in crate::io) fn lossy(bytes: &[u8]) -> Result<Cow<'_, str>> {
+    if let Ok(s) = std::str::from_utf8(bytes) {
+        return Ok(Cow::Borrowed(s));
+    }
+    let mut s = String::new();
+    for chunk in bytes.utf8_chunks() {
+        // A U+FFFD (3 bytes) for each run of invalid bytes.
+        s.try_reserve(chunk.valid().len() + 3)
+            .map_err(|_| Error::out_of_memory(bytes.len() as u64, "the file's text"))?;
+        s.push_str(chunk.valid());
+        if !chunk.invalid().is_empty() {
+            s.push(char::REPLACEMENT_CHARACTER);
+        }
+    }
+    Ok(Cow::Owned(s))
 }
 
 /// A path under the temp dir, unique to this process and call.

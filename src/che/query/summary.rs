@@ -4,6 +4,7 @@
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::next;
+use crate::error::Result;
 use crate::util::alloc::{or_panic, try_vec};
 use crate::util::dsu::{Dsu, element_components};
 
@@ -34,20 +35,27 @@ pub struct Summary {
 }
 
 impl Che {
-    /// The summary; O(T) at every level.
+    /// The summary; O(T) at every level. Panics when memory runs out: see
+    /// [`Che::try_summary`].
     pub fn summary(&self) -> Summary {
+        or_panic(self.try_summary())
+    }
+
+    /// The summary, or an [`ErrorKind::OutOfMemory`](crate::ErrorKind) error when the
+    /// arrays it needs (the opposites below level 1, the marks) do not fit.
+    pub fn try_summary(&self) -> Result<Summary> {
         let r = &self.report;
         let n = self.n_input_vertices;
         let components = element_components::<3>(&self.v, n, |x| self.vertex_origin(x));
-        let (components, isolated) = or_panic(components);
+        let (components, isolated) = components?;
         // The vertices the weld merged into another are not vertices of the welded complex.
         let isolated = isolated - r.welded_vertices as u64;
         let kept = n - r.welded_vertices;
 
         // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
-        let o = self.opposites_or_computed();
-        let mut on_boundary = or_panic(try_vec(n, false, "the summary's boundary marks"));
-        let mut dsu = or_panic(Dsu::new(n));
+        let o = self.try_opposites_or_computed()?;
+        let mut on_boundary = try_vec(n, false, "the summary's boundary marks")?;
+        let mut dsu = Dsu::new(n)?;
         for h in 0..self.v.len() as u32 {
             if o[h as usize] != NONE
                 || self.non_manifold.binary_search(&h).is_ok()
@@ -77,7 +85,7 @@ impl Che {
         } else {
             -1
         };
-        Summary {
+        Ok(Summary {
             vertices: kept as u64,
             edges: r.input_edges as u64,
             triangles: self.num_triangles() as u64,
@@ -94,6 +102,6 @@ impl Che {
             split_vertices: r.split_vertices as u64,
             flipped_triangles: r.flipped_triangles as u64,
             non_orientable_components: r.non_orientable_components as u64,
-        }
+        })
     }
 }

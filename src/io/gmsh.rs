@@ -10,7 +10,6 @@ use crate::error::Result;
 use crate::util::alloc::{try_hash_map, try_push, try_vec, try_with_capacity};
 use glam::DVec3;
 use std::collections::HashMap;
-use std::path::Path;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Version {
@@ -330,12 +329,6 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     read.skipped
         .into_warnings(name, type_noun, &mut data.warnings);
     Ok(data)
-}
-
-/// Reads a Gmsh `.msh` file (ASCII 2.x or 4.1).
-pub fn read(path: &Path) -> Result<MeshData> {
-    let text = text::read_text(path)?;
-    parse(&text, &path.display().to_string())
 }
 
 #[cfg(test)]

@@ -8,7 +8,6 @@ use super::warning::Warning;
 use crate::error::Result;
 use crate::util::alloc::{try_push, try_reserve};
 use glam::DVec3;
-use std::path::Path;
 
 /// Tokens per entry of the sections that are skipped, for a mesh of dimension `dim`
 /// (from libMeshb's keyword table), or `None` for a keyword not known.
@@ -233,12 +232,6 @@ impl Sections {
         }
         Ok(())
     }
-}
-
-/// Reads a Medit `.mesh` file.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let text = text::read_text(path)?;
-    parse(&text, &path.display().to_string())
 }
 
 #[cfg(test)]

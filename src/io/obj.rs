@@ -20,13 +20,6 @@ use super::warning::{Noun, Tally};
 use crate::error::{Error, ErrorKind, Result};
 use crate::util::alloc::{try_extend, try_push};
 use glam::DVec3;
-use std::path::Path;
-
-/// Reads an OBJ file.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let bytes = super::read_bytes(path)?;
-    parse(&bytes, &path.display().to_string())
-}
 
 /// Parses OBJ from memory; `name` (usually the file name) prefixes every error.
 pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
@@ -352,7 +345,8 @@ fn quote(word: &[u8]) -> String {
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::{self, assert_errors};
+    use crate::io::text::{self, assert_errors, warning_lines as warnings};
+    use std::path::Path;
 
     fn p(bytes: &[u8]) -> Result<MeshData> {
         parse(bytes, "t.obj")
@@ -410,10 +404,6 @@ pub(super) mod tests {
         assert_eq!(m.triangles, vec![[0, 1, 2]]);
         assert_eq!(m.positions[1], DVec3::new(1.0, 0.0, 0.0));
         assert_eq!(m.positions[2], DVec3::new(0.0, 1.0, 0.0));
-    }
-
-    fn warnings(m: &MeshData) -> Vec<String> {
-        m.warnings.iter().map(|w| w.to_string()).collect()
     }
 
     #[test]
@@ -494,7 +484,7 @@ pub(super) mod tests {
     #[test]
     fn reads_a_file_and_names_it() {
         assert_eq!(text::read_temp("obj", CUBE).unwrap().triangles.len(), 12);
-        let e = read(Path::new("/nonexistent/y.obj")).unwrap_err();
+        let e = crate::io::read(Path::new("/nonexistent/y.obj")).unwrap_err();
         assert_eq!(e.kind, ErrorKind::Io);
         assert!(e.message.contains("/nonexistent/y.obj"), "{}", e.message);
     }

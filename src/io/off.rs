@@ -18,18 +18,12 @@
 mod binary;
 
 use super::MeshData;
+use super::text::room;
 use super::warning::{Noun, Tally, Warning, count};
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_push, try_with_capacity};
 use binary::Binary;
 use glam::DVec3;
-use std::path::Path;
-
-/// Reads an OFF file.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let bytes = super::read_bytes(path)?;
-    parse(&bytes, &path.display().to_string())
-}
 
 /// Parses OFF text from memory; `name` (usually the file name) prefixes every error.
 pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
@@ -142,17 +136,11 @@ fn check_vertex_count(vertices: u64, name: &str, line: Option<usize>) -> Result<
     Ok(())
 }
 
-/// Room for `count` items of at least `min_bytes` each in what is left of the input:
-/// declared counts are never trusted for allocation.
-fn capacity(count: u64, left: usize, min_bytes: usize) -> usize {
-    (count.min(usize::MAX as u64) as usize).min(left / min_bytes)
-}
-
 /// Reads the vertices: 3 numbers each, plus the rest of the line when prefixed.
 fn read_vertices(tk: &mut Tokens, name: &str, header: &Header) -> Result<Vec<DVec3>> {
     let nv = header.vertices;
     // At least "0 0 0\n" (6 bytes) each.
-    let mut positions = try_with_capacity(capacity(nv, tk.left(), 6), "the vertices")?;
+    let mut positions = try_with_capacity(room(nv, tk.left(), 6), "the vertices")?;
     for i in 0..nv {
         let mut p = [0.0f64; 3];
         for (c, axis) in p.iter_mut().zip(["x", "y", "z"]) {
@@ -178,7 +166,7 @@ fn read_faces(
 ) -> Result<Vec<[u32; 3]>> {
     let (nv, nf) = (header.vertices as u32, header.faces);
     // At least "3 0 1 2\n" (8 bytes) each.
-    let mut triangles = try_with_capacity(capacity(nf, tk.left(), 8), "the triangles")?;
+    let mut triangles = try_with_capacity(room(nf, tk.left(), 8), "the triangles")?;
     for f in 0..nf {
         let (tok, line) = tk.expect(name, || format!("the vertex count of face {f}"))?;
         let k: u64 = parse_tok(tok).ok_or_else(|| {
@@ -406,6 +394,7 @@ pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind;
     use crate::io::text::parse_error;
+    use std::path::Path;
 
     fn p(bytes: &[u8]) -> Result<MeshData> {
         parse(bytes, "t.off")
@@ -613,7 +602,7 @@ pub(super) mod tests {
 
     #[test]
     fn missing_file_is_an_io_error_naming_it() {
-        let e = read(Path::new("/nonexistent/dir/x.off")).unwrap_err();
+        let e = crate::io::read(Path::new("/nonexistent/dir/x.off")).unwrap_err();
         assert_eq!(e.kind, ErrorKind::Io);
         assert!(
             e.message.contains("/nonexistent/dir/x.off"),

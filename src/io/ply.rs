@@ -24,13 +24,6 @@ use ply_rs_bw::ply::{
     ElementDef, Encoding, Header, PropertyAccess, PropertyAccessResult, PropertyType, ScalarType,
 };
 use std::io::Cursor;
-use std::path::Path;
-
-/// Reads a PLY file (ASCII or binary).
-pub fn read(path: &Path) -> Result<MeshData> {
-    let bytes = super::read_bytes(path)?;
-    parse(&bytes, &path.display().to_string())
-}
 
 const INDEX_NAMES: [&str; 2] = ["vertex_indices", "vertex_index"];
 
@@ -615,7 +608,7 @@ impl PropertyAccess for Face {
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::{OutOfRange, Parse};
-    use crate::io::text::{self, assert_errors, parse_error};
+    use crate::io::text::{self, assert_errors, parse_error, warning_lines as warnings};
 
     fn p(bytes: &[u8]) -> Result<MeshData> {
         parse(bytes, "t.ply")
@@ -791,10 +784,6 @@ pub(super) mod tests {
                 n - 13
             )
         );
-    }
-
-    fn warnings(m: &MeshData) -> Vec<String> {
-        m.warnings.iter().map(|w| w.to_string()).collect()
     }
 
     #[test]

@@ -21,13 +21,6 @@ use super::warning::{Warning, count};
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_collect, try_push, try_vec, try_with_capacity};
 use glam::DVec3;
-use std::path::Path;
-
-/// Reads an STL file (ASCII or binary) and welds equal corners into shared vertices.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let bytes = super::read_bytes(path)?;
-    parse(&bytes, &path.display().to_string())
-}
 
 const HEADER: usize = 84;
 const RECORD: usize = 50;
@@ -348,7 +341,7 @@ pub(super) mod tests {
     fn binary_cube_file_welds_to_8_vertices() {
         let tris = cube();
         let path = temp("bin", &binary(b"binary cube", &tris));
-        let m = read(&path);
+        let m = crate::io::read(&path);
         let _ = std::fs::remove_file(&path);
         let m = m.unwrap();
         assert_eq!(m.positions.len(), 8);

@@ -202,7 +202,7 @@ impl<'a> Lexer<'a> {
     /// are never trusted for allocation.
     pub(in crate::io) fn capacity(&self, count: usize, tokens: usize) -> usize {
         let left = self.text.len().saturating_sub(self.pos);
-        count.min(left / tokens.max(1).saturating_mul(2))
+        room(count as u64, left, tokens.max(1).saturating_mul(2))
     }
 
     /// A count of points (`what` names it in errors) that `u32` ids can number.
@@ -265,6 +265,12 @@ pub(in crate::io) fn quote(tok: &str) -> String {
     }
 }
 
+/// Room for `count` items of at least `min_bytes` each in the `left` bytes of the input:
+/// declared counts are never trusted for allocation.
+pub(in crate::io) fn room(count: u64, left: usize, min_bytes: usize) -> usize {
+    (count.min(usize::MAX as u64) as usize).min(left / min_bytes.max(1))
+}
+
 /// Reads a file as text; bytes that are not UTF-8 become U+FFFD so that a binary or
 /// damaged file gets a parse error with a line instead of a bare I/O error.
 pub(in crate::io) fn read_text(path: &Path) -> Result<String> {
@@ -313,6 +319,12 @@ pub(in crate::io) fn read_temp(ext: &str, bytes: impl AsRef<[u8]>) -> Result<Mes
     let read = crate::io::read(&path);
     let _ = std::fs::remove_file(&path);
     read
+}
+
+/// A mesh's warnings as they are shown.
+#[cfg(test)]
+pub(in crate::io) fn warning_lines(m: &MeshData) -> Vec<String> {
+    m.warnings.iter().map(|w| w.to_string()).collect()
 }
 
 /// Test input as text.

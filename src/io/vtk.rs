@@ -10,7 +10,6 @@ use super::text::{self, Lexer};
 use super::warning::{Noun, SkippedTypes, Tally};
 use crate::error::Result;
 use crate::util::alloc::{try_push, try_reserve, try_with_capacity};
-use std::path::Path;
 
 /// A cell array: cell `i` is `conn[offsets[i]..offsets[i + 1]]`.
 struct Cells {
@@ -398,12 +397,6 @@ fn split_strips(
         }
     }
     Ok(())
-}
-
-/// Reads a legacy ASCII `.vtk` file.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let text = text::read_text(path)?;
-    parse(&text, &path.display().to_string())
 }
 
 #[cfg(test)]

@@ -34,6 +34,11 @@ pub(crate) fn status_of(kind: ErrorKind) -> Status {
 }
 
 fn caught(payload: Box<dyn std::any::Any + Send>) -> Status {
+    // A query without an error in its signature (`util::alloc::or_panic`): its error.
+    let payload = match payload.downcast::<Error>() {
+        Ok(e) => return fail(*e),
+        Err(payload) => payload,
+    };
     let what = (payload.downcast_ref::<&str>().map(|s| s.to_string()))
         .or_else(|| payload.downcast_ref::<String>().cloned())
         .unwrap_or_else(|| "unknown panic payload".to_string());

@@ -7,9 +7,9 @@ use super::MeshData;
 use super::text::{self, Lexer};
 use super::warning::{Noun, SkippedTypes, Warning};
 use crate::error::Result;
+use crate::util::alloc::{try_hash_map, try_push, try_vec, try_with_capacity};
 use glam::DVec3;
 use std::collections::HashMap;
-use std::path::Path;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Version {
@@ -65,7 +65,7 @@ impl TagMap {
         let dup = |t: u64| lx.error_at(line, format!("node tag {t} appears twice in $Nodes"));
         let max = tags.iter().copied().max().unwrap_or(0);
         if max <= 2 * tags.len() as u64 + 1024 {
-            let mut map = vec![u32::MAX; max as usize + 1];
+            let mut map = try_vec(max as usize + 1, u32::MAX, "the node tag map")?;
             for (i, &t) in tags.iter().enumerate() {
                 let slot = &mut map[t as usize];
                 if *slot != u32::MAX {
@@ -75,7 +75,7 @@ impl TagMap {
             }
             Ok(TagMap::Dense(map))
         } else {
-            let mut map = HashMap::with_capacity(tags.len());
+            let mut map = try_hash_map(tags.len(), "the node tag map")?;
             for (i, &t) in tags.iter().enumerate() {
                 if map.insert(t, i as u32).is_some() {
                     return Err(dup(t));
@@ -106,12 +106,13 @@ fn read_nodes(lx: &mut Lexer, version: Version) -> Result<(Vec<DVec3>, Vec<u64>)
         }
     };
     let cap = lx.capacity(n, 4);
-    let (mut pos, mut tags) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
+    let mut pos = try_with_capacity(cap, "the node positions")?;
+    let mut tags = try_with_capacity(cap, "the node tags")?;
     let Some(blocks) = blocks else {
         // 2.x: one list of `tag x y z`.
         for _ in 0..n {
-            tags.push(lx.u64("a node tag")?);
-            pos.push(lx.point()?);
+            try_push(&mut tags, lx.u64("a node tag")?, "the node tags")?;
+            try_push(&mut pos, lx.point()?, "the node positions")?;
         }
         return Ok((pos, tags));
     };
@@ -127,11 +128,11 @@ fn read_nodes(lx: &mut Lexer, version: Version) -> Result<(Vec<DVec3>, Vec<u64>)
             return Err(lx.error(format!("the blocks hold more than the {n} nodes declared")));
         }
         for _ in 0..count {
-            tags.push(lx.u64("a node tag")?);
+            try_push(&mut tags, lx.u64("a node tag")?, "the node tags")?;
         }
         let extra = (parametric * dim) as usize;
         for _ in 0..count {
-            pos.push(lx.point()?);
+            try_push(&mut pos, lx.point()?, "the node positions")?;
             lx.skip(extra, "a parametric coordinate")?;
         }
     }
@@ -190,11 +191,14 @@ fn read_element(lx: &mut Lexer, ty: u64, map: &TagMap, read: &mut Read) -> Resul
     }
     lx.skip(n - k, "a node tag")?;
     match k {
-        3 => data.triangles.push([ids[0], ids[1], ids[2]]),
-        4 => data.tetrahedra.push(ids),
-        _ => {}
+        3 => try_push(
+            &mut data.triangles,
+            [ids[0], ids[1], ids[2]],
+            "the triangles",
+        ),
+        4 => try_push(&mut data.tetrahedra, ids, "the tetrahedra"),
+        _ => Ok(()),
     }
-    Ok(())
 }
 
 /// Reads an `$Elements` section body.
@@ -325,12 +329,6 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
     read.skipped
         .into_warnings(name, type_noun, &mut data.warnings);
     Ok(data)
-}
-
-/// Reads a Gmsh `.msh` file (ASCII 2.x or 4.1).
-pub fn read(path: &Path) -> Result<MeshData> {
-    let text = text::read_text(path)?;
-    parse(&text, &path.display().to_string())
 }
 
 #[cfg(test)]

@@ -60,16 +60,8 @@ pub fn che(path: &Path, options: BuildOptions) -> Result<Che> {
 
 /// [`che`], with the reader's warnings.
 pub fn che_loaded(path: &Path, options: BuildOptions) -> Result<Loaded<Che>> {
-    let data = read_surface(path)?;
-    let mesh = Che::from_triangles(
-        &data.triangles,
-        data.num_vertices(),
-        &data.positions,
-        options,
-    )?;
-    Ok(Loaded {
-        mesh,
-        warnings: data.warnings,
+    built(read_surface(path)?, |d| {
+        Che::from_triangles(&d.triangles, d.num_vertices(), &d.positions, options)
     })
 }
 
@@ -80,15 +72,15 @@ pub fn chf(path: &Path, options: BuildOptions) -> Result<Chf> {
 
 /// [`chf`], with the reader's warnings.
 pub fn chf_loaded(path: &Path, options: BuildOptions) -> Result<Loaded<Chf>> {
-    let data = read_volume(path)?;
-    let mesh = Chf::from_tetrahedra(
-        &data.tetrahedra,
-        data.num_vertices(),
-        &data.positions,
-        options,
-    )?;
+    built(read_volume(path)?, |d| {
+        Chf::from_tetrahedra(&d.tetrahedra, d.num_vertices(), &d.positions, options)
+    })
+}
+
+/// The structure `build` makes of `data`, with the reader's warnings.
+fn built<T>(data: MeshData, build: impl FnOnce(&MeshData) -> Result<T>) -> Result<Loaded<T>> {
     Ok(Loaded {
-        mesh,
+        mesh: build(&data)?,
         warnings: data.warnings,
     })
 }

@@ -6,8 +6,8 @@ use super::MeshData;
 use super::text::{self, Lexer};
 use super::warning::Warning;
 use crate::error::Result;
+use crate::util::alloc::{try_push, try_reserve};
 use glam::DVec3;
-use std::path::Path;
 
 /// Tokens per entry of the sections that are skipped, for a mesh of dimension `dim`
 /// (from libMeshb's keyword table), or `None` for a keyword not known.
@@ -113,11 +113,15 @@ impl Elements {
         if n > 0 && num_vertices == 0 {
             return Err(lx.error(format!("{keyword} before (or without) Vertices")));
         }
-        out.reserve(lx.capacity(n, self.tokens));
+        try_reserve(out, lx.capacity(n, self.tokens), keyword)?;
         let out_of_range =
             |id| format!("vertex id {id} out of range 1..={num_vertices} in {keyword}");
         for _ in 0..n {
-            out.push(lx.ids("a vertex id", (1, num_vertices), out_of_range)?);
+            try_push(
+                out,
+                lx.ids("a vertex id", (1, num_vertices), out_of_range)?,
+                keyword,
+            )?;
             lx.skip(self.tokens - K, "the rest of an element")?;
         }
         Ok(())
@@ -188,13 +192,14 @@ impl Sections {
         self.have_vertices = true;
         let n = lx.point_count("the number of vertices")?;
         let positions = &mut self.data.positions;
-        positions.reserve(lx.capacity(n, self.dim + 1));
+        try_reserve(positions, lx.capacity(n, self.dim + 1), "the vertices")?;
         for _ in 0..n {
-            positions.push(if self.dim == 3 {
+            let p = if self.dim == 3 {
                 lx.point()?
             } else {
                 DVec3::new(lx.f64("a coordinate")?, lx.f64("a coordinate")?, 0.0)
-            });
+            };
+            try_push(positions, p, "the vertices")?;
             lx.expect("a vertex reference")?;
         }
         Ok(())
@@ -227,12 +232,6 @@ impl Sections {
         }
         Ok(())
     }
-}
-
-/// Reads a Medit `.mesh` file.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let text = text::read_text(path)?;
-    parse(&text, &path.display().to_string())
 }
 
 #[cfg(test)]

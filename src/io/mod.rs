@@ -94,44 +94,49 @@ pub fn read(path: &Path) -> Result<MeshData> {
     if format != Ok(Format::TetGen) {
         std::fs::metadata(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))?;
     }
+    let name = path.display().to_string();
     let mut data = match format? {
-        Format::Off => off::read(path),
-        Format::Obj => obj::read(path),
-        Format::Ply => ply::read(path),
-        Format::Stl => stl::read(path),
-        Format::TetGen => tetgen::read(path),
-        Format::Medit => medit::read(path),
-        Format::Gmsh => gmsh::read(path),
-        Format::Vtk => vtk::read(path),
-    }?;
-    warning::add_common(&mut data, &path.display().to_string());
+        Format::TetGen => tetgen::read(path)?,
+        format => parse_only(&read_bytes(path)?, format, &name)?,
+    };
+    warning::add_common(&mut data, &name);
     Ok(data)
 }
 
-/// Reads a whole file, naming it in the error.
+/// Reads a whole file, naming it in the error; a file too large for memory is an
+/// out-of-memory error (the standard library asks for the buffer fallibly).
 pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
-    std::fs::read(path).map_err(|e| Error::io(format!("{}: {e}", path.display())))
+    std::fs::read(path).map_err(|e| match e.kind() {
+        std::io::ErrorKind::OutOfMemory => {
+            let len = std::fs::metadata(path).map_or(0, |m| m.len());
+            Error::out_of_memory(len, &format!("the bytes of {}", path.display()))
+        }
+        _ => Error::io(format!("{}: {e}", path.display())),
+    })
 }
 
-/// Parses a mesh held in memory (`name` appears in errors). TetGen needs two files, so
-/// it is read from paths only.
+/// Parses a mesh held in memory (`name` appears in errors), as [`read`] parses a file's
+/// bytes. TetGen needs two files, so it is read from paths only.
 pub fn parse(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
-    let text = || {
-        std::str::from_utf8(bytes)
-            .map_err(|e| Error::parse(format!("{name}: not UTF-8 text (byte {})", e.valid_up_to())))
-    };
-    let mut data = match format {
+    let mut data = parse_only(bytes, format, name)?;
+    warning::add_common(&mut data, name);
+    Ok(data)
+}
+
+/// The reader of `format` on `bytes`, without the checks every format shares. The text
+/// formats read bytes that are not UTF-8 as U+FFFD, so that such a file gets a parse
+/// error with a line.
+fn parse_only(bytes: &[u8], format: Format, name: &str) -> Result<MeshData> {
+    match format {
         Format::Off => off::parse(bytes, name),
         Format::Obj => obj::parse(bytes, name),
         Format::Ply => ply::parse(bytes, name),
         Format::Stl => stl::parse(bytes, name),
-        Format::Medit => medit::parse(text()?, name),
-        Format::Gmsh => gmsh::parse(text()?, name),
-        Format::Vtk => vtk::parse(text()?, name),
+        Format::Medit => medit::parse(&text::lossy(bytes)?, name),
+        Format::Gmsh => gmsh::parse(&text::lossy(bytes)?, name),
+        Format::Vtk => vtk::parse(&text::lossy(bytes)?, name),
         Format::TetGen => Err(Error::invalid(format!(
             "{name}: TetGen meshes are two files (.node and .ele): read them from a path"
         ))),
-    }?;
-    warning::add_common(&mut data, name);
-    Ok(data)
+    }
 }

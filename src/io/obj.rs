@@ -18,14 +18,8 @@
 use super::MeshData;
 use super::warning::{Noun, Tally};
 use crate::error::{Error, ErrorKind, Result};
+use crate::util::alloc::{try_extend, try_push};
 use glam::DVec3;
-use std::path::Path;
-
-/// Reads an OBJ file.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let bytes = super::read_bytes(path)?;
-    parse(&bytes, &path.display().to_string())
-}
 
 /// Parses OBJ from memory; `name` (usually the file name) prefixes every error.
 pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
@@ -40,7 +34,7 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
     let mut joined: Vec<u8> = Vec::new();
     let mut lines = bytes.split(|&c| c == b'\n').enumerate();
     while let Some((i, raw)) = lines.next() {
-        let line = logical_line(trim_cr(raw), &mut lines, &mut joined);
+        let line = logical_line(trim_cr(raw), &mut lines, &mut joined)?;
         statements.read(i + 1, line)?;
     }
     statements.finish()
@@ -50,24 +44,25 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
 /// from `rest`) into `joined`.
 fn logical_line<'j, 'b: 'j>(
     line: &'b [u8], rest: &mut impl Iterator<Item = (usize, &'b [u8])>, joined: &'j mut Vec<u8>,
-) -> &'j [u8] {
+) -> Result<&'j [u8]> {
+    const WHAT: &str = "a continued line";
     let Some(head) = line.strip_suffix(b"\\") else {
-        return line;
+        return Ok(line);
     };
     joined.clear();
-    joined.extend_from_slice(head);
+    try_extend(joined, head.iter().copied(), WHAT)?;
     for (_, more) in rest {
         let more = trim_cr(more);
-        joined.push(b' ');
+        try_push(joined, b' ', WHAT)?;
         match more.strip_suffix(b"\\") {
-            Some(head) => joined.extend_from_slice(head),
+            Some(head) => try_extend(joined, head.iter().copied(), WHAT)?,
             None => {
-                joined.extend_from_slice(more);
+                try_extend(joined, more.iter().copied(), WHAT)?;
                 break;
             }
         }
     }
-    joined
+    Ok(joined)
 }
 
 /// The statements read so far.
@@ -230,8 +225,11 @@ impl Statements<'_> {
                 u32::MAX - 1
             )));
         }
-        self.data.positions.push(DVec3::from_array(p));
-        Ok(())
+        try_push(
+            &mut self.data.positions,
+            DVec3::from_array(p),
+            "the vertices",
+        )
     }
 
     /// A polygon, fan-triangulated (i1,i2,i3), (i1,i3,i4), ...
@@ -241,9 +239,17 @@ impl Statements<'_> {
         for w in words {
             let index = corner(w, n).map_err(|msg| self.err(line_no, msg))?;
             if index >= n {
-                self.forward.push((line_no, index));
+                try_push(
+                    &mut self.forward,
+                    (line_no, index),
+                    "the forward references",
+                )?;
             }
-            self.corners.push(index.min(u32::MAX as u64) as u32);
+            try_push(
+                &mut self.corners,
+                index.min(u32::MAX as u64) as u32,
+                "a face's corners",
+            )?;
         }
         let corners = &self.corners;
         if corners.len() < 3 {
@@ -259,9 +265,8 @@ impl Statements<'_> {
             self.tally.add(FANNED, Some(line_no));
         }
         for k in 1..corners.len() - 1 {
-            self.data
-                .triangles
-                .push([corners[0], corners[k], corners[k + 1]]);
+            let t = [corners[0], corners[k], corners[k + 1]];
+            try_push(&mut self.data.triangles, t, "the triangles")?;
         }
         Ok(())
     }
@@ -340,7 +345,8 @@ fn quote(word: &[u8]) -> String {
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::{self, assert_errors};
+    use crate::io::text::{self, assert_errors, warning_lines as warnings};
+    use std::path::Path;
 
     fn p(bytes: &[u8]) -> Result<MeshData> {
         parse(bytes, "t.obj")
@@ -398,10 +404,6 @@ pub(super) mod tests {
         assert_eq!(m.triangles, vec![[0, 1, 2]]);
         assert_eq!(m.positions[1], DVec3::new(1.0, 0.0, 0.0));
         assert_eq!(m.positions[2], DVec3::new(0.0, 1.0, 0.0));
-    }
-
-    fn warnings(m: &MeshData) -> Vec<String> {
-        m.warnings.iter().map(|w| w.to_string()).collect()
     }
 
     #[test]
@@ -482,7 +484,7 @@ pub(super) mod tests {
     #[test]
     fn reads_a_file_and_names_it() {
         assert_eq!(text::read_temp("obj", CUBE).unwrap().triangles.len(), 12);
-        let e = read(Path::new("/nonexistent/y.obj")).unwrap_err();
+        let e = crate::io::read(Path::new("/nonexistent/y.obj")).unwrap_err();
         assert_eq!(e.kind, ErrorKind::Io);
         assert!(e.message.contains("/nonexistent/y.obj"), "{}", e.message);
     }

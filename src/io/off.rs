@@ -18,17 +18,12 @@
 mod binary;
 
 use super::MeshData;
+use super::text::room;
 use super::warning::{Noun, Tally, Warning, count};
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_push, try_with_capacity};
 use binary::Binary;
 use glam::DVec3;
-use std::path::Path;
-
-/// Reads an OFF file.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let bytes = super::read_bytes(path)?;
-    parse(&bytes, &path.display().to_string())
-}
 
 /// Parses OFF text from memory; `name` (usually the file name) prefixes every error.
 pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
@@ -141,23 +136,17 @@ fn check_vertex_count(vertices: u64, name: &str, line: Option<usize>) -> Result<
     Ok(())
 }
 
-/// Room for `count` items of at least `min_bytes` each in what is left of the input:
-/// declared counts are never trusted for allocation.
-fn capacity(count: u64, left: usize, min_bytes: usize) -> usize {
-    (count.min(usize::MAX as u64) as usize).min(left / min_bytes)
-}
-
 /// Reads the vertices: 3 numbers each, plus the rest of the line when prefixed.
 fn read_vertices(tk: &mut Tokens, name: &str, header: &Header) -> Result<Vec<DVec3>> {
     let nv = header.vertices;
     // At least "0 0 0\n" (6 bytes) each.
-    let mut positions = Vec::with_capacity(capacity(nv, tk.left(), 6));
+    let mut positions = try_with_capacity(room(nv, tk.left(), 6), "the vertices")?;
     for i in 0..nv {
         let mut p = [0.0f64; 3];
         for (c, axis) in p.iter_mut().zip(["x", "y", "z"]) {
             *c = tk.number(name, || format!("coordinate {axis} of vertex {i}"))?;
         }
-        positions.push(DVec3::from_array(p));
+        try_push(&mut positions, DVec3::from_array(p), "the vertices")?;
         if header.prefixes.any() {
             tk.skip_rest_of_line();
         }
@@ -177,7 +166,7 @@ fn read_faces(
 ) -> Result<Vec<[u32; 3]>> {
     let (nv, nf) = (header.vertices as u32, header.faces);
     // At least "3 0 1 2\n" (8 bytes) each.
-    let mut triangles = Vec::with_capacity(capacity(nf, tk.left(), 8));
+    let mut triangles = try_with_capacity(room(nf, tk.left(), 8), "the triangles")?;
     for f in 0..nf {
         let (tok, line) = tk.expect(name, || format!("the vertex count of face {f}"))?;
         let k: u64 = parse_tok(tok).ok_or_else(|| {
@@ -197,7 +186,7 @@ fn read_faces(
         let mut prev = tk.index(name, f, nv)?;
         for _ in 2..k {
             let v = tk.index(name, f, nv)?;
-            triangles.push([first, prev, v]);
+            try_push(&mut triangles, [first, prev, v], "the triangles")?;
             prev = v;
         }
         // Whatever follows the last index on its line is the face's colour: 0 to 4 values.
@@ -405,6 +394,7 @@ pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind;
     use crate::io::text::parse_error;
+    use std::path::Path;
 
     fn p(bytes: &[u8]) -> Result<MeshData> {
         parse(bytes, "t.off")
@@ -612,7 +602,7 @@ pub(super) mod tests {
 
     #[test]
     fn missing_file_is_an_io_error_naming_it() {
-        let e = read(Path::new("/nonexistent/dir/x.off")).unwrap_err();
+        let e = crate::io::read(Path::new("/nonexistent/dir/x.off")).unwrap_err();
         assert_eq!(e.kind, ErrorKind::Io);
         assert!(
             e.message.contains("/nonexistent/dir/x.off"),

@@ -17,19 +17,13 @@ use super::MeshData;
 use super::text::quote;
 use super::warning::{Noun, Tally, Warning, count};
 use crate::error::{Error, ErrorKind, Result};
+use crate::util::alloc::{try_push, try_reserve};
 use glam::DVec3;
 use ply_rs_bw::parser::{ParseError, Parser, Reader};
 use ply_rs_bw::ply::{
     ElementDef, Encoding, Header, PropertyAccess, PropertyAccessResult, PropertyType, ScalarType,
 };
 use std::io::Cursor;
-use std::path::Path;
-
-/// Reads a PLY file (ASCII or binary).
-pub fn read(path: &Path) -> Result<MeshData> {
-    let bytes = super::read_bytes(path)?;
-    parse(&bytes, &path.display().to_string())
-}
 
 const INDEX_NAMES: [&str; 2] = ["vertex_indices", "vertex_index"];
 
@@ -69,21 +63,24 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
             "vertex" => {
                 // A vertex takes at least "0 0 0\n" in ASCII, 3 bytes in binary.
                 let positions = &mut data.positions;
-                positions.reserve(def.count.min(remaining / if ascii { 6 } else { 3 }));
+                let room = def.count.min(remaining / if ascii { 6 } else { 3 });
+                try_reserve(positions, room, "the vertices")?;
                 input.elements::<Vertex>(def, &mut tally, |v, _, _| {
-                    positions.push(DVec3::from_array(v.0));
-                    Ok(())
+                    try_push(positions, DVec3::from_array(v.0), "the vertices")
                 })?;
             }
             "face" => {
                 // A triangle takes at least "3 0 1 2\n" in ASCII, 4 bytes in binary.
                 let triangles = &mut data.triangles;
-                triangles.reserve(def.count.min(remaining / if ascii { 8 } else { 4 }));
+                let room = def.count.min(remaining / if ascii { 8 } else { 4 });
+                try_reserve(triangles, room, "the triangles")?;
                 let fanned = &mut 0u64;
                 input.elements::<Face>(def, &mut tally, |f, i, at| {
                     *fanned += u64::from(f.0.len() > 3);
-                    triangulate(&f.0, nv, triangles)
-                        .map_err(|msg| at.error(msg.kind, &format!("face {i}: {}", msg.message)))
+                    triangulate(&f.0, nv, triangles).map_err(|e| match e.kind {
+                        ErrorKind::OutOfMemory => e,
+                        kind => at.error(kind, &format!("face {i}: {}", e.message)),
+                    })
                 })?;
                 tally.add_n(FANNED, *fanned, None);
             }
@@ -220,7 +217,7 @@ fn triangulate(idx: &Indices, nv: u32, out: &mut Vec<[u32; 3]>) -> Result<()> {
     let mut prev = get(1)?;
     for j in 2..k {
         let v = get(j)?;
-        out.push([first, prev, v]);
+        try_push(out, [first, prev, v], "the triangles")?;
         prev = v;
     }
     Ok(())
@@ -340,8 +337,10 @@ impl<'a> Payload<'a> {
             .map_err(|_| at.error(ErrorKind::Parse, &format!("{element} {i}: not UTF-8 text")))?;
         let text = text.strip_suffix('\r').unwrap_or(text);
         let mut tokens = text.split_ascii_whitespace();
-        let value = decode_ascii::<E>(&mut tokens, def)
-            .map_err(|msg| at.error(ErrorKind::Parse, &format!("{element} {i}: {msg}")))?;
+        let value = decode_ascii::<E>(&mut tokens, def).map_err(|e| match e.kind {
+            ErrorKind::OutOfMemory => e,
+            kind => at.error(kind, &format!("{element} {i}: {}", e.message)),
+        })?;
         if tokens.next().is_some() {
             tally.add(LONG_LINE, Some(line));
         }
@@ -429,18 +428,23 @@ trait Ascii: PropertyAccess {
 }
 
 /// Decodes the properties of `def` from `tokens`, in order: a scalar is one number, a list
-/// its count and that many numbers. `Err` says which property is missing or malformed.
+/// its count and that many numbers. `Err` says which property is missing or malformed
+/// (or that memory ran out).
 fn decode_ascii<'t, E: Ascii>(
     tokens: &mut impl Iterator<Item = &'t str>, def: &ElementDef,
-) -> std::result::Result<E, String> {
+) -> Result<E> {
     let mut value = E::new();
     for (name, p) in &def.properties {
-        let mut number = |what: &str| -> std::result::Result<f64, String> {
-            let tok = tokens
-                .next()
-                .ok_or_else(|| format!("property '{name}' is missing ({what} expected)"))?;
-            tok.parse()
-                .map_err(|_| format!("property '{name}': expected {what}, found '{}'", quote(tok)))
+        let mut number = |what: &str| -> Result<f64> {
+            let tok = tokens.next().ok_or_else(|| {
+                Error::parse(format!("property '{name}' is missing ({what} expected)"))
+            })?;
+            tok.parse().map_err(|_| {
+                Error::parse(format!(
+                    "property '{name}': expected {what}, found '{}'",
+                    quote(tok)
+                ))
+            })
         };
         match &p.data_type {
             PropertyType::Scalar(_) => {
@@ -450,16 +454,18 @@ fn decode_ascii<'t, E: Ascii>(
             PropertyType::List(..) => {
                 let n = number("a list length")?;
                 if n < 0.0 || n.fract() != 0.0 {
-                    return Err(format!("property '{name}': list length {n}"));
+                    return Err(Error::parse(format!("property '{name}': list length {n}")));
                 }
                 // Every item takes a token: the line bounds what is reserved.
                 let mut items = Vec::new();
                 for _ in 0..n as u64 {
                     let v = number("a list item")?;
                     if v.fract() != 0.0 || v.abs() > 9.0e15 {
-                        return Err(format!("property '{name}': expected an integer, found {v}"));
+                        return Err(Error::parse(format!(
+                            "property '{name}': expected an integer, found {v}"
+                        )));
                     }
-                    items.push(v as i64);
+                    try_push(&mut items, v as i64, "a face's indices")?;
                 }
                 value.list(name, items);
             }
@@ -602,7 +608,7 @@ impl PropertyAccess for Face {
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::{OutOfRange, Parse};
-    use crate::io::text::{self, assert_errors, parse_error};
+    use crate::io::text::{self, assert_errors, parse_error, warning_lines as warnings};
 
     fn p(bytes: &[u8]) -> Result<MeshData> {
         parse(bytes, "t.ply")
@@ -778,10 +784,6 @@ pub(super) mod tests {
                 n - 13
             )
         );
-    }
-
-    fn warnings(m: &MeshData) -> Vec<String> {
-        m.warnings.iter().map(|w| w.to_string()).collect()
     }
 
     #[test]

@@ -19,14 +19,8 @@ use super::MeshData;
 use super::text::{Lexer, quote};
 use super::warning::{Warning, count};
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_collect, try_push, try_vec, try_with_capacity};
 use glam::DVec3;
-use std::path::Path;
-
-/// Reads an STL file (ASCII or binary) and welds equal corners into shared vertices.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let bytes = super::read_bytes(path)?;
-    parse(&bytes, &path.display().to_string())
-}
 
 const HEADER: usize = 84;
 const RECORD: usize = 50;
@@ -43,9 +37,9 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
     let ascii =
         !exact_binary && bytes.starts_with(b"solid") && !bytes[..bytes.len().min(512)].contains(&0);
     if ascii {
-        let text = String::from_utf8_lossy(bytes);
+        let text = super::text::lossy(bytes)?;
         let (corners, warnings) = read_ascii(&text, name)?;
-        let mut data = weld(corners);
+        let mut data = weld(corners)?;
         data.warnings = warnings;
         return Ok(data);
     }
@@ -65,7 +59,7 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
             (bytes.len() - HEADER) / RECORD
         )));
     }
-    let mut data = weld(read_binary(bytes, n, name)?);
+    let mut data = weld(read_binary(bytes, n, name)?)?;
     if bytes.len() > need {
         let msg = format!(
             "{} after the {n} declared triangles, from byte {need} (ignored)",
@@ -80,7 +74,7 @@ pub(crate) fn parse(bytes: &[u8], name: &str) -> Result<MeshData> {
 /// corners of 3 little-endian `f32`s, and 2 attribute bytes each.
 fn read_binary(bytes: &[u8], n: usize, name: &str) -> Result<Vec<u128>> {
     check_corner_count(n, name, None)?;
-    let mut corners = Vec::with_capacity(3 * n);
+    let mut corners = try_with_capacity(3 * n, "the corners")?;
     for record in bytes[HEADER..HEADER + n * RECORD].chunks_exact(RECORD) {
         for corner in record[12..48].chunks_exact(12) {
             let f = |i: usize| {
@@ -108,7 +102,7 @@ fn check_corner_count(triangles: usize, name: &str, line: Option<usize>) -> Resu
 fn read_ascii(text: &str, name: &str) -> Result<(Vec<u128>, Vec<Warning>)> {
     let mut lx = Lexer::new(text, name, false);
     // A facet takes well over 100 bytes.
-    let mut corners = Vec::with_capacity(3 * (text.len() / 100));
+    let mut corners = try_with_capacity(3 * (text.len() / 100), "the corners")?;
     let mut warnings = Vec::new();
     let mut solids = 0u64;
     let mut second_line = None;
@@ -169,7 +163,7 @@ fn read_facet(lx: &mut Lexer, corners: &mut Vec<u128>) -> Result<()> {
         for c in &mut p {
             *c = f32_token(lx, "a coordinate")?;
         }
-        corners.push(corner_key(p, corners.len()));
+        try_push(corners, corner_key(p, corners.len()), "the corners")?;
     }
     lx.keyword("endloop")?;
     lx.keyword("endfacet")
@@ -199,22 +193,22 @@ fn corner_key([x, y, z]: [f32; 3], index: usize) -> u128 {
 
 /// Merges the corners (keys in corner order, fewer than `u32::MAX`) with equal positions
 /// into vertices numbered by first occurrence; every 3 corners make a triangle.
-fn weld(mut keys: Vec<u128>) -> MeshData {
+fn weld(mut keys: Vec<u128>) -> Result<MeshData> {
     let n = keys.len();
-    sort_by_position(&mut keys);
+    sort_by_position(&mut keys)?;
     // Runs of equal positions, in sorted order: run_of[corner], and each run's position.
-    let mut run_of = vec![0u32; n];
+    let mut run_of = try_vec(n, 0u32, "the corners' vertices")?;
     let mut run_pos: Vec<u128> = Vec::new();
     for (j, &k) in keys.iter().enumerate() {
         if j == 0 || k >> 32 != keys[j - 1] >> 32 {
-            run_pos.push(k >> 32);
+            try_push(&mut run_pos, k >> 32, "the distinct positions")?;
         }
         run_of[k as u32 as usize] = (run_pos.len() - 1) as u32;
     }
     drop(keys);
     // Number the runs in order of their first corner; a corner becomes its run's vertex.
-    let mut id_of_run = vec![u32::MAX; run_pos.len()];
-    let mut positions = Vec::with_capacity(run_pos.len());
+    let mut id_of_run = try_vec(run_pos.len(), u32::MAX, "the vertex ids")?;
+    let mut positions = try_with_capacity(run_pos.len(), "the vertices")?;
     for r in run_of.iter_mut() {
         let id = &mut id_of_run[*r as usize];
         if *id == u32::MAX {
@@ -225,29 +219,29 @@ fn weld(mut keys: Vec<u128>) -> MeshData {
         }
         *r = *id;
     }
-    let triangles = run_of.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
-    MeshData {
+    let triangles = run_of.chunks_exact(3).map(|t| [t[0], t[1], t[2]]);
+    Ok(MeshData {
         positions,
-        triangles,
+        triangles: try_collect(triangles, "the triangles")?,
         ..MeshData::default()
-    }
+    })
 }
 
 /// Stable LSD radix sort of `keys` on their bits 32..128 (the position), 16 bits a pass.
 /// The low 32 bits (the corner index) increase along the input, so stability leaves the
 /// keys ordered by position, then index. A pass whose digit is the same for all keys (a
 /// flat or axis-aligned part of the data) is skipped.
-fn sort_by_position(keys: &mut Vec<u128>) {
+fn sort_by_position(keys: &mut Vec<u128>) -> Result<()> {
     const PASSES: usize = 6;
     const RADIX: usize = 1 << 16;
     let digit = |k: u128, pass: usize| (k >> (32 + 16 * pass)) as usize & (RADIX - 1);
-    let mut hist = vec![0usize; PASSES * RADIX];
+    let mut hist = try_vec(PASSES * RADIX, 0usize, "the sort's histograms")?;
     for &k in keys.iter() {
         for pass in 0..PASSES {
             hist[pass * RADIX + digit(k, pass)] += 1;
         }
     }
-    let mut tmp = vec![0u128; keys.len()];
+    let mut tmp = try_vec(keys.len(), 0u128, "the sorted corners")?;
     for (pass, h) in hist.chunks_exact_mut(RADIX).enumerate() {
         if h.contains(&keys.len()) {
             continue;
@@ -263,6 +257,7 @@ fn sort_by_position(keys: &mut Vec<u128>) {
         }
         std::mem::swap(keys, &mut tmp);
     }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -346,7 +341,7 @@ pub(super) mod tests {
     fn binary_cube_file_welds_to_8_vertices() {
         let tris = cube();
         let path = temp("bin", &binary(b"binary cube", &tris));
-        let m = read(&path);
+        let m = crate::io::read(&path);
         let _ = std::fs::remove_file(&path);
         let m = m.unwrap();
         assert_eq!(m.positions.len(), 8);
@@ -429,7 +424,7 @@ pub(super) mod tests {
             .enumerate()
             .map(|(i, &c)| corner_key(c, i))
             .collect();
-        let m = weld(keys);
+        let m = weld(keys).unwrap();
 
         let canon = |c: [f32; 3]| c.map(|x| if x == 0.0 { 0 } else { x.to_bits() });
         let mut ids = std::collections::HashMap::new();

@@ -5,6 +5,7 @@ use super::MeshData;
 use super::text::{self, Lexer};
 use super::warning::Warning;
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_push, try_with_capacity};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 
@@ -23,7 +24,7 @@ pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64, Opt
         return Err(lx.error(format!("boundary marker flag {markers} (0 or 1)")));
     }
     let extra = nattr.saturating_add(markers as usize);
-    let mut positions = Vec::with_capacity(lx.capacity(n, extra.saturating_add(4)));
+    let mut positions = try_with_capacity(lx.capacity(n, extra.saturating_add(4)), "the points")?;
     let mut base = 0;
     for i in 0..n as u64 {
         let id = lx.u64("a point id")?;
@@ -35,7 +36,7 @@ pub(crate) fn parse_node(text: &str, name: &str) -> Result<(Vec<DVec3>, u64, Opt
         } else if id != base + i {
             return Err(lx.error(format!("point id {id}, expected {}", base + i)));
         }
-        positions.push(lx.point()?);
+        try_push(&mut positions, lx.point()?, "the points")?;
         lx.skip(extra, "a point attribute or marker")?;
     }
     Ok((positions, base, trailing(&mut lx, "points")))
@@ -63,12 +64,16 @@ pub(crate) fn parse_ele(
     }
     let nattr = lx.usize("the number of attributes")?;
     let extra = (per - 4).saturating_add(nattr);
-    let mut tets = Vec::with_capacity(lx.capacity(n, extra.saturating_add(5)));
+    let mut tets = try_with_capacity(lx.capacity(n, extra.saturating_add(5)), "the tetrahedra")?;
     let out_of_range =
         |id| format!("node id {id} out of range ({num_points} points numbered from {base})");
     for _ in 0..n {
         lx.expect("a tetrahedron id")?;
-        tets.push(lx.ids("a node id", (base, num_points), out_of_range)?);
+        try_push(
+            &mut tets,
+            lx.ids("a node id", (base, num_points), out_of_range)?,
+            "the tetrahedra",
+        )?;
         lx.skip(extra, "a node id or attribute")?;
     }
     Ok((tets, trailing(&mut lx, "tetrahedra")))

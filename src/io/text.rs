@@ -6,6 +6,7 @@
 use super::MeshData;
 use crate::error::{Error, Result};
 use glam::DVec3;
+use std::borrow::Cow;
 use std::fmt::Display;
 use std::path::Path;
 
@@ -201,7 +202,7 @@ impl<'a> Lexer<'a> {
     /// are never trusted for allocation.
     pub(in crate::io) fn capacity(&self, count: usize, tokens: usize) -> usize {
         let left = self.text.len().saturating_sub(self.pos);
-        count.min(left / tokens.max(1).saturating_mul(2))
+        room(count as u64, left, tokens.max(1).saturating_mul(2))
     }
 
     /// A count of points (`what` names it in errors) that `u32` ids can number.
@@ -264,14 +265,38 @@ pub(in crate::io) fn quote(tok: &str) -> String {
     }
 }
 
+/// Room for `count` items of at least `min_bytes` each in the `left` bytes of the input:
+/// declared counts are never trusted for allocation.
+pub(in crate::io) fn room(count: u64, left: usize, min_bytes: usize) -> usize {
+    (count.min(usize::MAX as u64) as usize).min(left / min_bytes.max(1))
+}
+
 /// Reads a file as text; bytes that are not UTF-8 become U+FFFD so that a binary or
 /// damaged file gets a parse error with a line instead of a bare I/O error.
 pub(in crate::io) fn read_text(path: &Path) -> Result<String> {
     let bytes = crate::io::read_bytes(path)?;
-    Ok(match String::from_utf8(bytes) {
-        Ok(s) => s,
-        Err(e) => String::from_utf8_lossy(e.as_bytes()).into_owned(),
-    })
+    match String::from_utf8(bytes) {
+        Ok(s) => Ok(s),
+        Err(e) => Ok(lossy(e.as_bytes())?.into_owned()),
+    }
+}
+
+/// `String::from_utf8_lossy`, asking for the copy (when one is needed) fallibly.
+pub(in crate::io) fn lossy(bytes: &[u8]) -> Result<Cow<'_, str>> {
+    if let Ok(s) = std::str::from_utf8(bytes) {
+        return Ok(Cow::Borrowed(s));
+    }
+    let mut s = String::new();
+    for chunk in bytes.utf8_chunks() {
+        // A U+FFFD (3 bytes) for each run of invalid bytes.
+        s.try_reserve(chunk.valid().len() + 3)
+            .map_err(|_| Error::out_of_memory(bytes.len() as u64, "the file's text"))?;
+        s.push_str(chunk.valid());
+        if !chunk.invalid().is_empty() {
+            s.push(char::REPLACEMENT_CHARACTER);
+        }
+    }
+    Ok(Cow::Owned(s))
 }
 
 /// A path under the temp dir, unique to this process and call.
@@ -294,6 +319,12 @@ pub(in crate::io) fn read_temp(ext: &str, bytes: impl AsRef<[u8]>) -> Result<Mes
     let read = crate::io::read(&path);
     let _ = std::fs::remove_file(&path);
     read
+}
+
+/// A mesh's warnings as they are shown.
+#[cfg(test)]
+pub(in crate::io) fn warning_lines(m: &MeshData) -> Vec<String> {
+    m.warnings.iter().map(|w| w.to_string()).collect()
 }
 
 /// Test input as text.

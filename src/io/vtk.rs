@@ -9,7 +9,7 @@ use super::MeshData;
 use super::text::{self, Lexer};
 use super::warning::{Noun, SkippedTypes, Tally};
 use crate::error::Result;
-use std::path::Path;
+use crate::util::alloc::{try_push, try_reserve, try_with_capacity};
 
 /// A cell array: cell `i` is `conn[offsets[i]..offsets[i + 1]]`.
 struct Cells {
@@ -44,7 +44,7 @@ fn read_cells(lx: &mut Lexer, num_points: usize) -> Result<Cells> {
         // VTK 5.1: `a` offsets (cells + 1), `b` connectivity entries.
         lx.next();
         lx.expect("the offsets data type")?;
-        let mut offsets = Vec::with_capacity(lx.capacity(a, 1).max(1));
+        let mut offsets = try_with_capacity(lx.capacity(a, 1).max(1), "the cell offsets")?;
         for i in 0..a {
             let o = lx.usize("an offset")?;
             let prev = offsets.last().copied().unwrap_or(0);
@@ -53,7 +53,7 @@ fn read_cells(lx: &mut Lexer, num_points: usize) -> Result<Cells> {
                     "offset {o} (offsets start at 0 and grow up to the connectivity size {b})"
                 )));
             }
-            offsets.push(o);
+            try_push(&mut offsets, o, "the cell offsets")?;
         }
         if offsets.is_empty() {
             offsets.push(0);
@@ -64,16 +64,21 @@ fn read_cells(lx: &mut Lexer, num_points: usize) -> Result<Cells> {
         }
         lx.keyword("CONNECTIVITY")?;
         lx.expect("the connectivity data type")?;
-        let mut conn = Vec::with_capacity(lx.capacity(b, 1));
+        let mut conn = try_with_capacity(lx.capacity(b, 1), "the cell connectivity")?;
         for _ in 0..b {
-            conn.push(point_id(lx, num_points)?);
+            try_push(
+                &mut conn,
+                point_id(lx, num_points)?,
+                "the cell connectivity",
+            )?;
         }
         Ok(Cells { offsets, conn })
     } else {
         // Classic: `a` cells, `b` numbers in all (each cell's size and its ids).
-        let mut offsets = Vec::with_capacity(lx.capacity(a, 2).saturating_add(1));
+        let mut offsets =
+            try_with_capacity(lx.capacity(a, 2).saturating_add(1), "the cell offsets")?;
         offsets.push(0);
-        let mut conn = Vec::with_capacity(lx.capacity(b, 1));
+        let mut conn = try_with_capacity(lx.capacity(b, 1), "the cell connectivity")?;
         let mut used = 0usize;
         for _ in 0..a {
             let k = lx.usize("a cell size")?;
@@ -82,9 +87,13 @@ fn read_cells(lx: &mut Lexer, num_points: usize) -> Result<Cells> {
                 return Err(lx.error(format!("the cells hold more than the {b} numbers declared")));
             }
             for _ in 0..k {
-                conn.push(point_id(lx, num_points)?);
+                try_push(
+                    &mut conn,
+                    point_id(lx, num_points)?,
+                    "the cell connectivity",
+                )?;
             }
-            offsets.push(conn.len());
+            try_push(&mut offsets, conn.len(), "the cell offsets")?;
         }
         if used != b {
             return Err(lx.error(format!("the cells hold {used} numbers, {b} declared")));
@@ -121,9 +130,13 @@ fn read_cell_types(
             )));
         }
         if corners == 3 {
-            data.triangles.push([c[0], c[1], c[2]]);
+            try_push(&mut data.triangles, [c[0], c[1], c[2]], "the triangles")?;
         } else {
-            data.tetrahedra.push([c[0], c[1], c[2], c[3]]);
+            try_push(
+                &mut data.tetrahedra,
+                [c[0], c[1], c[2], c[3]],
+                "the tetrahedra",
+            )?;
         }
     }
     Ok(())
@@ -288,9 +301,9 @@ impl Sections {
         let n = lx.point_count("the number of points")?;
         lx.expect("the points' data type")?;
         let positions = &mut self.data.positions;
-        positions.reserve(lx.capacity(n, 3));
+        try_reserve(positions, lx.capacity(n, 3), "the points")?;
         for _ in 0..n {
-            positions.push(lx.point()?);
+            try_push(positions, lx.point()?, "the points")?;
         }
         Ok(())
     }
@@ -311,9 +324,9 @@ impl Sections {
         if grid {
             self.pending = Some((cells, line));
         } else if kw.eq_ignore_ascii_case("POLYGONS") {
-            fan_polygons(&cells, &mut self.data.triangles, (tally, line));
+            fan_polygons(&cells, &mut self.data.triangles, (tally, line))?;
         } else if kw.eq_ignore_ascii_case("TRIANGLE_STRIPS") {
-            split_strips(&cells, &mut self.data.triangles, (tally, line));
+            split_strips(&cells, &mut self.data.triangles, (tally, line))?;
         } else if kw.eq_ignore_ascii_case("VERTICES") {
             tally.add_n(VERTEX_CELLS, cells.len() as u64, Some(line));
         } else {
@@ -349,40 +362,41 @@ const FANNED: Noun = (
 
 /// Fan-triangulates every polygon: (c0, c1, c2), (c0, c2, c3), ...; counts the polygons
 /// fanned and those too short, at the line of their section.
-fn fan_polygons(cells: &Cells, out: &mut Vec<[u32; 3]>, (tally, line): (&mut Tally, usize)) {
+fn fan_polygons(
+    cells: &Cells, out: &mut Vec<[u32; 3]>, (tally, line): (&mut Tally, usize),
+) -> Result<()> {
     for i in 0..cells.len() {
         let c = cells.cell(i);
         if c.len() != 3 {
             tally.add(if c.len() < 3 { SHORT } else { FANNED }, Some(line));
         }
         for j in 2..c.len() {
-            out.push([c[0], c[j - 1], c[j]]);
+            try_push(out, [c[0], c[j - 1], c[j]], "the triangles")?;
         }
     }
+    Ok(())
 }
 
 /// Splits every triangle strip, every other triangle turned to keep one orientation;
 /// counts the strips too short.
-fn split_strips(cells: &Cells, out: &mut Vec<[u32; 3]>, (tally, line): (&mut Tally, usize)) {
+fn split_strips(
+    cells: &Cells, out: &mut Vec<[u32; 3]>, (tally, line): (&mut Tally, usize),
+) -> Result<()> {
     for i in 0..cells.len() {
         let c = cells.cell(i);
         if c.len() < 3 {
             tally.add(SHORT, Some(line));
         }
         for j in 2..c.len() {
-            out.push(if j % 2 == 0 {
+            let t = if j % 2 == 0 {
                 [c[j - 2], c[j - 1], c[j]]
             } else {
                 [c[j - 1], c[j - 2], c[j]]
-            });
+            };
+            try_push(out, t, "the triangles")?;
         }
     }
-}
-
-/// Reads a legacy ASCII `.vtk` file.
-pub fn read(path: &Path) -> Result<MeshData> {
-    let text = text::read_text(path)?;
-    parse(&text, &path.display().to_string())
+    Ok(())
 }
 
 #[cfg(test)]

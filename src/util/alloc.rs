@@ -19,6 +19,16 @@ pub(crate) fn try_reserve<T>(v: &mut Vec<T>, additional: usize, what: &str) -> R
         .map_err(|_| Error::out_of_memory(bytes_of::<T>(v.len().saturating_add(additional)), what))
 }
 
+/// An empty hash map with room for `n` entries.
+pub(crate) fn try_hash_map<K: Eq + std::hash::Hash, V>(
+    n: usize, what: &str,
+) -> Result<std::collections::HashMap<K, V>> {
+    let mut m = std::collections::HashMap::new();
+    m.try_reserve(n)
+        .map_err(|_| Error::out_of_memory(bytes_of::<(K, V)>(n), what))?;
+    Ok(m)
+}
+
 /// An empty vector with room for `n` elements.
 pub(crate) fn try_with_capacity<T>(n: usize, what: &str) -> Result<Vec<T>> {
     let mut v = Vec::new();
@@ -80,10 +90,20 @@ pub(crate) fn try_push<T>(v: &mut Vec<T>, item: T, what: &str) -> Result<()> {
 }
 
 /// The value of `r`, for the queries whose signature has no error (one element's relation
-/// at a level that stores no `O`, a summary, a view): running out of memory there is a
-/// panic, which the C boundary catches and reports, never an abort.
+/// at a level that stores no `O`, a view): running out of memory there is a panic, never
+/// an abort. Behind the C boundary (a quiet section, see `util::panics`) its payload is
+/// the [`Error`] itself, so that the boundary reports the error's own status
+/// (`OUT_OF_MEMORY`) and message rather than a panic; elsewhere it is the message, which
+/// the panic hook prints. Rust callers that must not panic use the `try_` form of the
+/// query where there is one.
 pub(crate) fn or_panic<T>(r: Result<T>) -> T {
-    r.unwrap_or_else(|e| panic!("{e}"))
+    r.unwrap_or_else(|e| {
+        if crate::util::panics::is_quiet() {
+            std::panic::panic_any(e)
+        } else {
+            panic!("{e}")
+        }
+    })
 }
 
 /// What a fill gives back: nothing, or a result (the C skin's `csr!` takes either).

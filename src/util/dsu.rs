@@ -71,15 +71,14 @@ pub(crate) struct InputComplex {
 impl InputComplex {
     pub(crate) fn new<const K: usize>(
         v: &[u32], n: usize, welded: usize, origin: impl Fn(u32) -> u32,
-    ) -> Self {
-        use crate::util::alloc::{or_panic, try_vec};
-        let (components, isolated) = or_panic(element_components::<K>(v, n, origin));
-        InputComplex {
+    ) -> crate::error::Result<Self> {
+        let (components, isolated) = element_components::<K>(v, n, origin)?;
+        Ok(InputComplex {
             components,
             isolated: isolated - welded as u64,
             kept: n - welded,
-            on_boundary: or_panic(try_vec(n, false, "the summary's boundary marks")),
-            dsu: or_panic(Dsu::new(n)),
-        }
+            on_boundary: crate::util::alloc::try_vec(n, false, "the summary's boundary marks")?,
+            dsu: Dsu::new(n)?,
+        })
     }
 }

@@ -4,6 +4,8 @@
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::next;
+use crate::error::Result;
+use crate::util::alloc::or_panic;
 use crate::util::dsu::InputComplex;
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.
@@ -33,10 +35,17 @@ pub struct Summary {
 }
 
 impl Che {
-    /// The summary; O(T) at every level.
+    /// The summary; O(T) at every level. Panics when memory runs out: see
+    /// [`Che::try_summary`].
     pub fn summary(&self) -> Summary {
+        or_panic(self.try_summary())
+    }
+
+    /// The summary, or an [`ErrorKind::OutOfMemory`](crate::ErrorKind) error when the
+    /// arrays it needs (the opposites below level 1, the marks) do not fit.
+    pub fn try_summary(&self) -> Result<Summary> {
         if self.edits().is_some() {
-            return self.edited_summary();
+            return Ok(self.edited_summary());
         }
         let r = &self.report;
         let n = self.n_input_vertices;
@@ -48,10 +57,10 @@ impl Che {
             kept,
             mut on_boundary,
             mut dsu,
-        } = input;
+        } = input?;
 
         // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
-        let o = self.opposites_or_computed();
+        let o = self.try_opposites_or_computed()?;
         for h in 0..self.v.len() as u32 {
             if o[h as usize] != NONE
                 || self.non_manifold.binary_search(&h).is_ok()
@@ -81,7 +90,7 @@ impl Che {
         } else {
             -1
         };
-        Summary {
+        Ok(Summary {
             vertices: kept as u64,
             edges: r.input_edges as u64,
             triangles: self.num_triangles() as u64,
@@ -98,6 +107,6 @@ impl Che {
             split_vertices: r.split_vertices as u64,
             flipped_triangles: r.flipped_triangles as u64,
             non_orientable_components: r.non_orientable_components as u64,
-        }
+        })
     }
 }

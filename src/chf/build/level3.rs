@@ -109,7 +109,7 @@ pub(crate) fn build(chf: &Chf, threads: usize, memory_limit_bytes: u64) -> Resul
     }
     let bits = RankBits::from_words(words, n_hf)?;
     let (component, components) = components(chf, &p)?;
-    let true_faces = p.half_faces.len() - flagged_count(chf);
+    let true_faces = p.half_faces.len() - flagged_count(chf)?;
     Ok(Boundary {
         che,
         bits,
@@ -123,8 +123,8 @@ pub(crate) fn build(chf: &Chf, threads: usize, memory_limit_bytes: u64) -> Resul
 }
 
 /// Flagged half-faces (non-manifold or seam), all unpaired.
-fn flagged_count(chf: &Chf) -> usize {
-    or_panic(crate::chf::star_pass::merged(&chf.non_manifold, &chf.seams)).len()
+fn flagged_count(chf: &Chf) -> Result<usize> {
+    Ok(crate::chf::star_pass::merged(&chf.non_manifold, &chf.seams)?.len())
 }
 
 fn surface(chf: &Chf, p: &Parts, options: BuildOptions) -> Result<Che> {
@@ -216,7 +216,7 @@ impl Chf {
     pub fn num_boundary_faces(&self) -> usize {
         match &self.boundary {
             Some(b) => b.true_faces,
-            None => self.num_boundary_triangles() - flagged_count(self),
+            None => self.num_boundary_triangles() - or_panic(flagged_count(self)),
         }
     }
 
@@ -309,14 +309,20 @@ impl Chf {
     /// The boundary component of volume vertex `v` (`NONE` off the boundary). O(1) at
     /// level 3, O(T) below.
     pub fn boundary_component(&self, v: u32) -> u32 {
+        or_panic(self.try_boundary_component(v))
+    }
+
+    /// [`Chf::boundary_component`], or an error when the tables it computes below level
+    /// 3 do not fit in memory.
+    pub fn try_boundary_component(&self, v: u32) -> Result<u32> {
         let b = self.boundary_vertex(v);
         if b == NONE {
-            return NONE;
+            return Ok(NONE);
         }
-        match &self.boundary {
+        Ok(match &self.boundary {
             Some(s) => s.component[b as usize],
-            None => or_panic(components(self, &parts(self))).0[b as usize],
-        }
+            None => components(self, &try_parts(self)?)?.0[b as usize],
+        })
     }
 
     /// The boundary component of every boundary vertex (indexed like
@@ -328,9 +334,15 @@ impl Chf {
     /// Number of boundary components (of the structure: after the vertex split). O(1) at
     /// level 3, O(T) below.
     pub fn num_boundary_components(&self) -> usize {
-        match &self.boundary {
+        or_panic(self.try_num_boundary_components())
+    }
+
+    /// [`Chf::num_boundary_components`], or an error when the tables it computes below
+    /// level 3 do not fit in memory.
+    pub fn try_num_boundary_components(&self) -> Result<usize> {
+        Ok(match &self.boundary {
             Some(b) => b.components,
-            None => or_panic(components(self, &parts(self))).1,
-        }
+            None => components(self, &try_parts(self)?)?.1,
+        })
     }
 }

@@ -6,7 +6,8 @@ use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::face_cycle;
 use crate::chf::query::view::Need;
-use crate::util::alloc::or_panic;
+use crate::error::Result;
+use crate::util::alloc::{or_panic, try_push};
 use crate::util::dsu::InputComplex;
 
 /// Field names match `chf_summary` in the C API and the CLI's JSON.
@@ -42,11 +43,19 @@ pub struct Summary {
 }
 
 impl Chf {
-    /// The summary; O(T log T) at every level (it sorts the boundary edges).
+    /// The summary; O(T log T) at every level (it sorts the boundary edges). Panics when
+    /// memory runs out: see [`Chf::try_summary`].
     pub fn summary(&self) -> Summary {
+        or_panic(self.try_summary())
+    }
+
+    /// The summary, or an [`ErrorKind::OutOfMemory`](crate::ErrorKind) error when the
+    /// arrays it needs (the opposites below level 1, the marks, the boundary edges) do not
+    /// fit.
+    pub fn try_summary(&self) -> Result<Summary> {
         if self.edit.is_some() {
             // The live tetrahedra as a build sees them (O(T log T), like the rest).
-            return or_panic(self.compacted()).0.summary();
+            return self.compacted()?.0.try_summary();
         }
         let r = &self.report;
         let n = self.n_input_vertices;
@@ -58,10 +67,10 @@ impl Chf {
             kept,
             mut on_boundary,
             mut dsu,
-        } = input;
+        } = input?;
 
         // Input boundary faces: unpaired half-faces that are neither non-manifold nor seams.
-        let view = self.view(Need::NOTHING);
+        let view = self.try_view(Need::NOTHING)?;
         let mut pairs: Vec<u64> = Vec::new();
         for hf in 0..self.v.len() as u32 {
             if view.o[hf as usize] != NONE
@@ -74,7 +83,8 @@ impl Chf {
             for (x, y) in [(a, b), (b, c), (c, a)] {
                 on_boundary[x as usize] = true;
                 dsu.union(x, y);
-                pairs.push(((x.min(y) as u64) << 32) | x.max(y) as u64);
+                let pair = ((x.min(y) as u64) << 32) | x.max(y) as u64;
+                try_push(&mut pairs, pair, "the summary's boundary edges")?;
             }
         }
         pairs.sort_unstable();
@@ -83,7 +93,7 @@ impl Chf {
 
         let t = self.num_tetrahedra() as i64;
         let euler = kept as i64 - r.input_edges as i64 + r.input_faces as i64 - t;
-        Summary {
+        Ok(Summary {
             vertices: kept as u64,
             edges: r.input_edges as u64,
             faces: r.input_faces as u64,
@@ -107,6 +117,6 @@ impl Chf {
             split_vertices: r.split_vertices as u64,
             flipped_tetrahedra: r.flipped_tetrahedra as u64,
             non_orientable_components: r.non_orientable_components as u64,
-        }
+        })
     }
 }

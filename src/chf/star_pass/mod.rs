@@ -24,7 +24,9 @@ use crate::NONE;
 use crate::chf::edges::EdgeCensus;
 use crate::chf::edges::MultiFan;
 use crate::error::Result;
-use crate::util::alloc::{try_collect, try_extend, try_resize, try_vec};
+use crate::util::alloc::{
+    try_collect, try_extend, try_push, try_resize, try_to_vec, try_vec, try_with_capacity,
+};
 use crate::util::extend_examples;
 use crate::util::rank::RankBits;
 
@@ -99,7 +101,7 @@ pub(crate) fn stars(
     } = options;
     let faces = pairs != Pairs::No;
     let collect = matches!(pairs, Pairs::Partners | Pairs::Opposites);
-    let plan = Plan::new(v, n_vertices, threads, tables);
+    let plan = Plan::new(v, n_vertices, threads, tables)?;
     let opposites = Opposites::new(if collect { v.len() } else { 0 })?;
     let mut vh = if tables {
         crate::util::pages::filled(n_vertices, NONE, "the vertex half-faces VH")?
@@ -157,7 +159,7 @@ fn workers<'o>(
         .map(|_| {
             Worker::new(
                 n_vertices,
-                opposites.writer(),
+                opposites.writer()?,
                 if tables { share } else { 0 },
             )
         })
@@ -186,7 +188,8 @@ struct Plan<'v> {
 }
 
 impl<'v> Plan<'v> {
-    fn new(v: &'v [u32], n_vertices: usize, threads: usize, tables: bool) -> Self {
+    fn new(v: &'v [u32], n_vertices: usize, threads: usize, tables: bool) -> Result<Self> {
+        const WHAT: &str = "the star pass's plan";
         let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
         // At most 2^16 vertices per coarse bucket, so that the second pass's counts stay
         // small (past 2^24 vertices there are more than 256 coarse buckets).
@@ -202,15 +205,15 @@ impl<'v> Plan<'v> {
             parts.push(v);
         }
         let part_counts = crate::util::par::run_all(parts.clone(), |part| {
-            let mut count = vec![0u32; n_coarse];
+            let mut count = try_vec(n_coarse, 0u32, WHAT)?;
             for &x in part {
                 count[(x >> shift) as usize] += 1;
             }
-            count
+            Ok(count)
         });
-        let count: Vec<u32> = (0..n_coarse)
-            .map(|c| part_counts.iter().map(|p| p[c]).sum())
-            .collect();
+        let part_counts: Vec<Vec<u32>> = part_counts.into_iter().collect::<Result<_>>()?;
+        let count = (0..n_coarse).map(|c| part_counts.iter().map(|p| p[c]).sum());
+        let count: Vec<u32> = try_collect(count, WHAT)?;
         // Rounds of coarse buckets, so that the records stay under 16 bytes per tetrahedron
         // (all of them would take 80): as many `u32` as `O` has entries, so that `O` can
         // then take over the buffer (fresh memory costs a page fault per 4 KB).
@@ -222,7 +225,7 @@ impl<'v> Plan<'v> {
         // Each part's records of a round fit in its share of the budget, so that the
         // regions of all parts (each as large as its part's largest round) add up to the
         // budget.
-        let rounds = rounds(&part_counts, budget.div_ceil(parts.len()));
+        let rounds = rounds(&part_counts, budget.div_ceil(parts.len()))?;
         let sizes = region_sizes(&part_counts, &rounds);
         // Never cleared: every record a round reads, it wrote. Where each region starts:
         let regions: Vec<usize> = sizes
@@ -232,7 +235,7 @@ impl<'v> Plan<'v> {
                 Some(*at - n)
             })
             .collect();
-        Plan {
+        Ok(Plan {
             threads,
             shift,
             n_vertices,
@@ -243,7 +246,7 @@ impl<'v> Plan<'v> {
             rounds,
             sizes,
             regions,
-        }
+        })
     }
 
     /// One buffer for every region, at least as large as `O` (`len` ids), so that `O` can
@@ -262,6 +265,7 @@ impl<'v> Plan<'v> {
         &self, (first, last): (usize, usize), records: &mut [u32], workers: &mut [Worker],
         vh: &mut [u32], mode: &Mode, total: &mut Tally,
     ) -> Result<()> {
+        const BUCKETS: &str = "the star pass's buckets";
         let shift = self.shift;
         let mut rest = &mut records[..];
         let mut jobs = Vec::with_capacity(self.parts.len());
@@ -274,8 +278,9 @@ impl<'v> Plan<'v> {
         let starts = crate::util::par::run_all(jobs, |(t0, part, pc, rec)| {
             scatter(part, t0 as u32, pc, first as u32, shift, rec)
         });
+        let starts: Vec<Vec<u32>> = starts.into_iter().collect::<Result<_>>()?;
         let records = &records[..];
-        let cuts = self.cuts(first, last, workers.len());
+        let cuts = self.cuts(first, last, workers.len())?;
         let n_vertices = self.n_vertices;
         let mut jobs = Vec::with_capacity(workers.len());
         let mut vh_rest = if mode.tables {
@@ -294,17 +299,13 @@ impl<'v> Plan<'v> {
             let (mine, rest) = std::mem::take(&mut vh_rest).split_at_mut(vh_len);
             vh_rest = rest;
             // Bucket `c` of this run, from every part in turn.
-            let buckets: Vec<Vec<&[u32]>> = (a..b)
-                .map(|c| {
-                    self.regions
-                        .iter()
-                        .zip(&starts)
-                        .map(|(&lo, st)| {
-                            &records[lo + 5 * st[c] as usize..lo + 5 * st[c + 1] as usize]
-                        })
-                        .collect()
-                })
-                .collect();
+            let mut buckets: Vec<Vec<&[u32]>> = try_with_capacity(b - a, BUCKETS)?;
+            for c in a..b {
+                let parts = self.regions.iter().zip(&starts).map(|(&lo, st)| {
+                    &records[lo + 5 * st[c] as usize..lo + 5 * st[c + 1] as usize]
+                });
+                buckets.push(try_collect(parts, BUCKETS)?);
+            }
             jobs.push((worker, buckets, mine, vh_base));
         }
         let tallies = crate::util::par::run_all(jobs, |(w, buckets, vh, base)| {
@@ -318,10 +319,12 @@ impl<'v> Plan<'v> {
 
     /// Where each of `n_workers` runs of coarse buckets starts (and, last, `last`): runs
     /// of about an equal share of the round's records.
-    fn cuts(&self, first: usize, last: usize, n_workers: usize) -> Vec<usize> {
+    fn cuts(&self, first: usize, last: usize, n_workers: usize) -> Result<Vec<usize>> {
         let count = &self.count;
         let in_round: usize = count[first..last].iter().map(|&c| c as usize).sum();
-        let mut cuts = vec![first];
+        // One cut per worker and the end: no growth past this.
+        let mut cuts = try_with_capacity(n_workers + 1, "the star pass's cuts")?;
+        cuts.push(first);
         let mut acc = 0;
         for (c, &n) in count.iter().enumerate().take(last).skip(first) {
             acc += n as usize;
@@ -332,17 +335,18 @@ impl<'v> Plan<'v> {
         while cuts.len() <= n_workers {
             cuts.push(last);
         }
-        cuts
+        Ok(cuts)
     }
 }
 
 /// Ranges of coarse buckets such that each part's occurrences in a range fit in `share`
 /// records (a range holds at least one bucket).
-fn rounds(part_counts: &[Vec<u32>], share: usize) -> Vec<(usize, usize)> {
+fn rounds(part_counts: &[Vec<u32>], share: usize) -> Result<Vec<(usize, usize)>> {
     let n_coarse = part_counts.first().map_or(0, Vec::len);
     let mut rounds = Vec::new();
     let mut first = 0;
     while first < n_coarse {
+        // One count per part (at most one per thread).
         let mut in_round: Vec<usize> = part_counts.iter().map(|p| p[first] as usize).collect();
         let mut last = first + 1;
         while last < n_coarse
@@ -356,10 +360,10 @@ fn rounds(part_counts: &[Vec<u32>], share: usize) -> Vec<(usize, usize)> {
             }
             last += 1;
         }
-        rounds.push((first, last));
+        try_push(&mut rounds, (first, last), "the star pass's rounds")?;
         first = last;
     }
-    rounds
+    Ok(rounds)
 }
 
 /// Flat records, five `u32` each, in one buffer cut in a region per part: each as large as
@@ -385,14 +389,14 @@ fn region_sizes(part_counts: &[Vec<u32>], rounds: &[(usize, usize)]) -> Vec<usiz
 /// starts in `records`, in records.
 fn scatter(
     part: &[u32], t0: u32, count: &[u32], first: u32, shift: u32, records: &mut [u32],
-) -> Vec<u32> {
+) -> Result<Vec<u32>> {
     let span = count.len() as u32;
-    let mut start = vec![0u32; count.len() + 2];
+    let mut start = try_vec(count.len() + 2, 0u32, "the star pass's bucket starts")?;
     for (c, &n) in count.iter().enumerate() {
         start[c + 1] = start[c] + n;
     }
     let in_round = start[count.len()];
-    let mut fill = start.clone();
+    let mut fill = try_to_vec(&start, "the star pass's bucket starts")?;
     // The spare record, never advanced.
     fill[span as usize] = in_round;
     debug_assert!(records.len() >= 5 * (in_round as usize + 1));
@@ -410,7 +414,7 @@ fn scatter(
         }
     }
     start.truncate(count.len() + 1);
-    start
+    Ok(start)
 }
 
 /// What every thread of the pass needs to know.
@@ -574,7 +578,7 @@ impl<'o> Worker<'o> {
             for i in 0..n_fine {
                 let star = &sorter.local[fine_start[i] as usize..fine_start[i + 1] as usize];
                 if !star.is_empty() {
-                    self.link.star(star, &mut sums);
+                    self.link.star(star, &mut sums)?;
                 }
             }
         }
@@ -656,14 +660,14 @@ pub(crate) fn bits_from_slots(slots: &[Vec<u64>], n: usize, scratch: Vec<u64>) -
     // Windows of at least one word, so that each word is written by one window.
     let shift = bits.saturating_sub(COARSE_BITS).max(6);
     let n_windows = (n.saturating_sub(1) >> shift) + 1;
-    let mut start = vec![0u32; n_windows + 1];
+    let mut start = try_vec(n_windows + 1, 0u32, "the edge slot windows")?;
     for &s in slots() {
         start[(s >> shift) as usize + 1] += 1;
     }
     for w in 0..n_windows {
         start[w + 1] += start[w];
     }
-    let mut fill = start.clone();
+    let mut fill = try_to_vec(&start, "the edge slot windows")?;
     let mut low = scratch;
     low.clear();
     try_resize(&mut low, n_slots, 0, "the edge slots")?;

@@ -11,7 +11,7 @@
 
 use crate::NONE;
 use crate::error::Result;
-use crate::util::alloc::try_resize;
+use crate::util::alloc::{try_resize, try_vec};
 use std::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
 
 const WINDOWS_BITS: u32 = 9;
@@ -53,13 +53,13 @@ impl Opposites {
         })
     }
 
-    pub(crate) fn writer(&self) -> Writer<'_> {
+    pub(crate) fn writer(&self) -> Result<Writer<'_>> {
         let n_windows = self.fill.len();
-        Writer {
+        Ok(Writer {
             to: self,
-            staged: vec![[0; STAGE]; n_windows],
-            staged_len: vec![0; n_windows],
-        }
+            staged: try_vec(n_windows, [0; STAGE], "a thread's staged pairs")?,
+            staged_len: try_vec(n_windows, 0, "a thread's staged pairs")?,
+        })
     }
 
     /// Appends `records` to window `w`.
@@ -142,7 +142,7 @@ mod tests {
                 .map(|i| (n as u32 - 1 - i, i))
                 .collect();
             pairs.reverse();
-            let mut w = o.writer();
+            let mut w = o.writer().unwrap();
             for &(h, g) in &pairs {
                 w.pair(h, g);
                 expected[h as usize] = g;

@@ -44,7 +44,7 @@ mirror!(Summary => CheSummary {
 /// The topology summary into `*out`. O(T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_summary(m: *const CheMesh, out: *mut CheSummary) -> Status {
-    value!(m, out, |c| Ok((&c.summary()).into()))
+    value!(m, out, |c| c.try_summary().map(|s| (&s).into()))
 }
 
 /// What the build did to its input (counts; `che_mesh_report_examples` gives ids).

@@ -54,7 +54,7 @@ mirror!(Summary => ChfSummary {
 /// The topology summary into `*out`. O(T log T) at every level.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_summary(m: *const ChfMesh, out: *mut ChfSummary) -> Status {
-    value!(m, out, |c| Ok((&c.summary()).into()))
+    value!(m, out, |c| c.try_summary().map(|s| (&s).into()))
 }
 
 /// What the build did to its input (counts; `chf_mesh_report_examples` gives ids).

@@ -93,7 +93,7 @@ pub unsafe extern "C" fn chf_boundary_vertex_vertex(
 /// boundary faces joined through shared vertices. O(1) at level 3, O(T) below; 0 for NULL.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_num_boundary_components(m: *const ChfMesh) -> usize {
-    count!(m, |c| c.num_boundary_components())
+    count!(m, |c| c.try_num_boundary_components()?)
 }
 
 /// The boundary triangle of half-face `hf` into `*out`, `TOPOMESH_NONE` when `hf` is
@@ -143,5 +143,7 @@ pub unsafe extern "C" fn chf_boundary_triangle_face(
 pub unsafe extern "C" fn chf_vertex_boundary_component(
     m: *const ChfMesh, v: u32, out: *mut u32,
 ) -> Status {
-    value!(m, out, check_vertex(v) => |c| c.boundary_component(v))
+    value!(m, out, |c| c
+        .check_vertex(v)
+        .and_then(|_| c.try_boundary_component(v)))
 }

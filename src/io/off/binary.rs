@@ -4,10 +4,12 @@
 //! face as `k i1 .. ik`, then its number of colour components and those components.
 //! Errors name the byte offset of what failed.
 
-use super::{FANNED, Header, Prefixes, capacity, check_vertex_count};
+use super::{FANNED, Header, Prefixes, check_vertex_count};
 use crate::error::{Error, Result};
 use crate::io::MeshData;
+use crate::io::text::room;
 use crate::io::warning::{Tally, Warning, count};
+use crate::util::alloc::{try_push, try_with_capacity};
 use glam::DVec3;
 
 /// The binary payload, read from `pos`.
@@ -88,13 +90,14 @@ pub(super) fn read(bin: &mut Binary, header: &Header, data: &mut MeshData) -> Re
 
 fn vertices(bin: &mut Binary, nv: u64, prefixes: Prefixes) -> Result<Vec<DVec3>> {
     let extra = prefixes.binary_extra();
-    let mut positions = Vec::with_capacity(capacity(nv, bin.left(), 4 * (3 + extra)));
+    let room = room(nv, bin.left(), 4 * (3 + extra));
+    let mut positions = try_with_capacity(room, "the vertices")?;
     for i in 0..nv {
         let mut p = [0.0; 3];
         for (c, axis) in p.iter_mut().zip(["x", "y", "z"]) {
             *c = f64::from(bin.float(&|| format!("coordinate {axis} of vertex {i}"))?);
         }
-        positions.push(DVec3::from_array(p));
+        try_push(&mut positions, DVec3::from_array(p), "the vertices")?;
         bin.skip(extra, &|| {
             format!("the normal, colour or texture of vertex {i}")
         })?;
@@ -104,7 +107,7 @@ fn vertices(bin: &mut Binary, nv: u64, prefixes: Prefixes) -> Result<Vec<DVec3>>
 
 fn faces(bin: &mut Binary, nv: u32, nf: u64, polygons: &mut Tally) -> Result<Vec<[u32; 3]>> {
     // A triangle takes at least 5 words: its count, 3 ids, its number of colours.
-    let mut triangles = Vec::with_capacity(capacity(nf, bin.left(), 20));
+    let mut triangles = try_with_capacity(room(nf, bin.left(), 20), "the triangles")?;
     for f in 0..nf {
         let at = bin.pos;
         let k = bin.count(&|| format!("the vertex count of face {f}"))?;
@@ -130,7 +133,7 @@ fn faces(bin: &mut Binary, nv: u32, nf: u64, polygons: &mut Tally) -> Result<Vec
         let mut prev = index()?;
         for _ in 2..k {
             let v = index()?;
-            triangles.push([first, prev, v]);
+            try_push(&mut triangles, [first, prev, v], "the triangles")?;
             prev = v;
         }
         let at = bin.pos;

@@ -96,10 +96,7 @@ impl Chf {
         let surface = self.boundary_surface()?;
         let volume_vertex = self.boundary_vertices();
         let n = surface.num_vertices();
-        let mut origin = Vec::new();
-        origin.try_reserve_exact(n).map_err(|_| {
-            Error::too_large(format!("{n} boundary vertex origins do not fit in memory"))
-        })?;
+        let mut origin = crate::util::alloc::try_with_capacity(n, "the boundary vertex origins")?;
         origin.extend((0..n as u32).map(|b| {
             let v = volume_vertex[surface.vertex_origin(b) as usize];
             self.vertex_origin(v)

@@ -8,6 +8,10 @@ use super::{
 use crate::NONE;
 use crate::chf::build::report::push_example;
 use crate::chf::edges::MultiFan;
+use crate::error::Result;
+use crate::util::alloc::{
+    try_collect, try_extend, try_push, try_reserve, try_resize, try_vec, try_with_capacity,
+};
 
 /// Per local of `x` and the order of the three other vertices (bit 0: `y0 < y1`, bit 1:
 /// `y0 < y2`, bit 2: `y1 < y2`), the direction bits of the three faces.
@@ -45,19 +49,20 @@ const DIRS: [[u8; 8]; 4] = {
 
 impl Link {
     /// [`Link::star`] after [`Link::local_ids`], for any star.
-    pub(super) fn general_star(&mut self, star: &[Record], sums: &mut Sums) {
+    pub(super) fn general_star(&mut self, star: &[Record], sums: &mut Sums) -> Result<()> {
         let k = star.len();
         let x = star[0][1];
         let m = self.verts.len();
         self.dirs.clear();
-        self.dirs.extend(star.iter().map(|r| {
+        let dirs = star.iter().map(|r| {
             let order = (r[2] < r[3]) as usize
                 | ((r[2] < r[4]) as usize) << 1
                 | ((r[3] < r[4]) as usize) << 2;
             DIRS[(r[0] & 3) as usize][order]
-        }));
-        let cells = self.cells(star);
-        let (first_open, unpaired) = self.match_faces(star, x, sums);
+        });
+        try_extend(&mut self.dirs, dirs, "a star's face directions")?;
+        let cells = self.cells(star)?;
+        let (first_open, unpaired) = self.match_faces(star, x, sums)?;
         if cells <= 12 * k {
             self.count[..cells].fill(0);
         } else {
@@ -70,9 +75,9 @@ impl Link {
         if let Some((census, _)) = sums.faces.as_mut() {
             flush_events(&mut self.events, x, census);
         }
-        if !self.one_piece(k) {
+        if !self.one_piece(k)? {
             sums.split_needed = true;
-            return;
+            return Ok(());
         }
         // `VH`: the first unpaired half-face, else the first half-face.
         let c = if first_open == NONE { 0 } else { first_open };
@@ -91,21 +96,23 @@ impl Link {
                 };
                 if self.verts[l] > x {
                     if sums.tables {
-                        sums.edge_slots.push(slot_of_corner(star, c));
+                        try_push(sums.edge_slots, slot_of_corner(star, c), "the edge slots")?;
                     }
                     sums.num_edges += 1;
                     sums.input_edges += 1;
                 }
             }
+            Ok(())
         } else {
-            self.edges_by_walking(star, x, sums);
+            self.edges_by_walking(star, x, sums)
         }
     }
 
     /// The link edge (face) opposite every corner as a cell: a pair of local ids in a
     /// square table, or on a very large link the rank of the pair among the link's pairs.
     /// Counts the arrivals in each cell and keeps the first two corners, branch-free.
-    fn cells(&mut self, star: &[Record]) -> usize {
+    fn cells(&mut self, star: &[Record]) -> Result<usize> {
+        const WHAT: &str = "a star's link edges";
         let k = star.len();
         let m = self.verts.len();
         // As small as it can be, so that the table stays in the L1 cache.
@@ -113,15 +120,15 @@ impl Link {
         self.cells.clear();
         let n_cells = if side <= 256 && 3 * k < u16::MAX as usize {
             let cell = |a: u32, b: u32| a.min(b) * side + a.max(b);
-            self.cells.extend(
-                self.ids
-                    .iter()
-                    .map(|&[a, b, c]| [cell(b, c), cell(a, c), cell(a, b)]),
-            );
+            let cells = self
+                .ids
+                .iter()
+                .map(|&[a, b, c]| [cell(b, c), cell(a, c), cell(a, b)]);
+            try_extend(&mut self.cells, cells, WHAT)?;
             (side * side) as usize
         } else {
             // Rare: too many vertices for a table; sort the pairs.
-            let mut keyed: Vec<(u32, u32, u32)> = Vec::with_capacity(3 * k);
+            let mut keyed: Vec<(u32, u32, u32)> = try_with_capacity(3 * k, WHAT)?;
             for (p, ids) in self.ids.iter().enumerate() {
                 for (s, [s1, s2]) in OTHER_CORNERS.iter().enumerate() {
                     let (a, b) = (ids[*s1], ids[*s2]);
@@ -129,7 +136,7 @@ impl Link {
                 }
             }
             keyed.sort_unstable();
-            self.cells.resize(k, [0; 3]);
+            try_resize(&mut self.cells, k, [0; 3], WHAT)?;
             let mut rank = 0u32;
             for (j, &(a, b, c)) in keyed.iter().enumerate() {
                 if j > 0 && (keyed[j - 1].0, keyed[j - 1].1) != (a, b) {
@@ -140,8 +147,10 @@ impl Link {
             3 * k
         };
         if self.count.len() < n_cells.max(12 * k) {
-            self.count = vec![0; n_cells.max(12 * k)];
-            self.arrivals = vec![0; 2 * n_cells.max(12 * k)];
+            // The old tables go first, so that the peak holds one pair.
+            (self.count, self.arrivals) = (Vec::new(), Vec::new());
+            self.count = try_vec(n_cells.max(12 * k), 0, WHAT)?;
+            self.arrivals = try_vec(2 * n_cells.max(12 * k), 0, WHAT)?;
         }
         for (p, cells) in self.cells.iter().enumerate() {
             for (s, &e) in cells.iter().enumerate() {
@@ -151,23 +160,24 @@ impl Link {
                 self.arrivals[2 * e + seen.min(1) as usize] = (3 * p + s) as u32;
             }
         }
-        n_cells
+        Ok(n_cells)
     }
 
     /// Mates across matched link edges; records the faces whose smallest vertex is `x`;
     /// aggregates the smallest corner and end corner of every local id. Returns the first
     /// unpaired corner (`NONE` if none) and the number of unpaired corners.
-    fn match_faces(&mut self, star: &[Record], x: u32, sums: &mut Sums) -> (u32, usize) {
+    fn match_faces(&mut self, star: &[Record], x: u32, sums: &mut Sums) -> Result<(u32, usize)> {
+        const WHAT: &str = "a star's face mates";
         let k = star.len();
         let m = self.verts.len();
         self.mates.clear();
-        self.mates.resize(k, [NONE; 3]);
+        try_resize(&mut self.mates, k, [NONE; 3], WHAT)?;
         self.near.clear();
-        self.near.resize(k, 0);
+        try_resize(&mut self.near, k, 0, WHAT)?;
         self.best.clear();
-        self.best.resize(m, NONE);
+        try_resize(&mut self.best, m, NONE, WHAT)?;
         self.best_end.clear();
-        self.best_end.resize(m, NONE);
+        try_resize(&mut self.best_end, m, NONE, WHAT)?;
         let check_flags = !sums.flagged.is_empty();
         let census = sums.faces.is_some();
         let (mut first_open, mut unpaired) = (NONE, 0usize);
@@ -211,7 +221,7 @@ impl Link {
                         mated,
                         same,
                         sums,
-                    );
+                    )?;
                 }
             }
             self.near[p] = near;
@@ -226,7 +236,7 @@ impl Link {
                 self.best_end[l] = self.best_end[l].min(if open { c } else { NONE });
             }
         }
-        (first_open, unpaired)
+        Ok((first_open, unpaired))
     }
 
     /// Counts the face of corner `c` (its smallest vertex is `x`) and pairs it.
@@ -234,7 +244,7 @@ impl Link {
     fn face(
         events: &mut Vec<([u32; 2], [u32; 2])>, star: &[Record], c: u32, count: u32, other: u32,
         mated: bool, same_direction: bool, sums: &mut Sums,
-    ) {
+    ) -> Result<()> {
         let (p, s) = ((c / 3) as usize, (c % 3) as usize);
         let r = &star[p];
         let [s1, s2] = OTHER_CORNERS[s];
@@ -243,7 +253,10 @@ impl Link {
         let (census, opposites) = sums.faces.as_mut().expect("checked");
         census.input_faces += 1;
         match count {
-            1 => census.boundary_faces += 1,
+            1 => {
+                census.boundary_faces += 1;
+                Ok(())
+            }
             2 => {
                 let h = hf_of(r, s);
                 let (q, t) = ((other / 3) as usize, (other % 3) as usize);
@@ -256,8 +269,10 @@ impl Link {
                 let (d, d2) = (r[2 + s], star[q][2 + t]);
                 if d == d2 && d > y.max(z) {
                     census.duplicates += 1;
-                    events.push(([y.min(z), y.max(z)], [h.min(g) >> 2, h.max(g) >> 2]));
+                    let event = ([y.min(z), y.max(z)], [h.min(g) >> 2, h.max(g) >> 2]);
+                    try_push(events, event, "a star's duplicate faces")?;
                 }
+                Ok(())
             }
             _ => Self::non_manifold_face(events, star, c as usize, census),
         }
@@ -267,7 +282,8 @@ impl Link {
     /// them (the same fourth vertex, above the face), as the build counts them.
     fn non_manifold_face(
         events: &mut Vec<([u32; 2], [u32; 2])>, star: &[Record], c: usize, census: &mut FaceCensus,
-    ) {
+    ) -> Result<()> {
+        const WHAT: &str = "the non-manifold half-faces";
         let (y, z) = face_others(&star[c / 3], c % 3);
         let key = |d: usize| {
             let (a, b) = face_others(&star[d / 3], d % 3);
@@ -275,15 +291,19 @@ impl Link {
         };
         let this = key(c);
         // (fourth vertex, half-face) of every half-face on the triple.
-        let mut group: Vec<(u32, u32)> = (0..3 * star.len())
+        let group = (0..3 * star.len())
             .filter(|&d| key(d) == this)
-            .map(|d| (star[d / 3][2 + d % 3], hf_of(&star[d / 3], d % 3)))
-            .collect();
+            .map(|d| (star[d / 3][2 + d % 3], hf_of(&star[d / 3], d % 3)));
+        let mut group: Vec<(u32, u32)> = try_collect(group, WHAT)?;
         group.sort_unstable_by_key(|&(_, h)| h);
         census.non_manifold_faces += 1;
-        census.non_manifold.extend(group.iter().map(|&(_, h)| h));
+        try_extend(
+            &mut census.non_manifold,
+            group.iter().map(|&(_, h)| h),
+            WHAT,
+        )?;
         // Examples in triple order: queued with the duplicates, sorted per vertex.
-        events.push(([this.0, this.1], [NONE, NONE]));
+        try_push(events, ([this.0, this.1], [NONE, NONE]), WHAT)?;
         let max = y.max(z);
         group.retain(|&(d, _)| d > max);
         group.sort_unstable();
@@ -291,14 +311,15 @@ impl Link {
             for (i, &(_, a)) in run.iter().enumerate() {
                 for &(_, b) in &run[i + 1..] {
                     census.duplicates += 1;
-                    events.push(([this.0, this.1], [a >> 2, b >> 2]));
+                    try_push(events, ([this.0, this.1], [a >> 2, b >> 2]), WHAT)?;
                 }
             }
         }
+        Ok(())
     }
 
     /// Is the star connected through its matched faces?
-    fn one_piece(&mut self, k: usize) -> bool {
+    fn one_piece(&mut self, k: usize) -> Result<bool> {
         if k <= 64 {
             let all = if k == 64 { u64::MAX } else { (1u64 << k) - 1 };
             let (mut reached, mut todo) = (1u64, 1u64);
@@ -309,11 +330,13 @@ impl Link {
                 reached |= new;
                 todo |= new;
             }
-            return reached == all;
+            return Ok(reached == all);
         }
         self.seen.clear();
-        self.seen.resize(k, false);
+        try_resize(&mut self.seen, k, false, "a star's walk")?;
         self.queue.clear();
+        // Each tetrahedron enters the queue once: no growth past this.
+        try_reserve(&mut self.queue, k, "a star's walk")?;
         self.queue.push(0);
         self.seen[0] = true;
         let mut head = 0;
@@ -327,14 +350,17 @@ impl Link {
                 }
             }
         }
-        self.queue.len() == k
+        Ok(self.queue.len() == k)
     }
 
     /// A pinched link: walks every fan `(x, y)` with `y > x`, each once.
-    pub(super) fn edges_by_walking(&mut self, star: &[Record], x: u32, sums: &mut Sums) {
+    pub(super) fn edges_by_walking(
+        &mut self, star: &[Record], x: u32, sums: &mut Sums,
+    ) -> Result<()> {
+        const WHAT: &str = "a star's fans";
         let n = 3 * star.len();
         self.walked.clear();
-        self.walked.resize(n, false);
+        try_resize(&mut self.walked, n, false, WHAT)?;
         self.fans.clear();
         for c0 in 0..n {
             let y = star[c0 / 3][2 + c0 % 3];
@@ -342,12 +368,16 @@ impl Link {
                 continue;
             }
             let c = self.fan(c0);
-            self.fans.push((y, slot_of_corner(star, c)));
+            try_push(&mut self.fans, (y, slot_of_corner(star, c)), WHAT)?;
         }
         self.fans.sort_unstable();
         for run in self.fans.chunk_by(|a, b| a.0 == b.0) {
             if sums.tables {
-                sums.edge_slots.extend(run.iter().map(|&(_, s)| s));
+                try_extend(
+                    sums.edge_slots,
+                    run.iter().map(|&(_, s)| s),
+                    "the edge slots",
+                )?;
             }
             sums.num_edges += run.len();
             sums.input_edges += 1;
@@ -355,13 +385,15 @@ impl Link {
                 let y = run[0].0;
                 sums.non_manifold_edges += 1;
                 push_example(&mut sums.non_manifold_edge_examples, [x, y]);
-                sums.multi_fan.push(MultiFan {
+                let fan = MultiFan {
                     a: x,
                     b: y,
                     first_slot: run[0].1,
-                });
+                };
+                try_push(&mut sums.multi_fan, fan, "the multi-fan edges")?;
             }
         }
+        Ok(())
     }
 
     /// Walks the fan of corner `c0`'s edge both ways; returns its canonical corner: the

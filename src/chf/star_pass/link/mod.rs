@@ -24,6 +24,8 @@ use crate::NONE;
 use crate::chf::build::report::push_example;
 use crate::chf::edges::MultiFan;
 use crate::chf::ids::{FACE, edge_index};
+use crate::error::Result;
+use crate::util::alloc::{try_reserve, try_resize, try_vec};
 use small::Small;
 
 /// `[occurrence 4t + i, vertex x, the three other vertices of t in local order]`.
@@ -184,7 +186,7 @@ impl Link {
         Ok(Link {
             n_vertices,
             stamp_compact: if n_vertices < 1 << 24 {
-                crate::util::alloc::try_vec(n_vertices, 0, "a star pass's vertex stamps")?
+                try_vec(n_vertices, 0, "a star pass's vertex stamps")?
             } else {
                 Vec::new()
             },
@@ -210,26 +212,30 @@ impl Link {
     }
 
     /// The star of one vertex: its records, in tetrahedron order.
-    pub(crate) fn star(&mut self, star: &[Record], sums: &mut Sums) {
-        self.local_ids(star);
+    pub(crate) fn star(&mut self, star: &[Record], sums: &mut Sums) -> Result<()> {
+        self.local_ids(star)?;
         let small = star.len() <= 64 && self.verts.len() <= 32 && sums.flagged.is_empty();
-        if !(small && self.small_star(star, sums)) {
-            self.general_star(star, sums);
+        if !(small && self.small_star(star, sums)?) {
+            self.general_star(star, sums)?;
         }
+        Ok(())
     }
 
     /// Local ids of the star's other vertices, in order of first appearance.
-    fn local_ids(&mut self, star: &[Record]) {
+    fn local_ids(&mut self, star: &[Record]) -> Result<()> {
+        const WHAT: &str = "a star's local ids";
         self.ids.clear();
+        // Room for every record: `name_vertices` pushes without asking again.
+        try_reserve(&mut self.ids, star.len(), WHAT)?;
         self.verts.clear();
-        self.verts.resize(3 * star.len() + 1, 0);
+        try_resize(&mut self.verts, 3 * star.len() + 1, 0, WHAT)?;
         self.first_corner.clear();
-        self.first_corner.resize(3 * star.len() + 1, 0);
+        try_resize(&mut self.first_corner, 3 * star.len() + 1, 0, WHAT)?;
         // The compact table holds 24 bits of `x + 1` and an 8-bit id: exact while vertex
         // ids stay below 2^24 and a star has at most 255 other vertices.
         let compact = !self.stamp_compact.is_empty() && 3 * star.len() <= 255;
         if !compact && self.stamp.is_empty() {
-            self.stamp = vec![0; self.n_vertices];
+            self.stamp = try_vec(self.n_vertices, 0, "a star pass's vertex stamps")?;
         }
         // Separate borrows, so that the stores do not make the compiler reload the vectors
         // after each one.
@@ -245,6 +251,7 @@ impl Link {
         };
         self.verts.truncate(m as usize);
         self.first_corner.truncate(m as usize);
+        Ok(())
     }
 }
 

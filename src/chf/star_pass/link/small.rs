@@ -7,6 +7,8 @@ use super::{
     CYCLE, Link, OTHER_CORNERS, Record, SMALLEST, Sums, flush_events, hf_of, slot_of_corner,
 };
 use crate::NONE;
+use crate::error::Result;
+use crate::util::alloc::try_push;
 
 /// Fixed-size scratch for the common star (at most 64 tetrahedra over at most 32 other
 /// vertices): byte tables indexed by masked values, so the loops run without bounds
@@ -169,19 +171,19 @@ impl Link {
     /// link edge `b -> a`. One table of directed edges (local ids `32a + b`) holds the
     /// corner of each and how many arrived; the mate of a corner is the one on the
     /// reversed edge. Corners are numbered `4p + s` here (a shift, not a division).
-    pub(super) fn small_star(&mut self, star: &[Record], sums: &mut Sums) -> bool {
+    pub(super) fn small_star(&mut self, star: &[Record], sums: &mut Sums) -> Result<bool> {
         let k = star.len();
         let x = star[0][1];
         let m = self.verts.len();
         self.small.directed_edges(star, &self.ids);
         let matched = self.small.match_faces(star, x, sums.faces.is_some());
         if matched.irregular {
-            return false;
+            return Ok(false);
         }
         self.count_small_faces(star, x, matched.n_faces, sums);
         if !self.small.one_piece(k) {
             sums.split_needed = true;
-            return true;
+            return Ok(true);
         }
         // `VH`: the first unpaired half-face, else the first half-face.
         let c = if matched.first_open == SMALL_NONE {
@@ -196,19 +198,19 @@ impl Link {
         let edges = (3 * k - unpaired) / 2 + unpaired;
         let euler = m as i64 - edges as i64 + k as i64;
         if euler != if unpaired == 0 { 2 } else { 1 } {
-            // A pinched link (rare): walk the fans.
+            // A pinched link (rare): walk the fans. (At most 64 mates: no need to ask.)
             self.mates.clear();
             self.mates.extend(
                 self.small.mates[..k]
                     .iter()
                     .map(|ms| ms.map(|c| if c == SMALL_NONE { NONE } else { three(c) })),
             );
-            self.edges_by_walking(star, x, sums);
-            return true;
+            self.edges_by_walking(star, x, sums)?;
+            return Ok(true);
         }
         self.small.ends(&self.ids, k, unpaired);
-        self.small_edges(star, x, sums);
-        true
+        self.small_edges(star, x, sums)?;
+        Ok(true)
     }
 
     /// The face census of a small star (the `n_faces` faces whose smallest vertex is `x`),
@@ -247,7 +249,7 @@ impl Link {
     /// One edge per link vertex above `x`, named by its smallest end corner, else its
     /// first corner.
     #[inline(always)]
-    fn small_edges(&mut self, star: &[Record], x: u32, sums: &mut Sums) {
+    fn small_edges(&mut self, star: &[Record], x: u32, sums: &mut Sums) -> Result<()> {
         for l in 0..self.verts.len() {
             if self.verts[l] > x {
                 let end = self.small.best_end[l & 31];
@@ -257,11 +259,12 @@ impl Link {
                     self.first_corner[l]
                 };
                 if sums.tables {
-                    sums.edge_slots.push(slot_of_corner(star, c));
+                    try_push(sums.edge_slots, slot_of_corner(star, c), "the edge slots")?;
                 }
                 sums.num_edges += 1;
                 sums.input_edges += 1;
             }
         }
+        Ok(())
     }
 }

@@ -1,0 +1,374 @@
+//! Queries that compute arrays for the call (below the level that stores them) running out
+//! of memory: through the C API they give `TOPOMESH_STATUS_OUT_OF_MEMORY` with the detail,
+//! never `PANIC` nor an abort, and the same calls succeed once memory is back.
+//!
+//! A global allocator of this test binary refuses, on the armed thread only, every request
+//! larger than a limit (the other test threads allocate as usual). An allocation that is
+//! not fallible would abort the whole binary: the test fails loudly then too.
+
+mod chf_common;
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+use std::ffi::c_char;
+use topomesh::ffi::Status;
+use topomesh::ffi::che::*;
+use topomesh::ffi::chf::*;
+use topomesh::ffi::status::topomesh_last_error;
+
+struct Limited;
+
+thread_local! {
+    // `const` and without a destructor: reading it never allocates.
+    static LIMIT: Cell<usize> = const { Cell::new(usize::MAX) };
+    /// With `LIMIT` set: how many requests above it still succeed before one is refused
+    /// (`usize::MAX`: none succeeds).
+    static GRANTS: Cell<usize> = const { Cell::new(usize::MAX) };
+    /// Whether a request was refused since the last `limited` call began.
+    static REFUSED: Cell<bool> = const { Cell::new(false) };
+}
+
+fn refused(size: usize) -> bool {
+    let over = LIMIT.try_with(|l| size > l.get()).unwrap_or(false);
+    if !over {
+        return false;
+    }
+    let grant = GRANTS
+        .try_with(|g| match g.get() {
+            0 | usize::MAX => false,
+            n => {
+                g.set(n - 1);
+                true
+            }
+        })
+        .unwrap_or(false);
+    if !grant {
+        let _ = REFUSED.try_with(|r| r.set(true));
+    }
+    !grant
+}
+
+// Sound: every call forwards to `System` with the caller's arguments, or returns NULL (a
+// refusal, which `GlobalAlloc` allows).
+unsafe impl GlobalAlloc for Limited {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        if refused(layout.size()) {
+            return std::ptr::null_mut();
+        }
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        if refused(layout.size()) {
+            return std::ptr::null_mut();
+        }
+        unsafe { System.alloc_zeroed(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        // A shrink gives memory back: never refused (`shrink_to_fit` cannot fail).
+        if new_size > layout.size() && refused(new_size) {
+            return std::ptr::null_mut();
+        }
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Limited = Limited;
+
+/// Runs `f` with every request above `bytes` refused on this thread.
+fn limited<R>(bytes: usize, f: impl FnOnce() -> R) -> R {
+    LIMIT.set(bytes);
+    let r = f();
+    LIMIT.set(usize::MAX);
+    r
+}
+
+/// Runs `f` with the requests above `bytes` on this thread granted `grants` times, then
+/// refused; also says whether one was refused.
+fn refused_after<R>(bytes: usize, grants: usize, f: impl FnOnce() -> R) -> (R, bool) {
+    GRANTS.set(grants);
+    REFUSED.set(false);
+    let r = limited(bytes, f);
+    GRANTS.set(usize::MAX);
+    (r, REFUSED.get())
+}
+
+/// Calls `f` with the first large request refused, then the second, and so on until `f`
+/// runs without a refusal: each refusal must come back as an out-of-memory error (an
+/// allocation that cannot fail would abort the binary). Returns how many were refused.
+fn refuse_each<T>(what: &str, f: impl Fn() -> Result<T, topomesh::Error>) -> usize {
+    const LARGE: usize = 4 << 10;
+    for n in 0.. {
+        let (r, refused) = refused_after(LARGE, n, &f);
+        if !refused {
+            assert!(r.is_ok(), "{what}: {:?}", r.err());
+            return n;
+        }
+        let e = r
+            .err()
+            .unwrap_or_else(|| panic!("{what}: request {n} refused, yet Ok"));
+        assert_eq!(
+            e.kind,
+            topomesh::ErrorKind::OutOfMemory,
+            "{what}, request {n}: {e:?}"
+        );
+    }
+    unreachable!()
+}
+
+/// Far below the arrays of the meshes below, far above an error message.
+const LIMIT_BYTES: usize = 32 << 10;
+
+fn last_error() -> String {
+    let mut buf = vec![0 as c_char; 4096];
+    let mut len = 0;
+    // SAFETY: the buffer holds `buf.len()` bytes.
+    unsafe { topomesh_last_error(buf.as_mut_ptr(), buf.len(), &mut len) };
+    let bytes: Vec<u8> = buf
+        .iter()
+        .take_while(|&&c| c != 0)
+        .map(|&c| c as u8)
+        .collect();
+    String::from_utf8_lossy(&bytes).into_owned()
+}
+
+/// `status` is OUT_OF_MEMORY and the detail says so.
+fn assert_out_of_memory(status: Status, call: &str) {
+    assert_eq!(status, Status::OutOfMemory, "{call}: {}", last_error());
+    assert!(
+        last_error().starts_with("out of memory: "),
+        "{call}: {}",
+        last_error()
+    );
+}
+
+fn che_at(level: u32) -> *mut CheMesh {
+    let s = topomesh::generate::grid(100, 100);
+    let flat: Vec<u32> = s.triangles.iter().flatten().copied().collect();
+    let mut m = std::ptr::null_mut();
+    // SAFETY: the arrays hold what the counts say; `m` is an out-parameter.
+    let status = unsafe {
+        che_mesh_from_triangles(
+            flat.as_ptr(),
+            s.triangles.len(),
+            s.positions.len(),
+            std::ptr::null(),
+            level,
+            &mut m,
+        )
+    };
+    assert_eq!(status, Status::Ok);
+    m
+}
+
+fn chf_at(level: u32) -> *mut ChfMesh {
+    let mesh = chf_common::cube(12, 12, 12, false);
+    let flat: Vec<u32> = mesh.tets.iter().flatten().copied().collect();
+    let mut m = std::ptr::null_mut();
+    // SAFETY: as in `che_at`.
+    let status = unsafe {
+        chf_mesh_from_tetrahedra(
+            flat.as_ptr(),
+            mesh.tets.len(),
+            mesh.n(),
+            std::ptr::null(),
+            level,
+            &mut m,
+        )
+    };
+    assert_eq!(status, Status::Ok);
+    m
+}
+
+#[test]
+fn che_queries_out_of_memory_give_the_status() {
+    let (low, full) = (che_at(0), che_at(3));
+    // SAFETY: live handles and local out-parameters throughout.
+    unsafe {
+        let mut summary = CheSummary::default();
+        let status = limited(LIMIT_BYTES, || che_mesh_summary(low, &mut summary));
+        assert_out_of_memory(status, "che_mesh_summary at level 0");
+        let mut edge = 0u32;
+        let status = limited(LIMIT_BYTES, || che_half_edge_edge(low, 7, &mut edge));
+        assert_out_of_memory(status, "che_half_edge_edge at level 0");
+
+        // Memory back: the same answers as the structure that stores everything.
+        let mut expected = CheSummary::default();
+        assert_eq!(che_mesh_summary(low, &mut summary), Status::Ok);
+        assert_eq!(che_mesh_summary(full, &mut expected), Status::Ok);
+        assert_eq!(summary, expected);
+        let mut expected_edge = 0u32;
+        assert_eq!(che_half_edge_edge(low, 7, &mut edge), Status::Ok);
+        assert_eq!(che_half_edge_edge(full, 7, &mut expected_edge), Status::Ok);
+        assert_eq!(edge, expected_edge);
+        che_mesh_free(low);
+        che_mesh_free(full);
+    }
+}
+
+#[test]
+fn chf_queries_out_of_memory_give_the_status() {
+    let (low, full) = (chf_at(0), chf_at(3));
+    // SAFETY: live handles and local out-parameters throughout.
+    unsafe {
+        let mut summary = ChfSummary::default();
+        let status = limited(LIMIT_BYTES, || chf_mesh_summary(low, &mut summary));
+        assert_out_of_memory(status, "chf_mesh_summary at level 0");
+        let mut component = 0u32;
+        let status = limited(LIMIT_BYTES, || {
+            chf_vertex_boundary_component(low, 0, &mut component)
+        });
+        assert_out_of_memory(status, "chf_vertex_boundary_component at level 0");
+        // A count has no status: 0, with the detail recorded.
+        let count = limited(LIMIT_BYTES, || chf_mesh_num_boundary_components(low));
+        assert_eq!(count, 0);
+        assert!(
+            last_error().starts_with("out of memory: "),
+            "{}",
+            last_error()
+        );
+        // A one-element relation that computes the face ids for the call.
+        let (mut buf, mut len) = ([0u32; 8], 0usize);
+        let status = limited(LIMIT_BYTES, || {
+            chf_face_vertices(low, 5, buf.as_mut_ptr(), buf.len(), &mut len)
+        });
+        assert_out_of_memory(status, "chf_face_vertices at level 0");
+
+        let mut expected = ChfSummary::default();
+        assert_eq!(chf_mesh_summary(low, &mut summary), Status::Ok);
+        assert_eq!(chf_mesh_summary(full, &mut expected), Status::Ok);
+        assert_eq!(summary, expected);
+        let mut expected_component = 0u32;
+        assert_eq!(
+            chf_vertex_boundary_component(low, 0, &mut component),
+            Status::Ok
+        );
+        assert_eq!(
+            chf_vertex_boundary_component(full, 0, &mut expected_component),
+            Status::Ok
+        );
+        assert_eq!(component, expected_component);
+        assert_eq!(chf_mesh_num_boundary_components(low), 1);
+        assert_eq!(chf_mesh_num_boundary_components(full), 1);
+        let (mut expected_buf, mut expected_len) = ([0u32; 8], 0usize);
+        assert_eq!(
+            chf_face_vertices(low, 5, buf.as_mut_ptr(), 8, &mut len),
+            Status::Ok
+        );
+        let status = chf_face_vertices(full, 5, expected_buf.as_mut_ptr(), 8, &mut expected_len);
+        assert_eq!(status, Status::Ok);
+        assert_eq!(buf[..len], expected_buf[..expected_len]);
+        chf_mesh_free(low);
+        chf_mesh_free(full);
+    }
+}
+
+/// Every reader, on a file whose arrays are larger than the limit: an out-of-memory error
+/// naming what it was reading, the same for each of its large requests refused in turn,
+/// then the same bytes read whole once memory is back.
+#[test]
+fn readers_out_of_memory_give_the_error() {
+    use topomesh::io::{Format, Mesh, MeshData, WriteOptions, parse, write_to};
+    let s = topomesh::generate::grid(60, 60);
+    let volume = chf_common::cube(8, 8, 8, false);
+    let surface = MeshData {
+        positions: s.positions.clone(),
+        triangles: s.triangles.clone(),
+        ..MeshData::default()
+    };
+    let solid = MeshData {
+        positions: volume.positions.clone(),
+        tetrahedra: volume.tets.clone(),
+        ..MeshData::default()
+    };
+    let cases = [
+        (Format::Off, &surface, false),
+        (Format::Obj, &surface, false),
+        (Format::Ply, &surface, false),
+        (Format::Ply, &surface, true),
+        (Format::Stl, &surface, true),
+        (Format::Stl, &surface, false),
+        (Format::Medit, &solid, false),
+        (Format::Gmsh, &solid, false),
+        (Format::Vtk, &solid, false),
+    ];
+    for (format, data, binary) in cases {
+        let options = WriteOptions {
+            binary,
+            ..WriteOptions::default()
+        };
+        let mut bytes = Vec::new();
+        if format == Format::Stl && !binary {
+            // The writer writes binary STL only.
+            bytes = ascii_stl(data).into_bytes();
+        } else {
+            write_to(&mut bytes, &Mesh::from_data(data), format, &options, "t").unwrap();
+        }
+        let e = limited(LIMIT_BYTES, || parse(&bytes, format, "t")).unwrap_err();
+        let case = format!("{format:?} binary={binary}");
+        assert_eq!(e.kind, topomesh::ErrorKind::OutOfMemory, "{case}: {e:?}");
+        assert!(e.message.starts_with("out of memory: "), "{case}: {e:?}");
+        // Every large request of the reader refused in turn.
+        refuse_each(&case, || parse(&bytes, format, "t"));
+        let read = parse(&bytes, format, "t").unwrap();
+        assert_eq!(read.triangles.len(), data.triangles.len(), "{case}");
+        assert_eq!(read.tetrahedra.len(), data.tetrahedra.len(), "{case}");
+    }
+}
+
+fn ascii_stl(data: &topomesh::io::MeshData) -> String {
+    let mut text = String::from("solid t\n");
+    for t in &data.triangles {
+        text += "facet normal 0 0 1\nouter loop\n";
+        for &v in t {
+            let p = data.positions[v as usize];
+            text += &format!("vertex {} {} {}\n", p.x, p.y, p.z);
+        }
+        text += "endloop\nendfacet\n";
+    }
+    text + "endsolid t\n"
+}
+
+/// Every large allocation of both builds, at every level, refused in turn, on input that
+/// takes the rare paths too: a vertex whose star is in many pieces (the vertex split, the
+/// star pass's general link) and non-manifold edges.
+#[test]
+fn every_build_allocation_can_fail() {
+    use topomesh::{che::Che, chf::Chf};
+    let mut volume = chf_common::cube(6, 6, 6, false);
+    // 80 tetrahedra on one new vertex, each with its own other three: a pinched star.
+    let apex = volume.positions.len() as u32;
+    volume.positions.push(glam::DVec3::new(-1.0, -1.0, -1.0));
+    for i in 0..80u32 {
+        let base = volume.positions.len() as u32;
+        for k in 0..3 {
+            volume
+                .positions
+                .push(glam::DVec3::new(-2.0 - i as f64, k as f64, 1.0));
+        }
+        volume.tets.push([apex, base, base + 1, base + 2]);
+    }
+    let s = topomesh::generate::grid(30, 30);
+    let mut triangles = s.triangles.clone();
+    // A third triangle on an edge of the grid: a non-manifold edge.
+    triangles.push([0, 1, s.positions.len() as u32]);
+    let n = s.positions.len() + 1;
+    let mut refused = 0;
+    for level in 0..=3 {
+        let options = topomesh::BuildOptions {
+            level,
+            threads: 1,
+            ..topomesh::BuildOptions::default()
+        };
+        refused += refuse_each(&format!("CHE level {level}"), || {
+            Che::from_triangles(&triangles, n, &[], options)
+        });
+        refused += refuse_each(&format!("CHF level {level}"), || {
+            Chf::from_tetrahedra(&volume.tets, volume.n(), &volume.positions, options)
+        });
+    }
+    assert!(refused > 40, "only {refused} large requests");
+}

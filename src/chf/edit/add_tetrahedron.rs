@@ -19,10 +19,11 @@ impl Chf {
             if orient_of(q, |x| self.positions[x as usize]) < 0.0 {
                 q = flipped;
             }
-        } else if let Err(e) = self.verify(one(q)) {
-            if e.message.contains("same way") && self.verify(one(flipped)).is_ok() {
-                q = flipped;
-            }
+        } else if let Err(e) = self.verify(one(q))
+            && e.message.contains("same way")
+            && self.verify(one(flipped)).is_ok()
+        {
+            q = flipped;
         }
         Ok(one(q))
     }

@@ -245,19 +245,19 @@ impl Chf {
         reached[0] = true;
         while let Some(i) = stack.pop() {
             let q = after.verts(set[i]);
-            for j in 0..4 {
-                if keep.contains(&q[j]) {
+            for (j, x) in q.iter().enumerate() {
+                if keep.contains(x) {
                     continue;
                 }
                 let g = self.twin_after(after, new_o, 4 * set[i] + j as u32);
                 if g == NONE {
                     continue;
                 }
-                if let Some(k) = set.iter().position(|&s| s == tet(g)) {
-                    if !reached[k] {
-                        reached[k] = true;
-                        stack.push(k);
-                    }
+                if let Some(k) = set.iter().position(|&s| s == tet(g))
+                    && !reached[k]
+                {
+                    reached[k] = true;
+                    stack.push(k);
                 }
             }
         }

@@ -41,9 +41,7 @@ fn by_counting(n: usize, each: impl Fn(&mut dyn FnMut(u32, u32))) -> Result<Csr>
 impl Chf {
     /// The rows of an edited CHF from the one-element calls (removed vertices get empty
     /// rows); `None` on a CHF never edited.
-    fn edited_rows<'a, I: Iterator<Item = u32>>(
-        &'a self, row: impl Fn(u32) -> I,
-    ) -> Option<Result<Csr>> {
+    fn edited_rows<I: Iterator<Item = u32>>(&self, row: impl Fn(u32) -> I) -> Option<Result<Csr>> {
         self.edit.as_ref()?;
         let mut offsets = Vec::new();
         let mut indices = Vec::new();

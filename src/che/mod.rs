@@ -21,7 +21,9 @@ pub use build::{
     BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts,
     estimated_build_bytes,
 };
-pub use export::{CornerTable, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges};
+pub use export::{
+    CornerTable, HalfEdgeArray, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges,
+};
 pub use ids::{first, next, prev, tri};
 pub use query::{BoundaryWalk, Csr, Memory, Rotation, StarCursor, StarStep, Summary};
 pub(crate) use query::{Push, Rows};

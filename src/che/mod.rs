@@ -23,7 +23,9 @@ pub use build::{
     estimated_build_bytes,
 };
 pub use edit::GarbageMaps;
-pub use export::{CornerTable, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges};
+pub use export::{
+    CornerTable, HalfEdgeArray, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges,
+};
 pub use ids::{first, next, prev, tri};
 pub use query::{
     BoundaryWalk, Csr, LentStar, LentStep, Memory, Rotation, StarCursor, StarStep, Summary,

@@ -3,8 +3,10 @@
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{next, prev, tri};
+use crate::che::tables::vertex_half_edges;
 use crate::error::Result;
-use crate::util::sparse::filled;
+use crate::util::sparse::{filled, reserve};
+use std::borrow::Cow;
 
 /// How boundary half-edges appear in [`HalfEdgeArrays`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -40,67 +42,169 @@ pub struct HalfEdgeArrays {
     pub face_half_edge: Vec<u32>,
 }
 
+/// One array of [`HalfEdgeArrays`], for a caller that takes them one at a time
+/// ([`Che::half_edge_array`] computes that array alone).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HalfEdgeArray {
+    Next,
+    Prev,
+    Twin,
+    Vertex,
+    Face,
+    Edge,
+    VertexHalfEdge,
+    FaceHalfEdge,
+}
+
+impl HalfEdgeArray {
+    pub const ALL: [HalfEdgeArray; 8] = [
+        HalfEdgeArray::Next,
+        HalfEdgeArray::Prev,
+        HalfEdgeArray::Twin,
+        HalfEdgeArray::Vertex,
+        HalfEdgeArray::Face,
+        HalfEdgeArray::Edge,
+        HalfEdgeArray::VertexHalfEdge,
+        HalfEdgeArray::FaceHalfEdge,
+    ];
+}
+
+/// What every array reads: `O`, and with an explicit boundary the boundary half-edges in
+/// order (the `k`-th is twinned by `3T + k`).
+struct Layout<'a> {
+    o: Cow<'a, [u32]>,
+    boundary: Vec<u32>,
+}
+
 impl Che {
     /// The half-edge arrays; see [`HalfEdgeArrays`] for the layout.
     pub fn half_edge_arrays(&self, options: HalfEdgeOptions) -> Result<HalfEdgeArrays> {
-        let t = self.export_tables()?;
-        let n = self.v.len();
-        let boundary: Vec<u32> = (0..n as u32).filter(|&h| t.o[h as usize] == NONE).collect();
-        let total = if options.explicit_boundary {
-            n + boundary.len()
-        } else {
-            n
-        };
-        let mut a = HalfEdgeArrays {
-            next: filled(total, NONE, "half-edge next")?,
-            prev: filled(total, NONE, "half-edge prev")?,
-            twin: filled(total, NONE, "half-edge twins")?,
-            vertex: filled(total, NONE, "half-edge vertices")?,
-            face: filled(total, NONE, "half-edge faces")?,
-            edge: filled(total, NONE, "half-edge edges")?,
-            vertex_half_edge: t.vh.to_vec(),
-            face_half_edge: (0..self.num_triangles() as u32).map(|f| 3 * f).collect(),
-        };
-        for h in 0..n {
-            let g = h as u32;
-            a.next[h] = next(g);
-            a.prev[h] = prev(g);
-            a.twin[h] = t.o[h];
-            a.vertex[h] = self.v[h];
-            a.face[h] = tri(g);
-            a.edge[h] = t.edge[h];
+        let l = self.half_edge_layout(options)?;
+        let mut all = HalfEdgeArray::ALL.map(|_| Vec::new());
+        for (slot, which) in all.iter_mut().zip(HalfEdgeArray::ALL) {
+            *slot = self.half_edge_array_in(&l, which)?;
         }
-        if options.explicit_boundary {
-            self.link_boundary(&mut a, &boundary)?;
-        }
-        Ok(a)
+        let [
+            next,
+            prev,
+            twin,
+            vertex,
+            face,
+            edge,
+            vertex_half_edge,
+            face_half_edge,
+        ] = all;
+        Ok(HalfEdgeArrays {
+            next,
+            prev,
+            twin,
+            vertex,
+            face,
+            edge,
+            vertex_half_edge,
+            face_half_edge,
+        })
     }
 
-    /// Appends the twin `3T + k` of the `k`-th boundary half-edge `h = (u -> w)`: it runs
-    /// `w -> u`, and its next is the twin of the boundary half-edge that ends at `u` (each
-    /// vertex of a built CHE is one fan, so it has at most one).
-    fn link_boundary(&self, a: &mut HalfEdgeArrays, boundary: &[u32]) -> Result<()> {
-        let n = self.v.len() as u32;
-        let mut outside_from = filled(self.n_vertices, NONE, "boundary half-edges")?;
-        for (k, &h) in boundary.iter().enumerate() {
-            let b = n + k as u32;
-            let tail = self.v[next(h) as usize];
-            a.twin[h as usize] = b;
-            a.twin[b as usize] = h;
-            a.vertex[b as usize] = tail;
-            a.edge[b as usize] = a.edge[h as usize];
-            outside_from[tail as usize] = b;
+    /// Array `which` of [`Che::half_edge_arrays`], computed alone: one pass over the
+    /// half-edges (and the vertices for the per-vertex arrays).
+    pub fn half_edge_array(
+        &self, options: HalfEdgeOptions, which: HalfEdgeArray,
+    ) -> Result<Vec<u32>> {
+        self.half_edge_array_in(&self.half_edge_layout(options)?, which)
+    }
+
+    fn half_edge_layout(&self, options: HalfEdgeOptions) -> Result<Layout<'_>> {
+        let o = self.opposites_or_computed();
+        let mut boundary = Vec::new();
+        if options.explicit_boundary {
+            let n = o.iter().filter(|&&g| g == NONE).count();
+            reserve(&mut boundary, n, "boundary half-edges")?;
+            boundary.extend((0..o.len() as u32).filter(|&h| o[h as usize] == NONE));
         }
-        for (k, &h) in boundary.iter().enumerate() {
-            let b = n + k as u32;
-            let after = outside_from[self.v[h as usize] as usize];
-            a.next[b as usize] = after;
-            a.prev[after as usize] = b;
-        }
-        for (v, slot) in a.vertex_half_edge.iter_mut().enumerate() {
-            if outside_from[v] != NONE {
-                *slot = outside_from[v];
+        Ok(Layout { o, boundary })
+    }
+
+    fn half_edge_array_in(&self, l: &Layout<'_>, which: HalfEdgeArray) -> Result<Vec<u32>> {
+        let n = self.v.len();
+        let b = &l.boundary;
+        let mut out = Vec::new();
+        let len = match which {
+            HalfEdgeArray::VertexHalfEdge => self.n_vertices,
+            HalfEdgeArray::FaceHalfEdge => self.num_triangles(),
+            _ => n + b.len(),
+        };
+        reserve(&mut out, len, "a half-edge array")?;
+        let base = n as u32;
+        match which {
+            HalfEdgeArray::Next => {
+                out.extend((0..base).map(next));
+                let after = self.explicit_by_vertex(b, |h| self.v[next(h) as usize])?;
+                out.extend(b.iter().map(|&h| after[self.v[h as usize] as usize]));
             }
+            HalfEdgeArray::Prev => {
+                out.extend((0..base).map(prev));
+                let before = self.explicit_by_vertex(b, |h| self.v[h as usize])?;
+                out.extend(b.iter().map(|&h| before[self.v[next(h) as usize] as usize]));
+            }
+            HalfEdgeArray::Twin => {
+                let mut k = base;
+                out.extend(l.o.iter().map(|&g| {
+                    if g != NONE || b.is_empty() {
+                        return g;
+                    }
+                    k += 1;
+                    k - 1
+                }));
+                out.extend(b.iter().copied());
+            }
+            HalfEdgeArray::Vertex => {
+                out.extend_from_slice(&self.v);
+                out.extend(b.iter().map(|&h| self.v[next(h) as usize]));
+            }
+            HalfEdgeArray::Face => {
+                out.extend((0..base).map(tri));
+                out.extend(b.iter().map(|_| NONE));
+            }
+            HalfEdgeArray::Edge => {
+                let names = self.edge_names();
+                out.extend((0..base).map(|h| names.of(h)));
+                out.extend(b.iter().map(|&h| names.of(h)));
+            }
+            HalfEdgeArray::VertexHalfEdge => self.vertex_half_edge_array(l, &mut out)?,
+            HalfEdgeArray::FaceHalfEdge => {
+                out.extend((0..self.num_triangles() as u32).map(|t| 3 * t))
+            }
+        }
+        Ok(out)
+    }
+
+    /// Per vertex, the explicit boundary half-edge `3T + k` whose tail it is: `tail(h)`
+    /// is that tail for the `k`-th boundary half-edge `h` (its twin runs head to tail).
+    /// Each vertex of a built CHE is one fan, so it has at most one.
+    fn explicit_by_vertex(&self, boundary: &[u32], tail: impl Fn(u32) -> u32) -> Result<Vec<u32>> {
+        if boundary.is_empty() {
+            return Ok(Vec::new());
+        }
+        let mut by = filled(self.n_vertices, NONE, "boundary half-edges")?;
+        let n = self.v.len() as u32;
+        for (k, &h) in boundary.iter().enumerate() {
+            by[tail(h) as usize] = n + k as u32;
+        }
+        Ok(by)
+    }
+
+    /// One outgoing half-edge per vertex: the stored or computed `VH`, where an explicit
+    /// boundary replaces the boundary one by the hole's (as OpenMesh keeps it).
+    fn vertex_half_edge_array(&self, l: &Layout<'_>, out: &mut Vec<u32>) -> Result<()> {
+        match self.vertex_half_edges() {
+            Some(vh) => out.extend_from_slice(vh),
+            None => *out = vertex_half_edges(self.n_vertices, &self.v, &l.o)?,
+        }
+        // The explicit twin `3T + k` of boundary half-edge `h = (u -> w)` leaves `w`.
+        let n = self.v.len() as u32;
+        for (k, &h) in l.boundary.iter().enumerate() {
+            out[self.v[next(h) as usize] as usize] = n + k as u32;
         }
         Ok(())
     }

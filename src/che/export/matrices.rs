@@ -4,7 +4,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{next, tri};
 use crate::error::Result;
-use crate::util::sparse::{Entry, SparseMatrix, reserve};
+use crate::util::sparse::{Entry, SparseMatrix, filled, reserve};
 
 /// Which matrix `che_mesh_export_matrix` writes (vertices, edges and triangles are the
 /// structure's).
@@ -51,54 +51,78 @@ impl Che {
     /// The matrix `kind`, in CSR with sorted columns; see [`MatrixKind`].
     pub fn matrix(&self, kind: MatrixKind) -> Result<SparseMatrix> {
         let (nv, ne, nt) = (self.n_vertices, self.num_edges, self.num_triangles());
-        let entries = self.matrix_entries(kind)?;
+        let entries = match kind {
+            MatrixKind::VertexAdjacency | MatrixKind::Laplacian => return self.vertex_rows(kind),
+            _ => self.matrix_entries(kind)?,
+        };
         match kind {
-            MatrixKind::VertexAdjacency => {
-                Ok(pattern(SparseMatrix::from_entries(nv, nv, &entries)?))
-            }
             MatrixKind::EdgeAdjacency => Ok(pattern(SparseMatrix::from_entries(ne, ne, &entries)?)),
             MatrixKind::D1 => SparseMatrix::from_entries(nv, ne, &entries),
             MatrixKind::D2 => SparseMatrix::from_entries(ne, nt, &entries),
-            MatrixKind::DualAdjacency => Ok(pattern(SparseMatrix::from_entries(nt, nt, &entries)?)),
-            MatrixKind::Laplacian => {
-                let a = self.matrix(MatrixKind::VertexAdjacency)?;
-                let mut e = Vec::new();
-                reserve(&mut e, a.nnz() + nv, "Laplacian entries")?;
-                for r in 0..nv {
-                    let (cols, _) = a.row(r);
-                    let row = r as u32;
-                    e.push(Entry {
-                        row,
-                        col: row,
-                        value: cols.len() as f64,
-                    });
-                    e.extend(cols.iter().map(|&col| Entry {
-                        row,
-                        col,
-                        value: -1.0,
-                    }));
-                }
-                SparseMatrix::from_entries(nv, nv, &e)
-            }
+            _ => Ok(pattern(SparseMatrix::from_entries(nt, nt, &entries)?)),
         }
     }
 
-    /// The (row, column, value) entries of `kind` (none for the Laplacian, made from the
-    /// adjacency).
+    /// The vertex adjacency, or the Laplacian (`kind`), straight from the half-edges: a
+    /// counting pass sizes the rows, a second fills them, and each short row is sorted and
+    /// rid of repeats in place, so no entry list is built or sorted as a whole.
+    fn vertex_rows(&self, kind: MatrixKind) -> Result<SparseMatrix> {
+        let o = self.opposites_or_computed();
+        let nv = self.n_vertices;
+        let diagonal = kind == MatrixKind::Laplacian;
+        // Row `V[h]` takes the head of every `h`; a boundary half-edge also gives its tail
+        // to its head's row, which no half-edge leaving the head reaches back to. Repeats
+        // (an edge split by the build) go in the per-row pass.
+        let mut offsets = filled(nv + 1, u64::from(diagonal), "matrix offsets")?;
+        offsets[0] = 0;
+        for (h, &g) in o.iter().enumerate() {
+            offsets[self.v[h] as usize + 1] += 1;
+            if g == NONE {
+                offsets[self.v[next(h as u32) as usize] as usize + 1] += 1;
+            }
+        }
+        for r in 0..nv {
+            offsets[r + 1] += offsets[r];
+        }
+        let mut columns = filled(offsets[nv] as usize, 0u32, "matrix columns")?;
+        // `offsets[r]` walks row r as a cursor, ending at the start of row r + 1.
+        let mut put = |row: u32, col: u32| {
+            let slot = &mut offsets[row as usize];
+            columns[*slot as usize] = col;
+            *slot += 1;
+        };
+        for v in (0..nv as u32).filter(|_| diagonal) {
+            put(v, v);
+        }
+        for (h, &g) in o.iter().enumerate() {
+            let (a, b) = (self.v[h], self.v[next(h as u32) as usize]);
+            put(a, b);
+            if g == NONE {
+                put(b, a);
+            }
+        }
+        let values = compact_rows(&mut offsets, &mut columns, diagonal)?;
+        Ok(SparseMatrix {
+            n_rows: nv,
+            n_cols: nv,
+            offsets,
+            columns,
+            values,
+        })
+    }
+
+    /// The (row, column, value) entries of `kind` (none for the vertex adjacency and the
+    /// Laplacian, made from the half-edges directly).
     fn matrix_entries(&self, kind: MatrixKind) -> Result<Vec<Entry>> {
         let t = self.export_tables()?;
         let e = |row: u32, col: u32, value: f64| Entry { row, col, value };
         let mut out = Vec::new();
         match kind {
-            MatrixKind::VertexAdjacency | MatrixKind::D1 => {
+            MatrixKind::D1 => {
                 reserve(&mut out, 2 * t.eh.len(), "matrix entries")?;
                 for (id, &h) in t.eh.iter().enumerate() {
                     let (a, b) = (self.v[h as usize], self.v[next(h) as usize]);
-                    if kind == MatrixKind::D1 {
-                        out.extend([e(a, id as u32, -1.0), e(b, id as u32, 1.0)]);
-                    } else {
-                        out.extend([e(a, b, 1.0), e(b, a, 1.0)]);
-                    }
+                    out.extend([e(a, id as u32, -1.0), e(b, id as u32, 1.0)]);
                 }
             }
             MatrixKind::D2 => {
@@ -130,8 +154,45 @@ impl Che {
                     }
                 }
             }
-            MatrixKind::Laplacian => {}
+            MatrixKind::VertexAdjacency | MatrixKind::Laplacian => {}
         }
         Ok(out)
     }
+}
+
+/// Sorts every row of `columns` and keeps each column once, in place; rows end where
+/// `offsets` says (`offsets[r]` the end of row r, as the filling cursors leave them), and
+/// `offsets` becomes the CSR offsets of what is kept. The values are 1 (an adjacency), or
+/// with `diagonal` -1 off the diagonal and the number of other columns on it (the
+/// Laplacian, whose rows hold their own vertex).
+fn compact_rows(offsets: &mut [u64], columns: &mut Vec<u32>, diagonal: bool) -> Result<Vec<f64>> {
+    let n = offsets.len() - 1;
+    let mut values = Vec::new();
+    reserve(&mut values, columns.len(), "matrix values")?;
+    let (mut start, mut w) = (0usize, 0usize);
+    for (r, slot) in offsets[..n].iter_mut().enumerate() {
+        let (end, first) = (*slot as usize, w);
+        *slot = w as u64;
+        columns[start..end].sort_unstable();
+        let mut diag = None;
+        for i in start..end {
+            let c = columns[i];
+            if w > first && columns[w - 1] == c {
+                continue;
+            }
+            if c as usize == r && diagonal {
+                diag = Some(w);
+            }
+            columns[w] = c;
+            values.push(if diagonal { -1.0 } else { 1.0 });
+            w += 1;
+        }
+        if let Some(d) = diag {
+            values[d] = (w - first - 1) as f64;
+        }
+        start = end;
+    }
+    offsets[n] = w as u64;
+    columns.truncate(w);
+    Ok(values)
 }

@@ -17,7 +17,7 @@ mod strips;
 mod winged;
 
 pub use corner::CornerTable;
-pub use halfedge::{HalfEdgeArrays, HalfEdgeOptions};
+pub use halfedge::{HalfEdgeArray, HalfEdgeArrays, HalfEdgeOptions};
 pub use matrices::MatrixKind;
 pub use strips::Strips;
 pub use winged::WingedEdges;

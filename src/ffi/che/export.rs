@@ -5,7 +5,7 @@
 //! core (`crate::che::export`).
 
 use super::CheMesh;
-use crate::che::{HalfEdgeArrays, HalfEdgeOptions, MatrixKind, SparseMatrix, WingedEdges};
+use crate::che::{HalfEdgeArray, HalfEdgeOptions, MatrixKind, SparseMatrix, WingedEdges};
 use crate::error::{Error, Result};
 use crate::ffi::boundary::{Handle, core, guard, options_arg, report_kind, sink};
 use crate::ffi::shapes::{ids, value};
@@ -83,20 +83,6 @@ pub struct CheBetti {
     pub b2: u64,
 }
 
-fn half_edge_array(a: HalfEdgeArrays, which: u32) -> Result<Vec<u32>> {
-    let all = [
-        a.next,
-        a.prev,
-        a.twin,
-        a.vertex,
-        a.face,
-        a.edge,
-        a.vertex_half_edge,
-        a.face_half_edge,
-    ];
-    report_kind(all, which, "che_half_edge_array")
-}
-
 fn winged_array(w: WingedEdges, which: u32) -> Result<Vec<u32>> {
     let all = [w.vertices, w.faces, w.wings, w.vertex_edge, w.face_edge];
     report_kind(all, which, "che_winged_array")
@@ -118,7 +104,9 @@ pub unsafe extern "C" fn che_mesh_export_half_edges(
     let options = HalfEdgeOptions {
         explicit_boundary: o.explicit_boundary,
     };
-    ids!(m, buf, cap, out_len, try |c| c.half_edge_arrays(options).and_then(|a| half_edge_array(a, which)))
+    ids!(m, buf, cap, out_len, try |c| {
+        c.half_edge_array(options, report_kind(HalfEdgeArray::ALL, which, "che_half_edge_array")?)
+    })
 }
 
 /// Winged-edge array `which` (a `CheWingedArray`) over the edge ids of `che_half_edge_edge`.

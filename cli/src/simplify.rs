@@ -1,16 +1,15 @@
 //! `topomesh simplify`: shortest-edge-first collapse until a number of triangles remain.
-//! A priority queue of edges by length (entries checked when popped: an edge changed since
-//! it was queued is queued again with its new length); a collapse is refused when it fails
-//! the link condition or would turn a triangle's normal over, and the merged vertex goes
-//! to the midpoint.
+//! A priority queue of edges by length, one entry per edge id (an edge whose length
+//! changes has its entry moved, so the queue never holds more than the edges and each step
+//! costs O(log E) besides the collapse's stars); a collapse is refused when it fails the
+//! link condition or would turn a triangle's normal over, and the merged vertex goes to the
+//! midpoint.
 
 use crate::exit::Failure;
 use crate::input::{build_surface_shown, load};
 use crate::output::Out;
 use crate::progress::Progress;
 use glam::DVec3;
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -30,10 +29,6 @@ pub struct SimplifyOptions {
     #[arg(long)]
     ratio: Option<f64>,
 }
-
-/// A queued edge: its length's bits (non-negative floats order as their bits), the
-/// half-edge and its ends when queued.
-type Entry = Reverse<(u64, u32, u32, u32)>;
 
 pub fn run(options: &SimplifyOptions) -> Result<ExitCode, Failure> {
     let progress = Progress::new();
@@ -80,42 +75,33 @@ fn length_bits(che: &Che, h: u32) -> u64 {
     p[a].distance(p[b]).to_bits()
 }
 
-fn queue_star(che: &Che, x: u32, heap: &mut BinaryHeap<Entry>) {
+fn queue_star(che: &Che, x: u32, queue: &mut EdgeQueue) {
     for step in che.vertex_star(x) {
         let h = step.half_edge();
-        heap.push(Reverse((
-            length_bits(che, h),
-            h,
-            che.origin(h),
-            che.target(h),
-        )));
+        queue.set(che.edge_of(h), (length_bits(che, h), h));
     }
 }
 
 /// Collapses until `target` triangles remain or no edge can go; returns the collapses.
 fn simplify(che: &mut Che, target: usize, progress: &Progress) -> Result<usize, Error> {
-    let mut heap = BinaryHeap::new();
+    let mut queue = EdgeQueue::new(che.num_edges())?;
     for e in 0..che.num_edges() as u32 {
         let h = che.edge_half_edge(e);
-        heap.push(Reverse((
-            length_bits(che, h),
-            h,
-            che.origin(h),
-            che.target(h),
-        )));
+        queue.set(e, (length_bits(che, h), h));
     }
     let mut collapses = 0;
     while che.num_live_triangles() > target {
-        let Some(Reverse((len, h, a, b))) = heap.pop() else {
+        let Some(((len, h), e)) = queue.pop() else {
             break;
         };
-        if che.is_half_edge_removed(h) || che.origin(h) != a || che.target(h) != b {
+        if che.is_edge_removed(e) || che.is_half_edge_removed(h) || che.edge_of(h) != e {
             continue;
         }
         if length_bits(che, h) != len {
-            heap.push(Reverse((length_bits(che, h), h, a, b)));
+            queue.set(e, (length_bits(che, h), h));
             continue;
         }
+        let (a, b) = (che.origin(h), che.target(h));
         let p = che.positions();
         let mid = (p[a as usize] + p[b as usize]) / 2.0;
         if !che.is_collapse_ok(h)? || flips_a_normal(che, h, mid) {
@@ -126,9 +112,100 @@ fn simplify(che: &mut Che, target: usize, progress: &Progress) -> Result<usize, 
         che.set_position(a, mid)?;
         progress.advance((removed - che.num_live_triangles()) as u64);
         collapses += 1;
-        queue_star(che, a, &mut heap);
+        queue_star(che, a, &mut queue);
     }
     Ok(collapses)
+}
+
+/// The key of a queued edge: its length's bits (non-negative floats order as their bits)
+/// and the half-edge to collapse.
+type Key = (u64, u32);
+
+/// A binary min-heap of edge ids whose keys can change in place: `slot[e]` is where edge
+/// `e` sits in `heap` (`u32::MAX` when it is not queued).
+struct EdgeQueue {
+    heap: Vec<(Key, u32)>,
+    slot: Vec<u32>,
+}
+
+impl EdgeQueue {
+    fn new(edges: usize) -> Result<Self, Error> {
+        let mut slot = Vec::new();
+        let mut heap = Vec::new();
+        if slot.try_reserve_exact(edges).is_err() || heap.try_reserve_exact(edges).is_err() {
+            let bytes = (edges * std::mem::size_of::<(Key, u32, u32)>()) as u64;
+            return Err(Error::out_of_memory(bytes, "simplify: the edge queue"));
+        }
+        slot.resize(edges, u32::MAX);
+        Ok(EdgeQueue { heap, slot })
+    }
+
+    /// Queues edge `e` with `key`, or moves it there if queued.
+    fn set(&mut self, e: u32, key: Key) {
+        let i = match self.slot[e as usize] {
+            u32::MAX => {
+                self.heap.push((key, e));
+                self.heap.len() - 1
+            }
+            i => {
+                self.heap[i as usize].0 = key;
+                i as usize
+            }
+        };
+        let i = self.up(i);
+        self.down(i);
+    }
+
+    /// The edge with the smallest key, out of the queue.
+    fn pop(&mut self) -> Option<(Key, u32)> {
+        let last = self.heap.len().checked_sub(1)?;
+        self.heap.swap(0, last);
+        let top = self.heap.pop()?;
+        self.slot[top.1 as usize] = u32::MAX;
+        if !self.heap.is_empty() {
+            self.down(0);
+        }
+        Some(top)
+    }
+
+    fn place(&mut self, i: usize, item: (Key, u32)) {
+        self.slot[item.1 as usize] = i as u32;
+        self.heap[i] = item;
+    }
+
+    fn up(&mut self, mut i: usize) -> usize {
+        let item = self.heap[i];
+        while i > 0 && item.0 < self.heap[(i - 1) / 2].0 {
+            let parent = self.heap[(i - 1) / 2];
+            self.place(i, parent);
+            i = (i - 1) / 2;
+        }
+        self.place(i, item);
+        i
+    }
+
+    fn down(&mut self, mut i: usize) {
+        let item = self.heap[i];
+        let n = self.heap.len();
+        loop {
+            let l = 2 * i + 1;
+            if l >= n {
+                break;
+            }
+            let c = if l + 1 < n && self.heap[l + 1].0 < self.heap[l].0 {
+                l + 1
+            } else {
+                l
+            };
+            if self.heap[c].0 >= item.0 {
+                break;
+            }
+            let child = self.heap[c];
+            self.place(i, child);
+            i = c;
+        }
+        self.place(i, item);
+    }
 }
 
 /// Would moving both ends of `h` to `mid` turn the normal of a triangle around them over?

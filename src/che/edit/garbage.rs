@@ -181,6 +181,7 @@ impl Che {
         let st = self.edit.get_or_insert_with(Default::default);
         st.edge_of = Vec::new();
         st.curves = Default::default();
+        st.boundary = Default::default();
         st.removed_vertex = try_vec(self.n_vertices, false, "the removed-vertex flags")?;
         st.live_vertices = self.n_vertices;
         st.live_triangles = self.v.len() / 3;

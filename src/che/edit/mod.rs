@@ -13,8 +13,9 @@
 //! edge ids must stay stable (a removed id is not reused, a new edge gets a new id), which
 //! ranks over a bit directory cannot do: the state holds the edge id of every half-edge
 //! (4 bytes per half-edge), and `EH` grows by one entry per new edge. Level 3 curves are
-//! recomputed at the first curve query after an edit (an O(T) scan, kept until the next
-//! edit).
+//! recomputed at the first curve query after an edit, from the boundary half-edges of the
+//! last computation and those the edits have unpaired since: O(boundary + edits since),
+//! kept until the next edit.
 //!
 //! Cost of one operation: from level 2, local (the stars it touches). Below level 2 there
 //! is no `VH` (and at level 0 no `O`) to find a star from, so an edit computes what it
@@ -22,6 +23,7 @@
 
 mod add;
 mod arrays;
+mod boundary;
 mod checks;
 mod collapse;
 mod flip;

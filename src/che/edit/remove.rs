@@ -69,6 +69,7 @@ impl Che {
                 self.drop_edge(e);
             } else {
                 o_mut(self)[g as usize] = NONE;
+                self.note_unpaired(g);
                 self.name_edge(g, e);
             }
             o_mut(self)[h as usize] = NONE;

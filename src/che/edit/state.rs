@@ -23,6 +23,8 @@ pub(crate) struct EditState {
     pub(crate) live_edges: usize,
     /// Level 3: the curves, computed at the first curve query after an edit.
     pub(crate) curves: OnceLock<Curves>,
+    /// Level 3: where the next curve computation starts from.
+    pub(crate) boundary: super::boundary::BoundaryLog,
 }
 
 /// Boundary curves of an edited CHE.
@@ -33,11 +35,13 @@ pub(crate) struct Curves {
     /// The boundary half-edges, increasing, and the curve of each.
     pub(crate) boundary: Vec<u32>,
     pub(crate) curve: Vec<u32>,
+    /// How many unpaired half-edges the boundary log held when these were computed.
+    pub(crate) noted: usize,
 }
 
 impl EditState {
     pub(crate) fn memory_bytes(&self) -> usize {
-        4 * self.edge_of.len() + self.removed_vertex.len()
+        4 * self.edge_of.len() + self.removed_vertex.len() + self.boundary.memory_bytes()
     }
 }
 
@@ -103,6 +107,7 @@ impl Che {
             self.num_edges = self.eh.len();
         }
         self.lazy_edge_bits = OnceLock::new();
+        self.settle_boundary_log();
         self.st_mut().curves = OnceLock::new();
     }
 
@@ -166,13 +171,12 @@ impl Che {
         Ok(ids)
     }
 
-    /// The curves of an edited CHE at level 3, computed on the first request after an edit.
+    /// The curves of an edited CHE at level 3, computed on the first request after an edit
+    /// in O(B log B + k log k) for B boundary half-edges and k edits since the last one.
     pub(crate) fn edited_curves(&self) -> &Curves {
         let st = self.edits().expect("an edited CHE");
         st.curves.get_or_init(|| {
-            let boundary: Vec<u32> = (0..self.v.len() as u32)
-                .filter(|&h| self.v[h as usize] != NONE && self.o[h as usize] == NONE)
-                .collect();
+            let (boundary, noted) = self.boundary_half_edges();
             let mut curve = vec![NONE; boundary.len()];
             let mut ch = Vec::new();
             for (i, &h) in boundary.iter().enumerate() {
@@ -195,6 +199,7 @@ impl Che {
                 ch,
                 boundary,
                 curve,
+                noted,
             }
         })
     }
@@ -247,6 +252,7 @@ impl Che {
         };
         self.lazy_edge_bits = OnceLock::new();
         self.st_mut().curves = OnceLock::new();
+        self.st_mut().boundary = Default::default();
         Ok(())
     }
 }

@@ -19,6 +19,8 @@ impl Che {
         o_mut(self)[h as usize] = g;
         if g != NONE {
             o_mut(self)[g as usize] = h;
+        } else {
+            self.note_unpaired(h);
         }
     }
 
@@ -191,6 +193,7 @@ impl Che {
         let t = self.num_triangles() as u32;
         v_mut(self).extend_from_slice(&corners);
         o_mut(self).extend_from_slice(&[NONE; 3]);
+        (3 * t..3 * t + 3).for_each(|h| self.note_unpaired(h));
         if self.level >= 2 {
             self.st_mut().edge_of.extend_from_slice(&[NONE; 3]);
         }

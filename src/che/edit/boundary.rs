@@ -1,0 +1,96 @@
+//! The boundary half-edges of an edited CHE at level 3, kept so that the curves are rebuilt
+//! at the next curve query from the boundary and the edits since, not from a scan of the
+//! mesh: the sorted boundary of the last computation, and every half-edge an edit has left
+//! unpaired since (each such write notes it).
+
+use crate::NONE;
+use crate::che::Che;
+
+/// What the next curve computation starts from.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct BoundaryLog {
+    /// `known` and `touched` hold every boundary half-edge (else the next computation scans).
+    scanned: bool,
+    /// The boundary when the curves were last computed, increasing (some may be paired or
+    /// removed since).
+    known: Vec<u32>,
+    /// Half-edges left unpaired since (any order, may repeat).
+    touched: Vec<u32>,
+}
+
+impl BoundaryLog {
+    pub(crate) fn memory_bytes(&self) -> usize {
+        4 * (self.known.capacity() + self.touched.capacity())
+    }
+}
+
+impl Che {
+    /// Half-edge `h` may have become a boundary half-edge.
+    pub(super) fn note_unpaired(&mut self, h: u32) {
+        if self.level < 3 {
+            return;
+        }
+        let log = &mut self.st_mut().boundary;
+        // Without room the log gives up, and the next computation scans: never a panic.
+        if log.touched.try_reserve(1).is_ok() {
+            log.touched.push(h);
+        } else {
+            log.scanned = false;
+        }
+    }
+
+    /// The boundary half-edges, increasing, and how many half-edges had been noted then: O(B + k log k) for B boundary half-edges and k
+    /// noted since the last computation, one O(T) scan when there is none.
+    pub(super) fn boundary_half_edges(&self) -> (Vec<u32>, usize) {
+        let is_boundary = |h: u32| self.v[h as usize] != NONE && self.o[h as usize] == NONE;
+        let log = &self.st().boundary;
+        let noted = log.touched.len();
+        if !log.scanned {
+            let all = (0..self.v.len() as u32)
+                .filter(|&h| is_boundary(h))
+                .collect();
+            return (all, noted);
+        }
+        let mut all = Vec::with_capacity(log.known.len() + log.touched.len());
+        all.extend_from_slice(&log.known);
+        all.extend_from_slice(&log.touched);
+        all.sort_unstable();
+        all.dedup();
+        all.retain(|&h| is_boundary(h));
+        (all, noted)
+    }
+
+    /// At the end of an operation at level 3: the boundary of computed curves becomes the
+    /// known one (the curves themselves are dropped by the caller), and a long log is folded
+    /// into it, so that it stays within the boundary (or the mesh) plus a constant.
+    pub(super) fn settle_boundary_log(&mut self) {
+        if self.level < 3 {
+            return;
+        }
+        let half_edges = self.v.len();
+        let st = self.st_mut();
+        if let Some(c) = st.curves.take() {
+            // What was noted after the computation (by this operation) stays noted.
+            let log = &mut st.boundary;
+            log.touched.drain(..c.noted.min(log.touched.len()));
+            log.known = c.boundary;
+            log.scanned = true;
+            return;
+        }
+        let log = &st.boundary;
+        // Folding costs a merge (or, before any computation, a scan): past these lengths
+        // its cost is spread over at least as many edits.
+        let limit = if log.scanned {
+            log.known.len() + 1024
+        } else {
+            half_edges + 1024
+        };
+        if log.touched.len() > limit {
+            let (known, _) = self.boundary_half_edges();
+            let log = &mut self.st_mut().boundary;
+            log.known = known;
+            log.touched.clear();
+            log.scanned = true;
+        }
+    }
+}

@@ -32,6 +32,17 @@ fn ranks(n: usize, kept: impl Fn(usize) -> bool, what: &str) -> Result<(Vec<u32>
     Ok((map, next as usize))
 }
 
+/// Half-edge `h` in the new ids (`NONE` when its triangle is removed, or `h` is `NONE`).
+fn half_edge_map(tmap: &[u32], h: u32) -> u32 {
+    match h {
+        NONE => NONE,
+        h => match tmap[h as usize / 3] {
+            NONE => NONE,
+            t => 3 * t + h % 3,
+        },
+    }
+}
+
 /// The kept entries of `list`, in order.
 fn compact<T: Copy>(list: &[T], map: &[u32], what: &str) -> Result<Vec<T>> {
     let mut out = try_with_capacity(list.len(), what)?;
@@ -61,7 +72,7 @@ impl Che {
             });
         }
         let old_o = match level {
-            0 if self.edit.is_some() => self.live_opposites()?,
+            0 => self.live_opposites()?,
             _ => self.try_opposites_or_computed()?.into_owned(),
         };
         let (vmap, new_nv) = ranks(nv, |x| !self.is_vertex_removed(x as u32), "the vertex map")?;
@@ -70,13 +81,46 @@ impl Che {
             |t| !self.is_triangle_removed(t as u32),
             "the triangle map",
         )?;
-        let hmap = |h: u32| match h {
-            NONE => NONE,
-            h => match tmap[h as usize / 3] {
-                NONE => NONE,
-                t => 3 * t + h % 3,
-            },
+        let (v, o) = self.compacted_half_edges(&old_o, &vmap, &tmap)?;
+        let new_edge = crate::che::tables::edge_ids(&o)?;
+        let emap = self.edge_map(&old_o, &new_edge, &tmap)?;
+        let positions = if self.positions.is_empty() {
+            Vec::new()
+        } else {
+            compact(&self.positions, &vmap, "the positions")?
         };
+        let (vorigin, torigin) = self.compacted_origins(&vmap, &tmap, new_nv)?;
+        let flags = |list: &[u32]| -> Result<Vec<u32>> {
+            let kept = list.iter().map(|&h| half_edge_map(&tmap, h));
+            crate::util::alloc::try_collect(kept.filter(|&h| h != NONE), "the flagged half-edges")
+        };
+        let (nm, seams) = (flags(&self.non_manifold)?, flags(&self.seams)?);
+        // From here on nothing is allocated but the rebuilt levels.
+        *v_mut(self) = v;
+        *o_mut(self) = o;
+        *positions_mut(self) = positions;
+        *vertex_origin_mut(self) = vorigin;
+        *triangle_origin_mut(self) = torigin;
+        *non_manifold_mut(self) = nm;
+        *seams_mut(self) = seams;
+        self.n_vertices = new_nv;
+        self.num_edges = new_edge
+            .iter()
+            .enumerate()
+            .filter(|&(h, &e)| e != NONE && (self.o[h] == NONE || (h as u32) < self.o[h]))
+            .count();
+        self.rebuild_levels(level)?;
+        Ok(GarbageMaps {
+            vertices: vmap,
+            triangles: tmap,
+            edges: emap,
+        })
+    }
+
+    /// `V` and `O` of the live triangles, in the new ids.
+    fn compacted_half_edges(
+        &self, old_o: &[u32], vmap: &[u32], tmap: &[u32],
+    ) -> Result<(Vec<u32>, Vec<u32>)> {
         let mut v = try_with_capacity(self.v.len(), "the half-edge vertices V")?;
         v.extend(
             self.v
@@ -88,76 +132,48 @@ impl Che {
         o.extend(
             (0..old_o.len())
                 .filter(|&h| self.v[h] != NONE)
-                .map(|h| hmap(old_o[h])),
+                .map(|h| half_edge_map(tmap, old_o[h])),
         );
-        let new_edge = crate::che::tables::edge_ids(&o)?;
-        let old_edge = self.old_edge_ids(&old_o)?;
+        Ok((v, o))
+    }
+
+    /// Old edge id -> new edge id (`NONE` for a removed edge).
+    fn edge_map(&self, old_o: &[u32], new_edge: &[u32], tmap: &[u32]) -> Result<Vec<u32>> {
+        let old_edge = self.old_edge_ids(old_o)?;
         let mut emap = try_vec(self.num_edges, NONE, "the edge map")?;
         for (h, &e) in old_edge.iter().enumerate() {
-            if e != NONE && hmap(h as u32) != NONE {
-                emap[e as usize] = new_edge[hmap(h as u32) as usize];
+            let g = half_edge_map(tmap, h as u32);
+            if e != NONE && g != NONE {
+                emap[e as usize] = new_edge[g as usize];
             }
         }
-        let positions = if self.positions.is_empty() {
-            Vec::new()
-        } else {
-            compact(&self.positions, &vmap, "the positions")?
-        };
+        Ok(emap)
+    }
+
+    /// The vertex and triangle origin maps over the new ids. An identity map over the old
+    /// ids is not the identity over the new ones once something was removed: it is written
+    /// out then.
+    fn compacted_origins(
+        &self, vmap: &[u32], tmap: &[u32], new_nv: usize,
+    ) -> Result<(OriginMap, OriginMap)> {
+        let (nv, nt) = (vmap.len(), tmap.len());
         let vorigin = match self.vertex_origin.explicit() {
-            Some(map) => OriginMap::from(compact(map, &vmap, "the vertex origins")?),
+            Some(map) => OriginMap::from(compact(map, vmap, "the vertex origins")?),
             None if new_nv == nv => OriginMap::default(),
-            None => OriginMap::from(compact(
-                &ranks(nv, |_| true, "")?.0,
-                &vmap,
-                "the vertex origins",
-            )?),
+            None => {
+                let identity = ranks(nv, |_| true, "the vertex origins")?.0;
+                OriginMap::from(compact(&identity, vmap, "the vertex origins")?)
+            }
         };
         let torigin = match self.triangle_origin.explicit() {
-            Some(map) => OriginMap::from(compact(map, &tmap, "the triangle origins")?),
-            None => OriginMap::default(),
+            Some(map) => OriginMap::from(compact(map, tmap, "the triangle origins")?),
+            None if !tmap.contains(&NONE) => OriginMap::default(),
+            None => {
+                let identity = ranks(nt, |_| true, "the triangle origins")?.0;
+                OriginMap::from(compact(&identity, tmap, "the triangle origins")?)
+            }
         };
-        let tori_len = torigin.len();
-        let flags = |list: &[u32]| -> Vec<u32> {
-            list.iter()
-                .map(|&h| hmap(h))
-                .filter(|&h| h != NONE)
-                .collect()
-        };
-        let (nm, seams) = (flags(&self.non_manifold), flags(&self.seams));
-        // From here on nothing is allocated but the rebuilt levels.
-        *v_mut(self) = v;
-        *o_mut(self) = o;
-        *positions_mut(self) = positions;
-        *vertex_origin_mut(self) = vorigin;
-        *triangle_origin_mut(self) = if tori_len == 0 && tmap.contains(&NONE) {
-            // The identity over the old ids is not the identity over the new ones.
-            OriginMap::from(compact(
-                &ranks(nt, |_| true, "")?.0,
-                &tmap,
-                "the triangle origins",
-            )?)
-        } else {
-            torigin
-        };
-        *non_manifold_mut(self) = nm;
-        *seams_mut(self) = seams;
-        self.n_vertices = new_nv;
-        self.num_edges = new_edge
-            .iter()
-            .enumerate()
-            .filter(|&(h, &e)| {
-                e != NONE && {
-                    let g = self.o[h];
-                    g == NONE || (h as u32) < g
-                }
-            })
-            .count();
-        self.rebuild_levels(level)?;
-        Ok(GarbageMaps {
-            vertices: vmap,
-            triangles: tmap,
-            edges: emap,
-        })
+        Ok((vorigin, torigin))
     }
 
     /// The edge id of every half-edge before the collection (`NONE` when removed).

@@ -2343,7 +2343,7 @@ topomesh_status chf_mesh_save(const struct chf_mesh *m, const char *path);
  */
 topomesh_status chf_mesh_open(const char *path, uint32_t flags, struct chf_mesh **out);
 
-/* ---- CHF: zero-copy views of the structure's arrays ---- */
+/* ---- CHF: editing in place (add, remove, split, flip, collapse, garbage collection) ---- */
 
 /**
  * Adds an isolated vertex at `position` (required when the mesh has positions, NULL when
@@ -2465,6 +2465,26 @@ topomesh_status chf_mesh_collapse_edge(struct chf_mesh *m, uint64_t he, uint32_t
 topomesh_status chf_mesh_check_collapse_edge(const struct chf_mesh *m, uint64_t he);
 
 /**
+ * Is tetrahedron `t` removed (by an edit, until `chf_mesh_garbage_collect`)?
+ */
+topomesh_status chf_tetrahedron_is_removed(const struct chf_mesh *m, uint32_t t, bool *out);
+
+/**
+ * Is vertex `v` removed?
+ */
+topomesh_status chf_vertex_is_removed(const struct chf_mesh *m, uint32_t v, bool *out);
+
+/**
+ * Is face `f` removed?
+ */
+topomesh_status chf_face_is_removed(const struct chf_mesh *m, uint32_t f, bool *out);
+
+/**
+ * Is edge `e` removed?
+ */
+topomesh_status chf_edge_is_removed(const struct chf_mesh *m, uint32_t e, bool *out);
+
+/**
  * Compacts the mesh: removed elements go, the others take the ids a fresh build of the
  * live tetrahedra gives. Each map (NULL: not wanted) receives old id -> new id
  * (`TOPOMESH_NONE` for removed ones) and needs room for the count before the call
@@ -2480,6 +2500,8 @@ topomesh_status chf_mesh_garbage_collect(struct chf_mesh *m,
                                          size_t face_cap,
                                          uint32_t *edge_map,
                                          size_t edge_cap);
+
+/* ---- CHF: zero-copy views of the structure's arrays ---- */
 
 /**
  * `V`: vertex `i` of tetrahedron `t` at `V[4t + i]` (`4 * num_tetrahedra` entries); also

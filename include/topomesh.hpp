@@ -34,6 +34,7 @@
 
 #include "topomesh.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -542,6 +543,47 @@ public:
     /// all; open() reads it back. Throws Error on failure.
     void save(const std::string &path) const;
 
+    // Editing in place (include/detail/volume_edit.hpp). A refusal throws Error and
+    // changes nothing; spans of the zero-copy views are invalid after an edit. Removed
+    // elements keep their ids (num_* stay the id bounds, num_live_* count) until
+    // garbage_collect(). Positions: nullptr for the default (the centroid of what is
+    // split); a volume without positions takes nullptr only.
+    VertexId add_vertex(const Vec3 *position = nullptr);
+    /// Oriented by the determinant with positions, else by the faces it pairs with.
+    TetrahedronId add_tetrahedron(VertexId a, VertexId b, VertexId c, VertexId d);
+    void remove(TetrahedronId t);
+    /// Removes v and its star.
+    void remove(VertexId v);
+    /// 1-4, 2-6 (1-3 on the boundary) and edge splits at a new vertex, returned.
+    VertexId split(TetrahedronId t, const Vec3 *position = nullptr);
+    VertexId split(FaceId f, const Vec3 *position = nullptr);
+    VertexId split(EdgeId e, const Vec3 *position = nullptr);
+    /// The 2-3 flip of interior face f: the three new tetrahedra.
+    std::array<TetrahedronId, 3> flip_23(FaceId f);
+    /// The 3-2 flip of interior edge e (three tetrahedra around it): the two new ones.
+    std::array<TetrahedronId, 2> flip_32(EdgeId e);
+    /// Collapses half-edge `he` (3 * hf + j): its origin merges into its target (returned).
+    VertexId collapse(std::uint64_t he);
+    /// Would the operation succeed? Never throw for a refusal, never change anything.
+    bool can_split(TetrahedronId t, const Vec3 *position = nullptr) const;
+    bool can_flip_23(FaceId f) const;
+    bool can_flip_32(EdgeId e) const;
+    bool can_collapse(std::uint64_t he) const;
+    bool is_removed(VertexId v) const;
+    bool is_removed(TetrahedronId t) const;
+    bool is_removed(FaceId f) const;
+    bool is_removed(EdgeId e) const;
+    std::size_t num_live_vertices() const noexcept;
+    std::size_t num_live_tetrahedra() const noexcept;
+    std::size_t num_live_faces() const noexcept;
+    std::size_t num_live_edges() const noexcept;
+    /// Old id -> new id (`none` for a removed element).
+    struct GarbageMaps {
+        std::vector<std::uint32_t> vertices, tetrahedra, faces, edges;
+    };
+    /// Compacts the removed elements away; every id from before goes through the maps.
+    GarbageMaps garbage_collect();
+
 private:
     chf_mesh *m_ = nullptr;
 };
@@ -674,6 +716,7 @@ template <class T, std::size_t N> using SmallIds [[deprecated("use Ids<T, N>")]]
 #include "detail/surface.hpp"
 #include "detail/edit.hpp"
 #include "detail/volume.hpp"
+#include "detail/volume_edit.hpp"
 #include "detail/element_members.hpp"
 #include "detail/export.hpp"
 

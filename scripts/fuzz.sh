@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes every reader and the C API with libFuzzer and AddressSanitizer through cargo-fuzz.
 # A crash, a panic or a failed assertion stops the run and leaves the input in
-# fuzz/artifacts/TARGET/. Targets: parse (every reader), che_build, che_edit, chf_build, capi_calls
+# fuzz/artifacts/TARGET/. Targets: parse (every reader), che_build, che_edit, chf_build, chf_edit, capi_calls
 # (sequences of C API calls on one handle), read_off, read_obj, read_ply, read_stl,
 # read_tetgen, read_mesh, read_msh, read_vtk (one reader each), levelfile (saved .che and
 # .chf files, mutated, opened loaded and mapped).
@@ -22,7 +22,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 limit=(-max_total_time=60)
 keep=1
-targets=(parse che_build che_edit chf_build capi_calls read_off read_obj read_ply read_stl read_tetgen
+targets=(parse che_build che_edit chf_build chf_edit capi_calls read_off read_obj read_ply read_stl read_tetgen
     read_mesh read_msh read_vtk levelfile)
 chosen=()
 while [ $# -gt 0 ]; do

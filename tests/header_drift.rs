@@ -94,6 +94,11 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ("CHF: level files (save the built structure, open it again)", &[
         "chf_mesh_save", "chf_mesh_open",
     ]),
+    ("CHF: editing in place (add, remove, split, flip, collapse, garbage collection)", &[
+        "chf_mesh_add_*", "chf_mesh_remove_*", "chf_mesh_split_*", "chf_mesh_flip_*",
+        "chf_mesh_collapse_edge", "chf_mesh_check_*", "chf_mesh_garbage_collect",
+        "chf_*_is_removed",
+    ]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),
     ("The weld of nearly equal vertices (what weld_tolerance applies)", &[
         "topomesh_weld_*",

@@ -13,6 +13,7 @@ mod json;
 mod output;
 mod print;
 mod progress;
+mod refine;
 mod render;
 mod report;
 mod simplify;
@@ -125,6 +126,13 @@ enum Command {
         exit_code_table!()
     ))]
     Simplify(simplify::SimplifyOptions),
+    /// Split the largest tetrahedra (1-4) until every volume is below a bound.
+    #[command(after_help = concat!(
+        "Examples:
+  topomesh refine part.mesh fine.mesh --max-volume 0.001\n\n",
+        exit_code_table!()
+    ))]
+    Refine(refine::RefineOptions),
 }
 
 fn main() -> ExitCode {
@@ -148,5 +156,6 @@ fn main() -> ExitCode {
         Command::Export(options) => export::run(&options),
         Command::Render(options) => render::run(&options),
         Command::Simplify(options) => simplify::run(&options),
+        Command::Refine(options) => refine::run(&options),
     })
 }

@@ -228,50 +228,49 @@ pub unsafe extern "C" fn chf_mesh_check_collapse_edge(m: *const ChfMesh, he: u64
 }
 
 /// A removed mark into `*out` after a range check on the id bound.
-macro_rules! removed {
-    ($name:ident, $bound:ident, $is:ident, $one:literal, $many:literal, $doc:literal) => {
-        #[doc = $doc]
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn $name(m: *const ChfMesh, id: u32, out: *mut bool) -> Status {
-            crate::ffi::shapes::value!(m, out, |c| {
-                crate::util::structure::check_id(id, c.$bound(), $one, $many).map(|_| c.$is(id))
-            })
-        }
-    };
+fn removed_mark(
+    c: &Chf, id: u32, bound: usize, names: (&str, &str), is: fn(&Chf, u32) -> bool,
+) -> Result<bool> {
+    crate::util::structure::check_id(id, bound, names.0, names.1).map(|_| is(c, id))
 }
 
-removed!(
-    chf_tetrahedron_is_removed,
-    num_tetrahedra,
-    is_tetrahedron_removed,
-    "tetrahedron",
-    "tetrahedra",
-    "Is tetrahedron `t` removed (by an edit, until `chf_mesh_garbage_collect`)?"
-);
-removed!(
-    chf_vertex_is_removed,
-    num_vertices,
-    is_vertex_removed,
-    "vertex",
-    "vertices",
-    "Is vertex `v` removed?"
-);
-removed!(
-    chf_face_is_removed,
-    num_faces,
-    is_face_removed,
-    "face",
-    "faces",
-    "Is face `f` removed?"
-);
-removed!(
-    chf_edge_is_removed,
-    num_edges,
-    is_edge_removed,
-    "edge",
-    "edges",
-    "Is edge `e` removed?"
-);
+/// Is tetrahedron `t` removed (by an edit, until `chf_mesh_garbage_collect`)?
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_tetrahedron_is_removed(
+    m: *const ChfMesh, t: u32, out: *mut bool,
+) -> Status {
+    crate::ffi::shapes::value!(m, out, |c| {
+        let names = ("tetrahedron", "tetrahedra");
+        removed_mark(c, t, c.num_tetrahedra(), names, Chf::is_tetrahedron_removed)
+    })
+}
+
+/// Is vertex `v` removed?
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_vertex_is_removed(
+    m: *const ChfMesh, v: u32, out: *mut bool,
+) -> Status {
+    crate::ffi::shapes::value!(m, out, |c| {
+        let names = ("vertex", "vertices");
+        removed_mark(c, v, c.num_vertices(), names, Chf::is_vertex_removed)
+    })
+}
+
+/// Is face `f` removed?
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_face_is_removed(m: *const ChfMesh, f: u32, out: *mut bool) -> Status {
+    crate::ffi::shapes::value!(m, out, |c| {
+        removed_mark(c, f, c.num_faces(), ("face", "faces"), Chf::is_face_removed)
+    })
+}
+
+/// Is edge `e` removed?
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn chf_edge_is_removed(m: *const ChfMesh, e: u32, out: *mut bool) -> Status {
+    crate::ffi::shapes::value!(m, out, |c| {
+        removed_mark(c, e, c.num_edges(), ("edge", "edges"), Chf::is_edge_removed)
+    })
+}
 
 /// Live tetrahedra (the `chf_mesh_num_*` counts are id bounds, removed ids included).
 #[unsafe(no_mangle)]

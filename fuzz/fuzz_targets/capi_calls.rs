@@ -343,7 +343,7 @@ fn che_star(m: *const CheMesh, v: u32, extra: usize, seen: &mut Seen) {
     let mut step = CheStarStep::default();
     let mut vertices = Vec::new();
     while unsafe { che_star_advance(&mut it, &mut step) } {
-        vertices.push(step.vertex);
+        vertices.push(step.0.vertex);
         assert!(
             vertices.len() <= unsafe { che_mesh_num_half_edges(m) } + 1,
             "a star that never ends"

@@ -357,3 +357,36 @@ fn a_never_edited_mesh_keeps_its_memory_and_identity_maps() {
     );
     assert!(maps.edges.iter().enumerate().all(|(i, &x)| x == i as u32));
 }
+
+/// Exports, writers and level files lay ids out without holes: while removed elements
+/// wait for garbage collection they are refused with an error saying so (never a panic or
+/// an answer with holes), and they work again after it.
+#[test]
+fn exports_and_files_wait_for_garbage_collection() {
+    let dir = std::env::temp_dir().join(format!("topomesh-edit-files-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for level in 0..=3 {
+        let mut che = built(&torus(6, 5), level);
+        che.remove_triangle(4).unwrap();
+        let refusals = [
+            che.edge_list().err(),
+            che.corner_table().err(),
+            che.winged_edges().err(),
+            che.triangle_strips().err(),
+            che.betti_numbers().err(),
+            che.save(dir.join("t.che")).err(),
+            che.write(&dir.join("t.off")).err(),
+        ];
+        for e in refusals {
+            let e = e.expect("refused before garbage collection");
+            assert!(e.to_string().contains("garbage_collect"), "{e}");
+        }
+        che.garbage_collect().unwrap();
+        che.edge_list().unwrap();
+        che.corner_table().unwrap();
+        assert_eq!(che.betti_numbers().unwrap(), [1, 2, 0]);
+        che.save(dir.join("t.che")).unwrap();
+        che.write(&dir.join("t.off")).unwrap();
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -443,3 +443,35 @@ fn an_unedited_mesh_has_no_edit_state_and_answers_as_built() {
     assert!(err.message.contains("boundary"), "{err}");
     assert!(!probe.is_edited());
 }
+
+/// Exports and level files lay ids out without holes: refused, saying why, until
+/// garbage collection; fine after it.
+#[test]
+fn exports_and_files_wait_for_garbage_collection() {
+    let dir = std::env::temp_dir().join(format!("topomesh-chf-files-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for level in 0..=3 {
+        let mut chf = cube(2, 2, 2, true).build(level, true);
+        let removable =
+            (0..chf.num_tetrahedra() as u32).find(|&t| chf.remove_tetrahedron(t).is_ok());
+        assert!(
+            removable.is_some(),
+            "level {level}: some tetrahedron can go"
+        );
+        let refusals = [
+            chf.half_face_arrays().err(),
+            chf.tetrahedron_dual_graph().err(),
+            chf.betti_numbers().err(),
+            chf.save(dir.join("c.chf")).err(),
+        ];
+        for e in refusals {
+            let e = e.expect("refused before garbage collection");
+            assert!(e.to_string().contains("garbage_collect"), "{e}");
+        }
+        chf.garbage_collect().unwrap();
+        chf.half_face_arrays().unwrap();
+        assert_eq!(chf.betti_numbers().unwrap()[0], 1);
+        chf.save(dir.join("c.chf")).unwrap();
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

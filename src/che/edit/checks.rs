@@ -44,6 +44,20 @@ impl Che {
         self.edits().map_or(self.num_edges, |s| s.live_edges)
     }
 
+    /// Refuses `what` while removed elements wait for [`Self::garbage_collect`]: exports,
+    /// writers and level files lay ids out without holes, so they run on a collected mesh.
+    pub(crate) fn check_collected(&self, what: &str) -> Result<()> {
+        let holes = self.num_live_vertices() != self.n_vertices
+            || self.num_live_triangles() != self.num_triangles()
+            || self.num_live_edges() != self.num_edges;
+        if holes {
+            let detail =
+                format!("{what}: the mesh has removed elements; call garbage_collect first");
+            return Err(crate::error::Error::invalid(detail));
+        }
+        Ok(())
+    }
+
     pub(super) fn live_vertex(&self, x: u32) -> Result<()> {
         self.check_vertex(x)?;
         if self.is_vertex_removed(x) {

@@ -19,6 +19,7 @@ impl Che {
     /// triangles, where an edge with one grounds its component, and a column reduction
     /// only over what the edges with three or more triangles (non-manifold input) leave.
     pub fn betti_numbers(&self) -> Result<[u64; 3]> {
+        self.check_collected("the Betti numbers")?;
         let n_in = self.n_input_vertices;
         let (used, isolated) = element_components::<3>(&self.v, n_in, |x| self.vertex_origin(x))?;
         let b0 = used + isolated;

@@ -79,6 +79,7 @@ struct Layout<'a> {
 impl Che {
     /// The half-edge arrays; see [`HalfEdgeArrays`] for the layout.
     pub fn half_edge_arrays(&self, options: HalfEdgeOptions) -> Result<HalfEdgeArrays> {
+        self.check_collected("the half-edge export")?;
         let l = self.half_edge_layout(options)?;
         let mut all = HalfEdgeArray::ALL.map(|_| Vec::new());
         for (slot, which) in all.iter_mut().zip(HalfEdgeArray::ALL) {
@@ -111,6 +112,7 @@ impl Che {
     pub fn half_edge_array(
         &self, options: HalfEdgeOptions, which: HalfEdgeArray,
     ) -> Result<Vec<u32>> {
+        self.check_collected("the half-edge export")?;
         self.half_edge_array_in(&self.half_edge_layout(options)?, which)
     }
 

@@ -9,6 +9,7 @@ impl Che {
     /// The ends of every edge, `2E` entries: edge `e` runs from `[2e]` to `[2e + 1]` in
     /// the direction of its canonical half-edge (as [`Che::edge_vertices`]).
     pub fn edge_list(&self) -> Result<Vec<u32>> {
+        self.check_collected("the edge list")?;
         let t = self.export_tables()?;
         let mut out = Vec::new();
         reserve(&mut out, 2 * t.eh.len(), "edge list")?;

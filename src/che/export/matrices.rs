@@ -50,6 +50,7 @@ fn pattern(mut m: SparseMatrix) -> SparseMatrix {
 impl Che {
     /// The matrix `kind`, in CSR with sorted columns; see [`MatrixKind`].
     pub fn matrix(&self, kind: MatrixKind) -> Result<SparseMatrix> {
+        self.check_collected("the matrix export")?;
         let (nv, ne, nt) = (self.n_vertices, self.num_edges, self.num_triangles());
         let entries = match kind {
             MatrixKind::VertexAdjacency | MatrixKind::Laplacian => return self.vertex_rows(kind),

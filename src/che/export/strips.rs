@@ -73,6 +73,7 @@ impl Strips {
 impl Che {
     /// Triangle strips covering every triangle once, orientation kept; see [`Strips`].
     pub fn triangle_strips(&self) -> Result<Strips> {
+        self.check_collected("the triangle strips")?;
         let o = self.opposites_or_computed();
         let nt = self.num_triangles();
         let mut free = filled(nt, 0u8, "strip degrees")?;

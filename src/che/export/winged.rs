@@ -27,6 +27,7 @@ pub struct WingedEdges {
 impl Che {
     /// The winged-edge table; see [`WingedEdges`] for the layout.
     pub fn winged_edges(&self) -> Result<WingedEdges> {
+        self.check_collected("the winged-edge export")?;
         let t = self.export_tables()?;
         let mut w = WingedEdges::default();
         let ne = self.num_edges;

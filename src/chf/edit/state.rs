@@ -175,6 +175,21 @@ impl Chf {
         self.edit.as_ref().map_or(self.num_edges, |s| s.live_edges)
     }
 
+    /// Refuses `what` while removed elements wait for [`Self::garbage_collect`]: exports,
+    /// writers and level files lay ids out without holes, so they run on a collected mesh.
+    pub(crate) fn check_collected(&self, what: &str) -> Result<()> {
+        let holes = self.num_live_vertices() != self.n_vertices
+            || self.num_live_tetrahedra() != self.num_tetrahedra()
+            || self.num_live_edges() != self.num_edges
+            || self.num_live_faces() != self.num_faces;
+        if holes {
+            let detail =
+                format!("{what}: the mesh has removed elements; call garbage_collect first");
+            return Err(crate::error::Error::invalid(detail));
+        }
+        Ok(())
+    }
+
     /// A live vertex id (or an error naming it).
     pub fn check_live_vertex(&self, v: u32) -> Result<()> {
         self.check_vertex(v)?;

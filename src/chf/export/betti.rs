@@ -20,6 +20,7 @@ impl Chf {
     /// peeled of its rows and columns with one entry, and the column reduction of
     /// persistent homology runs on the core only.
     pub fn betti_numbers(&self) -> Result<[u64; 4]> {
+        self.check_collected("the Betti numbers")?;
         let view = self.view(Need {
             faces: true,
             edges: true,

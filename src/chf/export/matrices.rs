@@ -37,6 +37,7 @@ impl VolumeMatrixKind {
 impl Chf {
     /// The matrix `kind`; see [`VolumeMatrixKind`].
     pub fn volume_matrix(&self, kind: VolumeMatrixKind) -> Result<SparseMatrix> {
+        self.check_collected("the matrix export")?;
         let view = self.view(Need {
             faces: true,
             edges: true,

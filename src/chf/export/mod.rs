@@ -32,6 +32,7 @@ pub struct HalfFaceArrays {
 impl Chf {
     /// The half-face arrays; see [`HalfFaceArrays`].
     pub fn half_face_arrays(&self) -> Result<HalfFaceArrays> {
+        self.check_collected("the half-face export")?;
         let view = self.view(Need::FACES);
         let n = self.v.len();
         let mut a = HalfFaceArrays::default();
@@ -49,6 +50,7 @@ impl Chf {
     /// The dual graph: 4 entries per tetrahedron, the tetrahedron across each of its faces
     /// (`NONE` on the boundary), as `Chf::tetrahedron_tetrahedra`.
     pub fn tetrahedron_dual_graph(&self) -> Result<Vec<u32>> {
+        self.check_collected("the dual graph")?;
         let view = self.view(Need::NOTHING);
         let mut out = Vec::new();
         reserve(&mut out, view.o.len(), "dual graph")?;

@@ -42,6 +42,7 @@ impl Che {
     /// The surface as a [`Mesh`] to write (borrowed); `path` names it in the error for a
     /// mesh without positions.
     pub fn to_write(&self, path: &Path) -> Result<Mesh<'_>> {
+        self.check_collected("writing the mesh")?;
         Ok(Mesh {
             positions: positions(self.positions(), self.num_vertices(), path)?,
             triangles: as_elements::<3>(self.half_edge_vertices(), "triangle")?,
@@ -69,6 +70,7 @@ impl Chf {
     /// The volume as a [`Mesh`] to write (borrowed); `path` names it in the error for a
     /// mesh without positions.
     pub fn to_write(&self, path: &Path) -> Result<Mesh<'_>> {
+        self.check_collected("writing the mesh")?;
         Ok(Mesh {
             positions: positions(self.positions(), self.num_vertices(), path)?,
             triangles: &[],
@@ -93,6 +95,7 @@ impl Chf {
     /// The boundary surface and the input vertex of the volume each of its vertices lies
     /// on: what [`Chf::write_boundary_with`] writes.
     pub fn boundary_to_write(&self) -> Result<BoundaryMesh> {
+        self.check_collected("writing the boundary")?;
         let surface = self.boundary_surface()?;
         let volume_vertex = self.boundary_vertices();
         let n = surface.num_vertices();

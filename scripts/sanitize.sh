@@ -51,7 +51,8 @@ targets=(test_status test_che_build test_che_relations test_che_iter test_che_st
     test_chf_relations test_chf_bulk test_che_load test_chf_load test_che_wrapper test_chf_wrapper
     example_c example_cpp test_bad_inputs test_stress test_stress_cpp test_che_export
     test_chf_export test_oom test_che_write test_chf_write test_levelfile test_elements
-    example_elements example_repair_c example_repair_cpp)
+    example_elements example_repair_c example_repair_cpp test_che_edit test_chf_edit
+    test_chf_edit_wrapper test_export example_simplify example_refine)
 tests='^(c_test_|cpp_|example_|stress_)'
 if [ "$full" = 1 ]; then
     targets+=(topomesh_diff topomesh_diffvol)

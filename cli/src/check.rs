@@ -118,7 +118,30 @@ const NON_FINITE: Nouns = (
 #[derive(Default)]
 struct Problems(Vec<Problem>);
 
+/// The problems surfaces and volumes share: counts and examples, listed in this order.
+struct Shared<'a> {
+    non_manifold_edges: (usize, &'a [[u32; 2]]),
+    split_vertices: (usize, &'a [u32]),
+    non_orientable: (usize, &'a [u32]),
+    non_finite: (usize, &'a [u32]),
+}
+
 impl Problems {
+    fn note_shared(&mut self, s: Shared) {
+        self.note(
+            s.non_manifold_edges.0,
+            NON_MANIFOLD_EDGES,
+            s.non_manifold_edges.1,
+        );
+        self.note(
+            s.split_vertices.0,
+            NON_MANIFOLD_VERTICES,
+            s.split_vertices.1,
+        );
+        self.note(s.non_orientable.0, NON_ORIENTABLE, s.non_orientable.1);
+        self.note(s.non_finite.0, NON_FINITE, s.non_finite.1);
+    }
+
     fn note<T: Id + Serialize>(&mut self, n: usize, (key, one, many): Nouns, list: &[T]) {
         if n == 0 {
             return;
@@ -185,26 +208,15 @@ fn check_surface(file: String, data: &MeshData, weld: f64) -> Result<Checked, Er
         "duplicate triangle pairs",
     );
     p.note(r.duplicate_triangles, dup, &r.duplicate_examples);
-    p.note(
-        r.non_manifold_edges,
-        NON_MANIFOLD_EDGES,
-        &r.non_manifold_edge_examples,
-    );
-    p.note(
-        r.split_vertices,
-        NON_MANIFOLD_VERTICES,
-        &r.split_vertex_examples,
-    );
-    p.note(
-        r.non_orientable_components,
-        NON_ORIENTABLE,
-        &r.non_orientable_examples,
-    );
-    p.note(
-        r.non_finite_vertices as usize,
-        NON_FINITE,
-        &r.non_finite_vertex_examples,
-    );
+    p.note_shared(Shared {
+        non_manifold_edges: (r.non_manifold_edges, &r.non_manifold_edge_examples),
+        split_vertices: (r.split_vertices, &r.split_vertex_examples),
+        non_orientable: (r.non_orientable_components, &r.non_orientable_examples),
+        non_finite: (
+            r.non_finite_vertices as usize,
+            &r.non_finite_vertex_examples,
+        ),
+    });
     let flip = (
         "flipped_triangles",
         "triangle oriented against its neighbours",
@@ -263,26 +275,15 @@ fn check_volume(file: String, data: &MeshData, weld: f64) -> Result<Checked, Err
         "non-manifold faces",
     );
     p.note(r.non_manifold_faces, nmf, &r.non_manifold_face_examples);
-    p.note(
-        r.non_manifold_edges,
-        NON_MANIFOLD_EDGES,
-        &r.non_manifold_edge_examples,
-    );
-    p.note(
-        r.split_vertices,
-        NON_MANIFOLD_VERTICES,
-        &r.split_vertex_examples,
-    );
-    p.note(
-        r.non_orientable_components,
-        NON_ORIENTABLE,
-        &r.non_orientable_examples,
-    );
-    p.note(
-        r.non_finite_vertices as usize,
-        NON_FINITE,
-        &r.non_finite_vertex_examples,
-    );
+    p.note_shared(Shared {
+        non_manifold_edges: (r.non_manifold_edges, &r.non_manifold_edge_examples),
+        split_vertices: (r.split_vertices, &r.split_vertex_examples),
+        non_orientable: (r.non_orientable_components, &r.non_orientable_examples),
+        non_finite: (
+            r.non_finite_vertices as usize,
+            &r.non_finite_vertex_examples,
+        ),
+    });
     let flip = (
         "flipped_tetrahedra",
         "tetrahedron oriented against its neighbours",

@@ -138,7 +138,7 @@ impl Che {
             }
         }
         if self.level >= 2 {
-            self.validate_edited_vh()?;
+            self.validate_vh()?;
             self.validate_edited_edges()?;
         }
         if self.level >= 3 {
@@ -190,46 +190,6 @@ impl Che {
                 "{edges} edges in O, {} counted",
                 self.st().live_edges
             ));
-        }
-        Ok(())
-    }
-
-    fn validate_edited_vh(&self) -> Result<()> {
-        let (v, o, vh) = (&self.v, &self.o, &self.vh);
-        let broken = |what: String| Err(Error::invalid(format!("invalid CHE: {what}")));
-        if vh.len() != self.n_vertices {
-            return broken(format!(
-                "VH has {} entries for {} vertices",
-                vh.len(),
-                self.n_vertices
-            ));
-        }
-        let mut degree = try_vec(self.n_vertices, 0u32, "the vertex degrees")?;
-        let mut on_boundary = try_vec(self.n_vertices, false, "the boundary vertices")?;
-        for (h, &x) in v.iter().enumerate().filter(|&(_, &x)| x != NONE) {
-            degree[x as usize] += 1;
-            on_boundary[x as usize] |= o[h] == NONE;
-        }
-        for (x, &h) in vh.iter().enumerate() {
-            if h == NONE {
-                if degree[x] != 0 {
-                    return broken(format!("VH[{x}] is NONE but vertex {x} has half-edges"));
-                }
-                continue;
-            }
-            if h as usize >= v.len() || v[h as usize] as usize != x {
-                return broken(format!("VH[{x}] = {h} does not start at vertex {x}"));
-            }
-            if on_boundary[x] && o[h as usize] != NONE {
-                return broken(format!("VH[{x}] = {h} is not the boundary half-edge"));
-            }
-            let steps = self.outgoing(x as u32).len() as u32;
-            if steps != degree[x] {
-                return broken(format!(
-                    "the rotation of vertex {x} meets {steps} of its {} half-edges",
-                    degree[x]
-                ));
-            }
         }
         Ok(())
     }

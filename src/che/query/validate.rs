@@ -111,7 +111,7 @@ impl Che {
         Ok(())
     }
 
-    fn validate_vh(&self) -> Result<()> {
+    pub(crate) fn validate_vh(&self) -> Result<()> {
         let (v, o, vh) = (&self.v, &self.o, &self.vh);
         if vh.len() != self.n_vertices {
             return broken(format!(
@@ -123,7 +123,8 @@ impl Che {
         // Outgoing half-edges per vertex, and whether one is on the boundary.
         let mut degree = try_vec(self.n_vertices, 0u32, "the vertex degrees")?;
         let mut on_boundary = try_vec(self.n_vertices, false, "the boundary vertices")?;
-        for (h, &x) in v.iter().enumerate() {
+        // Removed half-edges (V = NONE, on an edited CHE) belong to no vertex.
+        for (h, &x) in v.iter().enumerate().filter(|&(_, &x)| x != NONE) {
             degree[x as usize] += 1;
             on_boundary[x as usize] |= o[h] == NONE;
         }

@@ -17,7 +17,6 @@
 #include <topomesh/topomesh.hpp>
 
 #include <cmath>
-#include <cstdarg>
 #include <cstring>
 #include <map>
 
@@ -28,20 +27,6 @@ namespace {
 // The zero-copy walks use the header's inline arithmetic.
 inline uint32_t nxt(uint32_t h) { return che_next(h); }
 inline uint32_t prv(uint32_t h) { return che_prev(h); }
-
-struct Out {
-  FILE *file = nullptr;
-  void operator()(const char *fmt, ...) __attribute__((format(printf, 2, 3))) {
-    char buf[4096];
-    va_list ap;
-    va_start(ap, fmt);
-    std::vsnprintf(buf, sizeof buf, fmt, ap);
-    va_end(ap);
-    std::fputs(buf, stdout);
-    std::fflush(stdout);
-    if (file) std::fputs(buf, file);
-  }
-};
 
 // One call per element into a fixed buffer (a longer answer falls back to a vector).
 using RelFn = topomesh_status (*)(const che_mesh *, uint32_t, uint32_t *, size_t, size_t *);
@@ -461,24 +446,10 @@ std::vector<LibBench> run(std::vector<std::unique_ptr<Subject>> &subjects, int r
   return rows;
 }
 
-std::string fmt_ms(double ms) {
-  char b[32];
-  if (ms < 0) return "–";
-  if (ms < 10) std::snprintf(b, sizeof b, "%.2f", ms);
-  else if (ms < 100) std::snprintf(b, sizeof b, "%.1f", ms);
-  else std::snprintf(b, sizeof b, "%.0f", ms);
-  return b;
-}
 std::string fmt_mb(double bytes) {
   char b[32];
   if (bytes < 0) return "–";
   std::snprintf(b, sizeof b, "%.1f", bytes / 1048576.0);
-  return b;
-}
-std::string fmt_ratio2(double num, double den) {
-  char b[32];
-  if (num <= 0 || den <= 0) return "–";
-  std::snprintf(b, sizeof b, "%.2f×", num / den);
   return b;
 }
 std::string fmt_ratio(double num, double den) {
@@ -596,17 +567,11 @@ void report(Out &out, const Soup &s, std::vector<LibBench> &rows, int reps) {
 } // namespace
 
 int main(int argc, char **argv) {
-  int reps = 5;
-  std::vector<std::string> files;
+  BenchArgs args;
   Out out;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--reps" && i + 1 < argc) reps = std::atoi(argv[++i]);
-    else if (a == "--md" && i + 1 < argc) {
-      out.file = std::fopen(argv[++i], "w");
-      if (!out.file) { std::perror(argv[i]); return 1; }
-    } else files.push_back(a);
-  }
+  if (!parse_bench_args(argc, argv, args, out)) return 1;
+  const int reps = args.reps;
+  const std::vector<std::string> &files = args.files;
   if (files.empty()) {
     std::fprintf(stderr, "usage: topomesh_bench [--reps N] [--md FILE] MESH.off...\n");
     return 2;

@@ -32,7 +32,6 @@
 #include <meshoptimizer.h>
 #endif
 
-#include <cstdarg>
 #include <cstring>
 #include <memory>
 
@@ -44,20 +43,6 @@ struct OmTraits : OpenMesh::DefaultTraits {
   typedef OpenMesh::Vec3d Point;
 };
 using OMesh = OpenMesh::TriMesh_ArrayKernelT<OmTraits>;
-
-struct Out {
-  FILE *file = nullptr;
-  void operator()(const char *fmt, ...) __attribute__((format(printf, 2, 3))) {
-    char buf[4096];
-    va_list ap;
-    va_start(ap, fmt);
-    std::vsnprintf(buf, sizeof buf, fmt, ap);
-    va_end(ap);
-    std::fputs(buf, stdout);
-    std::fflush(stdout);
-    if (file) std::fputs(buf, file);
-  }
-};
 
 void check(topomesh_status s, const char *what) {
   if (s != TOPOMESH_STATUS_OK) {
@@ -246,20 +231,6 @@ StripResult strips_topomesh(const che_mesh *m, che_strip_list which, std::vector
   return r;
 }
 
-std::string fmt_ms(double ms) {
-  char b[32];
-  if (ms < 0) return "–";
-  if (ms < 10) std::snprintf(b, sizeof b, "%.2f", ms);
-  else if (ms < 100) std::snprintf(b, sizeof b, "%.1f", ms);
-  else std::snprintf(b, sizeof b, "%.0f", ms);
-  return b;
-}
-std::string fmt_ratio(double num, double den) {
-  char b[32];
-  if (num <= 0 || den <= 0) return "–";
-  std::snprintf(b, sizeof b, "%.2f×", num / den);
-  return b;
-}
 
 // Every task of one mesh, and the state they share (built outside the timing).
 struct MeshBench {
@@ -409,9 +380,9 @@ void report_half_edges(Out &out, const MeshBench &b) {
   for (int l = 1; l <= 3; ++l) {
     std::string L = std::to_string(l);
     out("| topomesh L%d export from a built CHE | %s | %s |\n", l, fmt_ms(b.ms("half-edge L" + L)).c_str(),
-        fmt_ratio(om, b.ms("half-edge L" + L)).c_str());
+        fmt_ratio2(om, b.ms("half-edge L" + L)).c_str());
     out("| topomesh L%d build + export | %s | %s |\n", l, fmt_ms(b.ms("build+half-edge L" + L)).c_str(),
-        fmt_ratio(om, b.ms("build+half-edge L" + L)).c_str());
+        fmt_ratio2(om, b.ms("build+half-edge L" + L)).c_str());
   }
 }
 
@@ -422,17 +393,17 @@ void report_laplacian(Out &out, const MeshBench &b) {
       "(OpenMesh's one-rings from a built TriMesh; Eigen's setFromTriplets from the triangle array)%s:\n\n",
       b.csr.rows, b.csr.entries, eg < 0 ? "; Eigen not found at configure time" : "");
   out("| | ms | OpenMesh ÷ this | Eigen ÷ this |\n|---|---:|---:|---:|\n");
-  out("| OpenMesh one-rings (vv_range, sorted) | %s | 1.00× | %s |\n", fmt_ms(om).c_str(), fmt_ratio(eg, om).c_str());
-  out("| Eigen triplets + setFromTriplets | %s | %s | %s |\n", fmt_ms(eg).c_str(), fmt_ratio(om, eg).c_str(),
+  out("| OpenMesh one-rings (vv_range, sorted) | %s | 1.00× | %s |\n", fmt_ms(om).c_str(), fmt_ratio2(eg, om).c_str());
+  out("| Eigen triplets + setFromTriplets | %s | %s | %s |\n", fmt_ms(eg).c_str(), fmt_ratio2(om, eg).c_str(),
       eg < 0 ? "–" : "1.00×");
   for (int l = 1; l <= 3; ++l) {
     double t = b.ms("laplacian L" + std::to_string(l));
     out("| topomesh L%d che_mesh_export_matrix (built CHE) | %s | %s | %s |\n", l, fmt_ms(t).c_str(),
-        fmt_ratio(om, t).c_str(), fmt_ratio(eg, t).c_str());
+        fmt_ratio2(om, t).c_str(), fmt_ratio2(eg, t).c_str());
   }
   double t = b.ms("build+laplacian L1");
-  out("| topomesh L1 build + export | %s | %s | %s |\n", fmt_ms(t).c_str(), fmt_ratio(om, t).c_str(),
-      fmt_ratio(eg, t).c_str());
+  out("| topomesh L1 build + export | %s | %s | %s |\n", fmt_ms(t).c_str(), fmt_ratio2(om, t).c_str(),
+      fmt_ratio2(eg, t).c_str());
   const uint64_t ref = b.task("laplacian L1").checksum;
   bool same = b.task("laplacian OpenMesh").checksum == ref &&
               (!b.has("laplacian Eigen") || b.task("laplacian Eigen").checksum == ref);
@@ -461,14 +432,14 @@ void report_strips(Out &out, const MeshBench &b) {
       const std::string name = mo_name + (r ? " reordered" : "");
       out("| meshopt_stripify%s | %s | %zu | %s | %s | %s | %s |\n", r ? " after optimizeVertexCacheStrip" : "",
           kind[k], m.indices, k ? "–" : std::to_string(m.strips).c_str(), fmt_ms(b.ms(name)).c_str(),
-          fmt_ratio(mo_idx, double(m.indices)).c_str(), fmt_ratio(mo_ms, b.ms(name)).c_str());
+          fmt_ratio2(mo_idx, double(m.indices)).c_str(), fmt_ratio2(mo_ms, b.ms(name)).c_str());
     }
     for (int l = 1; l <= 3; ++l) {
       const StripResult &r = b.strip_res[l - 1][k];
       double t = b.ms("strips L" + std::to_string(l) + " " + kind[k]);
       out("| topomesh L%d | %s | %zu | %s | %s | %s | %s |\n", l, kind[k], r.indices,
-          k ? "–" : std::to_string(r.strips).c_str(), fmt_ms(t).c_str(), fmt_ratio(mo_idx, double(r.indices)).c_str(),
-          fmt_ratio(mo_ms, t).c_str());
+          k ? "–" : std::to_string(r.strips).c_str(), fmt_ms(t).c_str(), fmt_ratio2(mo_idx, double(r.indices)).c_str(),
+          fmt_ratio2(mo_ms, t).c_str());
     }
   }
 }
@@ -481,24 +452,18 @@ void report_betti(Out &out, const MeshBench &b) {
   for (int l = 1; l <= 3; ++l) {
     std::string L = std::to_string(l);
     double bt = b.ms("build L" + L), be = b.ms("betti L" + L);
-    out("| topomesh L%d | %s | %s | %s |\n", l, fmt_ms(bt).c_str(), fmt_ms(be).c_str(), fmt_ratio(be, bt).c_str());
+    out("| topomesh L%d | %s | %s | %s |\n", l, fmt_ms(bt).c_str(), fmt_ms(be).c_str(), fmt_ratio2(be, bt).c_str());
   }
 }
 
 } // namespace
 
 int main(int argc, char **argv) {
-  int reps = 5;
-  std::vector<std::string> files;
+  BenchArgs args;
   Out out;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--reps" && i + 1 < argc) reps = std::atoi(argv[++i]);
-    else if (a == "--md" && i + 1 < argc) {
-      out.file = std::fopen(argv[++i], "w");
-      if (!out.file) { std::perror(argv[i]); return 1; }
-    } else files.push_back(a);
-  }
+  if (!parse_bench_args(argc, argv, args, out)) return 1;
+  const int reps = args.reps;
+  const std::vector<std::string> &files = args.files;
   if (files.empty() || reps < 1) {
     std::fprintf(stderr, "usage: topomesh_bench_export [--reps N] [--md FILE] MESH.off...\n");
     return 2;

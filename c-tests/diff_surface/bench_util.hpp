@@ -7,6 +7,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdarg>
+#include <cstdlib>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -99,5 +101,53 @@ public:
   // The rows; their sweep functions act on whatever is built when they run.
   virtual std::vector<LibBench> rows() = 0;
 };
+
+// Prints to stdout and, when `file` is open, into the Markdown page too.
+struct Out {
+  FILE *file = nullptr;
+  void operator()(const char *fmt, ...) __attribute__((format(printf, 2, 3))) {
+    char buf[4096];
+    va_list ap;
+    va_start(ap, fmt);
+    std::vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    std::fputs(buf, stdout);
+    std::fflush(stdout);
+    if (file) std::fputs(buf, file);
+  }
+};
+
+// The benchmark programs' arguments: [--reps N] [--md FILE] MESH.off...; `--md` opens
+// FILE into `out`. False (with the reason printed) when FILE cannot be opened.
+struct BenchArgs {
+  int reps = 5;
+  std::vector<std::string> files;
+};
+inline bool parse_bench_args(int argc, char **argv, BenchArgs &args, Out &out) {
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--reps" && i + 1 < argc) args.reps = std::atoi(argv[++i]);
+    else if (a == "--md" && i + 1 < argc) {
+      out.file = std::fopen(argv[++i], "w");
+      if (!out.file) { std::perror(argv[i]); return false; }
+    } else args.files.push_back(a);
+  }
+  return true;
+}
+
+inline std::string fmt_ms(double ms) {
+  char b[32];
+  if (ms < 0) return "–";
+  if (ms < 10) std::snprintf(b, sizeof b, "%.2f", ms);
+  else if (ms < 100) std::snprintf(b, sizeof b, "%.1f", ms);
+  else std::snprintf(b, sizeof b, "%.0f", ms);
+  return b;
+}
+inline std::string fmt_ratio2(double num, double den) {
+  char b[32];
+  if (num <= 0 || den <= 0) return "–";
+  std::snprintf(b, sizeof b, "%.2f×", num / den);
+  return b;
+}
 
 } // namespace diffmesh

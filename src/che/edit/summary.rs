@@ -127,7 +127,7 @@ impl Che {
             return broken("the removed-vertex flags do not cover the vertices".into());
         }
         if self.level >= 1 {
-            self.validate_edited_o()?;
+            self.validate_o()?;
         } else {
             let o = self.live_opposites()?;
             let edges = (0..o.len())
@@ -143,53 +143,6 @@ impl Che {
         }
         if self.level >= 3 {
             self.validate_edited_curves()?;
-        }
-        Ok(())
-    }
-
-    fn validate_edited_o(&self) -> Result<()> {
-        let (v, o) = (&self.v, &self.o);
-        let broken = |what: String| Err(Error::invalid(format!("invalid CHE: {what}")));
-        if o.len() != v.len() {
-            return broken(format!(
-                "O has {} entries for {} half-edges",
-                o.len(),
-                v.len()
-            ));
-        }
-        for (h, &g) in o.iter().enumerate() {
-            let h32 = h as u32;
-            if v[h] == NONE {
-                if g != NONE {
-                    return broken(format!("removed half-edge {h} has O = {g}"));
-                }
-                continue;
-            }
-            if g == NONE {
-                continue;
-            }
-            if g as usize >= o.len() || g == h32 || o[g as usize] != h32 || v[g as usize] == NONE {
-                return broken(format!("O[{h}] = {g}: not an involution"));
-            }
-            if v[g as usize] != v[next(h32) as usize] || v[next(g) as usize] != v[h] {
-                return broken(format!(
-                    "O[{h}] = {g}: not the same vertex pair run the other way"
-                ));
-            }
-        }
-        for &h in self.non_manifold.iter().chain(&self.seams) {
-            if h as usize >= o.len() || o[h as usize] != NONE || v[h as usize] == NONE {
-                return broken(format!("flagged half-edge {h} is paired or removed"));
-            }
-        }
-        let edges = (0..o.len())
-            .filter(|&h| self.is_live_canonical(o, h))
-            .count();
-        if edges != self.st().live_edges {
-            return broken(format!(
-                "{edges} edges in O, {} counted",
-                self.st().live_edges
-            ));
         }
         Ok(())
     }

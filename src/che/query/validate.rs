@@ -73,7 +73,7 @@ impl Che {
         Ok(())
     }
 
-    fn validate_o(&self) -> Result<()> {
+    pub(crate) fn validate_o(&self) -> Result<()> {
         let (v, o) = (&self.v, &self.o);
         if o.len() != v.len() {
             return broken(format!(
@@ -83,11 +83,15 @@ impl Che {
             ));
         }
         for (h, &g) in o.iter().enumerate() {
-            if g == NONE {
+            // A removed half-edge (V = NONE, on an edited CHE) pairs with nothing.
+            if v[h] == NONE && g != NONE {
+                return broken(format!("removed half-edge {h} has O = {g}"));
+            }
+            if v[h] == NONE || g == NONE {
                 continue;
             }
             let h32 = h as u32;
-            if g as usize >= o.len() || g == h32 || o[g as usize] != h32 {
+            if g as usize >= o.len() || g == h32 || o[g as usize] != h32 || v[g as usize] == NONE {
                 return broken(format!("O[{h}] = {g}: not an involution"));
             }
             if v[g as usize] != v[next(h32) as usize] || v[next(g) as usize] != v[h] {
@@ -97,6 +101,9 @@ impl Che {
             }
         }
         for &h in self.non_manifold.iter().chain(&self.seams) {
+            if v.get(h as usize).is_none_or(|&x| x == NONE) {
+                return broken(format!("flagged half-edge {h} is out of range or removed"));
+            }
             if o[h as usize] != NONE {
                 return broken(format!(
                     "half-edge {h} is flagged unpaired but O[{h}] = {}",
@@ -104,9 +111,14 @@ impl Che {
                 ));
             }
         }
-        let edges = (0..o.len()).filter(|&h| is_canonical(o, h)).count();
-        if edges != self.num_edges {
-            return broken(format!("{edges} edges in O, {} counted", self.num_edges));
+        let edges = (0..o.len())
+            .filter(|&h| v[h] != NONE && is_canonical(o, h))
+            .count();
+        if edges != self.num_live_edges() {
+            return broken(format!(
+                "{edges} edges in O, {} counted",
+                self.num_live_edges()
+            ));
         }
         Ok(())
     }

@@ -1,4 +1,4 @@
-//! The orientation test the edits use: a tetrahedron is positive when
+//! The orientation test of the build (soup pass) and the edits: a tetrahedron is positive when
 //! `det(p1 - p0, p2 - p0, p3 - p0) > 0` (its faces then run outward, see `ids.rs`).
 
 use glam::DVec3;

@@ -42,6 +42,7 @@ mod build;
 mod edges;
 pub mod edit;
 pub mod export;
+pub(crate) mod geometry;
 pub mod ids;
 mod query;
 mod star_pass;

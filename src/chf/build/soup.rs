@@ -120,7 +120,7 @@ fn run(
             continue;
         }
         let [p0, p1, p2, p3] = tet.map(|x| positions[x as usize]);
-        let det = (p1 - p0).dot((p2 - p0).cross(p3 - p0));
+        let det = crate::chf::geometry::orient(p0, p1, p2, p3);
         // A non-finite corner makes the determinant NaN or infinite; it has no sign then
         // (the report counts those vertices), while finite corners whose determinant
         // overflows keep the sign of the overflow.

@@ -1,9 +1,9 @@
 //! A new tetrahedron over existing vertices, paired with the boundary half-faces it
 //! matches.
 
-use super::geometry::orient_of;
 use super::plan::{Plan, context};
 use crate::chf::Chf;
+use crate::chf::geometry::orient_of;
 use crate::error::Result;
 
 impl Chf {

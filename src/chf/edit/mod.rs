@@ -32,7 +32,6 @@ mod collapse_edge;
 mod flip_23;
 mod flip_32;
 mod garbage_collect;
-mod geometry;
 mod plan;
 mod remove_tetrahedron;
 mod remove_vertex;

@@ -4,10 +4,10 @@
 //! plan by local updates.
 
 use super::arrays;
-use super::geometry::orient_of;
 use super::state::{canonical_half_edge, removed};
 use crate::NONE;
 use crate::chf::Chf;
+use crate::chf::geometry::orient_of;
 use crate::chf::ids::{EDGE, FACE, edge_index, first, slot_half_edges, tet};
 use crate::chf::query::star::Star;
 use crate::chf::query::view::{Need, View};

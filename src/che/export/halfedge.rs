@@ -2,9 +2,11 @@
 
 use crate::NONE;
 use crate::che::Che;
+use crate::che::Push;
 use crate::che::ids::{next, prev, tri};
 use crate::che::tables::vertex_half_edges;
 use crate::error::Result;
+use crate::util::alloc::try_to_vec;
 use crate::util::sparse::{filled, reserve};
 use std::borrow::Cow;
 
@@ -116,6 +118,15 @@ impl Che {
         self.half_edge_array_in(&self.half_edge_layout(options)?, which)
     }
 
+    /// [`Che::half_edge_array`] written entry by entry into `out` (the C API's caller
+    /// buffer), so a caller that owns the storage pays for no array in between.
+    pub(crate) fn half_edge_array_into(
+        &self, options: HalfEdgeOptions, which: HalfEdgeArray, out: &mut impl Push,
+    ) -> Result<()> {
+        self.check_collected("the half-edge export")?;
+        self.write_half_edge_array(&self.half_edge_layout(options)?, which, out)
+    }
+
     fn half_edge_layout(&self, options: HalfEdgeOptions) -> Result<Layout<'_>> {
         let o = self.opposites_or_computed();
         let mut boundary = Vec::new();
@@ -128,57 +139,66 @@ impl Che {
     }
 
     fn half_edge_array_in(&self, l: &Layout<'_>, which: HalfEdgeArray) -> Result<Vec<u32>> {
-        let n = self.v.len();
-        let b = &l.boundary;
-        let mut out = Vec::new();
         let len = match which {
             HalfEdgeArray::VertexHalfEdge => self.n_vertices,
             HalfEdgeArray::FaceHalfEdge => self.num_triangles(),
-            _ => n + b.len(),
+            _ => self.v.len() + l.boundary.len(),
         };
+        let mut out = Vec::new();
         reserve(&mut out, len, "a half-edge array")?;
-        let base = n as u32;
+        self.write_half_edge_array(l, which, &mut out)?;
+        Ok(out)
+    }
+
+    fn write_half_edge_array(
+        &self, l: &Layout<'_>, which: HalfEdgeArray, out: &mut impl Push,
+    ) -> Result<()> {
+        let b = &l.boundary;
+        let base = self.v.len() as u32;
         match which {
             HalfEdgeArray::Next => {
-                out.extend((0..base).map(next));
+                out.push_all((0..base).map(next));
                 let after = self.explicit_by_vertex(b, |h| self.v[next(h) as usize])?;
-                out.extend(b.iter().map(|&h| after[self.v[h as usize] as usize]));
+                out.push_all(b.iter().map(|&h| after[self.v[h as usize] as usize]));
             }
             HalfEdgeArray::Prev => {
-                out.extend((0..base).map(prev));
+                out.push_all((0..base).map(prev));
                 let before = self.explicit_by_vertex(b, |h| self.v[h as usize])?;
-                out.extend(b.iter().map(|&h| before[self.v[next(h) as usize] as usize]));
+                out.push_all(b.iter().map(|&h| before[self.v[next(h) as usize] as usize]));
             }
             HalfEdgeArray::Twin => {
                 let mut k = base;
-                out.extend(l.o.iter().map(|&g| {
+                out.push_all(l.o.iter().map(|&g| {
                     if g != NONE || b.is_empty() {
                         return g;
                     }
                     k += 1;
                     k - 1
                 }));
-                out.extend(b.iter().copied());
+                out.push_all(b.iter().copied());
             }
             HalfEdgeArray::Vertex => {
-                out.extend_from_slice(&self.v);
-                out.extend(b.iter().map(|&h| self.v[next(h) as usize]));
+                out.push_all(self.v.iter().copied());
+                out.push_all(b.iter().map(|&h| self.v[next(h) as usize]));
             }
             HalfEdgeArray::Face => {
-                out.extend((0..base).map(tri));
-                out.extend(b.iter().map(|_| NONE));
+                out.push_all((0..base).map(tri));
+                out.push_all(b.iter().map(|_| NONE));
             }
             HalfEdgeArray::Edge => {
                 let names = self.edge_names();
-                out.extend((0..base).map(|h| names.of(h)));
-                out.extend(b.iter().map(|&h| names.of(h)));
+                out.push_all((0..base).map(|h| names.of(h)));
+                out.push_all(b.iter().map(|&h| names.of(h)));
             }
-            HalfEdgeArray::VertexHalfEdge => self.vertex_half_edge_array(l, &mut out)?,
+            HalfEdgeArray::VertexHalfEdge => {
+                let vh = self.vertex_half_edge_array(l)?;
+                out.push_all(vh.iter().copied());
+            }
             HalfEdgeArray::FaceHalfEdge => {
-                out.extend((0..self.num_triangles() as u32).map(|t| 3 * t))
+                out.push_all((0..self.num_triangles() as u32).map(|t| 3 * t))
             }
         }
-        Ok(out)
+        Ok(())
     }
 
     /// Per vertex, the explicit boundary half-edge `3T + k` whose tail it is: `tail(h)`
@@ -198,16 +218,23 @@ impl Che {
 
     /// One outgoing half-edge per vertex: the stored or computed `VH`, where an explicit
     /// boundary replaces the boundary one by the hole's (as OpenMesh keeps it).
-    fn vertex_half_edge_array(&self, l: &Layout<'_>, out: &mut Vec<u32>) -> Result<()> {
-        match self.vertex_half_edges() {
-            Some(vh) => out.extend_from_slice(vh),
-            None => *out = vertex_half_edges(self.n_vertices, &self.v, &l.o)?,
+    fn vertex_half_edge_array(&self, l: &Layout<'_>) -> Result<Cow<'_, [u32]>> {
+        let mut out = match self.vertex_half_edges() {
+            Some(vh) => Cow::Borrowed(vh),
+            None => Cow::Owned(vertex_half_edges(self.n_vertices, &self.v, &l.o)?),
+        };
+        if l.boundary.is_empty() {
+            return Ok(out);
         }
         // The explicit twin `3T + k` of boundary half-edge `h = (u -> w)` leaves `w`.
         let n = self.v.len() as u32;
-        for (k, &h) in l.boundary.iter().enumerate() {
-            out[self.v[next(h) as usize] as usize] = n + k as u32;
+        if let Cow::Borrowed(vh) = out {
+            out = Cow::Owned(try_to_vec(vh, "the vertex half-edges")?);
         }
-        Ok(())
+        let out_mut = out.to_mut();
+        for (k, &h) in l.boundary.iter().enumerate() {
+            out_mut[self.v[next(h) as usize] as usize] = n + k as u32;
+        }
+        Ok(out)
     }
 }

@@ -59,6 +59,23 @@ impl Filling {
 /// Where a one-element walk writes its entries (the C API's caller buffers).
 pub(crate) trait Push {
     fn push(&mut self, x: u32);
+
+    /// Every entry of `xs`, in order.
+    #[inline]
+    fn push_all(&mut self, xs: impl IntoIterator<Item = u32>)
+    where
+        Self: Sized,
+    {
+        xs.into_iter().for_each(|x| self.push(x));
+    }
+}
+
+/// A vector the caller reserved for the whole answer, so `push` does not allocate.
+impl Push for Vec<u32> {
+    #[inline(always)]
+    fn push(&mut self, x: u32) {
+        Vec::push(self, x);
+    }
 }
 
 /// Where a bulk sweep writes: `row()` before each element's entries, `push` for each entry.

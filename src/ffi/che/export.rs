@@ -104,8 +104,9 @@ pub unsafe extern "C" fn che_mesh_export_half_edges(
     let options = HalfEdgeOptions {
         explicit_boundary: o.explicit_boundary,
     };
-    ids!(m, buf, cap, out_len, try |c| {
-        c.half_edge_array(options, report_kind(HalfEdgeArray::ALL, which, "che_half_edge_array")?)
+    ids!(m, buf, cap, out_len, |c, s| {
+        let which = report_kind(HalfEdgeArray::ALL, which, "che_half_edge_array")?;
+        c.half_edge_array_into(options, which, s)?
     })
 }
 

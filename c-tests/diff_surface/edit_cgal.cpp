@@ -68,6 +68,12 @@ public:
     c.faces = m_.number_of_faces();
     for (VI v : m_.vertices())
       if (m_.halfedge(v) == Mesh::null_halfedge()) c.isolated++;
+    std::vector<uint8_t> seen(m_.num_halfedges(), 0);
+    for (HI h : m_.halfedges()) {
+      if (!m_.is_border(h) || seen[size_t(h)]) continue;
+      c.boundary_loops++;
+      for (HI g = h; !seen[size_t(g)]; g = m_.next(g), c.boundary_edges++) seen[size_t(g)] = 1;
+    }
     return c;
   }
 

@@ -70,6 +70,10 @@ struct TmSide {
     c.faces = s.num_live_triangles();
     for (VertexId v : s.vertices())
       if (!s.is_removed(v) && s.vertex_triangles(v).empty()) c.isolated++;
+    // Unpaired half-edges: the summary counts the input's boundary, without the seams.
+    for (HalfEdgeId h : s.half_edges())
+      if (!s.is_removed(triangle_of(h)) && !s.opposite(h).valid()) c.boundary_edges++;
+    c.boundary_loops = s.num_boundary_curves();
     return c;
   }
   std::vector<Tri> triangles() const {
@@ -346,11 +350,18 @@ bool same_meshes(const TmSide &tm, const Peers &peers, const char *when) {
     check(peers[p]->triangles() == tris, "triangles");
   }
   check(peers[0]->vertex_ids(true) == om_isolated, "isolated vertices (OpenMesh)");
+  check(c[0].boundary_edges == c[1].boundary_edges && c[1].boundary_edges == c[2].boundary_edges,
+        "boundary edges");
+  // topomesh's curves (level 3, recomputed after edits) against the border loops; at a
+  // split vertex, OpenMesh and CGAL may run one loop through both fans.
+  check(tm.copies != 0 || (c[0].boundary_loops == c[1].boundary_loops &&
+                           c[1].boundary_loops == c[2].boundary_loops),
+        "boundary curves");
   if (!ok)
     for (int lib = 0; lib < 3; ++lib)
-      std::printf("  %-8s V %zu E %zu F %zu isolated %zu\n",
+      std::printf("  %-8s V %zu E %zu F %zu isolated %zu boundary %zu edges, %zu curves\n",
                   lib == 0 ? "topomesh" : peers[lib - 1]->name(), c[lib].vertices, c[lib].edges,
-                  c[lib].faces, c[lib].isolated);
+                  c[lib].faces, c[lib].isolated, c[lib].boundary_edges, c[lib].boundary_loops);
   return ok;
 }
 
@@ -404,12 +415,13 @@ void print_summary(const char *mesh, const char *mode, const Tally &t, const TmS
   const EditCounts c = tm.counts();
   std::printf("%s %s: %zu ops (flip %zu, split %zu, collapse %zu, remove %zu; %zu left out); "
               "accepted topomesh %zu OpenMesh %zu CGAL %zu (flip %zu, split %zu, collapse %zu, "
-              "remove %zu); final V %zu E %zu F %zu chi %lld, isolated %zu, split vertices %zu "
-              "(OpenMesh V %zu, CGAL V %zu)\n",
+              "remove %zu); final V %zu E %zu F %zu chi %lld, isolated %zu, boundary curves %zu, "
+              "split vertices %zu (OpenMesh V %zu, CGAL V %zu)\n",
               mesh, mode, t.total_tried(), t.tried[0], t.tried[1], t.tried[2], t.tried[3],
               t.left_out, t.total_accepted(0), t.total_accepted(1), t.total_accepted(2),
               t.accepted[0][0], t.accepted[1][0], t.accepted[2][0], t.accepted[3][0], c.vertices,
-              c.edges, c.faces, c.euler(), c.isolated, tm.copies, peers[0]->counts().vertices,
+              c.edges, c.faces, c.euler(), c.isolated, c.boundary_loops, tm.copies,
+              peers[0]->counts().vertices,
               peers[1]->counts().vertices);
 }
 

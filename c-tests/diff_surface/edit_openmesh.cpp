@@ -69,6 +69,13 @@ public:
     }
     for (auto e : m_.edges()) (void)e, c.edges++;
     for (auto f : m_.faces()) (void)f, c.faces++;
+    std::vector<uint8_t> seen(m_.n_halfedges(), 0);
+    for (auto h : m_.halfedges()) {
+      if (!m_.is_boundary(h) || seen[size_t(h.idx())]) continue;
+      c.boundary_loops++;
+      for (HH g = h; !seen[size_t(g.idx())]; g = m_.next_halfedge_handle(g), c.boundary_edges++)
+        seen[size_t(g.idx())] = 1;
+    }
     return c;
   }
 

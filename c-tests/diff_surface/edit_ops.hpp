@@ -31,9 +31,11 @@ struct EditOp {
 
 enum class Outcome : uint8_t { Refused, Done, Missing };
 
-// Live counts; `isolated` are the vertices without a face.
+// Live counts; `isolated` are the vertices without a face; the boundary edges and the
+// loops they form.
 struct EditCounts {
   size_t vertices = 0, edges = 0, faces = 0, isolated = 0;
+  size_t boundary_edges = 0, boundary_loops = 0;
   long long euler() const { return (long long)vertices - (long long)edges + (long long)faces; }
 };
 

@@ -10,12 +10,15 @@
 // topomesh builds the mesh (level 3) and the peers are built from its oriented triangles,
 // so that all three start from the same surface (checked). Each operation is drawn from
 // topomesh's live triangles and given to every library as vertex ids (see edit_ops.hpp);
-// each library decides with its own check (is_flip_ok, is_collapse_ok, OpenMesh's
-// is_flip_ok / is_collapse_ok, CGAL's does_satisfy_link_condition) and applies the
-// accepted ones. The same operations must be accepted and refused by all three; at the end,
-// after garbage collection on all three, the counts, the Euler characteristic and the
-// oriented triangles (in shared ids) must be equal. Exit status 1 on any difference;
-// one summary line per run.
+// each library decides with its own check (topomesh's is_flip_ok / is_collapse_ok and a
+// split's status, OpenMesh's is_flip_ok / is_collapse_ok, CGAL's does_satisfy_link_condition
+// and the flip conditions CGAL leaves to the caller, see edit_cgal.cpp) and applies the
+// accepted ones. The same operations must be accepted and refused by all three; after the
+// edits, and after garbage collection on all three (halfway through a sequence, and at the
+// end), the counts, the Euler characteristic, the boundary and the oriented triangles (in
+// shared ids) must be equal, up to the rule differences same_meshes() checks exactly.
+// Exit status 1 on any difference, 2 for bad arguments or a mesh the sequences cannot
+// compare (see unflagged()); one summary line per run.
 #include "edit_ops.hpp"
 #include "off_reader.hpp"
 
@@ -99,7 +102,7 @@ struct TmSide {
 // whose two edges in t are both interior)? topomesh then makes the second fan a vertex of
 // its own, as its build does with such a vertex; OpenMesh and CGAL keep one non-manifold
 // vertex. The random sequences leave these removals out, so that vertex ids stay shared;
-// remove-all and isolate make them and compare through the copies' origins.
+// remove-all and isolate make them and map each copy to the corner it comes from.
 bool pinches(const Surface &s, TriangleId t) {
   for (uint32_t k = 0; k < 3; ++k) {
     HalfEdgeId h{3 * t.value() + k};

@@ -1,21 +1,19 @@
 // CGAL 5.5 Surface_mesh (Epick points): differential answers and benchmark. The only CGAL
 // translation unit (its headers are slow to compile).
-#include "peers.hpp"
+#include "cgal_mesh.hpp"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
 
 namespace diffmesh {
 namespace {
-
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using cg::K;
+using cg::Mesh;
 using VI = Mesh::Vertex_index;
 using FI = Mesh::Face_index;
 using HI = Mesh::Halfedge_index;
+} // namespace
 
-void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input) {
+void cg::build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input) {
   m.reserve(Mesh::size_type(in.n_vertices), Mesh::size_type(in.n_triangles * 3 / 2 + 16),
             Mesh::size_type(in.n_triangles));
   for (size_t v = 0; v < in.n_vertices; ++v) {
@@ -28,13 +26,15 @@ void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fa
   });
 }
 
+namespace {
+
 uint32_t id(VI v) { return uint32_t(size_t(v)); }
 
 // The adapter of peers.hpp.
 struct Peer {
-  using Mesh = diffmesh::Mesh;
+  using Mesh = cg::Mesh;
   static void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fin) {
-    diffmesh::build(in, m, b, fin);
+    cg::build(in, m, b, fin);
   }
   using H = HI;
   static auto halfedges(const Mesh &m) { return m.halfedges(); }
@@ -72,7 +72,7 @@ struct Peer {
 Answers cgal_answers(const PeerInput &in, PeerBuild &b) {
   Mesh m;
   std::vector<uint32_t> fin;
-  build(in, m, b, &fin);
+  cg::build(in, m, b, &fin);
   Answers a;
   a.lib = "CGAL";
   a.resize(m.number_of_vertices(), m.number_of_edges(), 0);

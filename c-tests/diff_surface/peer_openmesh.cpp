@@ -1,19 +1,11 @@
 // OpenMesh 9 (TriMesh_ArrayKernelT with double points): differential answers and benchmark.
-#include "peers.hpp"
+#include "om_mesh.hpp"
 
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
 namespace diffmesh {
-namespace {
 
-struct Traits : OpenMesh::DefaultTraits {
-  typedef OpenMesh::Vec3d Point;
-};
-using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
-
-// Builds from the arrays; `face_input[f]` is the submitted index of face f.
-void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input) {
+void om::build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input) {
   static bool quiet = (::omerr().disable(), true); // "complex edge" etc.
   (void)quiet;
   m.reserve(in.n_vertices, in.n_triangles * 3 / 2 + 16, in.n_triangles);
@@ -29,13 +21,16 @@ void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fa
   });
 }
 
+namespace {
+using om::Mesh;
+
 uint32_t vid(OpenMesh::VertexHandle h) { return uint32_t(h.idx()); }
 
 // The adapter of peers.hpp.
 struct Peer {
-  using Mesh = diffmesh::Mesh;
+  using Mesh = om::Mesh;
   static void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fin) {
-    diffmesh::build(in, m, b, fin);
+    om::build(in, m, b, fin);
   }
   using H = OpenMesh::HalfedgeHandle;
   static auto halfedges(const Mesh &m) { return m.halfedges(); }
@@ -75,7 +70,7 @@ struct Peer {
 Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
   Mesh m;
   std::vector<uint32_t> fin;
-  build(in, m, b, &fin);
+  om::build(in, m, b, &fin);
   Answers a;
   a.lib = "OpenMesh";
   a.resize(m.n_vertices(), m.n_edges(), m.n_faces());

@@ -1,12 +1,7 @@
-// The only translation unit that includes CGAL (slow to compile). See peer_cgal.hpp.
+// One of the two translation units that include CGAL (slow to compile). See peer_cgal.hpp.
 #include "peer_cgal.hpp"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_3.h>
-#include <CGAL/Triangulation_cell_base_3.h>
-#include <CGAL/Triangulation_data_structure_3.h>
-#include <CGAL/Triangulation_vertex_base_3.h>
-#include <CGAL/Mesh_3/tet_soup_to_c3t3.h>
+#include "cgal_tr.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -14,40 +9,9 @@
 
 namespace diffvol {
 
+using namespace cgal;
+
 namespace {
-
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-// What build_triangulation calls on vertices and cells, as no-ops: the lean bases keep no
-// Mesh_3 data (a Mesh_3 cell would cost far more per tetrahedron).
-template <class Gt, class Vb = CGAL::Triangulation_vertex_base_3<Gt>>
-struct Soup_vertex_base : Vb {
-  template <class TDS2> struct Rebind_TDS {
-    using Vb2 = typename Vb::template Rebind_TDS<TDS2>::Other;
-    using Other = Soup_vertex_base<Gt, Vb2>;
-  };
-  using Vb::Vb;
-  void set_dimension(int) {}
-};
-
-template <class Gt, class Cb = CGAL::Triangulation_cell_base_3<Gt>>
-struct Soup_cell_base : Cb {
-  using Surface_patch_index = int;
-  using Subdomain_index = int;
-  template <class TDS2> struct Rebind_TDS {
-    using Cb2 = typename Cb::template Rebind_TDS<TDS2>::Other;
-    using Other = Soup_cell_base<Gt, Cb2>;
-  };
-  using Cb::Cb;
-  void set_subdomain_index(int) {}
-  void set_surface_patch_index(int, int) {}
-  int surface_patch_index(int) const { return 0; }
-};
-
-using Tds = CGAL::Triangulation_data_structure_3<Soup_vertex_base<K>, Soup_cell_base<K>>;
-using Tr = CGAL::Triangulation_3<K, Tds>;
-using Vh = Tr::Vertex_handle;
-using Ch = Tr::Cell_handle;
 
 double now_ms() {
   using namespace std::chrono;
@@ -55,11 +19,6 @@ double now_ms() {
 }
 
 } // namespace
-
-struct CgalVol::Impl {
-  Tr tr;
-  std::vector<Vh> handles; // input vertex i -> handles[i + 1]; handles[0] is the infinite one
-};
 
 CgalVol::CgalVol() : p_(new Impl) {}
 CgalVol::~CgalVol() = default;

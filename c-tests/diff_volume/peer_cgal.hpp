@@ -1,6 +1,6 @@
 // CGAL's Triangulation_3 built from a tetrahedron soup by CGAL::build_triangulation
 // (CGAL/Mesh_3/tet_soup_to_c3t3.h, CGAL 5.5), behind a small interface so that CGAL's
-// headers are compiled in one translation unit only (peer_cgal.cpp).
+// headers are compiled in few translation units only (peer_cgal.cpp, peer_cgal_edit.cpp).
 //
 // The triangulation is the leanest one the builder accepts: Triangulation_3<Epick, Tds> with
 // the plain Triangulation_vertex_base_3 / Triangulation_cell_base_3, extended only by the
@@ -53,6 +53,7 @@ public:
   uint64_t sweep_vv() const;  // finite_adjacent_vertices(v) into a reused vector
 
 private:
+  friend class CgalEdit; // edits the triangulation (peer_cgal_edit.hpp)
   struct Impl;
   std::unique_ptr<Impl> p_;
   CgalVol();

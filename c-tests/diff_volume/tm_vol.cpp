@@ -54,6 +54,8 @@ void same_row(const Rows &bulk, size_t i, const std::vector<uint32_t> &one, Diff
 
 } // namespace
 
+std::string tm_error(topomesh_status st) { return last_error(st); }
+
 bool tm_build(const TetSoup &s, uint32_t level, TmMesh &out, std::string &err) {
   chf_mesh_free(out.m);
   out.m = nullptr;

@@ -20,6 +20,9 @@ struct TmMesh {
   ~TmMesh() { chf_mesh_free(m); }
 };
 
+// The status string and topomesh_last_error, for messages.
+std::string tm_error(topomesh_status st);
+
 // Builds from the soup with positions at `level`; on failure returns false with the status
 // string and topomesh_last_error in `err`.
 bool tm_build(const TetSoup &s, uint32_t level, TmMesh &out, std::string &err);

@@ -26,21 +26,15 @@
 //   boundary face of the mesh (refused by topomesh), and a union not strictly convex;
 // - 3-2: CGAL's flip(Edge) refuses an edge with an infinite cell around it (a boundary
 //   edge of the mesh), a degree other than 3, and new cells not positive.
-// The one genuine difference: topomesh's orientation test is the floating-point
-// determinant, CGAL's is exact (Epick). A disagreement is explained, counted and printed
-// when topomesh's verdict is "every tetrahedron the operation makes is floating-positive"
-// (recomputed here with the formula of src/chf/geometry.rs, on the tetrahedra of topomesh's
-// plan) and CGAL's is "every one is exactly positive". CGAL then follows topomesh through its
-// data structure alone (Tds::flip, insert_in_cell, remove_from_maximal_dimension_simplex),
-// so both go on with the same mesh; an accepted-by-topomesh-only operation leaves a
-// tetrahedron that is flat or inverted by the exact predicate (allowed at the end only
-// then). Any other disagreement, a tuple CGAL lacks, or a new tetrahedron of topomesh
-// missing in CGAL fails the test.
+// Both orientation tests are exact (topomesh's src/chf/geometry.rs, CGAL's Epick), so there
+// is no tolerated difference: any disagreement, a tuple CGAL lacks, or a new tetrahedron of
+// topomesh missing in CGAL fails the test. (This test found topomesh's rounded determinant
+// accepting a 2-3 flip into an inverted tetrahedron before the orientation was made exact.)
 //
 // At the end topomesh is garbage-collected and compared with CGAL: live vertices,
 // tetrahedra, faces, edges, V - E + F - T (also chf_mesh_summary's), the set of tetrahedra
 // after mapping the ids, chf_mesh_validate, CGAL's Tds::is_valid per cell and vertex, and
-// its finite cells exactly positive (see above).
+// its finite cells exactly positive.
 // With TOPOMESH_EDITDIFF_SELFTEST set, CGAL skips some 2-3 flips on purpose: the run must fail.
 #include "peer_cgal_edit.hpp"
 #include "tet_soup.hpp"
@@ -84,7 +78,6 @@ struct Run {
   std::unique_ptr<CgalEdit> cg;
   std::mt19937_64 rng;
   size_t tried[KINDS] = {}, accepted[KINDS] = {};
-  size_t tm_accepted_inexact = 0, tm_refused_inexact = 0; // explained disagreements
   bool selftest = false;
   Diff fails;
 };
@@ -109,15 +102,6 @@ Quad replaced(Quad q, uint32_t c, uint32_t x) {
   for (uint32_t &y : q)
     if (y == c) y = x;
   return q;
-}
-
-// src/chf/geometry.rs's orient, the same operations in the same order (glam's cross, dot).
-double float_orient(const double *a, const double *b, const double *c, const double *d) {
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-  const double x[3] = {v[1] * w[2] - w[1] * v[2], v[2] * w[0] - w[2] * v[0], v[0] * w[1] - w[0] * v[1]};
-  return u[0] * x[0] + u[1] * x[1] + u[2] * x[2];
 }
 
 uint32_t random_live_tet(Run &r) {
@@ -218,21 +202,6 @@ CgalOutcome cg_apply(Run &r, const Op &op, uint32_t &new_v) {
   }
 }
 
-// Does the floating/exact orientation difference explain the verdicts? Yes when topomesh's
-// is "every tetrahedron of its plan floating-positive" (a refusal then names a flat or
-// inverted tetrahedron) and CGAL's is "every one exactly positive". (See the top comment.)
-bool inexact_explains(const Run &r, const Op &op, bool tm_ok, bool cg_ok, const std::string &detail) {
-  if (op.planned.empty() || (!tm_ok && detail.find("inverted or flat") == std::string::npos)) return false;
-  const uint32_t x = uint32_t(r.pos.size() / 3);
-  auto at = [&](uint32_t v) { return v == x && op.kind == SPLIT ? op.point.data() : &r.pos[3 * v]; };
-  bool all_float = true, all_exact = true;
-  for (const Quad &q : op.planned) {
-    all_float = all_float && float_orient(at(q[0]), at(q[1]), at(q[2]), at(q[3])) > 0;
-    all_exact = all_exact && CgalEdit::orientation(at(q[0]), at(q[1]), at(q[2]), at(q[3])) > 0;
-  }
-  return all_float == tm_ok && all_exact == cg_ok;
-}
-
 // Live topomesh tetrahedra as sorted quadruples (topomesh ids).
 std::vector<Quad> tm_tets(Run &r) {
   std::vector<Quad> out;
@@ -274,35 +243,6 @@ void after_both(Run &r, const Op &op, const std::vector<uint32_t> &made, uint32_
   }
 }
 
-// The vertices shared by all of `qs` (a 2-3 flip's new edge, a 3-2 flip's new triangle).
-std::vector<uint32_t> common(const std::vector<Quad> &qs) {
-  std::vector<uint32_t> out;
-  for (uint32_t v : qs.at(0))
-    if (std::all_of(qs.begin(), qs.end(), [&](const Quad &q) { return std::count(q.begin(), q.end(), v) == 1; }))
-      out.push_back(v);
-  return out;
-}
-
-// An explained disagreement: CGAL follows topomesh by its data structure alone (the
-// operation done, or undone), so that the run goes on with the same mesh on both sides.
-void explained(Run &r, const Op &op, bool tm_ok, const std::vector<uint32_t> &made, uint32_t tm_v) {
-  (tm_ok ? r.tm_accepted_inexact : r.tm_refused_inexact)++;
-  std::printf("  explained: %s: topomesh %s, CGAL %s: floating vs exact orientation\n", describe(op).c_str(),
-              tm_ok ? "accepted" : "refused", tm_ok ? "refused" : "accepted");
-  const std::vector<uint32_t> c = to_cgal(r, op.kind == SPLIT || tm_ok ? op.tuple : common(op.planned));
-  bool ok = false;
-  uint32_t cg_v = NONE;
-  if (op.kind == SPLIT) ok = tm_ok ? r.cg->tds_split({c[0], c[1], c[2], c[3]}, op.point, cg_v)
-                                   : r.cg->tds_unsplit(uint32_t(r.cg->num_vertices() - 1));
-  else if ((op.kind == FLIP23) == tm_ok) ok = c.size() == 3 && r.cg->tds_flip_23({c[0], c[1], c[2]});
-  else ok = c.size() == 2 && r.cg->tds_flip_32({c[0], c[1]});
-  if (!ok) r.fails.add(describe(op) + ": CGAL's data structure cannot follow topomesh");
-  if (ok && tm_ok) {
-    after_both(r, op, made, tm_v, cg_v);
-    r.accepted[op.kind]--; // counted as accepted by topomesh only
-  }
-}
-
 // One operation on both sides, compared.
 void step(Run &r, size_t i) {
   const Kind kind = Kind(r.rng() % KINDS);
@@ -323,12 +263,8 @@ void step(Run &r, size_t i) {
   const bool tm_ok = st == TOPOMESH_STATUS_OK, cg_ok = co == CgalOutcome::Done;
   if (tm_ok && cg_ok) return after_both(r, op, made, tm_v, cg_v);
   if (tm_ok == cg_ok) return;
-  if (!inexact_explains(r, op, tm_ok, cg_ok, detail)) {
-    r.fails.add(describe(op) + ": topomesh " + (tm_ok ? "accepted" : "refused (" + detail + ")") + ", CGAL " +
-                (cg_ok ? "accepted" : "refused"));
-    return;
-  }
-  explained(r, op, tm_ok, made, tm_v);
+  r.fails.add(describe(op) + ": topomesh " + (tm_ok ? "accepted" : "refused (" + detail + ")") + ", CGAL " +
+              (cg_ok ? "accepted" : "refused"));
 }
 
 // Builds both sides and checks that CGAL holds the mesh's tetrahedra.
@@ -404,13 +340,7 @@ CgalEdit::Counts finish(Run &r) {
   size_t negative = 0;
   const std::string bad = r.cg->check(negative);
   if (!bad.empty()) r.fails.add(bad);
-  // Tetrahedra not positive by the exact predicate come only from operations topomesh's
-  // floating test accepted and CGAL's exact one refused.
-  if (negative && !r.tm_accepted_inexact)
-    r.fails.add(std::to_string(negative) + " tetrahedra not positive by CGAL's exact predicate");
-  else if (negative)
-    std::printf("  %zu tetrahedra not positive by CGAL's exact predicate (from the operations accepted by "
-                "topomesh only)\n", negative);
+  if (negative) r.fails.add(std::to_string(negative) + " tetrahedra not positive by CGAL's exact predicate");
   return tm;
 }
 
@@ -425,10 +355,9 @@ bool edit_run(const TetSoup &s, const EditOptions &opt) {
     for (size_t i = 0; i < opt.ops && r.fails.count == 0; ++i) step(r, i);
     fin = finish(r);
   }
-  std::printf("%s: %zu ops (1-4 %zu/%zu, 2-3 %zu/%zu, 3-2 %zu/%zu accepted by both/tried), floating vs exact: "
-              "%zu accepted by topomesh only, %zu by CGAL only; final V=%ld E=%ld F=%ld T=%ld chi=%ld: %s\n",
+  std::printf("%s: %zu ops (1-4 %zu/%zu, 2-3 %zu/%zu, 3-2 %zu/%zu accepted by both/tried); final V=%ld E=%ld F=%ld T=%ld chi=%ld: %s\n",
               s.name.c_str(), r.tried[0] + r.tried[1] + r.tried[2], r.accepted[0], r.tried[0], r.accepted[1],
-              r.tried[1], r.accepted[2], r.tried[2], r.tm_accepted_inexact, r.tm_refused_inexact, fin.V, fin.E,
+              r.tried[1], r.accepted[2], r.tried[2], fin.V, fin.E,
               fin.F, fin.T, fin.euler(),
               r.fails.count ? "FAIL" : "same as CGAL");
   for (const std::string &l : r.fails.lines) std::printf("  FAIL %s\n", l.c_str());

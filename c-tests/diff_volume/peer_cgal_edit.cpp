@@ -73,43 +73,6 @@ CgalOutcome CgalEdit::flip_32(const std::array<uint32_t, 2> &e) {
   return tr.flip(c, i, j) ? CgalOutcome::Done : CgalOutcome::Refused;
 }
 
-bool CgalEdit::tds_split(const Quad &q, const std::array<double, 3> &p, uint32_t &new_v) {
-  Tr &tr = vol_->p_->tr;
-  Vh v[4];
-  Ch c;
-  if (!all_handles(vol_->p_->handles, q.data(), 4, v) || !tr.is_cell(v[0], v[1], v[2], v[3], c)) return false;
-  Vh x = tr.tds().insert_in_cell(c);
-  x->set_point(Tr::Point(p[0], p[1], p[2]));
-  vol_->p_->handles.push_back(x);
-  new_v = uint32_t(vol_->p_->handles.size() - 2);
-  return true;
-}
-
-bool CgalEdit::tds_unsplit(uint32_t v) {
-  std::vector<Vh> &h = vol_->p_->handles;
-  if (size_t(v) + 2 != h.size() || vol_->p_->tr.degree(h.back()) != 4) return false;
-  vol_->p_->tr.tds().remove_from_maximal_dimension_simplex(h.back());
-  h.pop_back();
-  return true;
-}
-
-bool CgalEdit::tds_flip_23(const std::array<uint32_t, 3> &f) {
-  Tr &tr = vol_->p_->tr;
-  Vh v[3];
-  Ch c;
-  int i = 0, j = 0, k = 0;
-  return all_handles(vol_->p_->handles, f.data(), 3, v) && tr.is_facet(v[0], v[1], v[2], c, i, j, k) &&
-         tr.tds().flip(c, 6 - i - j - k);
-}
-
-bool CgalEdit::tds_flip_32(const std::array<uint32_t, 2> &e) {
-  Tr &tr = vol_->p_->tr;
-  Vh v[2];
-  Ch c;
-  int i = 0, j = 0;
-  return all_handles(vol_->p_->handles, e.data(), 2, v) && tr.is_edge(v[0], v[1], c, i, j) && tr.tds().flip(c, i, j);
-}
-
 bool CgalEdit::has_cell(const Quad &q) const {
   Vh v[4];
   Ch c;
@@ -154,12 +117,6 @@ std::string CgalEdit::check(size_t &negative) const {
   if (bad_cells + bad_vertices == 0) return std::string();
   return "CGAL: " + std::to_string(bad_cells) + " cells and " + std::to_string(bad_vertices) +
          " vertices fail Tds::is_valid";
-}
-
-int CgalEdit::orientation(const double *a, const double *b, const double *c, const double *d) {
-  using P = Tr::Point;
-  return int(CGAL::orientation(P(a[0], a[1], a[2]), P(b[0], b[1], b[2]), P(c[0], c[1], c[2]),
-                               P(d[0], d[1], d[2])));
 }
 
 } // namespace diffvol

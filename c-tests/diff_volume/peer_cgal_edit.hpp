@@ -42,15 +42,6 @@ public:
   // cells positive.
   CgalOutcome flip_32(const std::array<uint32_t, 2> &e);
 
-  // The data structure's own operations, with no orientation test, to follow topomesh
-  // after an explained disagreement (topomesh's floating test accepted what CGAL's exact
-  // one refused: done here; or refused what it accepted: undone here). False when
-  // combinatorially impossible (Tds::flip's checks) or the element is missing.
-  bool tds_split(const Quad &q, const std::array<double, 3> &p, uint32_t &new_v);
-  bool tds_unsplit(uint32_t v); // v: the last split's vertex
-  bool tds_flip_23(const std::array<uint32_t, 3> &f);
-  bool tds_flip_32(const std::array<uint32_t, 2> &e);
-
   bool has_cell(const Quad &q) const;
   size_t num_vertices() const; // finite vertices
 
@@ -62,16 +53,13 @@ public:
   // Every finite cell as its vertex ids, in CGAL's order.
   std::vector<Quad> cells() const;
   // Finite cells not positive by the exact predicate are counted in `negative`, not in
-  // the answer (explained disagreements leave some; the caller decides).
+  // the answer (the caller decides).
   // Empty when every cell and vertex passes Tds::is_valid(c) / is_valid(v) (neighbours and
   // indices consistent) and every finite cell is positive by the exact predicate; else what
   // is wrong. The global Tds::is_valid() is not used: its Euler relation holds for a 3-sphere,
   // i.e. only when the boundary coned to the infinite vertex is one sphere (not for the
   // genus-1 and genus-2 meshes, a cavity, or an isolated vertex).
   std::string check(size_t &negative) const;
-
-  // CGAL's exact orientation of four points: -1, 0 or 1.
-  static int orientation(const double *a, const double *b, const double *c, const double *d);
 
 private:
   std::unique_ptr<CgalVol> vol_;

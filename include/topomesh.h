@@ -1469,10 +1469,18 @@ topomesh_status che_mesh_open(const char *path, uint32_t flags, struct che_mesh 
 topomesh_status che_mesh_add_vertex(struct che_mesh *m, const double *position_xyz, uint32_t *out);
 
 /**
- * Adds triangle (a, b, c), paired with the boundary half-edges it meets. Refused
+ * Adds triangle (a, b, c) into `out`, paired with the boundary half-edges it meets.
+ * Refused (INVALID_INPUT) for a degenerate triangle, OUT_OF_RANGE for a bad vertex id.
+ * On a mesh built strict (`che_build_options.strict`, kept by level files) also refused
  * (INVALID_INPUT, the detail naming the edge or vertex) when an edge already has a
- * triangle on that side, would become non-manifold, or a corner would get a second fan;
- * also for a degenerate or duplicate triangle.
+ * triangle on that side, would become non-manifold, or a corner would get a second fan,
+ * and for a duplicate. On a mesh built non-strict (the default) those are repaired by
+ * the build's rules and counted in `che_mesh_report` (status OK): an edge that would
+ * carry a third triangle counts as non-manifold and the corners on it are split (the
+ * new triangle's corners may then be new vertices: read them back with
+ * `che_triangle_vertices`), a triangle against its neighbours' orientation is flipped
+ * (`flipped_triangles`), a duplicate is kept; the mesh is then the one a fresh non-strict build of its live
+ * triangles gives.
  */
 topomesh_status che_mesh_add_triangle(struct che_mesh *m,
                                       uint32_t a,

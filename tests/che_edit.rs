@@ -113,9 +113,25 @@ fn check_against_fresh(che: &Che) {
     let options = BuildOptions::level(che.level());
     let fresh = Che::from_flat(&tris, done.num_vertices(), done.positions(), options).unwrap();
     let (mut a, mut b) = (relations(&done), relations(&fresh));
+    // A build flags the half-edges of a non-manifold edge of its input, then its vertex
+    // split may leave one alone on its vertex pair: a rebuild sees a boundary half-edge.
+    let pair = |h: u32| {
+        let (x, y) = (done.origin(h), done.target(h));
+        (x.min(y), x.max(y))
+    };
+    a.arrays
+        .flags
+        .0
+        .retain(|&h| (0..done.num_half_edges() as u32).any(|g| g != h && pair(g) == pair(h)));
     // Origins follow the input through the edits; the fresh build's are its own.
     (a.arrays.vertex_origins, a.arrays.triangle_origins) = (None, None);
     (b.arrays.vertex_origins, b.arrays.triangle_origins) = (None, None);
+    if a != b
+        && let Ok(dir) = std::env::var("EDIT_DUMP")
+    {
+        std::fs::write(format!("{dir}/edited.txt"), format!("{a:#?}")).unwrap();
+        std::fs::write(format!("{dir}/fresh.txt"), format!("{b:#?}")).unwrap();
+    }
     assert_eq!(a, b);
     assert_eq!(che.summary(), fresh.summary());
 }
@@ -205,14 +221,20 @@ fn ear(che: &Che, rng: &mut Rng) -> Option<[u32; 3]> {
     None
 }
 
+/// Built strict: every operation kind, the refusals of `add_triangle` included.
 fn built(s: &Surface, level: u8) -> Che {
-    Che::from_triangles(
-        &s.triangles,
-        s.positions.len(),
-        &s.positions,
-        BuildOptions::level(level),
-    )
-    .unwrap()
+    built_with(s, level, true)
+}
+
+fn built_with(s: &Surface, level: u8, strict: bool) -> Che {
+    let options = BuildOptions {
+        strict,
+        ..BuildOptions::level(level)
+    };
+    let che = Che::from_triangles(&s.triangles, s.positions.len(), &s.positions, options);
+    let che = che.unwrap();
+    assert_eq!(che.is_strict(), strict);
+    che
 }
 
 fn run(mut che: Che, seed: u64, steps: usize, every: usize) -> Che {
@@ -244,20 +266,8 @@ fn random_edits_on_a_mesh_with_boundary_at_every_level() {
 
 #[test]
 fn random_edits_on_a_damaged_mesh_stay_valid() {
-    // Three triangles on edge 0-1, a bowtie at vertex 5, a degenerate and a duplicate.
-    let tris = [
-        [0, 1, 2],
-        [1, 0, 3],
-        [0, 1, 4],
-        [5, 6, 7],
-        [5, 8, 9],
-        [2, 2, 3],
-        [5, 6, 7],
-        [1, 2, 10],
-        [2, 11, 10],
-    ];
     for level in 0..=3 {
-        let mut che = Che::from_triangles(&tris, 12, &[], BuildOptions::level(level)).unwrap();
+        let mut che = Che::from_triangles(&DAMAGED, 12, &[], BuildOptions::level(level)).unwrap();
         let mut rng = Rng(99 + level as u64);
         for step in 0..600 {
             random_op(&mut che, &mut rng);
@@ -269,6 +279,196 @@ fn random_edits_on_a_damaged_mesh_stay_valid() {
             }
         }
     }
+}
+
+/// A live vertex, or a new one.
+fn some_vertex(che: &mut Che, rng: &mut Rng) -> u32 {
+    for _ in 0..20 {
+        let x = rng.below(che.num_vertices().max(1)) as u32;
+        if (x as usize) < che.num_vertices() && !che.is_vertex_removed(x) {
+            return x;
+        }
+    }
+    let p = (!che.positions().is_empty()).then_some(DVec3::new(rng.below(9) as f64, 1.0, 3.0));
+    che.add_vertex(p).unwrap()
+}
+
+/// One random `add_triangle` on a non-strict CHE, of every kind its repairs cover: ears,
+/// triangles across an existing edge either way (a flip, or a third triangle on the edge),
+/// duplicates either way, triangles on new vertices and random triples (a new fan at
+/// each corner). A refusal (degenerate) changes nothing; an accepted triangle has the
+/// corners asked for, or copies of them, in some orientation.
+fn random_add(che: &mut Che, rng: &mut Rng) {
+    let nh = che.num_half_edges();
+    let live_h = (0..20)
+        .map(|_| rng.below(nh.max(1)) as u32)
+        .find(|&h| (h as usize) < nh && !che.is_half_edge_removed(h));
+    let corners = match (rng.below(6), live_h) {
+        (0, _) => ear(che, rng),
+        (1 | 2, Some(h)) => {
+            let (a, b) = (che.origin(h), che.target(h));
+            let c = some_vertex(che, rng);
+            Some(if rng.chance(0.5) {
+                [a, b, c]
+            } else {
+                [b, a, c]
+            })
+        }
+        (3, Some(h)) => {
+            let [a, b, c] = che.triangle_vertices(h / 3);
+            Some(if rng.chance(0.5) {
+                [a, b, c]
+            } else {
+                [a, c, b]
+            })
+        }
+        _ => None,
+    };
+    let [a, b, c] = corners.unwrap_or_else(|| [0; 3].map(|_| some_vertex(che, rng)));
+    let before = arrays(che);
+    match che.add_triangle(a, b, c) {
+        Ok(t) => {
+            let origin = |x: u32| che.vertex_origin(x);
+            let mut got = che.triangle_vertices(t).map(origin);
+            let mut asked = [a, b, c].map(origin);
+            got.sort_unstable();
+            asked.sort_unstable();
+            assert_eq!(got, asked, "add_triangle({a}, {b}, {c}) gave triangle {t}");
+        }
+        Err(e) => {
+            assert!(e.message.contains("degenerate"), "{e:?}");
+            assert_eq!(arrays(che), before, "refused add_triangle changed the mesh");
+        }
+    }
+}
+
+/// Three triangles on edge 0-1, a bowtie at vertex 5, a degenerate and a duplicate.
+const DAMAGED: [[u32; 3]; 9] = [
+    [0, 1, 2],
+    [1, 0, 3],
+    [0, 1, 4],
+    [5, 6, 7],
+    [5, 8, 9],
+    [2, 2, 3],
+    [5, 6, 7],
+    [1, 2, 10],
+    [2, 11, 10],
+];
+
+/// [`check_against_fresh`] while the surface is orientable. Where an added triangle makes
+/// it non-orientable, where the build leaves its seams depends on the order its traversal
+/// meets the triangles, which a rebuild of the repaired surface need not repeat: then
+/// the CHE must still be valid and its summary say non-orientable.
+fn check_non_strict(che: &Che) {
+    if che.seam_half_edges().is_empty() {
+        check_against_fresh(che);
+    } else {
+        che.validate().unwrap();
+        assert!(!che.summary().orientable);
+    }
+}
+
+/// Random `add_triangle` sequences on non-strict CHEs, closed, with boundary and damaged,
+/// at every level: every few steps every relation, the flags and the summary equal those
+/// of a fresh non-strict build of the live triangles.
+#[test]
+fn non_strict_add_triangle_repairs_as_a_fresh_build() {
+    for level in 0..=3 {
+        let damaged = Che::from_triangles(&DAMAGED, 12, &[], BuildOptions::level(level));
+        let meshes = [
+            built_with(&sphere(6, 5), level, false),
+            built_with(&torus(5, 4), level, false),
+            built_with(&grid(5, 4), level, false),
+            damaged.unwrap(),
+        ];
+        for (k, mut che) in meshes.into_iter().enumerate() {
+            let mut rng = Rng(1000 + 10 * level as u64 + k as u64);
+            for step in 0..150 {
+                random_add(&mut che, &mut rng);
+                if step % 25 == 24 {
+                    check_non_strict(&che);
+                }
+            }
+            check_non_strict(&che);
+            let r = che.report();
+            assert!(r.non_manifold_edges > 0 && r.split_vertices > 0 && r.flipped_triangles > 0);
+        }
+    }
+}
+
+/// The same four additions on a strict and a non-strict grid: the strict one refuses each
+/// with the reason (and changes nothing), the non-strict one repairs it as its build
+/// would, counts it in the report, and equals a fresh build of its triangles.
+#[test]
+fn strict_meshes_refuse_what_non_strict_ones_repair() {
+    for level in 0..=3 {
+        let mut strict = built_with(&grid(3, 3), level, true);
+        let mut loose = built_with(&grid(3, 3), level, false);
+        let n = strict.num_half_edges() as u32;
+        let boundary = (0..n).find(|&h| strict.opposite(h) == NONE).unwrap();
+        let interior = (0..n).find(|&h| strict.opposite(h) != NONE).unwrap();
+        let (a, b) = (strict.origin(boundary), strict.target(boundary));
+        let (c, d) = (strict.origin(interior), strict.target(interior));
+        let x = strict.triangle_vertices(4)[0];
+        let dup = strict.triangle_vertices(1);
+        type Count = fn(&topomesh::BuildReport) -> usize;
+        let cases: [(&str, Count, [u32; 3], bool); 4] = [
+            ("orientation", |r| r.flipped_triangles, [a, b, NONE], true),
+            // An interior edge has a triangle on either side: the strict refusal says so.
+            (
+                "already has a triangle",
+                |r| r.non_manifold_edges,
+                [d, c, NONE],
+                true,
+            ),
+            ("second fan", |r| r.split_vertices, [x, NONE, NONE], true),
+            ("duplicates", |r| r.duplicate_triangles, dup, false),
+        ];
+        for (why, count, corners, new_vertices) in cases {
+            let fill = |che: &mut Che| {
+                let mut v = corners;
+                for y in v.iter_mut().filter(|y| **y == NONE) {
+                    *y = che.add_vertex(Some(DVec3::new(9.0, 9.0, 9.0))).unwrap();
+                }
+                assert!(new_vertices || v == corners);
+                v
+            };
+            let [p, q, r] = fill(&mut strict);
+            let before = arrays(&strict);
+            let err = strict.add_triangle(p, q, r).unwrap_err();
+            assert!(err.message.contains(why), "{why}: {}", err.message);
+            assert_eq!(arrays(&strict), before);
+            let [p, q, r] = fill(&mut loose);
+            let was = count(loose.report());
+            let t = loose.add_triangle(p, q, r).unwrap();
+            assert_eq!(count(loose.report()), was + 1, "{why} at level {level}");
+            let mut got = loose.triangle_vertices(t).map(|y| loose.vertex_origin(y));
+            let mut asked = [p, q, r].map(|y| loose.vertex_origin(y));
+            got.sort_unstable();
+            asked.sort_unstable();
+            assert_eq!(got, asked);
+            check_against_fresh(&loose);
+        }
+        assert!(strict.is_strict() && !loose.is_strict());
+    }
+}
+
+/// A level file keeps whether the CHE was built strict (header flag bit 1).
+#[test]
+fn level_files_keep_the_strict_flag() {
+    let dir = std::env::temp_dir().join(format!("topomesh-strict-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for strict in [false, true] {
+        let che = built_with(&grid(3, 3), 2, strict);
+        let path = dir.join("g.che");
+        che.save(&path).unwrap();
+        let mut back = Che::open(&path, Default::default()).unwrap();
+        assert_eq!(back.is_strict(), strict);
+        let [a, b, _] = back.triangle_vertices(0);
+        let w = back.add_vertex(Some(DVec3::ZERO)).unwrap();
+        assert_eq!(back.add_triangle(a, b, w).is_err(), strict);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

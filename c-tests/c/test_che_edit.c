@@ -33,9 +33,13 @@ static uint32_t *copy_v(const che_mesh *m, size_t *len) {
         free(v0_);                                                                         \
     } while (0)
 
+/* Built strict: additions that would need a repair are refused. */
 static void edit_at_level(uint32_t level) {
     che_mesh *m = NULL;
-    CHECK_OK(che_mesh_from_triangles(OCTA, 8, 6, OCTA_XYZ, level, &m));
+    che_build_options strict = che_build_options_default();
+    strict.level = level;
+    strict.strict = 1;
+    CHECK_OK(che_mesh_from_triangles_ex(OCTA, 8, 6, OCTA_XYZ, &strict, &m));
     const uint32_t NONE = TOPOMESH_NONE;
     uint32_t x = NONE, t = NONE;
     bool flag = true;
@@ -155,7 +159,50 @@ static void edit_at_level(uint32_t level) {
     che_mesh_free(m);
 }
 
+/* Built non-strict (the default): the same additions are repaired as the build repairs
+   its input, and the report counts them. */
+static void repair_at_level(uint32_t level) {
+    che_mesh *m = NULL;
+    CHECK_OK(che_mesh_from_triangles(OCTA, 8, 6, OCTA_XYZ, level, &m));
+    che_build_report r0, r1;
+    CHECK_OK(che_mesh_report(m, &r0));
+    uint32_t t = TOPOMESH_NONE, tv[3] = {0, 0, 0};
+    size_t len = 0;
+
+    /* A hole filled the wrong way round: the triangle is flipped to agree. */
+    CHECK_OK(che_mesh_remove_triangle(m, 0));
+    CHECK_OK(che_mesh_add_triangle(m, 0, 2, 1, &t));
+    CHECK(t == 8);
+    CHECK_OK(che_triangle_vertices(m, t, tv, 3, &len));
+    CHECK(len == 3 && tv[0] == 0 && tv[1] == 1 && tv[2] == 2);
+    CHECK_OK(che_mesh_report(m, &r1));
+    CHECK(r1.flipped_triangles == r0.flipped_triangles + 1);
+    CHECK_OK(che_mesh_validate(m));
+
+    /* A duplicate: its three edges would carry three triangles each (non-manifold), so
+       its corners are split off as the build splits them; the report lists the edges. */
+    CHECK_OK(che_mesh_add_triangle(m, 0, 1, 2, &t));
+    CHECK(t == 9);
+    CHECK_OK(che_mesh_report(m, &r1));
+    CHECK(r1.duplicate_triangles == r0.duplicate_triangles + 1);
+    CHECK(r1.non_manifold_edges == r0.non_manifold_edges + 3);
+    CHECK(r1.split_vertices == r0.split_vertices + 3);
+    uint32_t pairs[32];
+    CHECK_OK(che_mesh_report_examples(m, CHE_REPORT_KIND_NON_MANIFOLD_EDGE, pairs, 32, &len));
+    CHECK(len == 6);
+    CHECK_OK(che_mesh_validate(m));
+    che_summary s;
+    CHECK_OK(che_mesh_summary(m, &s));
+    CHECK(s.triangles == 9);
+    CHECK_OK(che_mesh_garbage_collect(m, NULL, 0, NULL, 0, NULL, 0));
+    CHECK_OK(che_mesh_validate(m));
+    che_mesh_free(m);
+}
+
 int main(void) {
-    for (uint32_t level = 0; level <= 3; level++) edit_at_level(level);
+    for (uint32_t level = 0; level <= 3; level++) {
+        edit_at_level(level);
+        repair_at_level(level);
+    }
     return finish("test_che_edit");
 }

@@ -82,6 +82,9 @@ pub struct Che {
     /// Sorted half-edges on the seams of non-orientable components, kept unpaired.
     pub(crate) seams: Vec<u32>,
     pub(crate) report: BuildReport,
+    /// Built with `BuildOptions::strict`: an edit that would make the surface
+    /// non-manifold or reverse an orientation is refused instead of repaired.
+    pub(crate) strict: bool,
     /// What the first edit materialises (see `edit/`); `None` on a CHE never edited.
     pub(crate) edit: Option<Box<edit::EditState>>,
 }
@@ -118,6 +121,13 @@ impl Che {
     }
 
     crate::util::structure::structure_accessors!(BuildReport);
+
+    /// Was the CHE built with `BuildOptions::strict`? A strict CHE refuses an
+    /// [`Che::add_triangle`] that would make an edge non-manifold or reverse an
+    /// orientation; a non-strict one repairs it as its build would, and reports it.
+    pub fn is_strict(&self) -> bool {
+        self.strict
+    }
 
     /// Raises (or lowers) the level in place. Ids do not change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {

@@ -1,6 +1,6 @@
 //! A CHE as named sections (`docs/level-files.md` lists them) and back.
 
-use super::format::{Elem, FLAG_POSITIONS, Kind};
+use super::format::{Elem, FLAG_POSITIONS, FLAG_STRICT, Kind};
 use super::read::LevelFile;
 use super::write::{Contents, Section, save};
 use super::{OpenOptions, Verify};
@@ -77,18 +77,20 @@ pub(crate) fn sections<'a>(che: &'a Che, prefix: &str) -> Vec<Section<'a>> {
 
 pub(crate) fn save_che(che: &Che, path: &Path) -> Result<()> {
     let sections = sections(che, "");
-    save(
-        path,
-        &Contents::of(Kind::Che, che.level, &che.positions, sections),
-    )
+    let mut contents = Contents::of(Kind::Che, che.level, &che.positions, sections);
+    if che.strict {
+        contents.flags |= FLAG_STRICT;
+    }
+    save(path, &contents)
 }
 
 pub(crate) fn open_che(path: &Path, options: OpenOptions) -> Result<Che> {
     let file = LevelFile::open(path, Kind::Che, options)?;
     let level = file.header.level;
     let positions = file.header.flags & FLAG_POSITIONS != 0;
-    let che = read_che(&file, "", level, positions)
+    let mut che = read_che(&file, "", level, positions)
         .map_err(|e| Error::new(e.kind, format!("{}: {}", path.display(), e.message)))?;
+    che.strict = file.header.flags & FLAG_STRICT != 0;
     if options.verify == Verify::Full {
         che.validate()
             .map_err(|e| Error::new(e.kind, format!("{}: {}", path.display(), e.message)))?;
@@ -175,6 +177,7 @@ pub(crate) fn read_che(file: &LevelFile, prefix: &str, level: u8, positions: boo
         non_manifold: file.u32s_any(&n("non_manifold"))?,
         seams: file.u32s_any(&n("seams"))?,
         report: read_report(file, prefix)?,
+        strict: false,
         edit: None,
     };
     if positions {

@@ -15,6 +15,9 @@ pub(crate) const ENTRY_BYTES: usize = 64;
 pub(crate) const NAME_BYTES: usize = 32;
 /// Header flag: the file holds vertex positions.
 pub(crate) const FLAG_POSITIONS: u32 = 1;
+/// Header flag (CHE files): the structure was built strict. A file without it (every file
+/// written before the flag existed) opens non-strict, the build's default.
+pub(crate) const FLAG_STRICT: u32 = 2;
 /// The bytes of the header the table checksum covers (the header up to the checksum).
 pub(crate) const CHECKED_HEADER: usize = 40;
 

@@ -16,6 +16,7 @@ mod split;
 pub use budget::estimated_build_bytes;
 pub use options::{BuildOptions, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts};
 pub use report::BuildReport;
+pub(crate) use split::walk_fan;
 
 use super::Che;
 use crate::NONE;
@@ -95,6 +96,7 @@ pub(crate) fn build(
     };
     progress.at(0.75, "assembling");
     let mut che = assemble(canonical, &split.copies, n_vertices, positions, report)?;
+    che.strict = options.strict;
     progress.at(0.8, "levels 2 and 3");
     finish_level(&mut che, options.level, vh)?;
     progress.at(1.0, "done");
@@ -219,6 +221,7 @@ fn assemble(
         non_manifold: c.non_manifold,
         seams: c.seams,
         report,
+        strict: false,
         edit: None,
     })
 }

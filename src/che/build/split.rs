@@ -21,7 +21,7 @@ fn set(bits: &mut [u64], i: u32) {
 /// fan) or the boundary, then clockwise from `h` for the rest of an open fan. Calls `visit`
 /// on every half-edge of the fan; returns the fan's `VH` half-edge (its outgoing boundary
 /// half-edge, or `h` when closed) and its size.
-fn walk_fan(o: &[u32], h: u32, visit: &mut impl FnMut(u32)) -> (u32, u32) {
+pub(crate) fn walk_fan(o: &[u32], h: u32, visit: &mut impl FnMut(u32)) -> (u32, u32) {
     let mut count = 1;
     visit(h);
     let mut g = h;

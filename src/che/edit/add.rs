@@ -1,4 +1,6 @@
-//! Adding a vertex, and a triangle that pairs with the boundary half-edges it meets.
+//! Adding a vertex, and a triangle that pairs with the boundary half-edges it meets: on a
+//! strict CHE refused where the surface would need a repair, on a non-strict one repaired
+//! as the build repairs its input (`add_repair.rs`).
 
 use super::checks::refuse;
 use crate::NONE;
@@ -28,10 +30,25 @@ impl Che {
     }
 
     /// Adds triangle `(a, b, c)` (counter-clockwise) and pairs each of its edges with the
-    /// boundary half-edge running the other way, if any. Refused, naming the edge or the
-    /// vertex, when an edge already has a triangle on the same side (orientation), is not a
-    /// boundary edge (it would become non-manifold), or is flagged non-manifold or seam,
-    /// and when a corner would get a second fan (a non-manifold vertex).
+    /// boundary half-edge running the other way, if any, and returns its id. Refused, with
+    /// the reason, for a removed or out-of-range vertex and a degenerate triangle (the
+    /// build drops those).
+    ///
+    /// On a CHE built strict ([`Che::is_strict`]) it is also refused, naming the edge or
+    /// the vertex, when it duplicates a triangle, when an edge already has a triangle on
+    /// the same side (orientation), is not a boundary edge (it would become non-manifold)
+    /// or is flagged non-manifold or seam, and when a corner would get a second fan (a
+    /// non-manifold vertex).
+    ///
+    /// On a CHE built non-strict (the default) those cases are repaired by the build's
+    /// rules, so that the result is the structure a fresh non-strict build of the live
+    /// triangles gives, and counted in [`Che::report`]: a triangle against its
+    /// neighbours' orientation is flipped; an edge that would carry three or more
+    /// triangles is non-manifold, its half-edges unpaired and flagged, and a corner whose
+    /// triangles then form several fans is split, each fan but the one of its smallest
+    /// half-edge moving to a new vertex (so the returned triangle's corners may be new
+    /// vertices, see [`Che::triangle_vertices`]); the half-edges the split leaves on one
+    /// vertex pair are then paired again, as a rebuild pairs them; a duplicate is kept.
     pub fn add_triangle(&mut self, a: u32, b: u32, c: u32) -> Result<u32> {
         self.edit_with(|m| {
             let corners = [a, b, c];
@@ -44,34 +61,44 @@ impl Che {
             if (m.num_triangles() + 1) * 3 >= NONE as usize {
                 return Err(Error::too_large("add_triangle: no half-edge id left"));
             }
-            if let Some(t) = m.triangle_on(a, b, c) {
-                return refuse(format!("triangle ({a}, {b}, {c}) duplicates triangle {t}"));
+            if m.strict {
+                m.add_strict(corners)
+            } else {
+                m.add_repaired(corners)
             }
-            let mut across = [NONE; 3];
-            for i in 0..3 {
-                across[i] = m.partner(corners[i], corners[(i + 1) % 3])?;
-            }
-            for i in 0..3 {
-                let (x, incoming, outgoing) = (corners[i], across[(i + 2) % 3], across[i]);
-                m.check_fan(x, incoming, outgoing)?;
-            }
-            m.make_room(1, 0, 3)?;
-            let t = m.push_triangle(corners, NONE);
-            for (i, &g) in across.iter().enumerate() {
-                let h = first(t) + i as u32;
-                let e = if g == NONE { NONE } else { m.edge_id(g) };
-                m.link(h, g);
-                m.name_edge(h, e);
-            }
-            for (i, &x) in corners.iter().enumerate() {
-                m.fix_vh(x, first(t) + i as u32);
-            }
-            Ok(t)
         })
     }
 
+    /// [`Che::add_triangle`] on a strict CHE, after the checks every CHE makes.
+    fn add_strict(&mut self, corners: [u32; 3]) -> Result<u32> {
+        let [a, b, c] = corners;
+        if let Some(t) = self.triangle_on(a, b, c) {
+            return refuse(format!("triangle ({a}, {b}, {c}) duplicates triangle {t}"));
+        }
+        let mut across = [NONE; 3];
+        for i in 0..3 {
+            across[i] = self.partner(corners[i], corners[(i + 1) % 3])?;
+        }
+        for i in 0..3 {
+            let (x, incoming, outgoing) = (corners[i], across[(i + 2) % 3], across[i]);
+            self.check_fan(x, incoming, outgoing)?;
+        }
+        self.make_room(1, 0, 3)?;
+        let t = self.push_triangle(corners, NONE);
+        for (i, &g) in across.iter().enumerate() {
+            let h = first(t) + i as u32;
+            let e = if g == NONE { NONE } else { self.edge_id(g) };
+            self.link(h, g);
+            self.name_edge(h, e);
+        }
+        for (i, &x) in corners.iter().enumerate() {
+            self.fix_vh(x, first(t) + i as u32);
+        }
+        Ok(t)
+    }
+
     /// A live triangle on the vertices `a`, `b`, `c` (either orientation), if any.
-    fn triangle_on(&self, a: u32, b: u32, c: u32) -> Option<u32> {
+    pub(super) fn triangle_on(&self, a: u32, b: u32, c: u32) -> Option<u32> {
         self.outgoing(a)
             .into_iter()
             .map(crate::che::ids::tri)

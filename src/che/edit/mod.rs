@@ -22,6 +22,7 @@
 //! needs, O(T), like the queries at those levels.
 
 mod add;
+mod add_repair;
 mod arrays;
 mod boundary;
 mod checks;

@@ -337,6 +337,8 @@ impl Chf {
             if g != NONE {
                 arrays::set_opposite(self, 4 * bound + k as u32, g);
                 arrays::set_opposite(self, g, 4 * bound + k as u32);
+            } else {
+                self.note_unpaired(4 * bound + k as u32);
             }
         }
         self.renumber_faces(bound, plan.add.len(), rep_faces);
@@ -355,9 +357,6 @@ impl Chf {
         }
         self.num_faces = self.edit.as_ref().expect("edited").face_hf.len();
         self.num_edges = self.edit.as_ref().expect("edited").edge_he.len();
-        if self.level >= 3 {
-            self.boundary = Some(crate::chf::build::level3::build(self, 1, 0)?);
-        }
         Ok((bound..bound + plan.add.len() as u32).collect())
     }
 
@@ -377,7 +376,20 @@ impl Chf {
         try_reserve(&mut s.slot_edge, 6 * n, "the edge ids")?;
         try_reserve(&mut s.face_hf, 4 * n, "the face half-faces")?;
         try_reserve(&mut s.edge_he, 6 * n, "the edge half-edges")?;
-        try_reserve(&mut s.vertex_removed, 1, "the vertex marks")
+        try_reserve(&mut s.vertex_removed, 1, "the vertex marks")?;
+        if self.level >= 3 {
+            let s = self.edit.as_mut().expect("edited");
+            s.boundary.settle(&self.o)?;
+            s.boundary.reserve(4 * (plan.remove.len() + n))?;
+        }
+        Ok(())
+    }
+
+    /// Half-face `hf` may have become unpaired: the level-3 boundary rebuild looks at it.
+    fn note_unpaired(&mut self, hf: u32) {
+        if self.level >= 3 {
+            self.edit.as_mut().expect("edited").boundary.note(hf);
+        }
     }
 
     /// Marks `remove` removed and unpairs their neighbours; returns the faces that live on
@@ -396,6 +408,7 @@ impl Chf {
                 if g != NONE && g != hf && !s.tet_removed[tet(g) as usize] {
                     reps.push((f, g));
                     arrays::set_opposite(self, g, NONE);
+                    self.note_unpaired(g);
                 } else if s.face_hf[f as usize] != NONE {
                     s.face_hf[f as usize] = NONE;
                     s.live_faces -= 1;

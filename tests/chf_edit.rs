@@ -545,3 +545,45 @@ fn exports_and_files_wait_for_garbage_collection() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A removed vertex is refused by every operation naming a vertex, at every level, in
+/// every position of a new tetrahedron: an out-of-range status naming it, the mesh as it
+/// was.
+#[test]
+fn a_removed_vertex_is_refused_by_every_operation_taking_one() {
+    for level in 0..=3 {
+        let mut chf = cube(2, 1, 1, false).build(level, true);
+        let s = (0..chf.num_vertices() as u32)
+            .find(|&v| chf.remove_vertex(v).is_ok())
+            .expect("a removable vertex");
+        assert!(chf.is_vertex_removed(s));
+        let t = (0..chf.num_tetrahedra() as u32)
+            .find(|&t| !chf.is_tetrahedron_removed(t))
+            .expect("a live tetrahedron");
+        let live = chf.tetrahedron_vertices(t);
+        let before = format!("{chf:?}");
+        let refused = |r: Result<(), topomesh::Error>, what: &str| {
+            let err = r.expect_err(what);
+            assert_eq!(err.kind, topomesh::ErrorKind::OutOfRange, "{what}: {err}");
+            assert!(
+                err.message.contains(&format!("vertex {s} is removed")),
+                "{what}: {err}"
+            );
+        };
+        for i in 0..4 {
+            let mut q = live;
+            q[i] = s;
+            refused(chf.check_add_tetrahedron(q), "check_add_tetrahedron");
+            refused(chf.add_tetrahedron(q).map(|_| ()), "add_tetrahedron");
+        }
+        refused(chf.check_remove_vertex(s), "check_remove_vertex");
+        refused(chf.remove_vertex(s), "remove_vertex");
+        refused(chf.check_live_vertex(s), "check_live_vertex");
+        assert_eq!(
+            before,
+            format!("{chf:?}"),
+            "level {level}: a refusal changed the mesh"
+        );
+        chf.validate().unwrap();
+    }
+}

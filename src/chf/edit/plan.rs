@@ -4,7 +4,7 @@
 //! plan by local updates.
 
 use super::arrays;
-use super::state::{canonical_half_edge, removed};
+use super::state::canonical_half_edge;
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::geometry::orient_of;
@@ -152,10 +152,10 @@ impl Chf {
         };
         for q in &plan.add {
             for (i, &x) in q.iter().enumerate() {
-                if x >= n {
-                    self.check_vertex(x)?;
+                // The vertex the plan creates is the one id past the mesh's.
+                if plan.new_vertex.is_none() || x != n - 1 {
+                    self.check_live_vertex(x)?;
                 }
-                removed(self.is_vertex_removed(x), "vertex", x)?;
                 if q[..i].contains(&x) {
                     return Err(refuse(format!("tetrahedron {q:?} repeats vertex {x}")));
                 }

@@ -587,3 +587,31 @@ fn a_removed_vertex_is_refused_by_every_operation_taking_one() {
         chf.validate().unwrap();
     }
 }
+
+/// Without positions, a new tetrahedron is turned over when only that makes its faces run
+/// opposite to their neighbours', kept as given when it fits, and a refusal for another
+/// reason is the refusal of the order given.
+#[test]
+fn add_tetrahedron_without_positions_turns_over_to_fit() {
+    for level in 0..=3 {
+        let mut chf = cube(2, 1, 1, false).build(level, false);
+        let t = (0..chf.num_tetrahedra() as u32)
+            .find(|&t| chf.check_remove_tetrahedron(t).is_ok())
+            .expect("a removable tetrahedron");
+        let [a, b, c, d] = chf.tetrahedron_vertices(t);
+        chf.remove_tetrahedron(t).unwrap();
+        let n = chf.add_tetrahedron([a, b, d, c]).unwrap();
+        assert_eq!(chf.tetrahedron_vertices(n), [a, b, c, d], "level {level}");
+        check(&chf, &format!("turned over at level {level}"), false);
+        let err = chf.add_tetrahedron([a, b, d, c]).unwrap_err();
+        assert!(err.message.contains("already exists"), "{err}");
+        chf.remove_tetrahedron(n).unwrap();
+        let n = chf.add_tetrahedron([b, a, d, c]).unwrap();
+        assert_eq!(
+            chf.tetrahedron_vertices(n),
+            [b, a, d, c],
+            "level {level}: as given"
+        );
+        check(&chf, &format!("as given at level {level}"), false);
+    }
+}

@@ -71,6 +71,21 @@ impl After<'_> {
         }
         out
     }
+
+    /// The tetrahedra other than `t` holding every vertex of `key` after the edit.
+    fn holders(&self, t: u32, key: [u32; 3]) -> Vec<u32> {
+        self.star(key[0])
+            .into_iter()
+            .filter(|&s| s != t && key.iter().all(|x| self.verts(s).contains(x)))
+            .collect()
+    }
+}
+
+/// The local index of the vertex of `q` not in `key`.
+fn fourth(q: [u32; 4], key: [u32; 3]) -> u32 {
+    (0..4)
+        .find(|&j| !key.contains(&q[j as usize]))
+        .expect("a fourth vertex")
 }
 
 /// The vertex triple of face `i` of `q`, in its outward order.
@@ -178,11 +193,7 @@ impl Chf {
             for i in 0..4 {
                 let c = cycle(q, i);
                 let key = sorted3(c);
-                let holders: Vec<u32> = after
-                    .star(key[0])
-                    .into_iter()
-                    .filter(|&s| s != t && key.iter().all(|x| after.verts(s).contains(x)))
-                    .collect();
+                let holders = after.holders(t, key);
                 if holders.len() > 1 {
                     return Err(Error::non_manifold(format!(
                         "refused: face {key:?} would have three tetrahedra"
@@ -193,9 +204,7 @@ impl Chf {
                 if key.iter().chain([&q[i as usize]]).all(|x| sv.contains(x)) {
                     return Err(refuse(format!("tetrahedron {q:?} already exists")));
                 }
-                let j = (0..4)
-                    .find(|&j| !key.contains(&sv[j as usize]))
-                    .expect("a fourth vertex");
+                let j = fourth(sv, key);
                 let g = 4 * s + j;
                 if s < after.bound
                     && (self.non_manifold.binary_search(&g).is_ok()
@@ -212,6 +221,33 @@ impl Chf {
             }
         }
         Ok(new_o)
+    }
+
+    /// Does a face of the new tetrahedron `q` (live, distinct vertices) meet the one
+    /// tetrahedron holding it running the same way, so that `q` could pair only turned
+    /// over? The orientation decision of an added tetrahedron without positions.
+    pub(crate) fn meets_a_face_the_same_way(&self, q: [u32; 4]) -> Result<bool> {
+        let plan = Plan {
+            add: vec![q],
+            ..Plan::default()
+        };
+        let after = After {
+            chf: self,
+            plan: &plan,
+            bound: self.num_tetrahedra() as u32,
+            view: self.try_view(Need::NOTHING)?,
+        };
+        for i in 0..4 {
+            let c = cycle(q, i);
+            let key = sorted3(c);
+            if let [s] = after.holders(after.bound, key)[..] {
+                let sv = after.verts(s);
+                if same_way(c, cycle(sv, fourth(sv, key))) {
+                    return Ok(true);
+                }
+            }
+        }
+        Ok(false)
     }
 
     /// Twin of half-face `hf` (post-edit id) after the edit.

@@ -205,10 +205,80 @@ fn check(chf: &Chf, at: &str, full: bool) {
     if chf.is_edited() {
         assert_eq!(chf.summary(), f.summary(), "{at}: summary");
     }
+    check_boundary(chf, &f, &maps, at);
     assert_eq!(chf.num_live_tetrahedra(), f.num_tetrahedra(), "{at}");
     assert_eq!(chf.num_live_faces(), f.num_faces(), "{at}");
     assert_eq!(chf.num_live_edges(), f.num_edges(), "{at}");
     assert_eq!(chf.num_live_vertices(), f.num_vertices(), "{at}");
+}
+
+/// The level-3 boundary surface of `chf` equals a fresh build's. Collection keeps the
+/// order of the live tetrahedra and vertices, so boundary triangle `k` and boundary vertex
+/// `b` keep their ranks: every list is compared element by element through the maps.
+fn check_boundary(chf: &Chf, f: &Chf, m: &GarbageMaps, at: &str) {
+    if chf.level() < 3 {
+        return;
+    }
+    let (mt, mv) = (&m.tetrahedra, &m.vertices);
+    let hf_map = |h: u32| 4 * mt[(h / 4) as usize] + h % 4;
+    let mine: Vec<u32> = chf
+        .boundary_half_faces()
+        .iter()
+        .map(|&h| hf_map(h))
+        .collect();
+    assert_eq!(
+        mine,
+        &f.boundary_half_faces()[..],
+        "{at}: boundary half-faces"
+    );
+    let mine = map_all(mv, chf.boundary_vertices().iter().copied());
+    assert_eq!(mine, &f.boundary_vertices()[..], "{at}: boundary vertices");
+    assert_eq!(
+        chf.boundary_vertex_components(),
+        f.boundary_vertex_components(),
+        "{at}: boundary components"
+    );
+    let counts = |c: &Chf| {
+        [
+            c.num_boundary_triangles(),
+            c.num_boundary_faces(),
+            c.num_boundary_vertices(),
+            c.num_boundary_components(),
+        ]
+    };
+    assert_eq!(counts(chf), counts(f), "{at}: boundary counts");
+    let (a, b) = (
+        chf.boundary().expect("level 3"),
+        f.boundary().expect("level 3"),
+    );
+    assert_eq!(a.summary(), b.summary(), "{at}: boundary surface summary");
+    assert_eq!(a.num_vertices(), b.num_vertices(), "{at}: surface vertices");
+    for k in 0..a.num_triangles() as u32 {
+        let volume = |c: &Chf, s: &topomesh::che::Che| {
+            s.triangle_vertices(k)
+                .map(|x| c.boundary_vertex_volume_vertex(x))
+        };
+        let mapped = volume(chf, a).map(|x| mv[x as usize]);
+        assert_eq!(mapped, volume(f, b), "{at}: boundary triangle {k}");
+        assert_eq!(a.triangle_vertices(k), b.triangle_vertices(k), "{at}: {k}");
+    }
+    for hf in 0..chf.num_half_faces() as u32 {
+        if !chf.is_tetrahedron_removed(hf / 4) {
+            let (x, y) = (chf.boundary_triangle(hf), f.boundary_triangle(hf_map(hf)));
+            assert_eq!(x, y, "{at}: boundary triangle of half-face {hf}");
+        }
+    }
+    for v in 0..chf.num_vertices() as u32 {
+        if mv[v as usize] != NONE {
+            let y = f.boundary_vertex(mv[v as usize]);
+            assert_eq!(chf.boundary_vertex(v), y, "{at}: boundary vertex of {v}");
+        }
+    }
+    assert_eq!(
+        chf.boundary_surface().expect("surface").summary(),
+        b.summary(),
+        "{at}: boundary_surface"
+    );
 }
 
 /// A random id below `n`, live by `live` when it can find one, else anything (maybe
@@ -474,4 +544,74 @@ fn exports_and_files_wait_for_garbage_collection() {
         chf.save(dir.join("c.chf")).unwrap();
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A removed vertex is refused by every operation naming a vertex, at every level, in
+/// every position of a new tetrahedron: an out-of-range status naming it, the mesh as it
+/// was.
+#[test]
+fn a_removed_vertex_is_refused_by_every_operation_taking_one() {
+    for level in 0..=3 {
+        let mut chf = cube(2, 1, 1, false).build(level, true);
+        let s = (0..chf.num_vertices() as u32)
+            .find(|&v| chf.remove_vertex(v).is_ok())
+            .expect("a removable vertex");
+        assert!(chf.is_vertex_removed(s));
+        let t = (0..chf.num_tetrahedra() as u32)
+            .find(|&t| !chf.is_tetrahedron_removed(t))
+            .expect("a live tetrahedron");
+        let live = chf.tetrahedron_vertices(t);
+        let before = format!("{chf:?}");
+        let refused = |r: Result<(), topomesh::Error>, what: &str| {
+            let err = r.expect_err(what);
+            assert_eq!(err.kind, topomesh::ErrorKind::OutOfRange, "{what}: {err}");
+            assert!(
+                err.message.contains(&format!("vertex {s} is removed")),
+                "{what}: {err}"
+            );
+        };
+        for i in 0..4 {
+            let mut q = live;
+            q[i] = s;
+            refused(chf.check_add_tetrahedron(q), "check_add_tetrahedron");
+            refused(chf.add_tetrahedron(q).map(|_| ()), "add_tetrahedron");
+        }
+        refused(chf.check_remove_vertex(s), "check_remove_vertex");
+        refused(chf.remove_vertex(s), "remove_vertex");
+        refused(chf.check_live_vertex(s), "check_live_vertex");
+        assert_eq!(
+            before,
+            format!("{chf:?}"),
+            "level {level}: a refusal changed the mesh"
+        );
+        chf.validate().unwrap();
+    }
+}
+
+/// Without positions, a new tetrahedron is turned over when only that makes its faces run
+/// opposite to their neighbours', kept as given when it fits, and a refusal for another
+/// reason is the refusal of the order given.
+#[test]
+fn add_tetrahedron_without_positions_turns_over_to_fit() {
+    for level in 0..=3 {
+        let mut chf = cube(2, 1, 1, false).build(level, false);
+        let t = (0..chf.num_tetrahedra() as u32)
+            .find(|&t| chf.check_remove_tetrahedron(t).is_ok())
+            .expect("a removable tetrahedron");
+        let [a, b, c, d] = chf.tetrahedron_vertices(t);
+        chf.remove_tetrahedron(t).unwrap();
+        let n = chf.add_tetrahedron([a, b, d, c]).unwrap();
+        assert_eq!(chf.tetrahedron_vertices(n), [a, b, c, d], "level {level}");
+        check(&chf, &format!("turned over at level {level}"), false);
+        let err = chf.add_tetrahedron([a, b, d, c]).unwrap_err();
+        assert!(err.message.contains("already exists"), "{err}");
+        chf.remove_tetrahedron(n).unwrap();
+        let n = chf.add_tetrahedron([b, a, d, c]).unwrap();
+        assert_eq!(
+            chf.tetrahedron_vertices(n),
+            [b, a, d, c],
+            "level {level}: as given"
+        );
+        check(&chf, &format!("as given at level {level}"), false);
+    }
 }

@@ -211,6 +211,22 @@ static void remove_and_marks(chf_mesh *m) {
     CHECK_OK(chf_vertex_is_removed(m, v, &flag));
     CHECK(flag);
     CHECK_REFUSED(m, chf_mesh_remove_vertex(m, v), TOPOMESH_STATUS_OUT_OF_RANGE, "removed");
+    CHECK_REFUSED(m, chf_mesh_check_remove_vertex(m, v), TOPOMESH_STATUS_OUT_OF_RANGE,
+                  "is removed");
+    /* A new tetrahedron over a removed vertex, in every position, beside live ones. */
+    uint32_t t = 0, q[4];
+    size_t len = 0;
+    for (bool gone = true; gone; t++) CHECK_OK(chf_tetrahedron_is_removed(m, t, &gone));
+    CHECK_OK(chf_tetrahedron_vertices(m, t - 1, q, 4, &len));
+    for (int i = 0; i < 4; i++) {
+        uint32_t r[4] = {q[0], q[1], q[2], q[3]}, out = NONE_;
+        r[i] = v;
+        CHECK_REFUSED(m, chf_mesh_add_tetrahedron(m, r, &out), TOPOMESH_STATUS_OUT_OF_RANGE,
+                      "is removed");
+        CHECK_REFUSED(m, chf_mesh_check_add_tetrahedron(m, r), TOPOMESH_STATUS_OUT_OF_RANGE,
+                      "is removed");
+        CHECK(out == NONE_);
+    }
     CHECK_REFUSED(m, chf_mesh_check_remove_vertex(m, 999), TOPOMESH_STATUS_OUT_OF_RANGE,
                   "999");
     CHECK_REFUSED(m, chf_mesh_remove_vertex(m, NONE_), TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");

@@ -78,9 +78,13 @@ fn sections(chf: &Chf) -> Vec<Section<'_>> {
             b.true_faces as u64,
         ];
         out.push(Section::u64s("boundary", scalars));
-        out.push(Section::u64s("boundary_bits", b.bits.words()));
+        // A collected CHF is a fresh build: its boundary keeps both directories.
+        fn words(b: &Option<RankBits>) -> &[u64] {
+            b.as_ref().map_or(&[], RankBits::words)
+        }
+        out.push(Section::u64s("boundary_bits", words(&b.bits)));
         out.push(Section::u32s("boundary_half_faces", &b.half_faces[..]));
-        out.push(Section::u64s("boundary_vertex_bits", b.vertex_bits.words()));
+        out.push(Section::u64s("boundary_vertex_bits", words(&b.vertex_bits)));
         out.push(Section::u32s("boundary_vertices", &b.vertices[..]));
         out.push(Section::u32s("boundary_component", &b.component[..]));
         out.extend(super::che::sections(&b.che, "b."));
@@ -205,9 +209,9 @@ fn read_boundary(file: &LevelFile, h: usize, n_vertices: usize) -> Result<Bounda
     let che = read_che(file, "b.", level, file.has("b.positions"))?;
     Ok(Boundary {
         che,
-        bits,
+        bits: Some(bits),
         half_faces,
-        vertex_bits,
+        vertex_bits: Some(vertex_bits),
         vertices,
         component,
         components: scalars[1] as usize,

@@ -13,7 +13,10 @@
 //! array); volume vertex -> boundary vertex (a rank over the boundary vertices) and back
 //! (an array); a boundary-component id per boundary vertex: components of the boundary
 //! triangles joined through shared vertices, numbered in order of their first triangle.
-//! Below level 3 every map is computed for the call (O(T)).
+//! Below level 3 every map is computed for the call (O(T)). An edited CHF at level 3 keeps
+//! no bit directories over all half-faces and vertices: its boundary is rebuilt from the
+//! boundary half-faces alone (see `chf/edit/boundary.rs`), and its lookups binary-search the
+//! sorted lists (O(log B)) instead of taking a rank.
 
 use crate::NONE;
 use crate::che::{BuildOptions, Che};
@@ -29,12 +32,14 @@ use std::borrow::Cow;
 #[derive(Clone, Debug)]
 pub(crate) struct Boundary {
     pub che: Che,
-    /// Bit `hf` set on unpaired half-faces; the triangle is the rank.
-    pub bits: RankBits,
+    /// Bit `hf` set on unpaired half-faces; the triangle is the rank. `None` on a boundary
+    /// rebuilt after edits (`half_faces` is searched instead).
+    pub bits: Option<RankBits>,
     /// Triangle -> half-face.
     pub half_faces: Vec<u32>,
-    /// Bit `v` set on boundary vertices; the boundary vertex id is the rank.
-    pub vertex_bits: RankBits,
+    /// Bit `v` set on boundary vertices; the boundary vertex id is the rank. `None` on a
+    /// boundary rebuilt after edits (`vertices` is searched instead).
+    pub vertex_bits: Option<RankBits>,
     /// Boundary vertex -> volume vertex.
     pub vertices: Vec<u32>,
     /// Boundary vertex -> boundary component.
@@ -47,10 +52,26 @@ pub(crate) struct Boundary {
 
 impl Boundary {
     pub fn memory_bytes(&self) -> usize {
+        let bits = |b: &Option<RankBits>| b.as_ref().map_or(0, |b| b.memory_bytes());
         self.che.memory_bytes().topology
-            + self.bits.memory_bytes()
-            + self.vertex_bits.memory_bytes()
+            + bits(&self.bits)
+            + bits(&self.vertex_bits)
             + 4 * (self.half_faces.len() + self.vertices.len() + self.component.len())
+    }
+
+    /// The triangle of half-face `hf`, `NONE` when it is paired.
+    fn triangle_of(&self, hf: u32) -> u32 {
+        position(self.bits.as_ref(), &self.half_faces, hf)
+    }
+}
+
+/// The rank of `x` among the set members `sorted` (their bits `bits` when kept), `NONE`
+/// when `x` is not one.
+fn position(bits: Option<&RankBits>, sorted: &[u32], x: u32) -> u32 {
+    match bits {
+        Some(b) if b.get(x as usize) => b.rank(x as usize) as u32,
+        Some(_) => NONE,
+        None => sorted.binary_search(&x).map_or(NONE, |k| k as u32),
     }
 }
 
@@ -58,8 +79,16 @@ impl Boundary {
 /// boundary vertices.
 struct Parts {
     half_faces: Vec<u32>,
-    vertex_bits: RankBits,
+    /// `None` when built from the boundary half-faces alone (`vertices` is searched).
+    vertex_bits: Option<RankBits>,
     vertices: Vec<u32>,
+}
+
+impl Parts {
+    /// The boundary vertex of volume vertex `x`, `NONE` off the boundary.
+    fn vertex_of(&self, x: u32) -> u32 {
+        position(self.vertex_bits.as_ref(), &self.vertices, x)
+    }
 }
 
 fn parts(chf: &Chf) -> Parts {
@@ -86,7 +115,23 @@ fn try_parts(chf: &Chf) -> Result<Parts> {
     vertex_bits.ones_map(&mut vertices, |v| v as u32, "the boundary vertices")?;
     Ok(Parts {
         half_faces,
-        vertex_bits,
+        vertex_bits: Some(vertex_bits),
+        vertices,
+    })
+}
+
+/// The parts from the boundary half-faces alone (increasing): O(B log B) for B of them,
+/// whatever the size of the mesh.
+fn parts_of(chf: &Chf, half_faces: Vec<u32>) -> Result<Parts> {
+    let mut vertices = try_vec(3 * half_faces.len(), NONE, "the boundary vertices")?;
+    for (k, &hf) in half_faces.iter().enumerate() {
+        vertices[3 * k..3 * k + 3].copy_from_slice(&face_cycle(&chf.v, hf));
+    }
+    vertices.sort_unstable();
+    vertices.dedup();
+    Ok(Parts {
+        half_faces,
+        vertex_bits: None,
         vertices,
     })
 }
@@ -94,6 +139,26 @@ fn try_parts(chf: &Chf) -> Result<Parts> {
 /// The boundary, its CHE built on up to `threads` threads.
 pub(crate) fn build(chf: &Chf, threads: usize, memory_limit_bytes: u64) -> Result<Boundary> {
     let p = try_parts(chf)?;
+    let n_hf = chf.v.len();
+    let mut words = try_vec(n_hf.div_ceil(64), 0u64, "the boundary half-face bits")?;
+    for &hf in &p.half_faces {
+        words[hf as usize >> 6] |= 1 << (hf & 63);
+    }
+    let bits = RankBits::from_words(words, n_hf)?;
+    assemble(chf, p, Some(bits), threads, memory_limit_bytes)
+}
+
+/// The boundary of an edited CHF from its unpaired half-faces `half_faces` (increasing),
+/// without bit directories: O(B log B) for B of them, never a scan of the mesh.
+pub(crate) fn build_from_half_faces(chf: &Chf, half_faces: Vec<u32>) -> Result<Boundary> {
+    let p = parts_of(chf, half_faces)?;
+    assemble(chf, p, None, 1, 0)
+}
+
+/// The surface, the components and the counts of the parts `p`.
+fn assemble(
+    chf: &Chf, p: Parts, bits: Option<RankBits>, threads: usize, memory_limit_bytes: u64,
+) -> Result<Boundary> {
     let options = BuildOptions {
         level: 3,
         strict: false,
@@ -102,12 +167,6 @@ pub(crate) fn build(chf: &Chf, threads: usize, memory_limit_bytes: u64) -> Resul
         weld_tolerance: 0.0,
     };
     let che = surface(chf, &p, options)?;
-    let n_hf = chf.v.len();
-    let mut words = try_vec(n_hf.div_ceil(64), 0u64, "the boundary half-face bits")?;
-    for &hf in &p.half_faces {
-        words[hf as usize >> 6] |= 1 << (hf & 63);
-    }
-    let bits = RankBits::from_words(words, n_hf)?;
     let (component, components) = components(chf, &p)?;
     let true_faces = p.half_faces.len() - flagged_count(chf)?;
     Ok(Boundary {
@@ -128,7 +187,7 @@ fn flagged_count(chf: &Chf) -> Result<usize> {
 }
 
 fn surface(chf: &Chf, p: &Parts, options: BuildOptions) -> Result<Che> {
-    let local = |x: u32| p.vertex_bits.rank(x as usize) as u32;
+    let local = |x: u32| p.vertex_of(x);
     let tris = p
         .half_faces
         .iter()
@@ -148,7 +207,7 @@ fn surface(chf: &Chf, p: &Parts, options: BuildOptions) -> Result<Che> {
 fn components(chf: &Chf, p: &Parts) -> Result<(Vec<u32>, usize)> {
     let n = p.vertices.len();
     let mut dsu = Dsu::new(n)?;
-    let local = |x: u32| p.vertex_bits.rank(x as usize) as u32;
+    let local = |x: u32| p.vertex_of(x);
     for &hf in &p.half_faces {
         let [a, b, c] = face_cycle(&chf.v, hf).map(local);
         dsu.union(a, b);
@@ -171,15 +230,33 @@ fn components(chf: &Chf, p: &Parts) -> Result<(Vec<u32>, usize)> {
 }
 
 impl Chf {
+    /// The level-3 boundary: the built one, or on an edited CHF the one rebuilt from the
+    /// boundary half-faces at the first query after an edit (O(B log B)); `None` below
+    /// level 3.
+    pub(crate) fn try_stored(&self) -> Result<Option<&Boundary>> {
+        if self.level < 3 {
+            return Ok(None);
+        }
+        match &self.edit {
+            Some(s) => s.surface(self).map(Some),
+            None => Ok(self.boundary.as_ref()),
+        }
+    }
+
+    /// [`Chf::try_stored`] for the queries that have no error to return.
+    fn stored(&self) -> Option<&Boundary> {
+        or_panic(self.try_stored())
+    }
+
     /// The boundary surface, at level 3.
     pub fn boundary(&self) -> Option<&Che> {
-        self.boundary.as_ref().map(|b| &b.che)
+        self.stored().map(|b| &b.che)
     }
 
     /// The boundary surface as a new level-3 CHE, at any level (a copy of the stored one at
     /// level 3). O(T).
     pub fn boundary_surface(&self) -> Result<Che> {
-        if let Some(b) = &self.boundary {
+        if let Some(b) = self.try_stored()? {
             return Ok(b.che.clone());
         }
         let options = BuildOptions {
@@ -192,7 +269,7 @@ impl Chf {
     /// Unpaired half-faces in increasing order: triangle `k` of the boundary surface is the
     /// `k`-th. Borrowed at level 3.
     pub fn boundary_half_faces(&self) -> Cow<'_, [u32]> {
-        match &self.boundary {
+        match self.stored() {
             Some(b) => Cow::Borrowed(&b.half_faces),
             None => Cow::Owned(parts(self).half_faces),
         }
@@ -201,7 +278,7 @@ impl Chf {
     /// The triangles of the boundary surface: every unpaired half-face (boundary faces,
     /// and the half-faces of non-manifold faces and seams). O(1) at level 3, O(T) below.
     pub fn num_boundary_triangles(&self) -> usize {
-        match &self.boundary {
+        match self.stored() {
             Some(b) => b.half_faces.len(),
             None => {
                 let view = self.view(Need::NOTHING);
@@ -214,7 +291,7 @@ impl Chf {
     /// non-manifold ([`Chf::num_non_manifold_half_faces`]) nor seams
     /// ([`Chf::num_seam_half_faces`]). O(1) at level 3, O(T) below.
     pub fn num_boundary_faces(&self) -> usize {
-        match &self.boundary {
+        match self.stored() {
             Some(b) => b.true_faces,
             None => self.num_boundary_triangles() - or_panic(flagged_count(self)),
         }
@@ -234,9 +311,8 @@ impl Chf {
     /// The boundary triangle of half-face `hf`, `NONE` when `hf` is interior. O(1) at
     /// level 3, O(T) below.
     pub fn boundary_triangle(&self, hf: u32) -> u32 {
-        match &self.boundary {
-            Some(b) if b.bits.get(hf as usize) => b.bits.rank(hf as usize) as u32,
-            Some(_) => NONE,
+        match self.stored() {
+            Some(b) => b.triangle_of(hf),
             None => {
                 let list = parts(self).half_faces;
                 list.binary_search(&hf).map_or(NONE, |k| k as u32)
@@ -256,7 +332,7 @@ impl Chf {
     /// Boundary vertices (the vertices of the boundary surface before its own split).
     /// O(1) at level 3, O(T) below.
     pub fn num_boundary_vertices(&self) -> usize {
-        match &self.boundary {
+        match self.stored() {
             Some(b) => b.vertices.len(),
             None => parts(self).vertices.len(),
         }
@@ -264,7 +340,7 @@ impl Chf {
 
     /// Boundary vertex -> volume vertex, in increasing order. Borrowed at level 3.
     pub fn boundary_vertices(&self) -> Cow<'_, [u32]> {
-        match &self.boundary {
+        match self.stored() {
             Some(b) => Cow::Borrowed(&b.vertices),
             None => Cow::Owned(parts(self).vertices),
         }
@@ -273,16 +349,9 @@ impl Chf {
     /// The boundary-surface vertex of volume vertex `v`, `NONE` off the boundary. O(1) at
     /// level 3, O(T) below.
     pub fn boundary_vertex(&self, v: u32) -> u32 {
-        let at = |bits: &RankBits| {
-            if bits.get(v as usize) {
-                bits.rank(v as usize) as u32
-            } else {
-                NONE
-            }
-        };
-        match &self.boundary {
-            Some(b) => at(&b.vertex_bits),
-            None => at(&parts(self).vertex_bits),
+        match self.stored() {
+            Some(b) => position(b.vertex_bits.as_ref(), &b.vertices, v),
+            None => parts(self).vertex_of(v),
         }
     }
 
@@ -297,7 +366,7 @@ impl Chf {
                 NONE
             }
         };
-        match &self.boundary {
+        match self.stored() {
             Some(s) => map(&s.che, &s.vertices),
             None => match self.boundary_surface() {
                 Ok(che) => map(&che, &parts(self).vertices),
@@ -319,7 +388,7 @@ impl Chf {
         if b == NONE {
             return Ok(NONE);
         }
-        Ok(match &self.boundary {
+        Ok(match self.try_stored()? {
             Some(s) => s.component[b as usize],
             None => components(self, &try_parts(self)?)?.0[b as usize],
         })
@@ -328,7 +397,7 @@ impl Chf {
     /// The boundary component of every boundary vertex (indexed like
     /// [`Chf::boundary_vertices`]), at level 3.
     pub fn boundary_vertex_components(&self) -> Option<&[u32]> {
-        self.boundary.as_ref().map(|b| &b.component[..])
+        self.stored().map(|b| &b.component[..])
     }
 
     /// Number of boundary components (of the structure: after the vertex split). O(1) at
@@ -340,7 +409,7 @@ impl Chf {
     /// [`Chf::num_boundary_components`], or an error when the tables it computes below
     /// level 3 do not fit in memory.
     pub fn try_num_boundary_components(&self) -> Result<usize> {
-        Ok(match &self.boundary {
+        Ok(match self.try_stored()? {
             Some(b) => b.components,
             None => components(self, &try_parts(self)?)?.1,
         })

@@ -19,10 +19,9 @@ impl Chf {
             if orient_of(q, |x| self.positions[x as usize]) < 0.0 {
                 q = flipped;
             }
-        } else if let Err(e) = self.verify(one(q))
-            && e.message.contains("same way")
-            && self.verify(one(flipped)).is_ok()
-        {
+        } else if self.meets_a_face_the_same_way(q)? && self.verify(one(flipped)).is_ok() {
+            // Turned over only when that makes it fit: a refusal for any other reason
+            // stays the refusal of the order given.
             q = flipped;
         }
         Ok(one(q))

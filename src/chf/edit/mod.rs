@@ -10,9 +10,12 @@
 //! **Levels.** The first edit also stores `O` and `VH` whatever the level (the operations
 //! walk stars and pair faces through them), so an edited CHF at level 0 or 1 answers from
 //! them as level 2 would; a removed tetrahedron's half-faces are their own twins (so
-//! nothing sees them as boundary or canonical) and no live half-face points to them. The
-//! level-3 boundary surface is rebuilt after each operation that changes it: O(T) for
-//! each such operation at level 3 (editing at level 2, then `build_level(3)`, avoids it).
+//! nothing sees them as boundary or canonical) and no live half-face points to them. At
+//! level 3 an operation only notes the half-faces it leaves unpaired ([`boundary`]); the
+//! boundary surface is rebuilt lazily, at the first boundary query after an edit, from the
+//! boundary half-faces of the last rebuild and those notes: O((B + k) log(B + k)) for B
+//! boundary half-faces and k notes, never a scan of the tetrahedra. Its lookups then
+//! binary-search (O(log B)) where a built CHF takes a rank over all half-faces.
 //!
 //! **Operations** are transactions ([`plan`]): a set of tetrahedra to remove and a list to
 //! add, checked first (faces held at most twice and running opposite ways, every touched
@@ -23,11 +26,14 @@
 //!
 //! **Memory** once edited: 1 byte per tetrahedron and vertex for the marks, 4 per
 //! half-face (face ids) and 6 x 4 per tetrahedron (edge ids), 4 per face and 8 per edge
-//! (inverses), plus `O` and `VH` if the level did not store them.
+//! (inverses), plus `O` and `VH` if the level did not store them; at level 3, 4 per
+//! boundary half-face and per note (the notes are folded once they outnumber the boundary
+//! by a constant), and the rebuilt surface in place of the built one.
 
 mod add_tetrahedron;
 mod add_vertex;
 mod arrays;
+mod boundary;
 mod collapse_edge;
 mod flip_23;
 mod flip_32;

@@ -4,7 +4,7 @@
 //! plan by local updates.
 
 use super::arrays;
-use super::state::{canonical_half_edge, removed};
+use super::state::canonical_half_edge;
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::geometry::orient_of;
@@ -71,6 +71,21 @@ impl After<'_> {
         }
         out
     }
+
+    /// The tetrahedra other than `t` holding every vertex of `key` after the edit.
+    fn holders(&self, t: u32, key: [u32; 3]) -> Vec<u32> {
+        self.star(key[0])
+            .into_iter()
+            .filter(|&s| s != t && key.iter().all(|x| self.verts(s).contains(x)))
+            .collect()
+    }
+}
+
+/// The local index of the vertex of `q` not in `key`.
+fn fourth(q: [u32; 4], key: [u32; 3]) -> u32 {
+    (0..4)
+        .find(|&j| !key.contains(&q[j as usize]))
+        .expect("a fourth vertex")
 }
 
 /// The vertex triple of face `i` of `q`, in its outward order.
@@ -152,10 +167,10 @@ impl Chf {
         };
         for q in &plan.add {
             for (i, &x) in q.iter().enumerate() {
-                if x >= n {
-                    self.check_vertex(x)?;
+                // The vertex the plan creates is the one id past the mesh's.
+                if plan.new_vertex.is_none() || x != n - 1 {
+                    self.check_live_vertex(x)?;
                 }
-                removed(self.is_vertex_removed(x), "vertex", x)?;
                 if q[..i].contains(&x) {
                     return Err(refuse(format!("tetrahedron {q:?} repeats vertex {x}")));
                 }
@@ -178,11 +193,7 @@ impl Chf {
             for i in 0..4 {
                 let c = cycle(q, i);
                 let key = sorted3(c);
-                let holders: Vec<u32> = after
-                    .star(key[0])
-                    .into_iter()
-                    .filter(|&s| s != t && key.iter().all(|x| after.verts(s).contains(x)))
-                    .collect();
+                let holders = after.holders(t, key);
                 if holders.len() > 1 {
                     return Err(Error::non_manifold(format!(
                         "refused: face {key:?} would have three tetrahedra"
@@ -193,9 +204,7 @@ impl Chf {
                 if key.iter().chain([&q[i as usize]]).all(|x| sv.contains(x)) {
                     return Err(refuse(format!("tetrahedron {q:?} already exists")));
                 }
-                let j = (0..4)
-                    .find(|&j| !key.contains(&sv[j as usize]))
-                    .expect("a fourth vertex");
+                let j = fourth(sv, key);
                 let g = 4 * s + j;
                 if s < after.bound
                     && (self.non_manifold.binary_search(&g).is_ok()
@@ -212,6 +221,33 @@ impl Chf {
             }
         }
         Ok(new_o)
+    }
+
+    /// Does a face of the new tetrahedron `q` (live, distinct vertices) meet the one
+    /// tetrahedron holding it running the same way, so that `q` could pair only turned
+    /// over? The orientation decision of an added tetrahedron without positions.
+    pub(crate) fn meets_a_face_the_same_way(&self, q: [u32; 4]) -> Result<bool> {
+        let plan = Plan {
+            add: vec![q],
+            ..Plan::default()
+        };
+        let after = After {
+            chf: self,
+            plan: &plan,
+            bound: self.num_tetrahedra() as u32,
+            view: self.try_view(Need::NOTHING)?,
+        };
+        for i in 0..4 {
+            let c = cycle(q, i);
+            let key = sorted3(c);
+            if let [s] = after.holders(after.bound, key)[..] {
+                let sv = after.verts(s);
+                if same_way(c, cycle(sv, fourth(sv, key))) {
+                    return Ok(true);
+                }
+            }
+        }
+        Ok(false)
     }
 
     /// Twin of half-face `hf` (post-edit id) after the edit.
@@ -337,6 +373,8 @@ impl Chf {
             if g != NONE {
                 arrays::set_opposite(self, 4 * bound + k as u32, g);
                 arrays::set_opposite(self, g, 4 * bound + k as u32);
+            } else {
+                self.note_unpaired(4 * bound + k as u32);
             }
         }
         self.renumber_faces(bound, plan.add.len(), rep_faces);
@@ -355,9 +393,6 @@ impl Chf {
         }
         self.num_faces = self.edit.as_ref().expect("edited").face_hf.len();
         self.num_edges = self.edit.as_ref().expect("edited").edge_he.len();
-        if self.level >= 3 {
-            self.boundary = Some(crate::chf::build::level3::build(self, 1, 0)?);
-        }
         Ok((bound..bound + plan.add.len() as u32).collect())
     }
 
@@ -377,7 +412,20 @@ impl Chf {
         try_reserve(&mut s.slot_edge, 6 * n, "the edge ids")?;
         try_reserve(&mut s.face_hf, 4 * n, "the face half-faces")?;
         try_reserve(&mut s.edge_he, 6 * n, "the edge half-edges")?;
-        try_reserve(&mut s.vertex_removed, 1, "the vertex marks")
+        try_reserve(&mut s.vertex_removed, 1, "the vertex marks")?;
+        if self.level >= 3 {
+            let s = self.edit.as_mut().expect("edited");
+            s.boundary.settle(&self.o)?;
+            s.boundary.reserve(4 * (plan.remove.len() + n))?;
+        }
+        Ok(())
+    }
+
+    /// Half-face `hf` may have become unpaired: the level-3 boundary rebuild looks at it.
+    fn note_unpaired(&mut self, hf: u32) {
+        if self.level >= 3 {
+            self.edit.as_mut().expect("edited").boundary.note(hf);
+        }
     }
 
     /// Marks `remove` removed and unpairs their neighbours; returns the faces that live on
@@ -396,6 +444,7 @@ impl Chf {
                 if g != NONE && g != hf && !s.tet_removed[tet(g) as usize] {
                     reps.push((f, g));
                     arrays::set_opposite(self, g, NONE);
+                    self.note_unpaired(g);
                 } else if s.face_hf[f as usize] != NONE {
                     s.face_hf[f as usize] = NONE;
                     s.live_faces -= 1;

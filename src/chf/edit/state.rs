@@ -1,5 +1,6 @@
 //! The explicit ids an edited CHF keeps (see the module doc), made on the first edit.
 
+use super::boundary::LazyBoundary;
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::edges::{FanEnd, walk};
@@ -25,6 +26,8 @@ pub(crate) struct EditState {
     pub live_vertices: usize,
     pub live_faces: usize,
     pub live_edges: usize,
+    /// Level 3: the boundary surface, rebuilt at the first boundary query after an edit.
+    pub boundary: super::boundary::LazyBoundary,
 }
 
 impl EditState {
@@ -59,6 +62,7 @@ impl EditState {
             live_vertices: chf.n_vertices,
             live_faces: chf.num_faces,
             live_edges: chf.num_edges,
+            boundary: Default::default(),
         })
     }
 }
@@ -105,7 +109,9 @@ impl Chf {
     pub(crate) fn edit_state(&mut self) -> Result<&mut EditState> {
         super::arrays::promote(self)?;
         if self.edit.is_none() {
-            let state = EditState::of(self)?;
+            let mut state = EditState::of(self)?;
+            // The built surface serves until the first edit, which keeps its half-faces.
+            state.boundary = LazyBoundary::new(self.boundary.take());
             if self.level < 1 {
                 self.o = self.try_opposites_by_rule()?.into();
             }
@@ -240,12 +246,14 @@ fn vertex_half_faces(chf: &Chf) -> Result<Vec<u32>> {
 
 impl Chf {
     /// [`Chf::build_level`] of an edited CHF: `O`, `VH` and the ids are kept at every
-    /// level (the edits need them), so only the boundary surface comes and goes.
+    /// level (the edits need them), so only the boundary surface comes and goes; raised to
+    /// level 3, it is built over the whole mesh (O(T), as a build of the level is).
     pub(crate) fn build_edited_level(&mut self, level: u8) -> Result<()> {
         if level < 3 {
-            self.boundary = None;
-        } else if self.boundary.is_none() {
-            self.boundary = Some(crate::chf::build::level3::build(self, 1, 0)?);
+            self.edit_state()?.boundary = LazyBoundary::default();
+        } else if self.level < 3 {
+            let built = crate::chf::build::level3::build(self, 1, 0)?;
+            self.edit_state()?.boundary = LazyBoundary::new(Some(built));
         }
         self.level = level;
         Ok(())

@@ -35,7 +35,8 @@ impl Chf {
             vertex_half_faces: ints(self.vh.len()),
             edges: ints(self.eh.len()) + self.edge_bits.memory_bytes(),
             faces: ints(self.fh.len()) + self.face_bits.memory_bytes(),
-            boundary: self.boundary.as_ref().map_or(0, |b| b.memory_bytes()),
+            boundary: self.boundary.as_ref().map_or(0, |b| b.memory_bytes())
+                + self.edit.as_ref().map_or(0, |s| s.boundary.memory_bytes()),
             positions: std::mem::size_of_val(&self.positions[..]),
             maps: ints(
                 self.vertex_origin.len()

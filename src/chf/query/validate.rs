@@ -325,9 +325,10 @@ impl Chf {
             )
         })?;
         for (h, &g) in o.iter().enumerate() {
-            ensure(b.bits.get(h) == (g == NONE), || {
-                format!("boundary bit of half-face {h}")
-            })?;
+            ensure(
+                b.bits.as_ref().is_some_and(|b| b.get(h)) == (g == NONE),
+                || format!("boundary bit of half-face {h}"),
+            )?;
         }
         let vertices = self.validate_boundary_vertices(&unpaired)?;
         self.validate_boundary_surface(&unpaired, &vertices)
@@ -352,9 +353,10 @@ impl Chf {
             format!("{b} boundary vertices, {v} vertices on unpaired half-faces")
         })?;
         for (v, &on) in on.iter().enumerate() {
-            ensure(b.vertex_bits.get(v) == on, || {
-                format!("boundary bit of vertex {v}")
-            })?;
+            ensure(
+                b.vertex_bits.as_ref().is_some_and(|b| b.get(v)) == on,
+                || format!("boundary bit of vertex {v}"),
+            )?;
         }
         ensure(b.component.len() == vertices.len(), || {
             format!(

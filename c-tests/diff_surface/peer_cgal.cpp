@@ -1,32 +1,17 @@
-// CGAL 5.5 Surface_mesh (Epick points): differential answers and benchmark. The only CGAL
-// translation unit (its headers are slow to compile).
-#include "peers.hpp"
+// CGAL 5.5 Surface_mesh (Epick points): differential answers and benchmark. CGAL's headers
+// are slow to compile: its code lives here and in edit_cgal.cpp only.
+#include "peer_cgal_mesh.hpp"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
 
 namespace diffmesh {
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using K = CgalKernel;
+using Mesh = CgalMesh;
 using VI = Mesh::Vertex_index;
 using FI = Mesh::Face_index;
 using HI = Mesh::Halfedge_index;
-
-void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input) {
-  m.reserve(Mesh::size_type(in.n_vertices), Mesh::size_type(in.n_triangles * 3 / 2 + 16),
-            Mesh::size_type(in.n_triangles));
-  for (size_t v = 0; v < in.n_vertices; ++v) {
-    const double *p = in.positions + 3 * v;
-    VI h = m.add_vertex(K::Point_3(p[0], p[1], p[2]));
-    if (size_t(h) != v) b.vertices_in_order = false;
-  }
-  add_triangles(in, b, face_input, [&](const uint32_t *c) {
-    return m.add_face(VI(c[0]), VI(c[1]), VI(c[2])) != Mesh::null_face();
-  });
-}
 
 uint32_t id(VI v) { return uint32_t(size_t(v)); }
 
@@ -34,7 +19,7 @@ uint32_t id(VI v) { return uint32_t(size_t(v)); }
 struct Peer {
   using Mesh = diffmesh::Mesh;
   static void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fin) {
-    diffmesh::build(in, m, b, fin);
+    build_cgal(in, m, b, fin);
   }
   using H = HI;
   static auto halfedges(const Mesh &m) { return m.halfedges(); }
@@ -72,7 +57,7 @@ struct Peer {
 Answers cgal_answers(const PeerInput &in, PeerBuild &b) {
   Mesh m;
   std::vector<uint32_t> fin;
-  build(in, m, b, &fin);
+  build_cgal(in, m, b, &fin);
   Answers a;
   a.lib = "CGAL";
   a.resize(m.number_of_vertices(), m.number_of_edges(), 0);

@@ -1,33 +1,10 @@
 // OpenMesh 9 (TriMesh_ArrayKernelT with double points): differential answers and benchmark.
-#include "peers.hpp"
-
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/System/omstream.hh>
+#include "peer_openmesh_mesh.hpp"
 
 namespace diffmesh {
 namespace {
 
-struct Traits : OpenMesh::DefaultTraits {
-  typedef OpenMesh::Vec3d Point;
-};
-using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
-
-// Builds from the arrays; `face_input[f]` is the submitted index of face f.
-void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input) {
-  static bool quiet = (::omerr().disable(), true); // "complex edge" etc.
-  (void)quiet;
-  m.reserve(in.n_vertices, in.n_triangles * 3 / 2 + 16, in.n_triangles);
-  for (size_t v = 0; v < in.n_vertices; ++v) {
-    const double *p = in.positions + 3 * v;
-    auto h = m.add_vertex(Mesh::Point(p[0], p[1], p[2]));
-    if ((size_t)h.idx() != v) b.vertices_in_order = false;
-  }
-  add_triangles(in, b, face_input, [&](const uint32_t *c) {
-    return m.add_face(OpenMesh::VertexHandle(int(c[0])), OpenMesh::VertexHandle(int(c[1])),
-                      OpenMesh::VertexHandle(int(c[2])))
-        .is_valid();
-  });
-}
+using Mesh = OpenMeshMesh;
 
 uint32_t vid(OpenMesh::VertexHandle h) { return uint32_t(h.idx()); }
 
@@ -35,7 +12,7 @@ uint32_t vid(OpenMesh::VertexHandle h) { return uint32_t(h.idx()); }
 struct Peer {
   using Mesh = diffmesh::Mesh;
   static void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *fin) {
-    diffmesh::build(in, m, b, fin);
+    build_openmesh(in, m, b, fin);
   }
   using H = OpenMesh::HalfedgeHandle;
   static auto halfedges(const Mesh &m) { return m.halfedges(); }
@@ -75,7 +52,7 @@ struct Peer {
 Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
   Mesh m;
   std::vector<uint32_t> fin;
-  build(in, m, b, &fin);
+  build_openmesh(in, m, b, &fin);
   Answers a;
   a.lib = "OpenMesh";
   a.resize(m.n_vertices(), m.n_edges(), m.n_faces());

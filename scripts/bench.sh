@@ -138,8 +138,9 @@ editing() {
     echo "- garbage collection after removing every other triangle id (only the collection timed; topomesh's"
     echo "  wrapper also returns the old -> new maps, the peers none)."
     echo
-    echo "The same policy, not the same edges: each library numbers its edges its own way, so the random"
-    echo "choices, the split order and the collapses differ, and so do the counts (given per library)."
+    echo "The same policy; the edges may differ: the counts are given per library. The three number the edges"
+    echo "of a fresh build alike (by first use in the triangle order), so the flips and collapses chosen agree;"
+    echo "the split passes number new edges differently (same splits, a few more or fewer edges looked at)."
     echo "The targets: each operation at least 2× faster than the faster peer (ratio at most 0.50×), memory"
     echo "while editing at most 0.6× OpenMesh's. Ratios from one run on a shared machine."
     echo

@@ -5,7 +5,8 @@
 # machine, the compilers, the flags, the commit and this command. The page holds the latest
 # run only; what changed between runs, and why, goes to CHANGELOG.md.
 #
-#   scripts/bench.sh [--reps N] [--export-meshes "A B"] [MESH...]
+#   scripts/bench.sh [--reps N] [--export-meshes "A B"] [--edit-meshes "A B"] [--edit-reps N] [MESH...]
+#   scripts/bench.sh --edit-only [--edit-meshes "A B"] [--edit-reps N]
 #   scripts/bench.sh --charts-only
 #
 # MESH: names in the mesh cache (default: bunny00 armadillo holes polygon_mesh
@@ -13,10 +14,14 @@
 # (scripts/fetch-meshes.sh), builds and installs the package into a temporary prefix
 # (the cmake/ project, as scripts/c-tests.sh does), builds c-tests/diff_surface's topomesh_bench
 # and topomesh_bench_export (-O2, no -march=native) and runs them, the export benchmark on
-# the --export-meshes (default: bunny00 bunny00-sub3). Then writes the charts of the page
-# (docs/bench-surfaces-*.svg, by tools/plot from the page's tables); --charts-only redraws
-# them from the page as it is, without running anything. Respects CARGO_TARGET_DIR and
-# TOPOMESH_MESH_DIR.
+# the --export-meshes (default: bunny00 bunny00-sub3), and the editing benchmark
+# topomesh_bench_edit (flip storm, split refinement, simplification, garbage collection,
+# against OpenMesh and CGAL) on the --edit-meshes (default: bunny00 bunny00-sub3), --edit-reps
+# runs each (default 1: the large mesh takes minutes per library). --edit-only runs the
+# editing benchmark alone and replaces the page's last section (Editing) with its tables,
+# keeping the rest of the page. Then writes the charts of the page (docs/bench-surfaces-*.svg,
+# by tools/plot from the page's tables); --charts-only redraws them from the page as it is,
+# without running anything. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -24,13 +29,19 @@ cmdline="scripts/bench.sh${*:+ $*}"
 reps=5
 meshes=()
 export_meshes=(bunny00 bunny00-sub3)
+edit_meshes=(bunny00 bunny00-sub3)
+edit_reps=1
+edit_only=0
 charts_only=0
 while (($#)); do
   case "$1" in
     --reps) reps="$2"; shift 2 ;;
     --export-meshes) read -r -a export_meshes <<<"$2"; shift 2 ;;
+    --edit-meshes) read -r -a edit_meshes <<<"$2"; shift 2 ;;
+    --edit-reps) edit_reps="$2"; shift 2 ;;
+    --edit-only) edit_only=1; shift ;;
     --charts-only) charts_only=1; shift ;;
-    -h|--help) sed -n 2,19p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,26p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
@@ -87,7 +98,68 @@ cmake --install "$work/pkg" >/dev/null
 echo "== topomesh_bench (OpenMesh and CGAL compile slowly: about a minute)"
 cmake -S "$root/c-tests/diff_surface" -B "$work/diff" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
   -DTOPOMESH_MESH_DIR="$dir" >/dev/null
-cmake --build "$work/diff" --target topomesh_bench topomesh_bench_export >/dev/null
+if ((edit_only)); then
+  cmake --build "$work/diff" --target topomesh_bench_edit >/dev/null
+else
+  cmake --build "$work/diff" --target topomesh_bench topomesh_bench_export topomesh_bench_edit >/dev/null
+fi
+
+# The editing benchmark into $work/editing.md: a section of its own, with its command,
+# commit and load, so that --edit-only can replace it in a page written by a full run.
+editing() {
+  local files=() m load0
+  for m in "${edit_meshes[@]}"; do
+    if [[ -f "$m" ]]; then files+=("$m"); else files+=("$dir/$m.off"); fi
+  done
+  echo "== editing on ${#files[@]} meshes, $edit_reps repetition(s)"
+  load0="$(cut -d' ' -f1-3 /proc/loadavg)"
+  "$work/diff/topomesh_bench_edit" --reps "$edit_reps" --md "$work/edit-tables.md" "${files[@]}"
+  {
+    echo
+    echo "## Editing"
+    echo
+    echo "\`c-tests/diff_surface/bench_edit.cpp\` (\`topomesh_bench_edit\`): the same operations, written once in"
+    echo "\`edit_policy.hpp\` over a small adapter per library, on topomesh's C++ wrapper (\`topomesh::Surface\`,"
+    echo "levels 2 and 3), OpenMesh's TriMesh and CGAL's Surface_mesh, each on a fresh build from the same arrays"
+    echo "(the build untimed; CPU time of the benchmark thread):"
+    echo
+    echo "- flip storm: one million uniformly random edge ids from the same seeded generator (mt19937_64);"
+    echo "  each flipped when the library's check allows it (topomesh \`is_flip_ok\`, OpenMesh \`is_flip_ok\`;"
+    echo "  CGAL has none: an interior edge whose flipped edge does not exist yet, what the other two check);"
+    echo "- edge-split refinement by longest-edge bisection: passes over the edge ids, new edges included,"
+    echo "  split at its midpoint every edge longer than 1.5 × the mean edge length that is the longest of its"
+    echo "  triangles, until a pass splits none (splitting every long edge in id order runs away on bunny00, in"
+    echo "  OpenMesh as in topomesh); topomesh \`split\`, OpenMesh \`split(EdgeHandle, Point)\`, CGAL"
+    echo "  \`Euler::split_edge\` and \`Euler::split_face\` on each side;"
+    echo "- shortest-edge simplification to 10 % of the triangles: the policy of \`topomesh simplify\` (a heap"
+    echo "  with one entry per edge, the library's link-condition check, no triangle turned over, the merged"
+    echo "  vertex at the midpoint; OpenMesh \`is_collapse_ok\`/\`collapse\`, CGAL"
+    echo "  \`does_satisfy_link_condition\`/\`Euler::collapse_edge\`);"
+    echo "- garbage collection after removing every other triangle id (only the collection timed; topomesh's"
+    echo "  wrapper also returns the old -> new maps, the peers none)."
+    echo
+    echo "The same policy; the edges may differ: the counts are given per library. The three number the edges"
+    echo "of a fresh build alike (by first use in the triangle order), so the flips and collapses chosen agree;"
+    echo "the split passes number new edges differently (same splits, a few more or fewer edges looked at)."
+    echo "The targets: each operation at least 2× faster than the faster peer (ratio at most 0.50×), memory"
+    echo "while editing at most 0.6× OpenMesh's. Ratios from one run on a shared machine."
+    echo
+    echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty); $edit_reps repetition(s); load"
+    echo "average before: $load0; after: $(cut -d' ' -f1-3 /proc/loadavg). Machine and compilers as above."
+    cat "$work/edit-tables.md"
+  } >"$work/editing.md"
+}
+commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
+dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
+if ((edit_only)); then
+  [[ -f "$out" ]] || { echo "bench.sh: --edit-only needs a page written by a full run" >&2; exit 1; }
+  editing
+  awk '/^## Editing$/ { exit } { print }' "$out" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}' >"$work/page.md"
+  cat "$work/editing.md" >>"$work/page.md"
+  mv "$work/page.md" "$out"
+  echo "== wrote $out (Editing)"
+  exit 0
+fi
 
 files=()
 for m in "${meshes[@]}"; do
@@ -105,6 +177,8 @@ if ((${#export_files[@]})); then
   echo "== exports on ${#export_files[@]} meshes"
   "$work/diff/topomesh_bench_export" --reps "$reps" --md "$work/exports.md" "${export_files[@]}"
 fi
+: >"$work/editing.md"
+((${#edit_meshes[@]})) && editing
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 # The machine and the toolchain.
@@ -117,9 +191,6 @@ cxx="$(c++ --version | head -1)"
 rustc_v="$(rustc --version)"
 om_v="$(dpkg-query -W -f '${Version}' libopenmesh-dev 2>/dev/null || echo '?')"
 cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
-commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
-dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
-
 eigen_v="$(dpkg-query -W -f '${Version}' libeigen3-dev 2>/dev/null || echo 'not installed')"
 meshopt_v="$(dpkg-query -W -f '${Version}' libmeshoptimizer-dev 2>/dev/null || echo 'not installed')"
 {
@@ -198,6 +269,7 @@ meshopt_v="$(dpkg-query -W -f '${Version}' libmeshoptimizer-dev 2>/dev/null || e
     echo "Eigen $eigen_v, meshoptimizer $meshopt_v (Debian); the rest as above."
     cat "$work/exports.md"
   fi
+  cat "$work/editing.md"
 } > "$work/page.md"
 mv "$work/page.md" "$out"
 echo "== wrote $out"

@@ -99,9 +99,9 @@ impl Che {
 
     /// Is there a half-edge from `a` to `b` or from `b` to `a`? O(degree of `a`).
     pub(super) fn adjacent(&self, a: u32, b: u32) -> bool {
-        self.outgoing(a)
-            .iter()
-            .any(|&h| self.v[next(h) as usize] == b || self.v[prev(h) as usize] == b)
+        self.any_outgoing(a, |h| {
+            self.v[next(h) as usize] == b || self.v[prev(h) as usize] == b
+        })
     }
 
     /// Why flipping the edge of half-edge `h` is refused, if it is.
@@ -200,7 +200,7 @@ impl Che {
 
     /// Is there a triangle on vertices `x`, `c`, `d`?
     fn has_triangle_on(&self, x: u32, c: u32, d: u32) -> bool {
-        self.outgoing(x).iter().any(|&h| {
+        self.any_outgoing(x, |h| {
             let (p, q) = (self.v[next(h) as usize], self.v[prev(h) as usize]);
             (p == c && q == d) || (p == d && q == c)
         })

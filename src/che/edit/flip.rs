@@ -1,6 +1,6 @@
 //! Flipping an interior edge: the diagonal of the quad of its two triangles turns.
 
-use super::arrays::v_mut;
+use super::arrays::{v_mut, vh_mut};
 use super::checks::refuse;
 use crate::che::Che;
 use crate::che::ids::{next, prev};
@@ -40,10 +40,15 @@ impl Che {
         self.name_edge(g, e_ca);
         self.name_edge(h, e_db);
         self.name_edge(h2, e);
+        // A flip changes no vertex's boundary: only a `VH` on a half-edge that left its
+        // vertex (`a -> b`, `b -> a`) or on an outer one that moved (`c -> a`, `d -> b`)
+        // changes, to one of the same kind, without walking the stars.
         let a = self.v[g1 as usize];
         let b = self.v[h1 as usize];
-        for (x, out) in [(a, g1), (b, h1), (c, h2), (d, g2)] {
-            self.fix_vh(x, out);
+        for (x, was, now) in [(a, h, g1), (b, g, h1), (c, h2, g), (d, g2, h)] {
+            if self.vh[x as usize] == was {
+                vh_mut(self)[x as usize] = now;
+            }
         }
     }
 }

@@ -68,17 +68,29 @@ impl Che {
 
     /// The outgoing half-edges of `x` in rotation order (from `VH`).
     pub(super) fn outgoing(&self, x: u32) -> Vec<u32> {
-        let s = self.vh[x as usize];
         let mut out = Vec::new();
+        self.any_outgoing(x, |h| {
+            out.push(h);
+            false
+        });
+        out
+    }
+
+    /// Walks the outgoing half-edges of `x` in rotation order (from `VH`) until `stop` says
+    /// so, without allocating (the checks run once per flip or collapse); true if it did.
+    pub(super) fn any_outgoing(&self, x: u32, mut stop: impl FnMut(u32) -> bool) -> bool {
+        let s = self.vh[x as usize];
         if s == NONE {
-            return out;
+            return false;
         }
         let mut h = s;
         loop {
-            out.push(h);
+            if stop(h) {
+                return true;
+            }
             let g = self.o[prev(h) as usize];
             if g == NONE || g == s {
-                return out;
+                return false;
             }
             h = g;
         }

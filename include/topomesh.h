@@ -1436,7 +1436,8 @@ topomesh_status che_mesh_export_matrix(const struct che_mesh *m,
 /**
  * Saves the built surface at its level to `path` as a level file (`.che` by convention;
  * the layout is in `docs/level-files.md`), whole or not at all; `che_mesh_open` reads it
- * back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path.
+ * back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path; a mesh edited since
+ * its last `che_mesh_garbage_collect` gives `TOPOMESH_STATUS_INVALID_INPUT`.
  */
 topomesh_status che_mesh_save(const struct che_mesh *m, const char *path);
 
@@ -2337,7 +2338,8 @@ topomesh_status chf_mesh_export_matrix(const struct chf_mesh *m,
 /**
  * Saves the built volume at its level to `path` as a level file (`.chf` by convention;
  * the layout is in `docs/level-files.md`), whole or not at all; `chf_mesh_open` reads it
- * back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path.
+ * back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path; a mesh edited since
+ * its last `chf_mesh_garbage_collect` gives `TOPOMESH_STATUS_INVALID_INPUT`.
  */
 topomesh_status chf_mesh_save(const struct chf_mesh *m, const char *path);
 

@@ -590,3 +590,30 @@ fn exports_and_files_wait_for_garbage_collection() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A level file holds the tables of the build's rules (edge ranks, curves), which an edit
+/// that removes nothing (a flip) changes too: saving waits for garbage collection, and the
+/// file written after it opens to the same mesh.
+#[test]
+fn a_level_file_waits_for_garbage_collection_after_any_edit() {
+    let dir = std::env::temp_dir().join(format!("topomesh-edit-saved-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for level in 0..=3 {
+        let mut che = built(&grid(5, 4), level);
+        let e = (0..che.num_edges() as u32).find(|&e| che.flip_edge(e).is_ok());
+        assert!(e.is_some(), "level {level}: some edge flips");
+        let err = che.save(dir.join("s.che")).unwrap_err();
+        assert!(err.to_string().contains("garbage_collect"), "{err}");
+        che.garbage_collect().unwrap();
+        che.save(dir.join("s.che")).unwrap();
+        let opened = Che::open(dir.join("s.che"), Default::default()).unwrap();
+        assert_eq!(opened.summary(), che.summary(), "level {level}");
+        for v in 0..che.num_vertices() as u32 {
+            assert_eq!(
+                opened.vertex_vertices(v).collect::<Vec<_>>(),
+                che.vertex_vertices(v).collect::<Vec<_>>()
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

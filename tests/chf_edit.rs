@@ -615,3 +615,27 @@ fn add_tetrahedron_without_positions_turns_over_to_fit() {
         check(&chf, &format!("as given at level {level}"), false);
     }
 }
+
+/// A level file holds the tables of the build's rules, which an edit that removes nothing
+/// (a 1-4 split) leaves behind too: saving waits for garbage collection, and the file
+/// written after it opens to the same mesh.
+#[test]
+fn a_level_file_waits_for_garbage_collection_after_any_edit() {
+    let dir = std::env::temp_dir().join(format!("topomesh-chf-saved-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let m = cube(2, 2, 2, true);
+    for level in 0..=3 {
+        let mut chf = m.build(level, true);
+        let q = chf.tetrahedron_vertices(0);
+        let centroid = q.iter().map(|&x| m.positions[x as usize]).sum::<DVec3>() / 4.0;
+        chf.split_tetrahedron(0, Some(centroid)).unwrap();
+        let e = chf.save(dir.join("s.chf")).unwrap_err();
+        assert!(e.to_string().contains("garbage_collect"), "{e}");
+        chf.garbage_collect().unwrap();
+        chf.save(dir.join("s.chf")).unwrap();
+        let opened = Chf::open(dir.join("s.chf"), Default::default()).unwrap();
+        assert_eq!(opened.summary(), chf.summary(), "level {level}");
+        assert_eq!(opened.num_tetrahedra(), m.tets.len() + 3);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

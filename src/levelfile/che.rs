@@ -224,7 +224,7 @@ impl Che {
     /// Saves the built structure at its level to `path` (a level file, `.che` by
     /// convention), whole or not at all; [`Che::open`] reads it back.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<()> {
-        self.check_collected("the level file")?;
+        self.check_unchanged("the level file")?;
         save_che(self, path.as_ref())
     }
 

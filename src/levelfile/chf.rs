@@ -223,7 +223,7 @@ impl Chf {
     /// Saves the built structure at its level to `path` (a level file, `.chf` by
     /// convention), whole or not at all; [`Chf::open`] reads it back.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<()> {
-        self.check_collected("the level file")?;
+        self.check_unchanged("the level file")?;
         save_chf(self, path.as_ref())
     }
 

@@ -58,6 +58,17 @@ impl Che {
         Ok(())
     }
 
+    /// Refuses a mesh changed since its last garbage collection: its arrays are right,
+    /// but a level file holds the tables the build's rules define, which only
+    /// `garbage_collect` restores.
+    pub(crate) fn check_unchanged(&self, what: &str) -> Result<()> {
+        if self.edits().is_some_and(|s| s.changed) {
+            let detail = format!("{what}: the mesh was edited; call garbage_collect first");
+            return Err(crate::error::Error::invalid(detail));
+        }
+        Ok(())
+    }
+
     pub(super) fn live_vertex(&self, x: u32) -> Result<()> {
         self.check_vertex(x)?;
         if self.is_vertex_removed(x) {

@@ -196,6 +196,7 @@ impl Che {
     fn rebuild_levels(&mut self, level: u8) -> Result<()> {
         let st = self.edit.get_or_insert_with(Default::default);
         st.edge_of = Vec::new();
+        st.changed = false;
         st.curves = Default::default();
         st.boundary = Default::default();
         st.removed_vertex = try_vec(self.n_vertices, false, "the removed-vertex flags")?;

@@ -25,6 +25,9 @@ pub(crate) struct EditState {
     pub(crate) curves: OnceLock<Curves>,
     /// Level 3: where the next curve computation starts from.
     pub(crate) boundary: super::boundary::BoundaryLog,
+    /// An operation has changed the mesh since the last garbage collection, so the level
+    /// tables the build's rules define (edge ranks, curves) no longer describe it.
+    pub(crate) changed: bool,
 }
 
 /// Boundary curves of an edited CHE.
@@ -66,6 +69,9 @@ impl Che {
         self.begin_edit()?;
         let r = op(self);
         self.end_edit();
+        if r.is_ok() {
+            self.st_mut().changed = true;
+        }
         r
     }
 

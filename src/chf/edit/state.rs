@@ -196,6 +196,16 @@ impl Chf {
         Ok(())
     }
 
+    /// Refuses an edited CHF (`garbage_collect` ends the edit state): its arrays are
+    /// right, but a level file holds the explicit-id-free tables of the build's rules.
+    pub(crate) fn check_unchanged(&self, what: &str) -> Result<()> {
+        if self.is_edited() {
+            let detail = format!("{what}: the mesh was edited; call garbage_collect first");
+            return Err(crate::error::Error::invalid(detail));
+        }
+        Ok(())
+    }
+
     /// A live vertex id (or an error naming it).
     pub fn check_live_vertex(&self, v: u32) -> Result<()> {
         self.check_vertex(v)?;

@@ -8,7 +8,8 @@ use std::ffi::c_char;
 
 /// Saves the built surface at its level to `path` as a level file (`.che` by convention;
 /// the layout is in `docs/level-files.md`), whole or not at all; `che_mesh_open` reads it
-/// back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path.
+/// back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path; a mesh edited since
+/// its last `che_mesh_garbage_collect` gives `TOPOMESH_STATUS_INVALID_INPUT`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_save(m: *const CheMesh, path: *const c_char) -> Status {
     save!(m, path => |c, path| c.save(path))

@@ -8,7 +8,8 @@ use std::ffi::c_char;
 
 /// Saves the built volume at its level to `path` as a level file (`.chf` by convention;
 /// the layout is in `docs/level-files.md`), whole or not at all; `chf_mesh_open` reads it
-/// back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path.
+/// back. A failure to write gives `TOPOMESH_STATUS_IO` naming the path; a mesh edited since
+/// its last `chf_mesh_garbage_collect` gives `TOPOMESH_STATUS_INVALID_INPUT`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn chf_mesh_save(m: *const ChfMesh, path: *const c_char) -> Status {
     save!(m, path => |c, path| c.save(path))

@@ -7,6 +7,7 @@
 # what changed between runs, and why, goes to CHANGELOG.md.
 #
 #   scripts/bench-volumes.sh [--reps N] [--edit-ops N] [--prefix DIR] [--out FILE] [MESH...]
+#   scripts/bench-volumes.sh --edit-only [--edit-ops N] [--prefix DIR] [--out FILE] [MESH...]
 #   scripts/bench-volumes.sh --charts-only [--out FILE]
 #
 # MESH: names under <mesh dir>/tets (default: blobby-12k armadillo-101k bunny00-1m; the
@@ -15,7 +16,8 @@
 # minute), builds and installs the package into a temporary prefix (or uses --prefix, an
 # installed one), builds c-tests/diff_volume's topomesh_bench_vol and topomesh_bench_vol_edit
 # (-O2 -DNDEBUG, no -march=native; the CGAL translation unit takes about a minute) and runs
-# them (--edit-ops: operations of each editing run, default a million). Then writes the charts of the page
+# them (--edit-ops: operations of each editing run, default a million; --edit-only runs the
+# editing harness alone and replaces the page's Editing section, keeping the rest). Then writes the charts of the page
 # (docs/bench-volumes-*.svg, by tools/plot from the page's tables); --charts-only redraws
 # them from the page as it is (adding the charts section if it has none), without running
 # anything. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
@@ -29,14 +31,16 @@ prefix=""
 out="$root/BENCHMARKS-volumes.md"
 meshes=()
 charts_only=0
+edit_only=0
 while (($#)); do
   case "$1" in
     --reps) reps="$2"; shift 2 ;;
     --prefix) prefix="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --charts-only) charts_only=1; shift ;;
+    --edit-only) edit_only=1; shift ;;
     --edit-ops) edit_ops="$2"; shift 2 ;;
-    -h|--help) sed -n 2,22p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,25p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
@@ -175,14 +179,26 @@ bases=()
 for m in "${meshes[@]}"; do bases+=("$(mesh_base "$m")"); done
 edit_bases=()
 for m in "${edit_meshes[@]}"; do edit_bases+=("$(mesh_base "$m")"); done
-echo "== running on ${#bases[@]} meshes, $reps repetitions"
-load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
-"$work/diffvol/topomesh_bench_vol" --reps "$reps" "${bases[@]}" | tee "$work/tables.md"
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+if ((!edit_only)); then
+  echo "== running on ${#bases[@]} meshes, $reps repetitions"
+  load_before="$load_after"
+  "$work/diffvol/topomesh_bench_vol" --reps "$reps" "${bases[@]}" | tee "$work/tables.md"
+  load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+fi
 echo "== editing on ${#edit_bases[@]} meshes, $edit_ops operations per run"
 edit_load_before="$load_after"
 "$work/diffvol/topomesh_bench_vol_edit" --ops "$edit_ops" --reps "$reps" "${edit_bases[@]}" | tee "$work/edit.md"
 edit_load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
+dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
+if ((edit_only)); then
+  # The page up to its Editing section (the other tables stay those of their own run).
+  { awk '/^## Editing/ { exit } { print }' "$out" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'; echo; editing_section; } >"$out.new"
+  mv "$out.new" "$out"
+  echo "== wrote the Editing section of $out"
+  exit 0
+fi
 
 model="$(lscpu | sed -n 's/^Model name:[[:space:]]*//p' | head -1)"
 cpus="$(nproc)"
@@ -192,8 +208,6 @@ cxx="$(c++ --version | head -1)"
 rustc_v="$(rustc --version 2>/dev/null || echo '?')"
 cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
 tetgen_v="$(dpkg-query -W -f '${Version}' tetgen 2>/dev/null || echo '?')"
-commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
-dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
 
 {
   echo "# Benchmarks: volumes"

@@ -6,14 +6,18 @@
 # the machine, the flags, the commit and this command. The page holds the latest run only;
 # what changed between runs, and why, goes to CHANGELOG.md.
 #
-#   scripts/bench-volumes.sh [--reps N] [--prefix DIR] [--out FILE] [MESH...]
+#   scripts/bench-volumes.sh [--reps N] [--edit-ops N] [--prefix DIR] [--out FILE] [MESH...]
+#   scripts/bench-volumes.sh --edit-only [--edit-ops N] [--prefix DIR] [--out FILE] [MESH...]
 #   scripts/bench-volumes.sh --charts-only [--out FILE]
 #
-# MESH: names under <mesh dir>/tets (default: blobby-12k armadillo-101k bunny00-1m).
-# Makes the meshes (scripts/fetch-tets.sh: tetgen, the 1M one takes under a minute), builds
-# and installs the package into a temporary prefix (or uses --prefix, an installed one),
-# builds c-tests/diff_volume's topomesh_bench_vol (-O2 -DNDEBUG, no -march=native; the CGAL
-# translation unit takes about a minute) and runs it. Then writes the charts of the page
+# MESH: names under <mesh dir>/tets (default: blobby-12k armadillo-101k bunny00-1m; the
+# editing section runs on armadillo-101k and bunny00-1m by default, on the MESHes given
+# otherwise). Makes the meshes (scripts/fetch-tets.sh: tetgen, the 1M one takes under a
+# minute), builds and installs the package into a temporary prefix (or uses --prefix, an
+# installed one), builds c-tests/diff_volume's topomesh_bench_vol and topomesh_bench_vol_edit
+# (-O2 -DNDEBUG, no -march=native; the CGAL translation unit takes about a minute) and runs
+# them (--edit-ops: operations of each editing run, default a million; --edit-only runs the
+# editing harness alone and replaces the page's Editing section, keeping the rest). Then writes the charts of the page
 # (docs/bench-volumes-*.svg, by tools/plot from the page's tables); --charts-only redraws
 # them from the page as it is (adding the charts section if it has none), without running
 # anything. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
@@ -22,17 +26,21 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cmdline="scripts/bench-volumes.sh${*:+ $*}"
 reps=5
+edit_ops=1000000
 prefix=""
 out="$root/BENCHMARKS-volumes.md"
 meshes=()
 charts_only=0
+edit_only=0
 while (($#)); do
   case "$1" in
     --reps) reps="$2"; shift 2 ;;
     --prefix) prefix="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --charts-only) charts_only=1; shift ;;
-    -h|--help) sed -n 2,20p "$0"; exit 0 ;;
+    --edit-only) edit_only=1; shift ;;
+    --edit-ops) edit_ops="$2"; shift 2 ;;
+    -h|--help) sed -n 2,25p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
@@ -85,6 +93,55 @@ charts() {
   rm -f "$results"
 }
 
+# The editing section of the page: method, this run's command and commit, the tables of
+# topomesh_bench_vol_edit (its first line, the versions, left out).
+editing_section() {
+  echo "## Editing"
+  echo
+  echo "topomesh's editing operations (\`include/detail/volume_edit.hpp\`, the C++ wrapper over the"
+  echo "C API) against CGAL's \`Triangulation_3\` built as above from the same tetrahedra, in one process"
+  echo "(\`topomesh_bench_vol_edit\`, \`c-tests/diff_volume/bench_vol_edit.cpp\`), with one seeded policy"
+  echo "for both sides (\`edit_policy.hpp\`): each operation draws a live tetrahedron uniformly (both"
+  echo "sides keep a list of the live ones, updated in O(1) per operation and timed with it)."
+  echo "Times are CPU time of the process (every timed run is on one thread): the machine is shared,"
+  echo "and the wall clock would count the other processes' turns."
+  echo
+  echo "- 1-4 splits: the drawn tetrahedron split at its centroid. CGAL: \`Triangulation_3::insert_in_cell\`"
+  echo "  on the triangulation built from the same tetrahedra (not from the points: a Delaunay"
+  echo "  triangulation of the points is another mesh, and the split is a pure combinatorial"
+  echo "  operation there too). It checks nothing; topomesh's \`split\` verifies the operation (the"
+  echo "  four new tetrahedra positive, the stars manifold) before doing it. Level 1 edits as level"
+  echo "  2 once its first edit has stored \`O\`, \`VH\` and the ids: only that first split is timed"
+  echo "  for it (\`--level1\` of the harness runs the whole storm)."
+  echo "- Flip storm: for each attempt a 2-3 flip of one of the drawn tetrahedron's faces or a 3-2"
+  echo "  flip of one of its edges (a coin), checked then done when allowed. CGAL:"
+  echo "  \`Triangulation_3::flip(c, i)\` and \`flip(c, i, j)\`, which check (finite, degree 3, convex"
+  echo "  position) and return false on a refusal. topomesh: \`can_flip_23\`/\`can_flip_32\` then"
+  echo "  \`flip_23\`/\`flip_32\` (the check-then-act pattern of the wrapper, two verifications for an"
+  echo "  accepted flip), and the C calls alone (one verification; a refusal is a status). The two"
+  echo "  libraries number local faces and edges differently, so their sequences of flips differ:"
+  echo "  compare the accepted counts, not only the times. Level 1 is not timed here: before its"
+  echo "  first edit a face or edge id costs O(T) below level 2, after it level 1 edits as level 2."
+  echo "- Compaction: half the tetrahedra removed (in decreasing x of the centroid; removals that"
+  echo "  would pinch a vertex or an edge are refused and skipped), then \`garbage_collect\`."
+  echo "  CGAL's \`Triangulation_3\` has no removal of cells that keeps a triangulation, and its"
+  echo "  \`Compact_container\` never compacts (freed cells are reused in place): the comparable"
+  echo "  operation is building the triangulation of the remaining tetrahedra"
+  echo "  (\`build_triangulation\`), which is also what topomesh's \`garbage_collect\` does (a fresh"
+  echo "  build of the live tetrahedra plus the old-to-new maps); a fresh topomesh build of the same"
+  echo "  tetrahedra is given for reference."
+  echo "- Memory after the splits: container sizes (CGAL's cells and vertices as in the build table;"
+  echo "  topomesh's \`chf_mesh_memory\` topology plus the edit state it does not count: marks, face and"
+  echo "  edge ids), and the growth of the resident set over build plus edits. A never-edited CHF has"
+  echo "  no edit state (one empty pointer: it is made by the first accepted edit, never by a check or"
+  echo "  a refused edit); the last line of each mesh checks that its \`chf_mesh_memory\` and resident"
+  echo "  set stay put over checks and refused edits."
+  echo
+  echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty); $edit_ops operations per run"
+  echo "(one run each; the machine is shared). Load average before: $edit_load_before; after: $edit_load_after."
+  cat "$work/edit.md" | sed '1d'
+}
+
 if ((charts_only)); then
   if ! grep -q '^## Charts' "$out"; then
     section="$(charts_section)"
@@ -94,7 +151,9 @@ if ((charts_only)); then
   charts
   exit 0
 fi
+edit_meshes=("${meshes[@]}")
 ((${#meshes[@]})) || meshes=(blobby-12k armadillo-101k bunny00-1m)
+((${#edit_meshes[@]})) || edit_meshes=(armadillo-101k bunny00-1m)
 dir="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"
 
 "$root/scripts/fetch-tets.sh"
@@ -108,21 +167,38 @@ if [[ -z "$prefix" ]]; then
   cmake --build "$work/pkg" >/dev/null
   cmake --install "$work/pkg" >/dev/null
 fi
-echo "== topomesh_bench_vol (the CGAL translation unit compiles slowly: about a minute)"
+echo "== topomesh_bench_vol, topomesh_bench_vol_edit (the CGAL translation unit compiles slowly: about a minute)"
 # An empty build type: the only optimisation flags are the target's -O2 -DNDEBUG.
 cmake -S "$root/c-tests/diff_volume" -B "$work/diffvol" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE= \
   -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE \
   -DTOPOMESH_MESH_DIR="$dir" >/dev/null
-cmake --build "$work/diffvol" --target topomesh_bench_vol >/dev/null
+cmake --build "$work/diffvol" --target topomesh_bench_vol topomesh_bench_vol_edit >/dev/null
 
+mesh_base() { if [[ -f "$1.ele" ]]; then echo "$1"; else echo "$dir/tets/$1"; fi; }
 bases=()
-for m in "${meshes[@]}"; do
-  if [[ -f "$m.ele" ]]; then bases+=("$m"); else bases+=("$dir/tets/$m"); fi
-done
-echo "== running on ${#bases[@]} meshes, $reps repetitions"
-load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
-"$work/diffvol/topomesh_bench_vol" --reps "$reps" "${bases[@]}" | tee "$work/tables.md"
+for m in "${meshes[@]}"; do bases+=("$(mesh_base "$m")"); done
+edit_bases=()
+for m in "${edit_meshes[@]}"; do edit_bases+=("$(mesh_base "$m")"); done
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+if ((!edit_only)); then
+  echo "== running on ${#bases[@]} meshes, $reps repetitions"
+  load_before="$load_after"
+  "$work/diffvol/topomesh_bench_vol" --reps "$reps" "${bases[@]}" | tee "$work/tables.md"
+  load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+fi
+echo "== editing on ${#edit_bases[@]} meshes, $edit_ops operations per run"
+edit_load_before="$load_after"
+"$work/diffvol/topomesh_bench_vol_edit" --ops "$edit_ops" --reps "$reps" "${edit_bases[@]}" | tee "$work/edit.md"
+edit_load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
+dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
+if ((edit_only)); then
+  # The page up to its Editing section (the other tables stay those of their own run).
+  { awk '/^## Editing/ { exit } { print }' "$out" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'; echo; editing_section; } >"$out.new"
+  mv "$out.new" "$out"
+  echo "== wrote the Editing section of $out"
+  exit 0
+fi
 
 model="$(lscpu | sed -n 's/^Model name:[[:space:]]*//p' | head -1)"
 cpus="$(nproc)"
@@ -132,8 +208,6 @@ cxx="$(c++ --version | head -1)"
 rustc_v="$(rustc --version 2>/dev/null || echo '?')"
 cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
 tetgen_v="$(dpkg-query -W -f '${Version}' tetgen 2>/dev/null || echo '?')"
-commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
-dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
 
 {
   echo "# Benchmarks: volumes"
@@ -185,6 +259,8 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
     fi
   done
   cat "$work/tables.md" | sed '1d'
+  echo
+  editing_section
 } > "$out.new"
 mv "$out.new" "$out"
 echo "== wrote $out"

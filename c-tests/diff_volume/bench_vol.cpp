@@ -8,6 +8,7 @@
 // peak around one build), and full sweeps of TT, VT, ET, VV with their checksums (the
 // number of entries visited: equal for every library on a manifold mesh), then the targets.
 // Compile with -O2 (no -march=native).
+#include "bench_vol_util.hpp"
 #include "peer_cgal.hpp"
 #include "tet_soup.hpp"
 
@@ -28,76 +29,6 @@
 using namespace diffvol;
 
 namespace {
-
-double now_ms() {
-  using namespace std::chrono;
-  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
-}
-double median(std::vector<double> v) {
-  if (v.empty()) return -1;
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// /proc/self/status fields in bytes (VmRSS, VmHWM).
-long status_bytes(const char *field) {
-  long kb = -1;
-  if (std::FILE *f = std::fopen("/proc/self/status", "r")) {
-    char line[256];
-    size_t n = std::strlen(field);
-    while (std::fgets(line, sizeof line, f))
-      if (std::strncmp(line, field, n) == 0 && line[n] == ':') {
-        kb = std::atol(line + n + 1);
-        break;
-      }
-    std::fclose(f);
-  }
-  return kb < 0 ? -1 : kb * 1024;
-}
-// Resets VmHWM to the current RSS (Linux: "5" to /proc/self/clear_refs).
-bool reset_peak() {
-  std::FILE *f = std::fopen("/proc/self/clear_refs", "w");
-  if (!f) return false;
-  bool ok = std::fputs("5", f) >= 0;
-  return std::fclose(f) == 0 && ok;
-}
-
-struct MemProbe {
-  long base = -1, peak = -1, after = -1;
-  bool peak_ok = false;
-  void begin() {
-    malloc_trim(0);
-    peak_ok = reset_peak();
-    base = status_bytes("VmRSS");
-  }
-  // The peak first; then freed memory goes back (the build's temporaries would otherwise
-  // stay in malloc's free lists and count as retained).
-  void end() {
-    peak = status_bytes("VmHWM");
-    malloc_trim(0);
-    after = status_bytes("VmRSS");
-  }
-  long retained() const { return after - base; }
-  long peak_delta() const { return peak_ok ? peak - base : -1; }
-};
-
-std::string mib(double bytes) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.1f", bytes / (1024.0 * 1024.0));
-  return b;
-}
-std::string ms(double x) {
-  char b[64];
-  std::snprintf(b, sizeof b, x < 10 ? "%.2f" : "%.1f", x);
-  return b;
-}
-std::string ratio(double a, double b) {
-  if (a <= 0 || b <= 0) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.2f", a / b);
-  return buf;
-}
 
 // `threads` 0: the library's default (every thread of the machine).
 chf_mesh *tm_build(const TetSoup &s, uint32_t level, uint32_t threads = 0) {

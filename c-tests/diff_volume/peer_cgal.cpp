@@ -48,20 +48,99 @@ std::unique_ptr<CgalVol> CgalVol::build(const TetSoup &s, CgalStats &st) {
   bool ok = CGAL::build_triangulation<Tr, true>(out->p_->tr, points, cells, border_facets,
                                                  out->p_->handles, false, false);
   double t2 = now_ms();
-  st.convert_ms = t1 - t0;
-  st.build_ms = t2 - t0;
-  st.ok = ok;
-  const Tds &tds = out->p_->tr.tds();
-  st.vertices = tds.number_of_vertices();
-  st.cells = tds.number_of_cells();
-  st.vertex_capacity = tds.vertices().capacity();
-  st.cell_capacity = tds.cells().capacity();
   if (!ok) {
     st.refusal = "build_triangulation returned false (a facet or an infinite facet with more than two cells)";
     return nullptr;
   }
-  st.finite_cells = out->p_->tr.number_of_finite_cells();
+  st = out->stats();
+  st.convert_ms = t1 - t0;
+  st.build_ms = t2 - t0;
   return out;
+}
+
+CgalStats CgalVol::stats() const {
+  CgalStats st;
+  st.ok = true;
+  st.sizeof_vertex = sizeof(Tr::Vertex);
+  st.sizeof_point = sizeof(Tr::Point);
+  st.sizeof_cell = sizeof(Tr::Cell);
+  const Tds &tds = p_->tr.tds();
+  st.vertices = tds.number_of_vertices();
+  st.cells = tds.number_of_cells();
+  st.vertex_capacity = tds.vertices().capacity();
+  st.cell_capacity = tds.cells().capacity();
+  st.finite_cells = p_->tr.number_of_finite_cells();
+  return st;
+}
+
+namespace {
+std::vector<Ch> finite_cell_list(const Tr &tr) {
+  std::vector<Ch> live;
+  live.reserve(tr.number_of_finite_cells());
+  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) live.push_back(c);
+  return live;
+}
+} // namespace
+
+EditRun CgalVol::split_storm(uint64_t n, uint64_t seed) {
+  Tr &tr = p_->tr;
+  std::vector<Ch> live = finite_cell_list(tr);
+  live.reserve(live.size() + 3 * n);
+  EditRng rng(seed);
+  EditRun run;
+  double t0 = cpu_ms();
+  for (uint64_t i = 0; i < n; ++i) {
+    Ch c = live[rng.below(live.size())];
+    const auto &a = c->vertex(0)->point(), &b = c->vertex(1)->point(), &d = c->vertex(2)->point(),
+               &e = c->vertex(3)->point();
+    Tr::Point p(0.25 * (a.x() + b.x() + d.x() + e.x()), 0.25 * (a.y() + b.y() + d.y() + e.y()),
+                0.25 * (a.z() + b.z() + d.z() + e.z()));
+    tr.insert_in_cell(p, c);
+    // The TDS keeps `c` (now holding the new vertex) and puts the three new cells across
+    // its faces 1, 2, 3.
+    live.push_back(c->neighbor(1));
+    live.push_back(c->neighbor(2));
+    live.push_back(c->neighbor(3));
+    if (i == 0) run.first_ms = cpu_ms() - t0;
+  }
+  run.ms = cpu_ms() - t0;
+  run.attempts = run.accepted = n;
+  return run;
+}
+
+EditRun CgalVol::flip_storm(uint64_t attempts, uint64_t seed) {
+  Tr &tr = p_->tr;
+  std::vector<Ch> live = finite_cell_list(tr);
+  live.reserve(live.size() + attempts);
+  EditRng rng(seed);
+  EditRun run;
+  double t0 = cpu_ms();
+  for (uint64_t i = 0; i < attempts; ++i) {
+    FlipPick pk = pick_flip(rng, live.size());
+    Ch c = live[pk.k];
+    if (pk.flip23) {
+      ++run.attempts23;
+      if (tr.flip(c, pk.local)) {
+        ++run.accepted23;
+        // The TDS keeps `c` and its neighbour and links the new cell across c's face
+        // (i + 2) mod 4.
+        live.push_back(c->neighbor((pk.local + 2) & 3));
+      }
+    } else {
+      ++run.attempts32;
+      if (tr.flip(c, kEdgeEnds[pk.local][0], kEdgeEnds[pk.local][1])) {
+        ++run.accepted32;
+        // The TDS deletes `c` and keeps the other two.
+        live[pk.k] = live.back();
+        live.pop_back();
+      }
+    }
+    if (i == 0) run.first_ms = cpu_ms() - t0;
+  }
+  run.ms = cpu_ms() - t0;
+  run.attempts = attempts;
+  run.accepted = run.accepted23 + run.accepted32;
+  return run;
 }
 
 Answers CgalVol::answers(const TetSoup &s) const {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "answers.hpp"
+#include "edit_policy.hpp"
 #include "tet_soup.hpp"
 
 #include <cstdint>
@@ -51,6 +52,19 @@ public:
   uint64_t sweep_vt() const;  // finite_incident_cells(v) into a reused vector
   uint64_t sweep_et() const;  // incident_cells(edge) circulator, finite cells counted
   uint64_t sweep_vv() const;  // finite_adjacent_vertices(v) into a reused vector
+
+  // The editing benchmark (edit_policy.hpp). Both edit the triangulation in place; the
+  // finite cells are kept in a list (the handles, updated in O(1) per operation) to draw
+  // from uniformly.
+  // `n` 1-4 splits (Triangulation_3::insert_in_cell) of random finite cells at their
+  // centroids.
+  EditRun split_storm(uint64_t n, uint64_t seed);
+  // `attempts` random flips: Triangulation_3::flip(Cell_handle, int) for a 2-3 flip and
+  // flip(Cell_handle, int, int) for a 3-2 flip, each checking (finite, degree 3, convex
+  // position) and refusing by returning false.
+  EditRun flip_storm(uint64_t attempts, uint64_t seed);
+  // Counts and capacities as they are now (after edits too); the timings stay 0.
+  CgalStats stats() const;
 
 private:
   friend class CgalEdit; // edits the triangulation (peer_cgal_edit.hpp)

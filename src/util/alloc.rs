@@ -19,6 +19,14 @@ pub(crate) fn try_reserve<T>(v: &mut Vec<T>, additional: usize, what: &str) -> R
         .map_err(|_| Error::out_of_memory(bytes_of::<T>(v.len().saturating_add(additional)), what))
 }
 
+/// Room for `additional` more elements in `v`, growing by amortised steps: for arrays that
+/// grow a few elements at a time (an edit's appends), where growing exactly would move the
+/// whole array on every call.
+pub(crate) fn try_grow<T>(v: &mut Vec<T>, additional: usize, what: &str) -> Result<()> {
+    v.try_reserve(additional)
+        .map_err(|_| Error::out_of_memory(bytes_of::<T>(v.len().saturating_add(additional)), what))
+}
+
 /// An empty hash map with room for `n` entries.
 pub(crate) fn try_hash_map<K: Eq + std::hash::Hash, V>(
     n: usize, what: &str,

@@ -10,7 +10,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{next, prev};
 use crate::error::Result;
-use crate::util::alloc::try_reserve;
+use crate::util::alloc::try_grow;
 use glam::DVec3;
 
 impl Che {
@@ -151,24 +151,25 @@ impl Che {
     }
 
     /// Room for `t` triangles, `n` vertices and `e` edges more, so that the writes after
-    /// it cannot fail half-way.
+    /// it cannot fail half-way; grown by amortised steps, since an edit appends a few
+    /// elements at a time and exact growth would move every array on every edit.
     pub(super) fn make_room(&mut self, t: usize, n: usize, e: usize) -> Result<()> {
         let h = 3 * t;
         let (nv, nt) = (self.n_vertices, self.num_triangles());
-        try_reserve(v_mut(self), h, "the half-edge vertices V")?;
-        try_reserve(o_mut(self), h, "the opposites O")?;
-        try_reserve(vh_mut(self), n, "the vertex half-edges VH")?;
+        try_grow(v_mut(self), h, "the half-edge vertices V")?;
+        try_grow(o_mut(self), h, "the opposites O")?;
+        try_grow(vh_mut(self), n, "the vertex half-edges VH")?;
         let st = self.st_mut();
-        try_reserve(&mut st.removed_vertex, n, "the removed-vertex flags")?;
+        try_grow(&mut st.removed_vertex, n, "the removed-vertex flags")?;
         if self.level >= 2 {
-            try_reserve(&mut self.st_mut().edge_of, h, "the edge ids")?;
-            try_reserve(eh_mut(self), e, "the edge half-edges EH")?;
+            try_grow(&mut self.st_mut().edge_of, h, "the edge ids")?;
+            try_grow(eh_mut(self), e, "the edge half-edges EH")?;
         }
         if !self.positions.is_empty() {
-            try_reserve(positions_mut(self), n, "the positions")?;
+            try_grow(positions_mut(self), n, "the positions")?;
         }
         if n > 0 {
-            try_reserve(
+            try_grow(
                 vertex_origin_mut(self).written_out(nv)?,
                 n,
                 "the vertex origins",
@@ -176,7 +177,7 @@ impl Che {
         }
         if t > 0 {
             let map = triangle_origin_mut(self).written_out(nt)?;
-            try_reserve(map, t, "the triangle origins")?;
+            try_grow(map, t, "the triangle origins")?;
         }
         Ok(())
     }

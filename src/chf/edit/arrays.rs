@@ -4,13 +4,13 @@
 
 use crate::chf::Chf;
 use crate::error::Result;
-use crate::util::alloc::try_reserve;
+use crate::util::alloc::try_grow;
 use glam::DVec3;
 
 /// Appends tetrahedron `q` (`O` unpaired), coming from no input tetrahedron.
 pub(crate) fn push_tetrahedron(chf: &mut Chf, q: [u32; 4]) -> Result<()> {
-    try_reserve(chf.v.to_mut("the tetrahedra V")?, 4, "the tetrahedra V")?;
-    try_reserve(chf.o.to_mut("the opposites O")?, 4, "the opposites O")?;
+    try_grow(chf.v.to_mut("the tetrahedra V")?, 4, "the tetrahedra V")?;
+    try_grow(chf.o.to_mut("the opposites O")?, 4, "the opposites O")?;
     chf.tet_origin
         .push(crate::NONE, "the tetrahedron origins")?;
     chf.v.owned_mut().extend_from_slice(&q);
@@ -32,13 +32,13 @@ pub(crate) fn set_vertex_half_face(chf: &mut Chf, x: u32, hf: u32) {
 
 /// Appends a vertex (at `position` when the mesh has positions), from no input vertex.
 pub(crate) fn push_vertex(chf: &mut Chf, position: Option<DVec3>) -> Result<()> {
-    try_reserve(
+    try_grow(
         chf.vh.to_mut("the vertex half-faces VH")?,
         1,
         "the vertex half-faces VH",
     )?;
     if position.is_some() {
-        try_reserve(chf.positions.to_mut("the positions")?, 1, "the positions")?;
+        try_grow(chf.positions.to_mut("the positions")?, 1, "the positions")?;
     }
     chf.vertex_origin.push(crate::NONE, "the vertex origins")?;
     if let Some(p) = position {

@@ -398,21 +398,21 @@ impl Chf {
 
     /// Room for everything the plan appends, so that the writes cannot fail halfway.
     fn reserve_for(&mut self, plan: &Plan) -> Result<()> {
-        use crate::util::alloc::try_reserve;
+        use crate::util::alloc::try_grow;
         let n = plan.add.len();
-        try_reserve(
+        try_grow(
             self.v.to_mut("the tetrahedra V")?,
             4 * n,
             "the tetrahedra V",
         )?;
-        try_reserve(self.o.to_mut("the opposites O")?, 4 * n, "the opposites O")?;
+        try_grow(self.o.to_mut("the opposites O")?, 4 * n, "the opposites O")?;
         let s = self.edit_state()?;
-        try_reserve(&mut s.tet_removed, n, "the tetrahedron marks")?;
-        try_reserve(&mut s.hf_face, 4 * n, "the face ids")?;
-        try_reserve(&mut s.slot_edge, 6 * n, "the edge ids")?;
-        try_reserve(&mut s.face_hf, 4 * n, "the face half-faces")?;
-        try_reserve(&mut s.edge_he, 6 * n, "the edge half-edges")?;
-        try_reserve(&mut s.vertex_removed, 1, "the vertex marks")?;
+        try_grow(&mut s.tet_removed, n, "the tetrahedron marks")?;
+        try_grow(&mut s.hf_face, 4 * n, "the face ids")?;
+        try_grow(&mut s.slot_edge, 6 * n, "the edge ids")?;
+        try_grow(&mut s.face_hf, 4 * n, "the face half-faces")?;
+        try_grow(&mut s.edge_he, 6 * n, "the edge half-edges")?;
+        try_grow(&mut s.vertex_removed, 1, "the vertex marks")?;
         if self.level >= 3 {
             let s = self.edit.as_mut().expect("edited");
             s.boundary.settle(&self.o)?;

@@ -1,5 +1,5 @@
-//! Generated surfaces for tests, benchmarks and the CLI's default mesh: plain parametric
-//! grids with known topology.
+//! Generated surfaces and volumes for tests, benchmarks and the CLI's default mesh: plain
+//! parametric grids with known topology.
 
 use glam::DVec3;
 use std::f64::consts::TAU;
@@ -9,6 +9,34 @@ use std::f64::consts::TAU;
 pub struct Surface {
     pub positions: Vec<DVec3>,
     pub triangles: Vec<[u32; 3]>,
+}
+
+/// A tetrahedron list with positions.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Volume {
+    pub positions: Vec<DVec3>,
+    pub tetrahedra: Vec<[u32; 4]>,
+}
+
+/// A box of `n`^3 unit cubes, six tetrahedra each around the cube's main diagonal (Kuhn's
+/// subdivision, so neighbouring cubes meet face to face): a ball.
+pub fn cube_grid(n: u32) -> Volume {
+    let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
+    let mut v = Volume::default();
+    for k in 0..=n {
+        for j in 0..=n {
+            for i in 0..=n {
+                v.positions.push(DVec3::new(i as f64, j as f64, k as f64));
+            }
+        }
+    }
+    for (i, j, k) in (0..n).flat_map(|k| (0..n).flat_map(move |j| (0..n).map(move |i| (i, j, k)))) {
+        let c = |b: u32| id(i + (b & 1), j + (b >> 1 & 1), k + (b >> 2));
+        for [p, q] in [[1, 2], [2, 1], [1, 4], [4, 1], [2, 4], [4, 2]] {
+            v.tetrahedra.push([c(0), c(p), c(p | q), c(7)]);
+        }
+    }
+    v
 }
 
 /// An open `nx` by `ny` grid of quads, two triangles each: a disk with one boundary curve.

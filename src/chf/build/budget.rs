@@ -48,27 +48,9 @@ mod tests {
     use crate::chf::{BuildOptions, Chf};
     use glam::DVec3;
 
-    /// An `n`^3 grid of cubes, six tetrahedra each (Kuhn), with positions.
     fn cubes(n: u32) -> (Vec<[u32; 4]>, Vec<DVec3>) {
-        let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
-        let mut positions = Vec::new();
-        for k in 0..=n {
-            for j in 0..=n {
-                for i in 0..=n {
-                    positions.push(DVec3::new(i as f64, j as f64, k as f64));
-                }
-            }
-        }
-        let mut tets = Vec::new();
-        for (i, j, k) in
-            (0..n).flat_map(|k| (0..n).flat_map(move |j| (0..n).map(move |i| (i, j, k))))
-        {
-            let c = |b: u32| id(i + (b & 1), j + (b >> 1 & 1), k + (b >> 2));
-            for [p, q] in [[1, 2], [2, 1], [1, 4], [4, 1], [2, 4], [4, 2]] {
-                tets.push([c(0), c(p), c(p | q), c(7)]);
-            }
-        }
-        (tets, positions)
+        let v = crate::generate::cube_grid(n);
+        (v.tetrahedra, v.positions)
     }
 
     /// The estimate bounds what the structure holds, within the factor the docs state.

@@ -97,31 +97,12 @@ impl super::EditState {
 #[cfg(test)]
 mod tests {
     use crate::chf::{BuildOptions, Chf};
-    use glam::DVec3;
 
     /// An `n`^3 grid of unit cubes, six tetrahedra each, at level 3 with positions.
     fn grid(n: u32) -> Chf {
-        let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
-        let mut positions = Vec::new();
-        for k in 0..=n {
-            for j in 0..=n {
-                for i in 0..=n {
-                    positions.push(DVec3::new(i as f64, j as f64, k as f64));
-                }
-            }
-        }
-        let mut tets = Vec::new();
-        for k in 0..n {
-            for j in 0..n {
-                for i in 0..n {
-                    let c = |b: u32| id(i + (b & 1), j + (b >> 1 & 1), k + (b >> 2));
-                    for [p, q] in [[1, 2], [2, 1], [1, 4], [4, 1], [2, 4], [4, 2]] {
-                        tets.push([c(0), c(p), c(p | q), c(7)]);
-                    }
-                }
-            }
-        }
-        Chf::from_tetrahedra(&tets, positions.len(), &positions, BuildOptions::level(3)).unwrap()
+        let v = crate::generate::cube_grid(n);
+        let (t, p) = (&v.tetrahedra, &v.positions);
+        Chf::from_tetrahedra(t, p.len(), p, BuildOptions::level(3)).unwrap()
     }
 
     /// What the next rebuild will read: the half-faces it starts from.

@@ -1,7 +1,7 @@
 //! Splitting an edge (2 triangles into 4, or 1 into 2 on the boundary) and a triangle
 //! (1 into 3) at a new vertex.
 
-use super::arrays::v_mut;
+use super::arrays::{v_mut, vh_mut};
 use super::checks::refuse;
 use crate::NONE;
 use crate::che::Che;
@@ -46,7 +46,7 @@ impl Che {
     fn split_live(&mut self, h: u32, p: Option<DVec3>) -> u32 {
         let g = self.o[h as usize];
         let (h1, h2) = (next(h), prev(h));
-        let (a, b, c) = (self.v[h as usize], self.v[h1 as usize], self.v[h2 as usize]);
+        let (b, c) = (self.v[h1 as usize], self.v[h2 as usize]);
         let m = self.push_vertex(p, NONE);
         let t3 = first(self.push_triangle([m, b, c], self.triangle_origin.get(tri(h))));
         let (oh1, e_bc) = (self.o[h1 as usize], self.edge_id(h1));
@@ -56,9 +56,15 @@ impl Che {
         self.name_edge(t3 + 1, e_bc);
         self.link(h1, t3 + 2);
         self.name_edge(h1, NONE);
-        let mut outs = vec![(a, h), (b, t3 + 1), (c, h2), (m, h1)];
+        // No old vertex changes its boundary, so a `VH` changes only where its half-edge
+        // changed: `b -> c` and `b -> a` now leave `m`, and `d -> b` now ends at `m`; each
+        // is replaced by the new half-edge that took its place. `m` leaves by `m -> b` on
+        // the boundary.
+        let mut moves = [(b, h1, t3 + 1), (NONE, NONE, NONE), (NONE, NONE, NONE)];
+        let mut m_out = h1;
         if g == NONE {
             self.name_edge(t3, NONE);
+            m_out = t3;
         } else {
             let g2 = prev(g);
             let d = self.v[g2 as usize];
@@ -72,11 +78,15 @@ impl Che {
             self.name_edge(g2, NONE);
             self.link(t3, t4);
             self.name_edge(t3, NONE);
-            outs.push((d, g2));
+            moves[1] = (b, g, t4);
+            moves[2] = (d, g2, t4 + 2);
         }
-        for (x, out) in outs {
-            self.fix_vh(x, out);
+        for (x, was, now) in moves {
+            if x != NONE && self.vh[x as usize] == was {
+                vh_mut(self)[x as usize] = now;
+            }
         }
+        vh_mut(self)[m as usize] = m_out;
         m
     }
 

@@ -17,7 +17,7 @@ mod query;
 mod tables;
 
 pub use crate::Ids;
-pub use crate::util::sparse::SparseMatrix;
+pub use crate::util::sparse::{Assembled, CsrSlices, SparseMatrix, Storage};
 pub use build::{
     BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts,
     estimated_build_bytes,

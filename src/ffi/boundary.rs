@@ -372,6 +372,17 @@ pub(crate) unsafe fn buf_arg<'a, T>(
     }))
 }
 
+/// The caller's `buf` as `len` initialised elements: zeroed first (every bit pattern of
+/// the ids and values given this way, all zeros included, is valid). `buf` is non-NULL and
+/// valid for `len` writes.
+pub(crate) unsafe fn zeroed<'a, T: bytemuck::Zeroable>(buf: *mut T, len: usize) -> &'a mut [T] {
+    // SAFETY: forwarded contract; all zeros is a valid `T` (`Zeroable`).
+    unsafe {
+        buf.write_bytes(0, len);
+        std::slice::from_raw_parts_mut(buf, len)
+    }
+}
+
 /// The core's sink over the caller's `(buf, cap, *out_len)`.
 pub(crate) unsafe fn sink<'a, T: Copy>(
     buf: *mut T, cap: usize, out_len: *mut usize, name: &'static str,

@@ -2,9 +2,13 @@
 
 use crate::NONE;
 use crate::che::Che;
+use crate::che::Csr;
+use crate::che::export::ExportTables;
 use crate::che::ids::{next, tri};
 use crate::error::Result;
-use crate::util::sparse::{Entry, SparseMatrix, filled, reserve};
+use crate::util::sparse::{
+    Assembled, Entries, Put, Shape, SparseMatrix, Storage, Values, assemble,
+};
 
 /// Which matrix `che_mesh_export_matrix` writes (vertices, edges and triangles are the
 /// structure's).
@@ -41,159 +45,143 @@ impl MatrixKind {
     ];
 }
 
-/// Sets every stored value to 1: the pattern of an adjacency, whatever the multiplicity.
-fn pattern(mut m: SparseMatrix) -> SparseMatrix {
-    m.values.iter_mut().for_each(|x| *x = 1.0);
-    m
-}
-
 impl Che {
     /// The matrix `kind`, in CSR with sorted columns; see [`MatrixKind`].
     pub fn matrix(&self, kind: MatrixKind) -> Result<SparseMatrix> {
+        self.matrix_into(kind, &mut |_, _| None)?.owned()
+    }
+
+    /// The matrix `kind` in the storage `offer` gives once the size is known (see
+    /// [`Storage`]), else in memory of its own.
+    pub fn matrix_into(&self, kind: MatrixKind, offer: Storage) -> Result<Assembled> {
         self.check_collected("the matrix export")?;
         let (nv, ne, nt) = (self.n_vertices, self.num_edges, self.num_triangles());
-        let entries = match kind {
-            MatrixKind::VertexAdjacency | MatrixKind::Laplacian => return self.vertex_rows(kind),
-            _ => self.matrix_entries(kind)?,
+        let pattern = |off| Values::Pattern {
+            off,
+            degree_diagonal: false,
         };
-        match kind {
-            MatrixKind::EdgeAdjacency => Ok(pattern(SparseMatrix::from_entries(ne, ne, &entries)?)),
-            MatrixKind::D1 => SparseMatrix::from_entries(nv, ne, &entries),
-            MatrixKind::D2 => SparseMatrix::from_entries(ne, nt, &entries),
-            _ => Ok(pattern(SparseMatrix::from_entries(nt, nt, &entries)?)),
-        }
-    }
-
-    /// The vertex adjacency, or the Laplacian (`kind`), straight from the half-edges: a
-    /// counting pass sizes the rows, a second fills them, and each short row is sorted and
-    /// rid of repeats in place, so no entry list is built or sorted as a whole.
-    fn vertex_rows(&self, kind: MatrixKind) -> Result<SparseMatrix> {
-        let o = self.opposites_or_computed();
-        let nv = self.n_vertices;
-        let diagonal = kind == MatrixKind::Laplacian;
-        // Row `V[h]` takes the head of every `h`; a boundary half-edge also gives its tail
-        // to its head's row, which no half-edge leaving the head reaches back to. Repeats
-        // (an edge split by the build) go in the per-row pass.
-        let mut offsets = filled(nv + 1, u64::from(diagonal), "matrix offsets")?;
-        offsets[0] = 0;
-        for (h, &g) in o.iter().enumerate() {
-            offsets[self.v[h] as usize + 1] += 1;
-            if g == NONE {
-                offsets[self.v[next(h as u32) as usize] as usize + 1] += 1;
-            }
-        }
-        for r in 0..nv {
-            offsets[r + 1] += offsets[r];
-        }
-        let mut columns = filled(offsets[nv] as usize, 0u32, "matrix columns")?;
-        // `offsets[r]` walks row r as a cursor, ending at the start of row r + 1.
-        let mut put = |row: u32, col: u32| {
-            let slot = &mut offsets[row as usize];
-            columns[*slot as usize] = col;
-            *slot += 1;
-        };
-        for v in (0..nv as u32).filter(|_| diagonal) {
-            put(v, v);
-        }
-        for (h, &g) in o.iter().enumerate() {
-            let (a, b) = (self.v[h], self.v[next(h as u32) as usize]);
-            put(a, b);
-            if g == NONE {
-                put(b, a);
-            }
-        }
-        let values = compact_rows(&mut offsets, &mut columns, diagonal)?;
-        Ok(SparseMatrix {
-            n_rows: nv,
-            n_cols: nv,
-            offsets,
-            columns,
+        let shape = |n_rows, n_cols, values| Shape {
+            n_rows,
+            n_cols,
             values,
-        })
-    }
-
-    /// The (row, column, value) entries of `kind` (none for the vertex adjacency and the
-    /// Laplacian, made from the half-edges directly).
-    fn matrix_entries(&self, kind: MatrixKind) -> Result<Vec<Entry>> {
-        let t = self.export_tables()?;
-        let e = |row: u32, col: u32, value: f64| Entry { row, col, value };
-        let mut out = Vec::new();
+        };
         match kind {
-            MatrixKind::D1 => {
-                reserve(&mut out, 2 * t.eh.len(), "matrix entries")?;
-                for (id, &h) in t.eh.iter().enumerate() {
-                    let (a, b) = (self.v[h as usize], self.v[next(h) as usize]);
-                    out.extend([e(a, id as u32, -1.0), e(b, id as u32, 1.0)]);
-                }
-            }
-            MatrixKind::D2 => {
-                reserve(&mut out, self.v.len(), "matrix entries")?;
-                for (h, &g) in t.o.iter().enumerate() {
-                    let sign = if g == NONE || (h as u32) < g {
-                        1.0
-                    } else {
-                        -1.0
-                    };
-                    out.push(e(t.edge[h], tri(h as u32), sign));
-                }
-            }
-            MatrixKind::DualAdjacency => {
-                reserve(&mut out, self.v.len(), "matrix entries")?;
-                for (h, &g) in t.o.iter().enumerate() {
-                    if g != NONE {
-                        out.push(e(tri(h as u32), tri(g), 1.0));
-                    }
-                }
+            MatrixKind::VertexAdjacency | MatrixKind::Laplacian => {
+                let laplacian = kind == MatrixKind::Laplacian;
+                let values = match laplacian {
+                    true => Values::Pattern {
+                        off: -1.0,
+                        degree_diagonal: true,
+                    },
+                    false => pattern(1.0),
+                };
+                let o = self.opposites_or_computed();
+                let pairs = VertexPairs {
+                    v: &self.v,
+                    o: &o,
+                    diagonal: laplacian.then_some(nv as u32),
+                };
+                assemble(shape(nv, nv, values), &pairs, offer)
             }
             MatrixKind::EdgeAdjacency => {
                 let ve = self.all_vertex_edges()?;
-                for v in 0..ve.len() {
-                    let row = ve.get(v);
-                    reserve(&mut out, row.len() * row.len(), "matrix entries")?;
-                    for &a in row {
-                        out.extend(row.iter().filter(|&&b| b != a).map(|&b| e(a, b, 1.0)));
-                    }
-                }
+                assemble(shape(ne, ne, pattern(1.0)), &EdgePairs(&ve), offer)
             }
-            MatrixKind::VertexAdjacency | MatrixKind::Laplacian => {}
+            MatrixKind::D1 | MatrixKind::D2 | MatrixKind::DualAdjacency => {
+                let t = self.export_tables()?;
+                let entries = Incidence {
+                    che: self,
+                    t: &t,
+                    kind,
+                };
+                let size = match kind {
+                    MatrixKind::D1 => shape(nv, ne, Values::Summed),
+                    MatrixKind::D2 => shape(ne, nt, Values::Summed),
+                    _ => shape(nt, nt, pattern(1.0)),
+                };
+                assemble(size, &entries, offer)
+            }
         }
-        Ok(out)
     }
 }
 
-/// Sorts every row of `columns` and keeps each column once, in place; rows end where
-/// `offsets` says (`offsets[r]` the end of row r, as the filling cursors leave them), and
-/// `offsets` becomes the CSR offsets of what is kept. The values are 1 (an adjacency), or
-/// with `diagonal` -1 off the diagonal and the number of other columns on it (the
-/// Laplacian, whose rows hold their own vertex).
-fn compact_rows(offsets: &mut [u64], columns: &mut Vec<u32>, diagonal: bool) -> Result<Vec<f64>> {
-    let n = offsets.len() - 1;
-    let mut values = Vec::new();
-    reserve(&mut values, columns.len(), "matrix values")?;
-    let (mut start, mut w) = (0usize, 0usize);
-    for (r, slot) in offsets[..n].iter_mut().enumerate() {
-        let (end, first) = (*slot as usize, w);
-        *slot = w as u64;
-        columns[start..end].sort_unstable();
-        let mut diag = None;
-        for i in start..end {
-            let c = columns[i];
-            if w > first && columns[w - 1] == c {
-                continue;
-            }
-            if c as usize == r && diagonal {
-                diag = Some(w);
-            }
-            columns[w] = c;
-            values.push(if diagonal { -1.0 } else { 1.0 });
-            w += 1;
+/// The vertex adjacency's entries from the half-edges: row `V[h]` takes the head of every
+/// `h`; a boundary half-edge also gives its tail to its head's row, which no half-edge
+/// leaving the head reaches back to. With `diagonal` (the number of vertices), every row
+/// also holds its own vertex. Repeats (an edge split by the build) merge in the rows.
+struct VertexPairs<'a> {
+    v: &'a [u32],
+    o: &'a [u32],
+    diagonal: Option<u32>,
+}
+
+impl Entries for VertexPairs<'_> {
+    fn each<P: Put>(&self, p: &mut P) {
+        for v in 0..self.diagonal.unwrap_or(0) {
+            p.put(v, v, 0.0);
         }
-        if let Some(d) = diag {
-            values[d] = (w - first - 1) as f64;
+        // A triangle at a time: its three half-edges without an index computation each.
+        for (c, o) in self.v.chunks_exact(3).zip(self.o.chunks_exact(3)) {
+            for (i, j) in [(0, 1), (1, 2), (2, 0)] {
+                p.put(c[i], c[j], 1.0);
+                if o[i] == NONE {
+                    p.put(c[j], c[i], 1.0);
+                }
+            }
         }
-        start = end;
     }
-    offsets[n] = w as u64;
-    columns.truncate(w);
-    Ok(values)
+}
+
+/// The edge adjacency's entries: every two edges of a vertex's star.
+struct EdgePairs<'a>(&'a Csr);
+
+impl Entries for EdgePairs<'_> {
+    fn each<P: Put>(&self, p: &mut P) {
+        for v in 0..self.0.len() {
+            let row = self.0.get(v);
+            for &a in row {
+                row.iter()
+                    .filter(|&&b| b != a)
+                    .for_each(|&b| p.put(a, b, 1.0));
+            }
+        }
+    }
+}
+
+/// The entries of d1, d2 or the dual graph, from the export tables.
+struct Incidence<'a> {
+    che: &'a Che,
+    t: &'a ExportTables<'a>,
+    kind: MatrixKind,
+}
+
+impl Entries for Incidence<'_> {
+    // The dual graph's rows come in order (one triangle's half-edges after another's).
+    fn rows_in_order(&self) -> bool {
+        self.kind == MatrixKind::DualAdjacency
+    }
+
+    fn each<P: Put>(&self, p: &mut P) {
+        let (v, t) = (&self.che.v, self.t);
+        match self.kind {
+            MatrixKind::D1 => {
+                for (id, &h) in t.eh.iter().enumerate() {
+                    let (a, b) = (v[h as usize], v[next(h) as usize]);
+                    p.put(a, id as u32, -1.0);
+                    p.put(b, id as u32, 1.0);
+                }
+            }
+            MatrixKind::D2 => {
+                for (h, &g) in t.o.iter().enumerate() {
+                    let along = g == NONE || (h as u32) < g;
+                    p.put(t.edge[h], tri(h as u32), if along { 1.0 } else { -1.0 });
+                }
+            }
+            _ => {
+                for (h, &g) in t.o.iter().enumerate().filter(|(_, g)| **g != NONE) {
+                    p.put(tri(h as u32), tri(g), 1.0);
+                }
+            }
+        }
+    }
 }

@@ -5,7 +5,9 @@ use crate::chf::Chf;
 use crate::chf::ids::{half_edge, he_origin, he_target, tet};
 use crate::chf::query::view::{Need, View};
 use crate::error::Result;
-use crate::util::sparse::{Entry, SparseMatrix, reserve};
+use crate::util::sparse::{
+    Assembled, Entry, Shape, SparseMatrix, Storage, Values, assemble, reserve,
+};
 
 /// Which matrix `chf_mesh_export_matrix` writes (the structure's elements).
 #[repr(u32)]
@@ -37,6 +39,12 @@ impl VolumeMatrixKind {
 impl Chf {
     /// The matrix `kind`; see [`VolumeMatrixKind`].
     pub fn volume_matrix(&self, kind: VolumeMatrixKind) -> Result<SparseMatrix> {
+        self.volume_matrix_into(kind, &mut |_, _| None)?.owned()
+    }
+
+    /// The matrix `kind` in the storage `offer` gives once the size is known (see
+    /// [`Storage`]), else in memory of its own.
+    pub fn volume_matrix_into(&self, kind: VolumeMatrixKind, offer: Storage) -> Result<Assembled> {
         self.check_collected("the matrix export")?;
         let view = self.view(Need {
             faces: true,
@@ -49,6 +57,11 @@ impl Chf {
             self.num_tetrahedra(),
         );
         let e = |row: u32, col: u32, value: f64| Entry { row, col, value };
+        let summed = |n_rows, n_cols| Shape {
+            n_rows,
+            n_cols,
+            values: Values::Summed,
+        };
         let mut out = Vec::new();
         match kind {
             VolumeMatrixKind::D1 => {
@@ -56,7 +69,7 @@ impl Chf {
                 for (id, [a, b]) in edge_ends(&view, ne).into_iter().enumerate() {
                     out.extend([e(a, id as u32, -1.0), e(b, id as u32, 1.0)]);
                 }
-                SparseMatrix::from_entries(nv, ne, &out)
+                assemble(summed(nv, ne), &out[..], offer)
             }
             VolumeMatrixKind::D2 => {
                 let ends = edge_ends(&view, ne);
@@ -70,7 +83,7 @@ impl Chf {
                         out.push(e(id, f, if along { 1.0 } else { -1.0 }));
                     }
                 }
-                SparseMatrix::from_entries(ne, nf, &out)
+                assemble(summed(ne, nf), &out[..], offer)
             }
             VolumeMatrixKind::D3 => {
                 reserve(&mut out, view.o.len(), "matrix entries")?;
@@ -82,7 +95,7 @@ impl Chf {
                     };
                     out.push(e(view.face_of(hf), tet(hf), sign));
                 }
-                SparseMatrix::from_entries(nf, nt, &out)
+                assemble(summed(nf, nt), &out[..], offer)
             }
             VolumeMatrixKind::DualAdjacency => {
                 reserve(&mut out, view.o.len(), "matrix entries")?;
@@ -91,9 +104,15 @@ impl Chf {
                         out.push(e(tet(hf as u32), tet(g), 1.0));
                     }
                 }
-                let mut m = SparseMatrix::from_entries(nt, nt, &out)?;
-                m.values.iter_mut().for_each(|x| *x = 1.0);
-                Ok(m)
+                let pattern = Values::Pattern {
+                    off: 1.0,
+                    degree_diagonal: false,
+                };
+                let shape = Shape {
+                    values: pattern,
+                    ..summed(nt, nt)
+                };
+                assemble(shape, &out[..], offer)
             }
         }
     }

@@ -5,9 +5,11 @@
 //! core (`crate::che::export`).
 
 use super::CheMesh;
-use crate::che::{HalfEdgeArray, HalfEdgeOptions, MatrixKind, SparseMatrix, WingedEdges};
+use crate::che::{
+    Assembled, CsrSlices, HalfEdgeArray, HalfEdgeOptions, MatrixKind, Storage, WingedEdges,
+};
 use crate::error::{Error, Result};
-use crate::ffi::boundary::{Handle, core, guard, options_arg, report_kind, sink};
+use crate::ffi::boundary::{Handle, core, guard, options_arg, out_arg, report_kind, sink, zeroed};
 use crate::ffi::shapes::{ids, value};
 use crate::ffi::status::Status;
 
@@ -193,7 +195,12 @@ pub unsafe extern "C" fn che_mesh_export_matrix(
             (offsets, columns, values),
             [offsets_cap, columns_cap, values_cap],
             [n_offsets, n_entries],
-            |c| c.matrix(report_kind(MatrixKind::ALL, kind, "che_matrix_kind")?),
+            |c, offer| {
+                c.matrix_into(
+                    report_kind(MatrixKind::ALL, kind, "che_matrix_kind")?,
+                    offer,
+                )
+            },
         )
     }
 }
@@ -201,10 +208,10 @@ pub unsafe extern "C" fn che_mesh_export_matrix(
 /// The body of a matrix export: `bufs` are the offsets (`u64`), columns (`u32`) and
 /// values (`f64`) buffers as the caller gave them (all NULL: a size query; some NULL and
 /// not all: an error), `lens` the offsets' and entries' out-lengths; `make` gives the
-/// matrix from the handle's core.
+/// matrix from the handle's core, in the caller's buffers when they hold it.
 pub(crate) unsafe fn matrix_out<H: Handle>(
     m: *const H, bufs: (*mut u64, *mut u32, *mut f64), caps: [usize; 3], lens: [*mut usize; 2],
-    make: impl FnOnce(&H::Core) -> Result<SparseMatrix>,
+    make: impl FnOnce(&H::Core, Storage) -> Result<Assembled>,
 ) -> Status {
     guard(|| {
         let nulls = [bufs.0.is_null(), bufs.1.is_null(), bufs.2.is_null()];
@@ -217,16 +224,47 @@ pub(crate) unsafe fn matrix_out<H: Handle>(
             let message = format!("argument '{name}' is NULL while the other buffers are not");
             return Err(Error::new(crate::ErrorKind::NullArgument, message));
         }
-        let mut n_values = 0usize;
         // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-        let (c, sinks) = unsafe {
-            let o = sink(bufs.0, caps[0], lens[0], "offsets")?;
-            let k = sink(bufs.1, caps[1], lens[1], "columns")?;
-            (
-                core(m)?,
-                (o, k, sink(bufs.2, caps[2], &mut n_values, "values")?),
-            )
+        let (c, n_offsets, n_entries) = unsafe {
+            let lens = (
+                out_arg(lens[0], "n_offsets")?,
+                out_arg(lens[1], "n_entries")?,
+            );
+            (core(m)?, lens.0, lens.1)
         };
-        make(c)?.write_into(sinks)
+        let mut offer = |rows: usize, entries: usize| {
+            let room = !nulls[0] && caps[0] >= rows && caps[1] >= entries && caps[2] >= entries;
+            // SAFETY: each buffer is valid for its capacity (contract), at least the lengths
+            // asked; zeroed before it is seen as initialised.
+            room.then(|| unsafe {
+                CsrSlices {
+                    offsets: zeroed(bufs.0, rows),
+                    columns: zeroed(bufs.1, entries),
+                    values: zeroed(bufs.2, entries),
+                }
+            })
+        };
+        match make(c, &mut offer)? {
+            Assembled::Written {
+                n_offsets: o,
+                n_entries: e,
+            } => {
+                n_offsets.set(o);
+                n_entries.set(e);
+                Ok(())
+            }
+            Assembled::Owned(matrix) => {
+                let mut n_values = 0usize;
+                // SAFETY: as above; the slices offered are no longer in use.
+                let sinks = unsafe {
+                    (
+                        sink(bufs.0, caps[0], lens[0], "offsets")?,
+                        sink(bufs.1, caps[1], lens[1], "columns")?,
+                        sink(bufs.2, caps[2], &mut n_values, "values")?,
+                    )
+                };
+                matrix.write_into(sinks)
+            }
+        }
     })
 }

@@ -79,7 +79,10 @@ pub unsafe extern "C" fn chf_mesh_export_matrix(
             (offsets, columns, values),
             [offsets_cap, columns_cap, values_cap],
             [n_offsets, n_entries],
-            |c| c.volume_matrix(report_kind(VolumeMatrixKind::ALL, kind, "chf_matrix_kind")?),
+            |c, offer| {
+                let kind = report_kind(VolumeMatrixKind::ALL, kind, "chf_matrix_kind")?;
+                c.volume_matrix_into(kind, offer)
+            },
         )
     }
 }

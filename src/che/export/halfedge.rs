@@ -6,7 +6,7 @@ use crate::che::Push;
 use crate::che::ids::{next, prev, tri};
 use crate::che::tables::vertex_half_edges;
 use crate::error::Result;
-use crate::util::alloc::try_to_vec;
+use crate::util::alloc::{try_collect, try_to_vec};
 use crate::util::sparse::{filled, reserve};
 use std::borrow::Cow;
 
@@ -129,12 +129,15 @@ impl Che {
 
     fn half_edge_layout(&self, options: HalfEdgeOptions) -> Result<Layout<'_>> {
         let o = self.opposites_or_computed();
-        let mut boundary = Vec::new();
-        if options.explicit_boundary {
-            let n = o.iter().filter(|&&g| g == NONE).count();
-            reserve(&mut boundary, n, "boundary half-edges")?;
-            boundary.extend((0..o.len() as u32).filter(|&h| o[h as usize] == NONE));
-        }
+        // One pass: the boundary is a small part of the half-edges, so growing beats a
+        // counting pass over all of them.
+        let boundary = match options.explicit_boundary {
+            true => {
+                let open = (0..o.len() as u32).filter(|&h| o[h as usize] == NONE);
+                try_collect(open, "boundary half-edges")?
+            }
+            false => Vec::new(),
+        };
         Ok(Layout { o, boundary })
     }
 

@@ -7,6 +7,7 @@
 #
 #   scripts/bench.sh [--reps N] [--export-meshes "A B"] [--edit-meshes "A B"] [--edit-reps N] [MESH...]
 #   scripts/bench.sh --edit-only [--edit-meshes "A B"] [--edit-reps N]
+#   scripts/bench.sh --export-only [--reps N] [--export-meshes "A B"]
 #   scripts/bench.sh --charts-only
 #
 # MESH: names in the mesh cache (default: bunny00 armadillo holes polygon_mesh
@@ -19,7 +20,7 @@
 # against OpenMesh and CGAL) on the --edit-meshes (default: bunny00 bunny00-sub3), --edit-reps
 # runs each (default 1: the large mesh takes minutes per library). --edit-only runs the
 # editing benchmark alone and replaces the page's last section (Editing) with its tables,
-# keeping the rest of the page. Then writes the charts of the page (docs/bench-surfaces-*.svg,
+# keeping the rest of the page; --export-only does the same for the Exports section. Then writes the charts of the page (docs/bench-surfaces-*.svg,
 # by tools/plot from the page's tables); --charts-only redraws them from the page as it is,
 # without running anything. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
 set -euo pipefail
@@ -32,6 +33,7 @@ export_meshes=(bunny00 bunny00-sub3)
 edit_meshes=(bunny00 bunny00-sub3)
 edit_reps=1
 edit_only=0
+export_only=0
 charts_only=0
 while (($#)); do
   case "$1" in
@@ -40,8 +42,9 @@ while (($#)); do
     --edit-meshes) read -r -a edit_meshes <<<"$2"; shift 2 ;;
     --edit-reps) edit_reps="$2"; shift 2 ;;
     --edit-only) edit_only=1; shift ;;
+    --export-only) export_only=1; shift ;;
     --charts-only) charts_only=1; shift ;;
-    -h|--help) sed -n 2,26p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,27p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
@@ -100,6 +103,8 @@ cmake -S "$root/c-tests/diff_surface" -B "$work/diff" -DCMAKE_PREFIX_PATH="$pref
   -DTOPOMESH_MESH_DIR="$dir" >/dev/null
 if ((edit_only)); then
   cmake --build "$work/diff" --target topomesh_bench_edit >/dev/null
+elif ((export_only)); then
+  cmake --build "$work/diff" --target topomesh_bench_export >/dev/null
 else
   cmake --build "$work/diff" --target topomesh_bench topomesh_bench_export topomesh_bench_edit >/dev/null
 fi
@@ -149,6 +154,29 @@ editing() {
     cat "$work/edit-tables.md"
   } >"$work/editing.md"
 }
+# The export benchmark into $work/exports.md: a section of its own, with its command, commit
+# and load, so that --export-only can replace it in a page written by a full run.
+exports() {
+  local files=() m load0
+  for m in "${export_meshes[@]}"; do
+    if [[ -f "$m" ]]; then files+=("$m"); else files+=("$dir/$m.off"); fi
+  done
+  ((${#files[@]})) || return 0
+  echo "== exports on ${#files[@]} meshes"
+  load0="$(cut -d' ' -f1-3 /proc/loadavg)"
+  "$work/diff/topomesh_bench_export" --reps "$reps" --md "$work/export-tables.md" "${files[@]}"
+  {
+    echo
+    echo "## Exports"
+    echo
+    echo "Eigen $eigen_v, meshoptimizer $meshopt_v (Debian); the rest as above. Command: \`$cmdline\`"
+    echo "($(date -u +%Y-%m-%d), commit $commit$dirty); load average before: $load0; after:"
+    echo "$(cut -d' ' -f1-3 /proc/loadavg)."
+    cat "$work/export-tables.md"
+  } >"$work/exports.md"
+}
+eigen_v="$(dpkg-query -W -f '${Version}' libeigen3-dev 2>/dev/null || echo 'not installed')"
+meshopt_v="$(dpkg-query -W -f '${Version}' libmeshoptimizer-dev 2>/dev/null || echo 'not installed')"
 commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
 dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (with local changes)' || true)"
 if ((edit_only)); then
@@ -160,6 +188,16 @@ if ((edit_only)); then
   echo "== wrote $out (Editing)"
   exit 0
 fi
+if ((export_only)); then
+  [[ -f "$out" ]] || { echo "bench.sh: --export-only needs a page written by a full run" >&2; exit 1; }
+  exports
+  awk '/^## Exports$/ { exit } { print }' "$out" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}' >"$work/page.md"
+  cat "$work/exports.md" >>"$work/page.md"
+  awk '/^## Editing$/ { on = 1; print ""; } on { print }' "$out" >>"$work/page.md"
+  mv "$work/page.md" "$out"
+  echo "== wrote $out (Exports)"
+  exit 0
+fi
 
 files=()
 for m in "${meshes[@]}"; do
@@ -168,15 +206,8 @@ done
 echo "== running on ${#files[@]} meshes, $reps repetitions"
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 "$work/diff/topomesh_bench" --reps "$reps" --md "$work/tables.md" "${files[@]}"
-export_files=()
-for m in "${export_meshes[@]}"; do
-  if [[ -f "$m" ]]; then export_files+=("$m"); else export_files+=("$dir/$m.off"); fi
-done
 : >"$work/exports.md"
-if ((${#export_files[@]})); then
-  echo "== exports on ${#export_files[@]} meshes"
-  "$work/diff/topomesh_bench_export" --reps "$reps" --md "$work/exports.md" "${export_files[@]}"
-fi
+exports
 : >"$work/editing.md"
 ((${#edit_meshes[@]})) && editing
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
@@ -191,8 +222,6 @@ cxx="$(c++ --version | head -1)"
 rustc_v="$(rustc --version)"
 om_v="$(dpkg-query -W -f '${Version}' libopenmesh-dev 2>/dev/null || echo '?')"
 cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
-eigen_v="$(dpkg-query -W -f '${Version}' libeigen3-dev 2>/dev/null || echo 'not installed')"
-meshopt_v="$(dpkg-query -W -f '${Version}' libmeshoptimizer-dev 2>/dev/null || echo 'not installed')"
 {
   echo "# Benchmarks: surfaces"
   echo
@@ -262,13 +291,7 @@ meshopt_v="$(dpkg-query -W -f '${Version}' libmeshoptimizer-dev 2>/dev/null || e
   echo "  libtopomesh.so; single-threaded."
   echo "- $reps repetitions of each build and sweep."
   cat "$work/tables.md"
-  if [[ -s "$work/exports.md" ]]; then
-    echo
-    echo "## Exports"
-    echo
-    echo "Eigen $eigen_v, meshoptimizer $meshopt_v (Debian); the rest as above."
-    cat "$work/exports.md"
-  fi
+  cat "$work/exports.md"
   cat "$work/editing.md"
 } > "$work/page.md"
 mv "$work/page.md" "$out"

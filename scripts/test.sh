@@ -29,6 +29,9 @@ bash scripts/fetch-tets.sh --no-large
 step "cargo test"
 cargo test --workspace --locked
 
+step "the exports against brute force on every real mesh (optimised: minutes unoptimised)"
+cargo test --release --locked --test che_export
+
 step "fuzzing: every target, fixed seed, then the kept corpus (scripts/fuzz.sh)"
 bash scripts/fuzz.sh --runs 20000
 bash scripts/fuzz.sh --replay

@@ -1,13 +1,16 @@
 //! Every export against an independent brute-force construction from the structure's
 //! triangle list (maps and sorting, none of the crate's query code), at every level, on
-//! clean, damaged and non-manifold meshes; Betti numbers against Gaussian elimination over
+//! clean, damaged and non-manifold meshes and on every real mesh of the differential tests
+//! (in an optimised build); Betti numbers against Gaussian elimination over
 //! Z/2 of the input complex and against known surfaces; strips decoded back.
 
 mod che_common;
 
 use che_common::{Rng, perturb};
 use std::collections::{BTreeMap, BTreeSet};
-use topomesh::che::{HalfEdgeOptions, MatrixKind, SparseMatrix};
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+use topomesh::che::{Assembled, CsrSlices, HalfEdgeOptions, MatrixKind, SparseMatrix};
 use topomesh::generate::{grid, sphere, torus};
 use topomesh::{BuildOptions, Che, NONE};
 
@@ -82,7 +85,55 @@ fn double_torus() -> (Tris, usize) {
 
 /// The fixtures: clean, with boundary, several components, non-manifold input the build
 /// splits, seams, duplicates, isolated vertices, and damaged random meshes.
-fn fixtures() -> Vec<(&'static str, Tris, usize)> {
+/// The synthetic meshes and every real mesh of the differential tests.
+fn fixtures() -> Vec<(String, Tris, usize)> {
+    let named = synthetic()
+        .into_iter()
+        .map(|(name, t, n)| (name.to_string(), t, n));
+    named.chain(real_meshes().iter().cloned()).collect()
+}
+
+/// The real meshes of `c-tests/diff_surface/meshes.txt`, read once from where
+/// `scripts/fetch-meshes.sh` puts them (each one not fetched is skipped with a line). Only
+/// in an optimised build: the brute-force references take minutes on them unoptimised, so
+/// `scripts/test.sh` runs this file again with `--release`.
+fn real_meshes() -> &'static [(String, Tris, usize)] {
+    static MESHES: OnceLock<Vec<(String, Tris, usize)>> = OnceLock::new();
+    MESHES.get_or_init(|| {
+        if cfg!(debug_assertions) {
+            eprintln!("skipped: the real meshes (cargo test --release --test che_export)");
+            return Vec::new();
+        }
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let list = std::fs::read_to_string(root.join("c-tests/diff_surface/meshes.txt")).unwrap();
+        let dir = std::env::var_os("TOPOMESH_MESH_DIR")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| {
+                let home = std::env::var_os("HOME").map(PathBuf::from);
+                home.unwrap_or_default().join(".cache/topomesh/meshes")
+            });
+        let names = list
+            .lines()
+            .filter_map(|l| l.split('#').next()?.split_whitespace().next());
+        let mut out = Vec::new();
+        for name in names {
+            let path = dir.join(format!("{name}.off"));
+            if !path.is_file() {
+                eprintln!(
+                    "skipped: {} is not fetched (bash scripts/fetch-meshes.sh)",
+                    path.display()
+                );
+                continue;
+            }
+            let data = topomesh::io::read(&path).unwrap();
+            out.push((name.to_string(), data.triangles, data.positions.len()));
+        }
+        out
+    })
+}
+
+/// Small meshes made here: clean, with boundary, non-manifold, several components, damaged.
+fn synthetic() -> Vec<(&'static str, Tris, usize)> {
     let mut out = vec![
         ("grid", mesh(grid(4, 3)).0, 20),
         ("sphere", mesh(sphere(5, 3)).0, mesh(sphere(5, 3)).1),
@@ -221,10 +272,12 @@ fn half_edge_arrays_marked() {
 /// One outgoing half-edge per used vertex, the boundary one where there is one.
 fn check_vertex_half_edges(b: &Brute, vh: &[u32], is_boundary: impl Fn(u32) -> bool) {
     assert_eq!(vh.len(), b.nv);
+    let mut outgoing = vec![Vec::new(); b.nv];
+    for (h, &v) in b.v.iter().enumerate() {
+        outgoing[v as usize].push(h as u32);
+    }
     for v in 0..b.nv as u32 {
-        let out: Vec<u32> = (0..b.v.len() as u32)
-            .filter(|&h| b.v[h as usize] == v)
-            .collect();
+        let out = &outgoing[v as usize];
         if out.is_empty() {
             assert_eq!(vh[v as usize], NONE);
             continue;
@@ -376,12 +429,18 @@ fn brute_matrix(b: &Brute, kind: MatrixKind) -> BTreeMap<(u32, u32), f64> {
             }
         }
         MatrixKind::EdgeAdjacency => {
+            // Two edges meet where they share an end: every pair among a vertex's edges.
+            let mut at: BTreeMap<u32, Vec<u32>> = BTreeMap::new();
             for e in 0..b.eh.len() {
-                for f in 0..b.eh.len() {
-                    let ((a, c), (x, y)) = (b.ends(e), b.ends(f));
-                    if e != f && (a == x || a == y || c == x || c == y) {
-                        m.insert((e as u32, f as u32), 1.0);
-                    }
+                let (x, y) = b.ends(e);
+                at.entry(x).or_default().push(e as u32);
+                at.entry(y).or_default().push(e as u32);
+            }
+            for edges in at.values() {
+                for &e in edges {
+                    edges.iter().filter(|&&f| f != e).for_each(|&f| {
+                        m.insert((e, f), 1.0);
+                    });
                 }
             }
         }
@@ -429,6 +488,7 @@ fn product(
 
 #[test]
 fn matrices_and_boundary_of_boundary() {
+    let mut written = 0;
     for (name, tris, n) in fixtures() {
         for che in builds(&tris, n) {
             let b = Brute::new(&che);
@@ -440,6 +500,7 @@ fn matrices_and_boundary_of_boundary() {
                     "{name} level {}: {kind:?}",
                     che.level()
                 );
+                written += usize::from(into_storage_is_the_same(&che, kind, &m));
             }
             // d1 d2 = 0 over Z: a built CHE is oriented and its edges are its own.
             let d1 = entries(&che.matrix(MatrixKind::D1).unwrap());
@@ -460,6 +521,49 @@ fn matrices_and_boundary_of_boundary() {
                     "Laplacian rows sum to 0"
                 );
             }
+        }
+    }
+    assert!(
+        written > 100,
+        "only {written} matrices went to the storage offered"
+    );
+}
+
+/// `matrix_into` with storage of twice the entries (stale values in it) gives `m`, in that
+/// storage when it had room for every entry given; says whether it went there.
+fn into_storage_is_the_same(che: &Che, kind: MatrixKind, m: &SparseMatrix) -> bool {
+    let cap = 2 * m.nnz() + 8;
+    let (mut o, mut c, mut v) = (vec![7; m.n_rows + 1], vec![7; cap], vec![7.0; cap]);
+    let mut slices = Some(CsrSlices {
+        offsets: &mut o,
+        columns: &mut c,
+        values: &mut v,
+    });
+    let mut asked = (0, 0);
+    let got = che.matrix_into(kind, &mut |rows, n| {
+        asked = (rows, n);
+        slices.take()
+    });
+    match got.unwrap() {
+        Assembled::Written {
+            n_offsets,
+            n_entries,
+        } => {
+            assert!(
+                asked.1 <= cap && n_offsets == m.n_rows + 1,
+                "{kind:?}: {asked:?}"
+            );
+            assert_eq!(o, m.offsets, "{kind:?}");
+            assert_eq!(
+                (&c[..n_entries], &v[..n_entries]),
+                (&m.columns[..], &m.values[..])
+            );
+            true
+        }
+        Assembled::Owned(got) => {
+            assert!(asked.1 > cap, "{kind:?}: room for {cap}, {asked:?} asked");
+            assert_eq!(&got, m, "{kind:?}");
+            false
         }
     }
 }
@@ -528,7 +632,8 @@ fn brute_betti(tris: &Tris, n: usize) -> [u64; 3] {
 
 #[test]
 fn betti_numbers_against_elimination() {
-    for (name, tris, n) in fixtures() {
+    // Dense elimination: the small meshes only; the real ones are checked below.
+    for (name, tris, n) in synthetic() {
         let want = brute_betti(&tris, n);
         for che in builds(&tris, n) {
             let b = che.betti_numbers().unwrap();
@@ -539,6 +644,24 @@ fn betti_numbers_against_elimination() {
                 chi,
                 "{name}: Euler"
             );
+        }
+    }
+}
+
+#[test]
+fn betti_numbers_of_real_meshes_agree_with_the_summary() {
+    for (name, tris, n) in real_meshes() {
+        for che in builds(tris, *n) {
+            let [b0, b1, b2] = che.betti_numbers().unwrap();
+            let s = che.summary();
+            let at = format!("{name} level {}", che.level());
+            assert_eq!(b0, s.components + s.isolated_vertices, "{at}: b0");
+            let chi = b0 as i64 - b1 as i64 + b2 as i64;
+            assert_eq!(chi, s.euler_characteristic, "{at}: Euler");
+            if s.boundary_edges == 0 {
+                // Every closed component carries one 2-cycle over Z/2.
+                assert_eq!(b2, s.components, "{at}: b2");
+            }
         }
     }
 }

@@ -16,6 +16,14 @@ pub(super) fn o_mut(che: &mut Che) -> &mut Vec<u32> {
 pub(super) fn vh_mut(che: &mut Che) -> &mut Vec<u32> {
     che.vh.owned_mut()
 }
+/// `VH[x] = now` where `VH[x]` was `was`: the half-edge a local edit (flip, split) moved
+/// away from `x` or replaced, by the one of the same kind that took its place, so that no
+/// star is walked (the edit leaves every vertex's boundary as it was).
+pub(super) fn replace_vh(che: &mut Che, x: u32, was: u32, now: u32) {
+    if che.vh[x as usize] == was {
+        vh_mut(che)[x as usize] = now;
+    }
+}
 pub(super) fn eh_mut(che: &mut Che) -> &mut Vec<u32> {
     che.eh.owned_mut()
 }

@@ -1,6 +1,6 @@
 //! Flipping an interior edge: the diagonal of the quad of its two triangles turns.
 
-use super::arrays::{v_mut, vh_mut};
+use super::arrays::{replace_vh, v_mut};
 use super::checks::refuse;
 use crate::che::Che;
 use crate::che::ids::{next, prev};
@@ -46,9 +46,7 @@ impl Che {
         let a = self.v[g1 as usize];
         let b = self.v[h1 as usize];
         for (x, was, now) in [(a, h, g1), (b, g, h1), (c, h2, g), (d, g2, h)] {
-            if self.vh[x as usize] == was {
-                vh_mut(self)[x as usize] = now;
-            }
+            replace_vh(self, x, was, now);
         }
     }
 }

@@ -1,7 +1,7 @@
 //! Splitting an edge (2 triangles into 4, or 1 into 2 on the boundary) and a triangle
 //! (1 into 3) at a new vertex.
 
-use super::arrays::{v_mut, vh_mut};
+use super::arrays::{replace_vh, v_mut, vh_mut};
 use super::checks::refuse;
 use crate::NONE;
 use crate::che::Che;
@@ -60,7 +60,7 @@ impl Che {
         // changed: `b -> c` and `b -> a` now leave `m`, and `d -> b` now ends at `m`; each
         // is replaced by the new half-edge that took its place. `m` leaves by `m -> b` on
         // the boundary.
-        let mut moves = [(b, h1, t3 + 1), (NONE, NONE, NONE), (NONE, NONE, NONE)];
+        replace_vh(self, b, h1, t3 + 1);
         let mut m_out = h1;
         if g == NONE {
             self.name_edge(t3, NONE);
@@ -78,13 +78,8 @@ impl Che {
             self.name_edge(g2, NONE);
             self.link(t3, t4);
             self.name_edge(t3, NONE);
-            moves[1] = (b, g, t4);
-            moves[2] = (d, g2, t4 + 2);
-        }
-        for (x, was, now) in moves {
-            if x != NONE && self.vh[x as usize] == was {
-                vh_mut(self)[x as usize] = now;
-            }
+            replace_vh(self, b, g, t4);
+            replace_vh(self, d, g2, t4 + 2);
         }
         vh_mut(self)[m as usize] = m_out;
         m

@@ -166,6 +166,67 @@ static void check_against_c_api(const Surface &s) {
     CHECK_THROWS(s.opposite(HalfEdgeId{}), TOPOMESH_STATUS_OUT_OF_RANGE, "half-edge");
 }
 
+// The removed flags and positions the wrapper reads inline agree with the C calls after
+// every kind of edit (arrays grow, move and gain removed elements).
+static void check_edit_views(const Surface &s) {
+    const che_mesh *m = s.handle();
+    std::size_t len = 0;
+    const double *p = che_mesh_positions(m, &len);
+    for (std::uint32_t v = 0; v < s.num_vertices(); v++) {
+        const Vec3 q = s.position(VertexId{v});
+        CHECK(len >= 3 * (v + 1) && q.x == p[3 * v] && q.y == p[3 * v + 1] && q.z == p[3 * v + 2]);
+    }
+    for (std::uint32_t t = 0; t < s.num_triangles(); t++) {
+        bool c = false;
+        CHECK(che_triangle_is_removed(m, t, &c) == TOPOMESH_STATUS_OK);
+        CHECK(s.is_removed(TriangleId{t}) == c);
+    }
+    for (std::uint32_t e = 0; e < s.num_edges(); e++) {
+        bool c = false;
+        CHECK(che_edge_is_removed(m, e, &c) == TOPOMESH_STATUS_OK);
+        CHECK(s.is_removed(EdgeId{e}) == c);
+    }
+    CHECK_THROWS(s.position(VertexId{static_cast<std::uint32_t>(s.num_vertices())}),
+                 TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
+    CHECK_THROWS(s.is_removed(EdgeId{static_cast<std::uint32_t>(s.num_edges())}),
+                 TOPOMESH_STATUS_OUT_OF_RANGE, "edge");
+}
+
+static void test_edit_views() {
+    // A 4 x 4 grid with positions, at levels 2 and 3.
+    std::vector<std::uint32_t> tris;
+    std::vector<double> pos;
+    const std::uint32_t g = 4;
+    for (std::uint32_t i = 0; i <= g; i++)
+        for (std::uint32_t j = 0; j <= g; j++) pos.insert(pos.end(), {double(j), double(i), 0.0});
+    for (std::uint32_t i = 0; i < g; i++)
+        for (std::uint32_t j = 0; j < g; j++) {
+            std::uint32_t a = i * (g + 1) + j, b = a + 1, c = a + g + 1, d = c + 1;
+            tris.insert(tris.end(), {a, b, d, a, d, c});
+        }
+    for (std::uint32_t level : {2u, 3u}) {
+        Surface s = Surface::from_triangles(tris, (g + 1) * (g + 1), pos, Options{level, false});
+        check_edit_views(s);
+        s.flip(s.edge(HalfEdgeId{2}));
+        check_edit_views(s);
+        const Vec3 mid{0.5, 0.25, 0.0};
+        s.split(s.edge(HalfEdgeId{7}), &mid);
+        check_edit_views(s);
+        s.set_position(VertexId{12}, Vec3{2.0, 2.0, 1.0});
+        check_edit_views(s);
+        std::uint32_t h = 3 * 10;
+        while (!s.is_collapse_ok(HalfEdgeId{h})) h++;
+        s.collapse(HalfEdgeId{h});
+        check_edit_views(s);
+        std::uint32_t t = 5;
+        while (s.is_removed(TriangleId{t})) t++;
+        s.remove(TriangleId{t});
+        check_edit_views(s);
+        s.garbage_collect();
+        check_edit_views(s);
+    }
+}
+
 static void test_inline_paths() {
     // A 6 x 6 grid with its middle quad missing (a boundary inside), plus a tetrahedron.
     std::vector<std::uint32_t> tris;
@@ -413,6 +474,7 @@ int main() {
         test_moves();
         test_relations_and_ranges();
         test_inline_paths();
+        test_edit_views();
         test_views_csr_summary();
         test_star_range_iterators();
         test_deprecated_names();

@@ -68,10 +68,14 @@ inline bool Surface::is_collapse_ok(HalfEdgeId h) {
 inline bool Surface::is_removed(VertexId v) const {
     return detail::flag(che_vertex_is_removed, m_, v.value());
 }
+// In range, the flags read the views as the library does (a removed triangle's corners
+// and a removed edge's half-edge are TOPOMESH_NONE); out of range, the call says why.
 inline bool Surface::is_removed(TriangleId t) const {
+    if (views_.V != nullptr && views_.triangle(t.value())) return views_.V[3 * std::size_t(t.value())] == none;
     return detail::flag(che_triangle_is_removed, m_, t.value());
 }
 inline bool Surface::is_removed(EdgeId e) const {
+    if (views_.EH != nullptr && views_.edge(e.value())) return views_.EH[e.value()] == none;
     return detail::flag(che_edge_is_removed, m_, e.value());
 }
 inline std::size_t Surface::num_live_vertices() const noexcept {

@@ -11,6 +11,10 @@ namespace topomesh {
 // The members of Surface and Volume declared in topomesh.hpp's "Element ranges" blocks.
 
 inline Vec3 Surface::position(VertexId v) const {
+    if (views_.P != nullptr && views_.vertex(v.value())) {
+        const double *q = views_.P + 3 * static_cast<std::size_t>(v.value());
+        return Vec3{q[0], q[1], q[2]};
+    }
     return detail::position_at(positions(), num_vertices(), v);
 }
 inline Ids<VertexId> Surface::boundary_curve_vertices(CurveId c) const {

@@ -27,6 +27,7 @@ struct SurfaceViews {
     const std::uint32_t *O = nullptr;  // from level 1
     const std::uint32_t *VH = nullptr; // from level 2
     const std::uint32_t *EH = nullptr; // from level 2
+    const double *P = nullptr;         // the positions, x y z per vertex, when built with them
     std::uint32_t nv = 0, nt = 0, ne = 0;
 
     void fetch(const che_mesh *m) noexcept {
@@ -38,7 +39,10 @@ struct SurfaceViews {
         O = che_mesh_opposites(m, nullptr);
         VH = che_mesh_vertex_half_edges(m, nullptr);
         EH = che_mesh_edge_half_edges(m, nullptr);
+        std::size_t n_coordinates = 0;
+        P = che_mesh_positions(m, &n_coordinates);
         nv = static_cast<std::uint32_t>(che_mesh_num_vertices(m));
+        if (n_coordinates < 3 * static_cast<std::size_t>(nv)) P = nullptr;
         nt = static_cast<std::uint32_t>(che_mesh_num_triangles(m));
         ne = static_cast<std::uint32_t>(che_mesh_num_edges(m));
     }

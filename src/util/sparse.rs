@@ -139,12 +139,12 @@ pub(crate) fn assemble<E: Entries + ?Sized>(
     shape: Shape, entries: &E, offer: Storage,
 ) -> Result<Assembled> {
     let n = shape.n_rows;
-    let blocks = block_starts(n, entries)?;
-    let total = blocks[blocks.len() - 1] as usize;
+    let mut cursors = zeros::<u64>(n + 1, "matrix rows")?;
+    let total = count_rows(&mut cursors, entries);
     let fits =
         |o: &CsrSlices| o.offsets.len() > n && o.columns.len() >= total && o.values.len() >= total;
     if let Some(out) = offer(n + 1, total).filter(fits) {
-        let nnz = fill(shape, entries, &blocks, out)?;
+        let nnz = fill(shape, entries, &mut cursors, out)?;
         return Ok(Assembled::Written {
             n_offsets: n + 1,
             n_entries: nnz,
@@ -158,7 +158,7 @@ pub(crate) fn assemble<E: Entries + ?Sized>(
         columns: &mut columns,
         values: &mut values,
     };
-    let nnz = fill(shape, entries, &blocks, out)?;
+    let nnz = fill(shape, entries, &mut cursors, out)?;
     columns.truncate(nnz);
     values.truncate(nnz);
     Ok(Assembled::Owned(SparseMatrix {
@@ -170,76 +170,51 @@ pub(crate) fn assemble<E: Entries + ?Sized>(
     }))
 }
 
-/// Where each block of `BLOCK_ROWS` rows starts among the entries, in entry order by
-/// block, with the number of entries last.
-fn block_starts<E: Entries + ?Sized>(n_rows: usize, entries: &E) -> Result<Vec<u64>> {
-    struct Count<'a>(&'a mut [u64]);
-    impl Put for Count<'_> {
-        #[inline(always)]
-        fn put(&mut self, row: u32, _: u32, _: f64) {
-            self.0[row as usize / BLOCK_ROWS + 1] += 1;
-        }
-    }
-    let mut starts = zeros::<u64>(n_rows.div_ceil(BLOCK_ROWS) + 1, "matrix blocks")?;
-    entries.each(&mut Count(&mut starts));
-    for b in 1..starts.len() {
-        starts[b] += starts[b - 1];
-    }
-    Ok(starts)
-}
-
-/// Fills `out`, which has room for every entry: the entries are first spread by block of
-/// rows into `out.values` (a row and a column in each value's 8 bytes; summed values go
-/// to their place directly), then each block is counted, placed and merged on its own, so
+/// Fills `out`, which has room for every entry, from the rows' starts in `cursors` (as
+/// `count_rows` leaves them). Unless the rows come in order, the entries are first spread
+/// by block of rows into `out.values` (a row and a column in each value's 8 bytes; summed
+/// values go to their place directly), then each block is placed and merged on its own, so
 /// that the scattered writes stay within one block. Gives the number of entries kept.
 fn fill<E: Entries + ?Sized>(
-    shape: Shape, entries: &E, blocks: &[u64], out: CsrSlices,
+    shape: Shape, entries: &E, cursors: &mut [u64], out: CsrSlices,
 ) -> Result<usize> {
     let CsrSlices {
         offsets,
         columns,
         values,
     } = out;
-    let offsets = &mut offsets[..shape.n_rows + 1];
-    if shape.values == Values::Summed || entries.rows_in_order() {
+    let n = shape.n_rows;
+    let mut merged = Merged {
+        mode: shape.values,
+        offsets: &mut offsets[..n + 1],
+        read: 0,
+        written: 0,
+    };
+    if shape.values == Values::Summed || entries.rows_in_order() || n <= BLOCK_ROWS {
         // Summed values must travel with their entries: placed as a whole, unblocked.
-        count_rows(offsets, entries);
         let summed = shape.values == Values::Summed;
-        place(entries, offsets, columns, summed.then_some(&mut *values));
-        let w = merge_rows(
-            shape.values,
-            offsets,
-            0..shape.n_rows,
-            0,
-            0,
-            columns,
-            values,
-        )?;
-        offsets[shape.n_rows] = w as u64;
-        return Ok(w);
+        place(entries, cursors, columns, summed.then_some(&mut *values));
+        merged.rows(cursors, 0..n, columns, values)?;
+    } else {
+        let starts: Vec<u64> = (0..n.div_ceil(BLOCK_ROWS))
+            .map(|b| cursors[b * BLOCK_ROWS])
+            .collect();
+        spread(entries, starts, bytemuck::cast_slice_mut(&mut values[..]));
+        for first in (0..n).step_by(BLOCK_ROWS) {
+            let rows = first..(first + BLOCK_ROWS).min(n);
+            let span = cursors[rows.start] as usize..cursors[rows.end] as usize;
+            let pairs: &[[u32; 2]] = bytemuck::cast_slice(&values[..]);
+            place(&pairs[span], cursors, columns, None);
+            merged.rows(cursors, rows, columns, values)?;
+        }
     }
-    spread(entries, blocks, bytemuck::cast_slice_mut(&mut values[..]));
-    let mut w = 0;
-    for (b, span) in blocks.windows(2).enumerate() {
-        let rows = b * BLOCK_ROWS..((b + 1) * BLOCK_ROWS).min(shape.n_rows);
-        let pairs: &[[u32; 2]] = bytemuck::cast_slice(&values[..]);
-        let pairs = &pairs[span[0] as usize..span[1] as usize];
-        place_block(
-            pairs,
-            &mut offsets[rows.start..=rows.end],
-            rows.start,
-            w,
-            columns,
-        );
-        w = merge_rows(shape.values, offsets, rows, w, w, columns, values)?;
-    }
-    offsets[shape.n_rows] = w as u64;
-    Ok(w)
+    merged.offsets[n] = merged.written as u64;
+    Ok(merged.written)
 }
 
-/// Writes each entry's row and column into `pairs` at its block's next place (`blocks`
-/// as `block_starts` gives them).
-fn spread<E: Entries + ?Sized>(entries: &E, blocks: &[u64], pairs: &mut [[u32; 2]]) {
+/// Writes each entry's row and column into `pairs` at its block's next place, the blocks
+/// starting at `starts`.
+fn spread<E: Entries + ?Sized>(entries: &E, starts: Vec<u64>, pairs: &mut [[u32; 2]]) {
     struct Spread<'a> {
         cursor: Vec<u64>,
         pairs: &'a mut [[u32; 2]],
@@ -252,33 +227,21 @@ fn spread<E: Entries + ?Sized>(entries: &E, blocks: &[u64], pairs: &mut [[u32; 2
             *slot += 1;
         }
     }
-    let cursor = blocks[..blocks.len() - 1].to_vec();
-    entries.each(&mut Spread { cursor, pairs });
+    entries.each(&mut Spread {
+        cursor: starts,
+        pairs,
+    });
 }
 
-/// Places one block's `pairs` (rows from `base` on) in `columns` from `at` on, row after
-/// row; `offsets` are the block's rows plus one, and each ends as its row's end.
-fn place_block(
-    pairs: &[[u32; 2]], offsets: &mut [u64], base: usize, at: usize, columns: &mut [u32],
-) {
-    offsets.fill(0);
-    for &[row, _] in pairs {
-        offsets[row as usize - base + 1] += 1;
-    }
-    offsets[0] = at as u64;
-    for r in 1..offsets.len() {
-        offsets[r] += offsets[r - 1];
-    }
-    for &[row, col] in pairs {
-        let slot = &mut offsets[row as usize - base];
-        columns[*slot as usize] = col;
-        *slot += 1;
+impl Entries for [[u32; 2]] {
+    fn each<P: Put>(&self, p: &mut P) {
+        self.iter().for_each(|&[row, col]| p.put(row, col, 0.0));
     }
 }
 
-/// Counts the entries of each row into `offsets` (rows + 1 entries, set to zero here) and
-/// turns the counts into the rows' starts; gives the number of entries.
-fn count_rows<E: Entries + ?Sized>(offsets: &mut [u64], entries: &E) -> usize {
+/// Counts the entries of each row into `cursors` (rows + 1 entries, zero) and turns the
+/// counts into the rows' starts; gives the number of entries.
+fn count_rows<E: Entries + ?Sized>(cursors: &mut [u64], entries: &E) -> usize {
     struct Count<'a>(&'a mut [u64]);
     impl Put for Count<'_> {
         #[inline(always)]
@@ -286,18 +249,17 @@ fn count_rows<E: Entries + ?Sized>(offsets: &mut [u64], entries: &E) -> usize {
             self.0[row as usize + 1] += 1;
         }
     }
-    offsets.fill(0);
-    entries.each(&mut Count(offsets));
-    for r in 1..offsets.len() {
-        offsets[r] += offsets[r - 1];
+    entries.each(&mut Count(cursors));
+    for r in 1..cursors.len() {
+        cursors[r] += cursors[r - 1];
     }
-    offsets[offsets.len() - 1] as usize
+    cursors[cursors.len() - 1] as usize
 }
 
-/// Places the entries in their rows, `offsets[r]` walking row r from its start (as
+/// Places the entries in their rows, `cursors[r]` walking row r from its start (as
 /// `count_rows` leaves them) to its end; with `values`, the values go along.
 fn place<E: Entries + ?Sized>(
-    entries: &E, offsets: &mut [u64], columns: &mut [u32], values: Option<&mut [f64]>,
+    entries: &E, cursors: &mut [u64], columns: &mut [u32], values: Option<&mut [f64]>,
 ) {
     struct Place<'a> {
         cursor: &'a mut [u64],
@@ -316,66 +278,111 @@ fn place<E: Entries + ?Sized>(
         }
     }
     entries.each(&mut Place {
-        cursor: offsets,
+        cursor: cursors,
         columns,
         values,
     });
 }
 
-/// Sorts the `rows` of `columns` (with their values when they are summed) and merges
-/// repeated columns, in place: the rows' entries lie one after the other from `start`,
-/// each row ending where `offsets[r]` says (as the placing cursors leave them), and what
-/// is kept is written from `w` on, `offsets[r]` becoming its row's start. Gives where the
-/// writing ended.
-fn merge_rows(
-    mode: Values, offsets: &mut [u64], rows: Range<usize>, mut start: usize, mut w: usize,
-    columns: &mut [u32], values: &mut [f64],
-) -> Result<usize> {
-    let mut scratch = Vec::new();
-    for r in rows {
-        let (end, first) = (offsets[r] as usize, w);
-        offsets[r] = w as u64;
-        match mode {
-            Values::Summed => {
-                sort_pairs(
-                    &mut columns[start..end],
-                    &mut values[start..end],
-                    &mut scratch,
-                )?;
-                for i in start..end {
-                    if w > first && columns[w - 1] == columns[i] {
-                        values[w - 1] += values[i];
-                        continue;
+/// The merging of placed rows into the matrix: the rows' entries lie one after the other
+/// from `read` on, and what is kept is written from `written` on, each kept row's start
+/// going to `offsets`.
+struct Merged<'a> {
+    mode: Values,
+    offsets: &'a mut [u64],
+    read: usize,
+    written: usize,
+}
+
+impl Merged<'_> {
+    /// Sorts the `rows` of `columns` (with their values when they are summed) and merges
+    /// repeated columns, in place; each row ends where `ends[r]` says (as the placing
+    /// cursors leave them).
+    fn rows(
+        &mut self, ends: &[u64], rows: Range<usize>, columns: &mut [u32], values: &mut [f64],
+    ) -> Result<()> {
+        let (mut start, mut w) = (self.read, self.written);
+        let (mut scratch, mut long, mut keys) = (Vec::new(), Vec::new(), [0; 8]);
+        for r in rows {
+            let (end, first) = (ends[r] as usize, w);
+            self.offsets[r] = w as u64;
+            match self.mode {
+                Values::Summed => {
+                    sort_pairs(
+                        &mut columns[start..end],
+                        &mut values[start..end],
+                        &mut scratch,
+                    )?;
+                    for i in start..end {
+                        if w > first && columns[w - 1] == columns[i] {
+                            values[w - 1] += values[i];
+                            continue;
+                        }
+                        (columns[w], values[w]) = (columns[i], values[i]);
+                        w += 1;
                     }
-                    (columns[w], values[w]) = (columns[i], values[i]);
-                    w += 1;
+                }
+                Values::Pattern {
+                    off,
+                    degree_diagonal,
+                } => {
+                    let row = sorted_row(&columns[start..end], &mut keys, &mut long)?;
+                    let mut diagonal = None;
+                    for &c in row {
+                        if w > first && columns[w - 1] == c {
+                            continue;
+                        }
+                        if degree_diagonal && c as usize == r {
+                            diagonal = Some(w);
+                        }
+                        (columns[w], values[w]) = (c, off);
+                        w += 1;
+                    }
+                    if let Some(d) = diagonal {
+                        values[d] = (w - first - 1) as f64;
+                    }
                 }
             }
-            Values::Pattern {
-                off,
-                degree_diagonal,
-            } => {
-                columns[start..end].sort_unstable();
-                let mut diagonal = None;
-                for i in start..end {
-                    let c = columns[i];
-                    if w > first && columns[w - 1] == c {
-                        continue;
-                    }
-                    if degree_diagonal && c as usize == r {
-                        diagonal = Some(w);
-                    }
-                    (columns[w], values[w]) = (c, off);
-                    w += 1;
-                }
-                if let Some(d) = diagonal {
-                    values[d] = (w - first - 1) as f64;
-                }
-            }
+            start = end;
         }
-        start = end;
+        (self.read, self.written) = (start, w);
+        Ok(())
     }
-    Ok(w)
+}
+
+/// A row's columns, sorted, in `keys` when at most 8 (most rows of a mesh's matrices) and
+/// in `long` otherwise. The short ones go through a sorting network, which has no branch on
+/// the keys where an insertion sort mispredicts about once per entry.
+fn sorted_row<'k>(
+    row: &[u32], keys: &'k mut [u32; 8], long: &'k mut Vec<u32>,
+) -> Result<&'k [u32]> {
+    let n = row.len();
+    if n > 8 {
+        long.clear();
+        reserve(long, n, "a matrix row")?;
+        long.extend_from_slice(row);
+        long.sort_unstable();
+        return Ok(long);
+    }
+    let key = |i: usize| if i < n { row[i] } else { u32::MAX };
+    let [mut a, mut b, mut c, mut d] = [key(0), key(1), key(2), key(3)];
+    let [mut e, mut f, mut g, mut h] = [key(4), key(5), key(6), key(7)];
+    macro_rules! exchange {
+        ($($x:ident $y:ident),*) => {$(
+            let low = $x.min($y);
+            $y = $x.max($y);
+            $x = low;
+        )*};
+    }
+    // An optimal network for 8 keys (19 exchanges), layer by layer.
+    exchange!(a c, b d, e g, f h);
+    exchange!(a e, b f, c g, d h);
+    exchange!(a b, c d, e f, g h);
+    exchange!(c e, d f);
+    exchange!(b e, d g);
+    exchange!(b c, d e, f g);
+    *keys = [a, b, c, d, e, f, g, h];
+    Ok(&keys[..n])
 }
 
 /// Sorts `columns` and `values` together by column: in place when short, through
@@ -473,6 +480,33 @@ mod tests {
         let repeats: Vec<Entry> = out.iter().step_by(7).copied().collect();
         out.extend(repeats);
         out
+    }
+
+    #[test]
+    fn rows_of_every_length_are_sorted() {
+        let (mut keys, mut long) = ([0; 8], Vec::new());
+        // Every row of 0s and 1s up to 8 long (a network sorting those sorts everything).
+        for n in 0..=8 {
+            for bits in 0..1u32 << n {
+                let row: Vec<u32> = (0..n).map(|i| bits >> i & 1).collect();
+                let mut want = row.clone();
+                want.sort_unstable();
+                assert_eq!(sorted_row(&row, &mut keys, &mut long).unwrap(), want);
+            }
+        }
+        for n in 0..20 {
+            let row: Vec<u32> = random_entries(50, n, n as u64)
+                .iter()
+                .map(|x| x.col)
+                .collect();
+            let mut want = row.clone();
+            want.sort_unstable();
+            assert_eq!(
+                sorted_row(&row, &mut keys, &mut long).unwrap(),
+                want,
+                "{row:?}"
+            );
+        }
     }
 
     #[test]

@@ -128,6 +128,10 @@ impl Assembled {
 /// second-level cache while its entries are placed.
 const BLOCK_ROWS: usize = 1 << 14;
 
+/// Up to this many rows, the scattered writes of an unblocked placing stay in the cache
+/// anyway, and spreading the entries by block first would only add a pass.
+const UNBLOCKED_ROWS: usize = 4 * BLOCK_ROWS;
+
 /// Storage offered for a matrix once its size is known: given the number of offsets (the
 /// rows plus one) and of entries before repeats merge, the caller's slices of at least
 /// those lengths, or `None` to have the matrix made in memory of its own.
@@ -171,9 +175,9 @@ pub(crate) fn assemble<E: Entries + ?Sized>(
 }
 
 /// Fills `out`, which has room for every entry, from the rows' starts in `cursors` (as
-/// `count_rows` leaves them). Unless the rows come in order, the entries are first spread
-/// by block of rows into `out.values` (a row and a column in each value's 8 bytes; summed
-/// values go to their place directly), then each block is placed and merged on its own, so
+/// `count_rows` leaves them). Summed values, rows given in order and small matrices are
+/// placed directly. Otherwise the entries are first spread by block of rows into
+/// `out.values` (a row and a column in each value's 8 bytes), then each block is placed and merged on its own, so
 /// that the scattered writes stay within one block. Gives the number of entries kept.
 fn fill<E: Entries + ?Sized>(
     shape: Shape, entries: &E, cursors: &mut [u64], out: CsrSlices,
@@ -190,7 +194,7 @@ fn fill<E: Entries + ?Sized>(
         read: 0,
         written: 0,
     };
-    if shape.values == Values::Summed || entries.rows_in_order() || n <= BLOCK_ROWS {
+    if shape.values == Values::Summed || entries.rows_in_order() || n <= UNBLOCKED_ROWS {
         // Summed values must travel with their entries: placed as a whole, unblocked.
         let summed = shape.values == Values::Summed;
         place(entries, cursors, columns, summed.then_some(&mut *values));

@@ -535,7 +535,7 @@ mod tests {
 
     #[test]
     fn every_mode_matches_a_map_in_memory_and_in_the_callers_storage() {
-        let n_rows = 3 * BLOCK_ROWS + 17;
+        let n_rows = UNBLOCKED_ROWS + 2 * BLOCK_ROWS + 17;
         let entries = random_entries(n_rows, 200_000, 7);
         let modes = [
             Values::Summed,

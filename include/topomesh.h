@@ -1529,12 +1529,14 @@ topomesh_status che_mesh_split_triangle(struct che_mesh *m,
                                         uint32_t *out);
 
 /**
- * Would `che_mesh_flip_edge(m, e)` succeed? Never modifies the mesh's elements.
+ * Would `che_mesh_flip_edge(m, e)` succeed? Never modifies the mesh: every view stays
+ * valid.
  */
 topomesh_status che_mesh_is_flip_ok(struct che_mesh *m, uint32_t e, bool *out);
 
 /**
- * Would `che_mesh_collapse_edge(m, h)` succeed? Never modifies the mesh's elements.
+ * Would `che_mesh_collapse_edge(m, h)` succeed? Never modifies the mesh: every view
+ * stays valid.
  */
 topomesh_status che_mesh_is_collapse_ok(struct che_mesh *m, uint32_t h, bool *out);
 

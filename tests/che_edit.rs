@@ -617,3 +617,35 @@ fn a_level_file_waits_for_garbage_collection_after_any_edit() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The checks never modify: after every flip and collapse check of a mesh, at every
+/// level, its arrays, counts and memory are as before, and it saves as a mesh never
+/// edited (no garbage collection asked).
+#[test]
+fn checks_leave_the_mesh_as_it_was() {
+    let dir = std::env::temp_dir().join(format!("topomesh-checks-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for level in 0..=3 {
+        for s in [grid(5, 4), torus(6, 5)] {
+            let mut che = built(&s, level);
+            let (before, memory) = (arrays(&che), che.memory_bytes());
+            let (mut flips, mut collapses) = (0, 0);
+            for e in 0..che.num_edges() as u32 {
+                flips += che.is_flip_ok(e).unwrap() as usize;
+            }
+            for h in 0..che.num_half_edges() as u32 {
+                collapses += che.is_collapse_ok(h).unwrap() as usize;
+            }
+            assert!(
+                flips > 0 && collapses > 0,
+                "level {level}: some checks pass"
+            );
+            assert_eq!(arrays(&che), before, "level {level}");
+            if level >= 2 {
+                assert_eq!(che.memory_bytes(), memory, "level {level}: no edit state");
+            }
+            che.save(dir.join("c.che")).unwrap();
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

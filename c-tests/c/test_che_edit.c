@@ -199,8 +199,40 @@ static void repair_at_level(uint32_t level) {
     che_mesh_free(m);
 }
 
+/* The checks never modify: every view taken before them (the origin maps included) is
+   the same after them, and the mesh saves as one never edited. */
+static void checks_at_level(uint32_t level) {
+    che_mesh *m = NULL;
+    che_build_options options = che_build_options_default();
+    options.level = level;
+    CHECK_OK(che_mesh_from_triangles_ex(OCTA, 8, 6, OCTA_XYZ, &options, &m));
+    if (!m) return;
+    size_t n_v = 0, n_origins = 0;
+    const uint32_t *v = che_mesh_half_edge_vertices(m, &n_v);
+    const uint32_t *origins = che_mesh_vertex_origins(m, &n_origins);
+    uint32_t *before = copy_v(m, &n_v);
+    size_t passed = 0;
+    bool ok = false;
+    for (uint32_t e = 0; e < che_mesh_num_edges(m); e++) {
+        CHECK_OK(che_mesh_is_flip_ok(m, e, &ok));
+        passed += ok;
+    }
+    for (uint32_t h = 0; h < che_mesh_num_half_edges(m); h++) {
+        CHECK_OK(che_mesh_is_collapse_ok(m, h, &ok));
+        passed += ok;
+    }
+    CHECK(passed > 0);
+    CHECK(che_mesh_half_edge_vertices(m, NULL) == v && memcmp(v, before, n_v * sizeof *v) == 0);
+    CHECK(che_mesh_vertex_origins(m, NULL) == origins && origins[5] == 5);
+    CHECK_OK(che_mesh_save(m, "checks.che"));
+    remove("checks.che");
+    free(before);
+    che_mesh_free(m);
+}
+
 int main(void) {
     for (uint32_t level = 0; level <= 3; level++) {
+        checks_at_level(level);
         edit_at_level(level);
         repair_at_level(level);
     }

@@ -55,14 +55,15 @@ inline void Surface::set_position(VertexId v, Vec3 p) {
     const double xyz[3] = {p.x, p.y, p.z};
     edited(che_mesh_set_position(m_, v.value(), xyz));
 }
+// The checks never modify: the views stay valid.
 inline bool Surface::is_flip_ok(EdgeId e) {
     bool ok = false;
-    edited(che_mesh_is_flip_ok(m_, e.value(), &ok));
+    detail::check(che_mesh_is_flip_ok(m_, e.value(), &ok));
     return ok;
 }
 inline bool Surface::is_collapse_ok(HalfEdgeId h) {
     bool ok = false;
-    edited(che_mesh_is_collapse_ok(m_, h.value(), &ok));
+    detail::check(che_mesh_is_collapse_ok(m_, h.value(), &ok));
     return ok;
 }
 inline bool Surface::is_removed(VertexId v) const {

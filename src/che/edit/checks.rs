@@ -11,6 +11,32 @@ pub(super) fn refuse<T>(what: String) -> Result<T> {
     Err(Error::invalid(what))
 }
 
+/// Why a flip is refused; worded only when it is reported (a check drops it, and the
+/// checks of a flip storm run millions of times).
+pub(super) enum FlipRefusal {
+    /// The edge is on the boundary (or non-manifold).
+    Boundary,
+    /// Both triangles have this third vertex.
+    SameThird(u32),
+    /// The flipped edge, between these vertices, exists already.
+    Exists(u32, u32),
+}
+
+impl FlipRefusal {
+    /// The reason, for edge `e`.
+    pub(super) fn words(&self, e: u32) -> String {
+        match *self {
+            FlipRefusal::Boundary => format!("edge {e} is on the boundary (or non-manifold)"),
+            FlipRefusal::SameThird(c) => {
+                format!("edge {e}: both triangles have the same third vertex {c}")
+            }
+            FlipRefusal::Exists(c, d) => {
+                format!("edge {e}: the flipped edge {c}-{d} exists already")
+            }
+        }
+    }
+}
+
 impl Che {
     /// Is vertex `x` removed (until [`Che::garbage_collect`])? `false` out of range.
     pub fn is_vertex_removed(&self, x: u32) -> bool {
@@ -100,7 +126,7 @@ impl Che {
                 h => Ok(h),
             };
         }
-        crate::util::structure::check_id(e, self.st().live_edges, "edge", "edges")?;
+        crate::util::structure::check_id(e, self.num_live_edges(), "edge", "edges")?;
         let o = &self.o;
         Ok((0..o.len())
             .filter(|&h| self.is_live_canonical(o, h))
@@ -110,25 +136,23 @@ impl Che {
 
     /// Is there a half-edge from `a` to `b` or from `b` to `a`? O(degree of `a`).
     pub(super) fn adjacent(&self, a: u32, b: u32) -> bool {
-        self.any_outgoing(a, |h| {
-            self.v[next(h) as usize] == b || self.v[prev(h) as usize] == b
-        })
+        let v = &*self.v;
+        self.any_outgoing(a, |h| v[next(h) as usize] == b || v[prev(h) as usize] == b)
     }
 
     /// Why flipping the edge of half-edge `h` is refused, if it is.
-    pub(super) fn flip_refusal(&self, h: u32, e: u32) -> Option<String> {
-        let g = self.o[h as usize];
+    pub(super) fn flip_refusal(&self, h: u32) -> Option<FlipRefusal> {
+        let (v, o) = (&*self.v, &*self.o);
+        let g = o[h as usize];
         if g == NONE {
-            return Some(format!("edge {e} is on the boundary (or non-manifold)"));
+            return Some(FlipRefusal::Boundary);
         }
-        let (c, d) = (self.v[prev(h) as usize], self.v[prev(g) as usize]);
+        let (c, d) = (v[prev(h) as usize], v[prev(g) as usize]);
         if c == d {
-            return Some(format!(
-                "edge {e}: both triangles have the same third vertex {c}"
-            ));
+            return Some(FlipRefusal::SameThird(c));
         }
         if self.adjacent(c, d) {
-            return Some(format!("edge {e}: the flipped edge {c}-{d} exists already"));
+            return Some(FlipRefusal::Exists(c, d));
         }
         None
     }
@@ -220,15 +244,15 @@ impl Che {
     /// Can edge `e` be flipped? Never modifies. `Err` for a bad or removed id, `Ok(false)`
     /// when the flip would be refused (see [`Che::flip_edge`]).
     pub fn is_flip_ok(&mut self, e: u32) -> Result<bool> {
-        self.edit_with(|c| {
+        self.check_with(|c| {
             let h = c.live_edge(e)?;
-            Ok(c.flip_refusal(h, e).is_none())
+            Ok(c.flip_refusal(h).is_none())
         })
     }
 
     /// Can half-edge `h` be collapsed? Never modifies; see [`Che::collapse_edge`].
     pub fn is_collapse_ok(&mut self, h: u32) -> Result<bool> {
-        self.edit_with(|c| {
+        self.check_with(|c| {
             c.live_half_edge(h)?;
             Ok(c.collapse_refusal(h).is_none())
         })

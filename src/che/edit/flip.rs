@@ -13,8 +13,8 @@ impl Che {
     pub fn flip_edge(&mut self, e: u32) -> Result<()> {
         self.edit_with(|m| {
             let h = m.live_edge(e)?;
-            if let Some(why) = m.flip_refusal(h, e) {
-                return refuse(format!("flip_edge: {why}"));
+            if let Some(why) = m.flip_refusal(h) {
+                return refuse(format!("flip_edge: {}", why.words(e)));
             }
             m.flip_live(h);
             Ok(())

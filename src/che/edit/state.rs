@@ -91,6 +91,12 @@ impl Che {
             let ids = edge_ids(&self.o)?;
             self.st_mut().edge_of = ids;
         }
+        self.add_working_tables()
+    }
+
+    /// Below level 2, the tables an edit or a check reads and the level does not store:
+    /// `O` (level 0) and `VH`, over the live triangles.
+    fn add_working_tables(&mut self) -> Result<()> {
         if self.level == 0 {
             let o = self.live_opposites()?;
             *o_mut(self) = o;
@@ -102,12 +108,31 @@ impl Che {
         Ok(())
     }
 
-    fn end_edit(&mut self) {
+    fn drop_working_tables(&mut self) {
         if self.level == 0 {
             *o_mut(self) = Vec::new();
         }
         if self.level < 2 {
             *vh_mut(self) = Vec::new();
+        }
+    }
+
+    /// Runs a check, which never modifies the mesh: from level 2 on the arrays as they are
+    /// (a mapped mesh stays mapped, nothing is marked edited, no cache is dropped); below,
+    /// with the working tables computed for it and dropped after.
+    pub(super) fn check_with<T>(&mut self, op: impl FnOnce(&Che) -> Result<T>) -> Result<T> {
+        if self.level >= 2 {
+            return op(self);
+        }
+        self.add_working_tables()?;
+        let r = op(self);
+        self.drop_working_tables();
+        r
+    }
+
+    fn end_edit(&mut self) {
+        self.drop_working_tables();
+        if self.level < 2 {
             self.num_edges = self.st().live_edges;
         } else {
             self.num_edges = self.eh.len();

@@ -83,12 +83,12 @@ impl Che {
         if s == NONE {
             return false;
         }
-        let mut h = s;
+        let (o, mut h) = (&*self.o, s);
         loop {
             if stop(h) {
                 return true;
             }
-            let g = self.o[prev(h) as usize];
+            let g = o[prev(h) as usize];
             if g == NONE || g == s {
                 return false;
             }

@@ -22,6 +22,12 @@ fn edit<T>(m: *mut CheMesh, f: impl FnOnce(&mut Che) -> Result<T>) -> Result<T> 
     f(&mut h.che)
 }
 
+/// A check on the handle's mesh, which keeps every view (origins included) valid.
+fn check<T>(m: *mut CheMesh, f: impl FnOnce(&mut Che) -> Result<T>) -> Result<T> {
+    // SAFETY: caller contract (see `ffi`): NULL or a live handle, not shared.
+    f(&mut unsafe { handle_mut(m, "m")? }.che)
+}
+
 /// An optional position: NULL, or 3 doubles.
 fn position(p: *const f64) -> Result<Option<DVec3>> {
     if p.is_null() {
@@ -134,18 +140,20 @@ pub unsafe extern "C" fn che_mesh_split_triangle(
     })
 }
 
-/// Would `che_mesh_flip_edge(m, e)` succeed? Never modifies the mesh's elements.
+/// Would `che_mesh_flip_edge(m, e)` succeed? Never modifies the mesh: every view stays
+/// valid.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_is_flip_ok(m: *mut CheMesh, e: u32, out: *mut bool) -> Status {
     guard(|| {
         // SAFETY: caller contract: one writable bool.
         let out = unsafe { out_arg(out, "out")? };
-        out.set(edit(m, |c| c.is_flip_ok(e))?);
+        out.set(check(m, |c| c.is_flip_ok(e))?);
         Ok(())
     })
 }
 
-/// Would `che_mesh_collapse_edge(m, h)` succeed? Never modifies the mesh's elements.
+/// Would `che_mesh_collapse_edge(m, h)` succeed? Never modifies the mesh: every view
+/// stays valid.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_is_collapse_ok(
     m: *mut CheMesh, h: u32, out: *mut bool,
@@ -153,7 +161,7 @@ pub unsafe extern "C" fn che_mesh_is_collapse_ok(
     guard(|| {
         // SAFETY: caller contract: one writable bool.
         let out = unsafe { out_arg(out, "out")? };
-        out.set(edit(m, |c| c.is_collapse_ok(h))?);
+        out.set(check(m, |c| c.is_collapse_ok(h))?);
         Ok(())
     })
 }

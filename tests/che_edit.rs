@@ -649,3 +649,21 @@ fn checks_leave_the_mesh_as_it_was() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A flip right after its check skips repeating it; anything in between (here the removal
+/// of one of the edge's triangles, which puts it on the boundary) makes it check again.
+#[test]
+fn a_flip_checks_again_after_any_other_call() {
+    for level in 0..=3 {
+        let mut che = built(&torus(6, 5), level);
+        let e = (0..che.num_edges() as u32)
+            .find(|&e| che.is_flip_ok(e).unwrap())
+            .unwrap();
+        let t = che.edge_triangles(e)[0];
+        che.remove_triangle(t).unwrap();
+        let err = che.flip_edge(e).unwrap_err();
+        assert!(err.to_string().contains("boundary"), "level {level}: {err}");
+        assert!(che.is_flip_ok(e).is_ok_and(|ok| !ok), "level {level}");
+        che.validate().unwrap();
+    }
+}

@@ -87,6 +87,9 @@ pub struct Che {
     pub(crate) strict: bool,
     /// What the first edit materialises (see `edit/`); `None` on a CHE never edited.
     pub(crate) edit: Option<Box<edit::EditState>>,
+    /// The edge `is_flip_ok` last found flippable (`NONE`: none), until anything else
+    /// runs: the flip that usually follows the check skips repeating it.
+    pub(crate) flip_checked: u32,
 }
 
 impl Che {
@@ -131,6 +134,7 @@ impl Che {
 
     /// Raises (or lowers) the level in place. Ids do not change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
+        self.flip_checked = NONE;
         if self.edit.is_some() {
             return self.change_edited_level(level);
         }

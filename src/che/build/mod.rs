@@ -223,6 +223,7 @@ fn assemble(
         report,
         strict: false,
         edit: None,
+        flip_checked: NONE,
     })
 }
 

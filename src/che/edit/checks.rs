@@ -244,10 +244,12 @@ impl Che {
     /// Can edge `e` be flipped? Never modifies. `Err` for a bad or removed id, `Ok(false)`
     /// when the flip would be refused (see [`Che::flip_edge`]).
     pub fn is_flip_ok(&mut self, e: u32) -> Result<bool> {
-        self.check_with(|c| {
+        let ok = self.check_with(|c| {
             let h = c.live_edge(e)?;
             Ok(c.flip_refusal(h).is_none())
-        })
+        });
+        self.flip_checked = if matches!(ok, Ok(true)) { e } else { NONE };
+        ok
     }
 
     /// Can half-edge `h` be collapsed? Never modifies; see [`Che::collapse_edge`].

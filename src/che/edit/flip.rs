@@ -13,7 +13,11 @@ impl Che {
     pub fn flip_edge(&mut self, e: u32) -> Result<()> {
         self.edit_with(|m| {
             let h = m.live_edge(e)?;
-            if let Some(why) = m.flip_refusal(h) {
+            // Right after `is_flip_ok(e)` said yes, nothing has changed since (every other
+            // call clears the mark).
+            let checked = m.flip_checked == e;
+            debug_assert!(!checked || m.flip_refusal(h).is_none());
+            if !checked && let Some(why) = m.flip_refusal(h) {
                 return refuse(format!("flip_edge: {}", why.words(e)));
             }
             m.flip_live(h);

@@ -61,6 +61,7 @@ impl Che {
     /// identity maps, and nothing touched, on a CHE never edited. Every id, borrowed slice
     /// and C view from before is invalid after it.
     pub fn garbage_collect(&mut self) -> Result<GarbageMaps> {
+        self.flip_checked = NONE;
         let level = self.level;
         let (nv, nt) = (self.n_vertices, self.num_triangles());
         if self.edit.is_none() {

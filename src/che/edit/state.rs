@@ -68,6 +68,7 @@ impl Che {
     pub(super) fn edit_with<T>(&mut self, op: impl FnOnce(&mut Che) -> Result<T>) -> Result<T> {
         self.begin_edit()?;
         let r = op(self);
+        self.flip_checked = NONE;
         self.end_edit();
         if r.is_ok() {
             self.st_mut().changed = true;

@@ -200,9 +200,8 @@ fn fill<E: Entries + ?Sized>(
         place(entries, cursors, columns, summed.then_some(&mut *values));
         merged.rows(cursors, 0..n, columns, values)?;
     } else {
-        let starts: Vec<u64> = (0..n.div_ceil(BLOCK_ROWS))
-            .map(|b| cursors[b * BLOCK_ROWS])
-            .collect();
+        let blocks = (0..n.div_ceil(BLOCK_ROWS)).map(|b| cursors[b * BLOCK_ROWS]);
+        let starts = crate::util::alloc::try_collect(blocks, "matrix blocks")?;
         spread(entries, starts, bytemuck::cast_slice_mut(&mut values[..]));
         for first in (0..n).step_by(BLOCK_ROWS) {
             let rows = first..(first + BLOCK_ROWS).min(n);

@@ -33,19 +33,18 @@ impl Chf {
     pub fn add_tetrahedron(&mut self, q: [u32; 4]) -> Result<u32> {
         let plan = self
             .plan_add_tetrahedron(q)
-            .map_err(context("add_tetrahedron", format!("{q:?}")))?;
+            .map_err(context("add_tetrahedron", || format!("{q:?}")))?;
         let ids = self
             .run(plan)
-            .map_err(context("add_tetrahedron", format!("{q:?}")))?;
+            .map_err(context("add_tetrahedron", || format!("{q:?}")))?;
         Ok(ids[0])
     }
 
     /// Would [`Chf::add_tetrahedron`] succeed? Changes nothing.
     pub fn check_add_tetrahedron(&self, q: [u32; 4]) -> Result<()> {
         let plan = self.plan_add_tetrahedron(q)?;
-        self.verify(plan)
-            .map(|_| ())
-            .map_err(context("add_tetrahedron", format!("{q:?}")))
+        self.check_plan(plan)
+            .map_err(context("add_tetrahedron", || format!("{q:?}")))
     }
 }
 

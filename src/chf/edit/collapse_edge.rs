@@ -108,10 +108,10 @@ impl Chf {
     pub fn collapse_edge(&mut self, he: HalfEdge) -> Result<u32> {
         let plan = self
             .plan_collapse_edge(he)
-            .map_err(context("collapse_edge", format!("half-edge {he}")))?;
+            .map_err(context("collapse_edge", || format!("half-edge {he}")))?;
         let b = self.half_edge_vertices(he)[1];
         self.run(plan)
-            .map_err(context("collapse_edge", format!("half-edge {he}")))?;
+            .map_err(context("collapse_edge", || format!("half-edge {he}")))?;
         Ok(b)
     }
 
@@ -119,9 +119,8 @@ impl Chf {
     pub fn check_collapse_edge(&self, he: HalfEdge) -> Result<()> {
         let plan = self
             .plan_collapse_edge(he)
-            .map_err(context("collapse_edge", format!("half-edge {he}")))?;
-        self.verify(plan)
-            .map(|_| ())
-            .map_err(context("collapse_edge", format!("half-edge {he}")))
+            .map_err(context("collapse_edge", || format!("half-edge {he}")))?;
+        self.check_plan(plan)
+            .map_err(context("collapse_edge", || format!("half-edge {he}")))
     }
 }

@@ -8,7 +8,7 @@ use crate::chf::ids::{local, tet};
 use crate::error::{Error, Result};
 
 impl Chf {
-    fn plan_flip_23(&self, f: u32) -> Result<Plan> {
+    pub(super) fn plan_flip_23(&self, f: u32) -> Result<Plan> {
         self.check_face(f)?;
         let hf = self.face_half_face(f);
         let g = self.opposite(hf);
@@ -36,10 +36,10 @@ impl Chf {
     pub fn flip_23(&mut self, f: u32) -> Result<[u32; 3]> {
         let plan = self
             .plan_flip_23(f)
-            .map_err(context("flip_23", format!("face {f}")))?;
+            .map_err(context("flip_23", || format!("face {f}")))?;
         let ids = self
             .run(plan)
-            .map_err(context("flip_23", format!("face {f}")))?;
+            .map_err(context("flip_23", || format!("face {f}")))?;
         Ok([ids[0], ids[1], ids[2]])
     }
 
@@ -47,9 +47,8 @@ impl Chf {
     pub fn check_flip_23(&self, f: u32) -> Result<()> {
         let plan = self
             .plan_flip_23(f)
-            .map_err(context("flip_23", format!("face {f}")))?;
-        self.verify(plan)
-            .map(|_| ())
-            .map_err(context("flip_23", format!("face {f}")))
+            .map_err(context("flip_23", || format!("face {f}")))?;
+        self.check_plan(plan)
+            .map_err(context("flip_23", || format!("face {f}")))
     }
 }

@@ -6,7 +6,7 @@ use crate::chf::Chf;
 use crate::error::{Error, Result};
 
 impl Chf {
-    fn plan_flip_32(&self, e: u32) -> Result<Plan> {
+    pub(super) fn plan_flip_32(&self, e: u32) -> Result<Plan> {
         self.check_live_edge(e)?;
         if self.is_boundary_edge(e) {
             return Err(Error::invalid(format!(
@@ -42,10 +42,10 @@ impl Chf {
     pub fn flip_32(&mut self, e: u32) -> Result<[u32; 2]> {
         let plan = self
             .plan_flip_32(e)
-            .map_err(context("flip_32", format!("edge {e}")))?;
+            .map_err(context("flip_32", || format!("edge {e}")))?;
         let ids = self
             .run(plan)
-            .map_err(context("flip_32", format!("edge {e}")))?;
+            .map_err(context("flip_32", || format!("edge {e}")))?;
         Ok([ids[0], ids[1]])
     }
 
@@ -53,9 +53,8 @@ impl Chf {
     pub fn check_flip_32(&self, e: u32) -> Result<()> {
         let plan = self
             .plan_flip_32(e)
-            .map_err(context("flip_32", format!("edge {e}")))?;
-        self.verify(plan)
-            .map(|_| ())
-            .map_err(context("flip_32", format!("edge {e}")))
+            .map_err(context("flip_32", || format!("edge {e}")))?;
+        self.check_plan(plan)
+            .map_err(context("flip_32", || format!("edge {e}")))
     }
 }

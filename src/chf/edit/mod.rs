@@ -21,8 +21,10 @@
 //! add, checked first (faces held at most twice and running opposite ways, every touched
 //! vertex star and edge fan in one piece, no flagged face touched, no inverted tetrahedron
 //! when positions exist), then applied by local updates of `V`, `O`, `VH` and the ids:
-//! O(the stars of the touched vertices). A refused operation returns an error naming the
-//! element and the reason, and changes nothing.
+//! O(the stars of the touched vertices). A plan that only re-triangulates a cavity (the
+//! splits and flips, [`cavity`]) is checked and applied without star walks, in O(1). A
+//! refused operation returns an error naming the element and the reason, and changes
+//! nothing.
 //!
 //! **Memory** once edited: 1 byte per tetrahedron and vertex for the marks, 4 per
 //! half-face (face ids) and 6 x 4 per tetrahedron (edge ids), 4 per face and 8 per edge
@@ -34,6 +36,7 @@ mod add_tetrahedron;
 mod add_vertex;
 mod arrays;
 mod boundary;
+mod cavity;
 mod collapse_edge;
 mod flip_23;
 mod flip_32;

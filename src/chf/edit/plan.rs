@@ -89,17 +89,17 @@ fn fourth(q: [u32; 4], key: [u32; 3]) -> u32 {
 }
 
 /// The vertex triple of face `i` of `q`, in its outward order.
-fn cycle(q: [u32; 4], i: u32) -> [u32; 3] {
+pub(super) fn cycle(q: [u32; 4], i: u32) -> [u32; 3] {
     FACE[i as usize].map(|l| q[l as usize])
 }
 
 /// Do two cycles on the same triple run the same way?
-fn same_way(a: [u32; 3], b: [u32; 3]) -> bool {
+pub(super) fn same_way(a: [u32; 3], b: [u32; 3]) -> bool {
     let k = b.iter().position(|&x| x == a[0]).expect("same triple");
     b[(k + 1) % 3] == a[1]
 }
 
-fn sorted3(mut t: [u32; 3]) -> [u32; 3] {
+pub(super) fn sorted3(mut t: [u32; 3]) -> [u32; 3] {
     t.sort_unstable();
     t
 }
@@ -146,7 +146,7 @@ impl Chf {
     }
 
     /// Live ids, distinct vertices, no flagged face removed, positive volumes.
-    fn verify_inputs(&self, plan: &Plan) -> Result<()> {
+    pub(super) fn verify_inputs(&self, plan: &Plan) -> Result<()> {
         let n = self.n_vertices as u32 + plan.new_vertex.is_some() as u32;
         for &t in &plan.remove {
             self.check_tetrahedron(t)?;
@@ -354,20 +354,12 @@ impl Chf {
         let bound = self.num_tetrahedra() as u32;
         self.reserve_for(&plan)?;
         if let Some(p) = plan.new_vertex {
-            arrays::push_vertex(self, p)?;
-            let s = self.edit_state()?;
-            s.vertex_removed.push(false);
-            s.live_vertices += 1;
+            self.push_new_vertex(p)?;
         }
         let old_ids = self.old_edge_ids(&plan, &stars);
         let rep_faces = self.detach(&plan.remove);
         for &q in &plan.add {
-            arrays::push_tetrahedron(self, q)?;
-            let s = self.edit_state()?;
-            s.tet_removed.push(false);
-            s.hf_face.extend_from_slice(&[NONE; 4]);
-            s.slot_edge.extend_from_slice(&[NONE; 6]);
-            s.live_tetrahedra += 1;
+            self.push_new_tetrahedron(q)?;
         }
         for (k, &g) in new_o.iter().enumerate() {
             if g != NONE {
@@ -396,8 +388,28 @@ impl Chf {
         Ok((bound..bound + plan.add.len() as u32).collect())
     }
 
+    /// Appends a vertex (live, no half-face yet).
+    pub(super) fn push_new_vertex(&mut self, p: Option<DVec3>) -> Result<()> {
+        arrays::push_vertex(self, p)?;
+        let s = self.edit_state()?;
+        s.vertex_removed.push(false);
+        s.live_vertices += 1;
+        Ok(())
+    }
+
+    /// Appends tetrahedron `q` (live, unpaired, no ids yet).
+    pub(super) fn push_new_tetrahedron(&mut self, q: [u32; 4]) -> Result<()> {
+        arrays::push_tetrahedron(self, q)?;
+        let s = self.edit_state()?;
+        s.tet_removed.push(false);
+        s.hf_face.extend_from_slice(&[NONE; 4]);
+        s.slot_edge.extend_from_slice(&[NONE; 6]);
+        s.live_tetrahedra += 1;
+        Ok(())
+    }
+
     /// Room for everything the plan appends, so that the writes cannot fail halfway.
-    fn reserve_for(&mut self, plan: &Plan) -> Result<()> {
+    pub(super) fn reserve_for(&mut self, plan: &Plan) -> Result<()> {
         use crate::util::alloc::try_grow;
         let n = plan.add.len();
         try_grow(
@@ -422,7 +434,7 @@ impl Chf {
     }
 
     /// Half-face `hf` may have become unpaired: the level-3 boundary rebuild looks at it.
-    fn note_unpaired(&mut self, hf: u32) {
+    pub(super) fn note_unpaired(&mut self, hf: u32) {
         if self.level >= 3 {
             self.edit.as_mut().expect("edited").boundary.note(hf);
         }
@@ -575,8 +587,19 @@ impl Chf {
 }
 
 impl Chf {
+    /// Would `plan` be accepted? Writes nothing.
+    pub(crate) fn check_plan(&self, plan: Plan) -> Result<()> {
+        match self.verify_cavity(&plan)? {
+            Some(_) => Ok(()),
+            None => self.verify(plan).map(|_| ()),
+        }
+    }
+
     /// Verifies and applies `plan`; the new tetrahedra's ids. A refusal writes nothing.
     pub(crate) fn run(&mut self, plan: Plan) -> Result<Vec<u32>> {
+        if let Some(cavity) = self.verify_cavity(&plan)? {
+            return self.commit_cavity(plan, cavity);
+        }
         let verified = self.verify(plan)?;
         self.edit_state()?;
         self.commit(verified)
@@ -618,7 +641,10 @@ pub(crate) fn replaced(mut q: [u32; 4], from: u32, to: u32) -> [u32; 4] {
     q
 }
 
-/// An error saying why `op` on `what` was refused, keeping the kind of `e`.
-pub(crate) fn context(op: &str, what: String) -> impl FnOnce(Error) -> Error {
-    move |e| Error::new(e.kind, format!("{op} of {what}: {}", e.message))
+/// An error saying why `op` on `what` was refused, keeping the kind of `e`; `what` is
+/// worded only on a refusal.
+pub(crate) fn context(
+    op: &'static str, what: impl FnOnce() -> String,
+) -> impl FnOnce(Error) -> Error {
+    move |e| Error::new(e.kind, format!("{op} of {}: {}", what(), e.message))
 }

@@ -13,7 +13,7 @@ impl Chf {
             remove: vec![t],
             ..Plan::default()
         })
-        .map_err(context("remove_tetrahedron", format!("tetrahedron {t}")))?;
+        .map_err(context("remove_tetrahedron", || format!("tetrahedron {t}")))?;
         Ok(())
     }
 
@@ -25,6 +25,6 @@ impl Chf {
             ..Plan::default()
         })
         .map(|_| ())
-        .map_err(context("remove_tetrahedron", format!("tetrahedron {t}")))
+        .map_err(context("remove_tetrahedron", || format!("tetrahedron {t}")))
     }
 }

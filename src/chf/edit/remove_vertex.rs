@@ -19,15 +19,14 @@ impl Chf {
     pub fn remove_vertex(&mut self, v: u32) -> Result<()> {
         let plan = self.plan_remove_vertex(v)?;
         self.run(plan)
-            .map_err(context("remove_vertex", format!("vertex {v}")))?;
+            .map_err(context("remove_vertex", || format!("vertex {v}")))?;
         Ok(())
     }
 
     /// Would [`Chf::remove_vertex`] succeed? Changes nothing.
     pub fn check_remove_vertex(&self, v: u32) -> Result<()> {
         let plan = self.plan_remove_vertex(v)?;
-        self.verify(plan)
-            .map(|_| ())
-            .map_err(context("remove_vertex", format!("vertex {v}")))
+        self.check_plan(plan)
+            .map_err(context("remove_vertex", || format!("vertex {v}")))
     }
 }

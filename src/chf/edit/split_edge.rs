@@ -6,7 +6,7 @@ use crate::error::Result;
 use glam::DVec3;
 
 impl Chf {
-    fn plan_split_edge(&self, e: u32, position: Option<DVec3>) -> Result<Plan> {
+    pub(super) fn plan_split_edge(&self, e: u32, position: Option<DVec3>) -> Result<Plan> {
         self.check_live_edge(e)?;
         let [a, b] = self.edge_vertices(e);
         let p = self.new_position(position, || self.centroid(&[a, b]))?;
@@ -30,15 +30,14 @@ impl Chf {
         let plan = self.plan_split_edge(e, position)?;
         let x = self.n_vertices as u32;
         self.run(plan)
-            .map_err(context("split_edge", format!("edge {e}")))?;
+            .map_err(context("split_edge", || format!("edge {e}")))?;
         Ok(x)
     }
 
     /// Would [`Chf::split_edge`] succeed? Changes nothing.
     pub fn check_split_edge(&self, e: u32, position: Option<DVec3>) -> Result<()> {
         let plan = self.plan_split_edge(e, position)?;
-        self.verify(plan)
-            .map(|_| ())
-            .map_err(context("split_edge", format!("edge {e}")))
+        self.check_plan(plan)
+            .map_err(context("split_edge", || format!("edge {e}")))
     }
 }

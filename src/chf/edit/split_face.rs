@@ -9,7 +9,7 @@ use crate::error::Result;
 use glam::DVec3;
 
 impl Chf {
-    fn plan_split_face(&self, f: u32, position: Option<DVec3>) -> Result<Plan> {
+    pub(super) fn plan_split_face(&self, f: u32, position: Option<DVec3>) -> Result<Plan> {
         self.check_face(f)?;
         let hf = self.face_half_face(f);
         let tri = self.half_face_vertices_of(hf);
@@ -37,15 +37,14 @@ impl Chf {
         let plan = self.plan_split_face(f, position)?;
         let x = self.n_vertices as u32;
         self.run(plan)
-            .map_err(context("split_face", format!("face {f}")))?;
+            .map_err(context("split_face", || format!("face {f}")))?;
         Ok(x)
     }
 
     /// Would [`Chf::split_face`] succeed? Changes nothing.
     pub fn check_split_face(&self, f: u32, position: Option<DVec3>) -> Result<()> {
         let plan = self.plan_split_face(f, position)?;
-        self.verify(plan)
-            .map(|_| ())
-            .map_err(context("split_face", format!("face {f}")))
+        self.check_plan(plan)
+            .map_err(context("split_face", || format!("face {f}")))
     }
 }

@@ -6,7 +6,7 @@ use crate::error::Result;
 use glam::DVec3;
 
 impl Chf {
-    fn plan_split_tetrahedron(&self, t: u32, position: Option<DVec3>) -> Result<Plan> {
+    pub(super) fn plan_split_tetrahedron(&self, t: u32, position: Option<DVec3>) -> Result<Plan> {
         self.check_tetrahedron(t)?;
         let q = self.tetrahedron_vertices(t);
         let p = self.new_position(position, || self.centroid(&q))?;
@@ -25,15 +25,14 @@ impl Chf {
         let plan = self.plan_split_tetrahedron(t, position)?;
         let x = self.n_vertices as u32;
         self.run(plan)
-            .map_err(context("split_tetrahedron", format!("tetrahedron {t}")))?;
+            .map_err(context("split_tetrahedron", || format!("tetrahedron {t}")))?;
         Ok(x)
     }
 
     /// Would [`Chf::split_tetrahedron`] succeed? Changes nothing.
     pub fn check_split_tetrahedron(&self, t: u32, position: Option<DVec3>) -> Result<()> {
         let plan = self.plan_split_tetrahedron(t, position)?;
-        self.verify(plan)
-            .map(|_| ())
-            .map_err(context("split_tetrahedron", format!("tetrahedron {t}")))
+        self.check_plan(plan)
+            .map_err(context("split_tetrahedron", || format!("tetrahedron {t}")))
     }
 }

@@ -1,6 +1,10 @@
-//! Generated surfaces and volumes for tests, benchmarks and the CLI's default mesh: plain
-//! parametric grids with known topology.
+//! Generated surfaces and volumes for tests, benchmarks, the CLI's default mesh and
+//! `topomesh generate`: plain parametric grids with known topology. The `*_of` forms take
+//! a size in elements, refuse one whose ids would not fit in 32 bits, and allocate
+//! fallibly, so that a size too large for memory is an error, not an abort.
 
+use crate::error::{Error, Result};
+use crate::util::alloc::try_with_capacity;
 use glam::DVec3;
 use std::f64::consts::TAU;
 
@@ -21,8 +25,14 @@ pub struct Volume {
 /// A box of `n`^3 unit cubes, six tetrahedra each around the cube's main diagonal (Kuhn's
 /// subdivision, so neighbouring cubes meet face to face): a ball.
 pub fn cube_grid(n: u32) -> Volume {
-    let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
     let mut v = Volume::default();
+    cube_grid_into(&mut v, n);
+    v
+}
+
+/// [`cube_grid`] appended to `v`.
+fn cube_grid_into(v: &mut Volume, n: u32) {
+    let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
     for k in 0..=n {
         for j in 0..=n {
             for i in 0..=n {
@@ -36,7 +46,6 @@ pub fn cube_grid(n: u32) -> Volume {
             v.tetrahedra.push([c(0), c(p), c(p | q), c(7)]);
         }
     }
-    v
 }
 
 /// An open `nx` by `ny` grid of quads, two triangles each: a disk with one boundary curve.
@@ -66,8 +75,14 @@ fn push_quads(s: &mut Surface, nx: u32, ny: u32, id: impl Fn(u32, u32) -> u32) {
 
 /// A torus of `nu` by `nv` quads (both at least 3): closed, genus 1.
 pub fn torus(nu: u32, nv: u32) -> Surface {
-    let id = |i: u32, j: u32| (j % nv) * nu + (i % nu);
     let mut s = Surface::default();
+    torus_into(&mut s, nu, nv);
+    s
+}
+
+/// [`torus`] appended to the empty `s`.
+fn torus_into(s: &mut Surface, nu: u32, nv: u32) {
+    let id = |i: u32, j: u32| (j % nv) * nu + (i % nu);
     for j in 0..nv {
         for i in 0..nu {
             let (u, v) = (TAU * i as f64 / nu as f64, TAU * j as f64 / nv as f64);
@@ -76,14 +91,19 @@ pub fn torus(nu: u32, nv: u32) -> Surface {
                 .push(DVec3::new(r * u.cos(), r * u.sin(), v.sin()));
         }
     }
-    push_quads(&mut s, nu, nv, id);
-    s
+    push_quads(s, nu, nv, id);
 }
 
 /// A sphere of `nu` meridians and `nv` bands (nu >= 3, nv >= 2) with two poles: closed,
 /// genus 0.
 pub fn sphere(nu: u32, nv: u32) -> Surface {
     let mut s = Surface::default();
+    sphere_into(&mut s, nu, nv);
+    s
+}
+
+/// [`sphere`] appended to the empty `s`.
+fn sphere_into(s: &mut Surface, nu: u32, nv: u32) {
     s.positions.push(DVec3::new(0.0, 0.0, 1.0));
     for j in 1..nv {
         let theta = std::f64::consts::PI * j as f64 / nv as f64;
@@ -118,7 +138,79 @@ pub fn sphere(nu: u32, nv: u32) -> Surface {
         s.triangles
             .push([south, ring(nv - 1, i + 1), ring(nv - 1, i)]);
     }
-    s
+}
+
+/// The largest number of elements of `k` vertices each whose ids (`k` per element: half-
+/// edges, half-faces) fit in 32 bits.
+fn most(k: u64) -> u64 {
+    u64::from(u32::MAX - 1) / k
+}
+
+/// Refuses a size of zero or past the id range; `what` names the elements.
+fn check_size(n: u64, k: u64, what: &str) -> Result<()> {
+    if n == 0 || n > most(k) {
+        return Err(Error::invalid(format!(
+            "{n} {what}: give 1 to {} (ids are 32 bits)",
+            most(k)
+        )));
+    }
+    Ok(())
+}
+
+/// An empty surface with room for `n` positions and `m` triangles, or an out-of-memory
+/// error.
+fn surface_with_room(n: u64, m: u64) -> Result<Surface> {
+    Ok(Surface {
+        positions: try_with_capacity(n as usize, "the generated positions")?,
+        triangles: try_with_capacity(m as usize, "the generated triangles")?,
+    })
+}
+
+/// A torus of at least `triangles` triangles (and at least 18), its tube a third of its
+/// ring in quads, as close to the count as the grid allows.
+pub fn torus_of(triangles: u64) -> Result<Surface> {
+    check_size(triangles, 3, "triangles")?;
+    let quads = triangles.div_ceil(2).max(9);
+    let nv = ((quads as f64 / 3.0).sqrt().ceil() as u64).max(3);
+    let nu = quads.div_ceil(nv).max(3);
+    check_size(2 * nu * nv, 3, "triangles")?;
+    let mut s = surface_with_room(nu * nv, 2 * nu * nv)?;
+    torus_into(&mut s, nu as u32, nv as u32);
+    Ok(s)
+}
+
+/// A sphere of at least `triangles` triangles (and at least 12), twice as many meridians
+/// as bands.
+pub fn sphere_of(triangles: u64) -> Result<Surface> {
+    check_size(triangles, 3, "triangles")?;
+    // 2 nu (nv - 1) triangles with nu = 2 nv.
+    let nv = ((((triangles as f64) / 4.0).sqrt()).ceil() as u64 + 1).max(2);
+    let mut nu = (2 * nv).max(3);
+    nu = nu.max(triangles.div_ceil(2 * (nv - 1)));
+    check_size(2 * nu * (nv - 1), 3, "triangles")?;
+    let mut s = surface_with_room(nu * (nv - 1) + 2, 2 * nu * (nv - 1))?;
+    sphere_into(&mut s, nu as u32, nv as u32);
+    Ok(s)
+}
+
+/// A box of `n`^3 cubes ([`cube_grid`]) with the smallest `n` giving at least
+/// `tetrahedra` tetrahedra.
+pub fn cube_grid_of(tetrahedra: u64) -> Result<Volume> {
+    check_size(tetrahedra, 4, "tetrahedra")?;
+    let mut n = (tetrahedra as f64 / 6.0).cbrt().floor().max(1.0) as u64;
+    while 6 * n * n * n < tetrahedra {
+        n += 1;
+    }
+    check_size(6 * n * n * n, 4, "tetrahedra")?;
+    let mut v = Volume {
+        positions: try_with_capacity(
+            ((n + 1) * (n + 1) * (n + 1)) as usize,
+            "the generated positions",
+        )?,
+        tetrahedra: try_with_capacity((6 * n * n * n) as usize, "the generated tetrahedra")?,
+    };
+    cube_grid_into(&mut v, n as u32);
+    Ok(v)
 }
 
 /// A surface as OFF text.
@@ -156,5 +248,32 @@ mod tests {
         assert_eq!(chi(&grid(4, 3)), (1, 0, 1));
         assert_eq!(chi(&torus(5, 4)), (0, 1, 0));
         assert_eq!(chi(&sphere(6, 4)), (2, 0, 0));
+    }
+
+    /// The sized forms give at least the count asked (within a few percent above it on
+    /// large counts), the shape's topology, and refuse zero and counts past the id range.
+    #[test]
+    fn sized_forms_reach_their_count() {
+        for n in [1, 17, 100, 1000, 12345, 200_000] {
+            let t = torus_of(n).unwrap();
+            let s = sphere_of(n).unwrap();
+            for (m, what) in [(t.triangles.len(), "torus"), (s.triangles.len(), "sphere")] {
+                let m = m as u64;
+                assert!(m >= n && m <= n + n / 20 + 64, "{what} of {n}: {m}");
+            }
+            if n <= 12345 {
+                assert_eq!(chi(&t), (0, 1, 0), "torus of {n}");
+                assert_eq!(chi(&s), (2, 0, 0), "sphere of {n}");
+            }
+            let b = cube_grid_of(n).unwrap();
+            let k = b.tetrahedra.len() as u64;
+            assert!(k >= n && (k == 6 || k < 2 * n + 6 * 64), "box of {n}: {k}");
+        }
+        assert_eq!(cube_grid_of(6000).unwrap().tetrahedra.len(), 6000);
+        for bad in [0, most(3) + 1, u64::MAX] {
+            let e = torus_of(bad).unwrap_err();
+            assert!(e.message.contains("ids are 32 bits"), "{e}");
+            assert!(sphere_of(bad).is_err() && cube_grid_of(bad).is_err());
+        }
     }
 }

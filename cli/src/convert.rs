@@ -189,7 +189,9 @@ fn level_file_output(
 
 /// Builds `data` at the library's default level and saves it to `output`; the counts of
 /// the structure.
-fn save_level_file(output: &Path, kind: LevelFile, data: &MeshData) -> Result<[usize; 3], Error> {
+pub(crate) fn save_level_file(
+    output: &Path, kind: LevelFile, data: &MeshData,
+) -> Result<[usize; 3], Error> {
     match kind {
         LevelFile::Surface => {
             let che = build_surface(data, BuildOptions::default())?;
@@ -205,7 +207,9 @@ fn save_level_file(output: &Path, kind: LevelFile, data: &MeshData) -> Result<[u
 }
 
 /// Writes `mesh` to `output` (a file, or standard output for `-`); the counts written.
-fn emit(output: &Path, mesh: &Mesh, options: &WriteOptions) -> Result<[usize; 3], Error> {
+pub(crate) fn emit(
+    output: &Path, mesh: &Mesh, options: &WriteOptions,
+) -> Result<[usize; 3], Error> {
     if is_stream(output) {
         let Some(format) = options.format else {
             return Err(Error::invalid(

@@ -7,6 +7,7 @@ mod check;
 mod convert;
 mod exit;
 mod export;
+mod generate;
 mod info;
 mod input;
 mod json;
@@ -133,6 +134,15 @@ enum Command {
         exit_code_table!()
     ))]
     Refine(refine::RefineOptions),
+    /// Write a torus, a sphere or a tetrahedralised box of a chosen size.
+    #[command(after_help = concat!(
+        "Examples:
+  topomesh generate torus --triangles 1000000 -o torus.off
+  topomesh generate sphere --triangles 5000 -o sphere.ply --binary
+  topomesh generate box --tetrahedra 6000000 -o box.chf   built, saved as a level file\n\n",
+        exit_code_table!()
+    ))]
+    Generate(generate::GenerateOptions),
 }
 
 fn main() -> ExitCode {
@@ -157,5 +167,6 @@ fn main() -> ExitCode {
         Command::Render(options) => render::run(&options),
         Command::Simplify(options) => simplify::run(&options),
         Command::Refine(options) => refine::run(&options),
+        Command::Generate(options) => generate::run(&options),
     })
 }

@@ -639,3 +639,23 @@ fn a_level_file_waits_for_garbage_collection_after_any_edit() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Two copies of a tetrahedron and a third one on a face of both: the build keeps the
+/// three half-faces of that face unpaired (non-manifold) after splitting the third's
+/// vertices off, where a build of the same arrays pairs the copies' two. An edit must
+/// not call the mesh invalid for it (a long fuzz run of `chf_edit` found this).
+#[test]
+fn an_edited_mesh_with_a_kept_non_manifold_face_stays_valid() {
+    let tets = [[5, 1, 3, 2], [5, 4, 3, 1], [1, 3, 2, 5]];
+    let mut chf = Chf::from_tetrahedra(&tets, 7, &[], chf::BuildOptions::level(2)).unwrap();
+    assert_eq!(chf.report().non_manifold_faces, 1);
+    let x = chf.add_vertex(None).unwrap();
+    chf.validate().unwrap();
+    // Tetrahedron 1 holds the non-manifold face (its vertices 7, 8, 9): refused.
+    assert_eq!(chf.tetrahedron_vertices(1), [7, 4, 8, 9]);
+    assert!(chf.split_tetrahedron(1, None).is_err());
+    chf.add_tetrahedron([4, 7, 8, x]).unwrap();
+    chf.validate().unwrap();
+    chf.garbage_collect().unwrap();
+    chf.validate().unwrap();
+}

@@ -659,3 +659,21 @@ fn an_edited_mesh_with_a_kept_non_manifold_face_stays_valid() {
     chf.garbage_collect().unwrap();
     chf.validate().unwrap();
 }
+
+/// The first edit replaces the rank directories of faces and edges with explicit ids:
+/// they are freed, and the answers still come (from the ids).
+#[test]
+fn the_first_edit_frees_the_rank_directories() {
+    let g = topomesh::generate::cube_grid(3);
+    let p = &g.positions;
+    let mut chf =
+        Chf::from_tetrahedra(&g.tetrahedra, p.len(), p, chf::BuildOptions::level(2)).unwrap();
+    let before = chf.memory_bytes();
+    assert!(before.faces > 0 && before.edges > 0);
+    let faces = chf.tetrahedron_faces(5);
+    chf.split_tetrahedron(0, None).unwrap();
+    let after = chf.memory_bytes();
+    assert_eq!((after.faces, after.edges), (0, 0));
+    assert_eq!(chf.tetrahedron_faces(5), faces);
+    chf.validate().unwrap();
+}

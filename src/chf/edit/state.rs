@@ -126,6 +126,12 @@ impl Chf {
                 let ids = (0..self.n_vertices as u32).collect::<Vec<_>>();
                 self.vertex_origin = ids.into();
             }
+            // The explicit ids replace the rank directories of the faces and edges:
+            // nothing reads those of an edited mesh, and `garbage_collect` builds anew.
+            self.face_bits = Default::default();
+            self.fh = Default::default();
+            self.edge_bits = Default::default();
+            self.eh = Default::default();
             self.edit = Some(Box::new(state));
         }
         Ok(self.edit.as_mut().expect("made above"))

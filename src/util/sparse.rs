@@ -70,6 +70,12 @@ pub(crate) trait Entries {
     fn rows_in_order(&self) -> bool {
         false
     }
+
+    /// The number of entries `each` gives, when known without giving them (then the
+    /// storage is asked for before they are counted by row).
+    fn total(&self) -> Option<usize> {
+        None
+    }
 }
 
 impl Entries for [Entry] {
@@ -138,23 +144,41 @@ const UNBLOCKED_ROWS: usize = 4 * BLOCK_ROWS;
 pub type Storage<'s, 'a> = &'s mut dyn FnMut(usize, usize) -> Option<CsrSlices<'a>>;
 
 /// The matrix of `entries`, in the storage `offer` gives when it holds every entry given
-/// (repeats included), else in memory of its own.
+/// (repeats included), else in memory of its own. The offsets double as the rows'
+/// cursors: when `entries` knows its total, the caller's offsets do, and the matrix in the
+/// caller's storage allocates no array as long as a row.
 pub(crate) fn assemble<E: Entries + ?Sized>(
     shape: Shape, entries: &E, offer: Storage,
 ) -> Result<Assembled> {
     let n = shape.n_rows;
-    let mut cursors = zeros::<u64>(n + 1, "matrix rows")?;
-    let total = count_rows(&mut cursors, entries);
+    let known = entries.total();
+    let mut offsets = Vec::new();
+    let total = match known {
+        Some(total) => total,
+        None => {
+            offsets = zeros::<u64>(n + 1, "matrix offsets")?;
+            count_rows(&mut offsets, entries)
+        }
+    };
     let fits =
         |o: &CsrSlices| o.offsets.len() > n && o.columns.len() >= total && o.values.len() >= total;
     if let Some(out) = offer(n + 1, total).filter(fits) {
-        let nnz = fill(shape, entries, &mut cursors, out)?;
+        let rows = &mut out.offsets[..n + 1];
+        match known {
+            Some(_) => counted(rows, entries, total)?,
+            None => rows.copy_from_slice(&offsets),
+        }
+        drop(offsets);
+        let nnz = fill(shape, entries, out)?;
         return Ok(Assembled::Written {
             n_offsets: n + 1,
             n_entries: nnz,
         });
     }
-    let mut offsets = zeros::<u64>(n + 1, "matrix offsets")?;
+    if known.is_some() {
+        offsets = zeros::<u64>(n + 1, "matrix offsets")?;
+        counted(&mut offsets, entries, total)?;
+    }
     let mut columns = zeros::<u32>(total, "matrix columns")?;
     let mut values = zeros::<f64>(total, "matrix values")?;
     let out = CsrSlices {
@@ -162,7 +186,7 @@ pub(crate) fn assemble<E: Entries + ?Sized>(
         columns: &mut columns,
         values: &mut values,
     };
-    let nnz = fill(shape, entries, &mut cursors, out)?;
+    let nnz = fill(shape, entries, out)?;
     columns.truncate(nnz);
     values.truncate(nnz);
     Ok(Assembled::Owned(SparseMatrix {
@@ -174,23 +198,35 @@ pub(crate) fn assemble<E: Entries + ?Sized>(
     }))
 }
 
-/// Fills `out`, which has room for every entry, from the rows' starts in `cursors` (as
-/// `count_rows` leaves them). Summed values, rows given in order and small matrices are
-/// placed directly. Otherwise the entries are first spread by block of rows into
-/// `out.values` (a row and a column in each value's 8 bytes), then each block is placed and merged on its own, so
-/// that the scattered writes stay within one block. Gives the number of entries kept.
-fn fill<E: Entries + ?Sized>(
-    shape: Shape, entries: &E, cursors: &mut [u64], out: CsrSlices,
-) -> Result<usize> {
+/// Counts the rows of `entries` into `rows` (any content: zeroed first), which must come
+/// to the `total` the entries gave: else the storage sized by it could be short.
+fn counted<E: Entries + ?Sized>(rows: &mut [u64], entries: &E, total: usize) -> Result<()> {
+    rows.fill(0);
+    let found = count_rows(rows, entries);
+    if found != total {
+        let message = format!("a matrix expected {total} entries and was given {found}");
+        return Err(Error::new(crate::ErrorKind::InvalidInput, message));
+    }
+    Ok(())
+}
+
+/// Fills `out`, which has room for every entry, from the rows' starts in `out.offsets`
+/// (as `count_rows` leaves them), which serve as the rows' cursors and then as the kept
+/// rows' starts. Summed values, rows given in order and small matrices are placed
+/// directly. Otherwise the entries are first spread by block of rows into `out.values` (a
+/// row and a column in each value's 8 bytes), then each block is placed and merged on its
+/// own, so that the scattered writes stay within one block. Gives the number of entries
+/// kept.
+fn fill<E: Entries + ?Sized>(shape: Shape, entries: &E, out: CsrSlices) -> Result<usize> {
     let CsrSlices {
         offsets,
         columns,
         values,
     } = out;
     let n = shape.n_rows;
+    let cursors = &mut offsets[..n + 1];
     let mut merged = Merged {
         mode: shape.values,
-        offsets: &mut offsets[..n + 1],
         read: 0,
         written: 0,
     };
@@ -205,13 +241,14 @@ fn fill<E: Entries + ?Sized>(
         spread(entries, starts, bytemuck::cast_slice_mut(&mut values[..]));
         for first in (0..n).step_by(BLOCK_ROWS) {
             let rows = first..(first + BLOCK_ROWS).min(n);
+            // Read before the block is placed and merged, which changes only its own rows.
             let span = cursors[rows.start] as usize..cursors[rows.end] as usize;
             let pairs: &[[u32; 2]] = bytemuck::cast_slice(&values[..]);
             place(&pairs[span], cursors, columns, None);
             merged.rows(cursors, rows, columns, values)?;
         }
     }
-    merged.offsets[n] = merged.written as u64;
+    cursors[n] = merged.written as u64;
     Ok(merged.written)
 }
 
@@ -288,27 +325,25 @@ fn place<E: Entries + ?Sized>(
 }
 
 /// The merging of placed rows into the matrix: the rows' entries lie one after the other
-/// from `read` on, and what is kept is written from `written` on, each kept row's start
-/// going to `offsets`.
-struct Merged<'a> {
+/// from `read` on, and what is kept is written from `written` on.
+struct Merged {
     mode: Values,
-    offsets: &'a mut [u64],
     read: usize,
     written: usize,
 }
 
-impl Merged<'_> {
+impl Merged {
     /// Sorts the `rows` of `columns` (with their values when they are summed) and merges
-    /// repeated columns, in place; each row ends where `ends[r]` says (as the placing
-    /// cursors leave them).
+    /// repeated columns, in place. Row r ends where `cursors[r]` says (as the placing
+    /// leaves it), which then takes the kept row's start.
     fn rows(
-        &mut self, ends: &[u64], rows: Range<usize>, columns: &mut [u32], values: &mut [f64],
+        &mut self, cursors: &mut [u64], rows: Range<usize>, columns: &mut [u32], values: &mut [f64],
     ) -> Result<()> {
         let (mut start, mut w) = (self.read, self.written);
         let (mut scratch, mut long, mut keys) = (Vec::new(), Vec::new(), [0; 8]);
         for r in rows {
-            let (end, first) = (ends[r] as usize, w);
-            self.offsets[r] = w as u64;
+            let (end, first) = (cursors[r] as usize, w);
+            cursors[r] = w as u64;
             match self.mode {
                 Values::Summed => {
                     sort_pairs(
@@ -532,6 +567,41 @@ mod tests {
         assert_eq!(m.values, [-1.0, 0.0, 5.0]);
     }
 
+    /// Entries that tell their total, right or wrong.
+    struct Known<'a>(&'a [Entry], Option<usize>);
+
+    impl Entries for Known<'_> {
+        fn each<P: Put>(&self, p: &mut P) {
+            self.0.each(p);
+        }
+        fn total(&self) -> Option<usize> {
+            self.1
+        }
+    }
+
+    #[test]
+    fn a_wrong_total_is_an_error_in_memory_and_in_the_callers_storage() {
+        let entries = random_entries(100, 500, 5);
+        let shape = Shape {
+            n_rows: 100,
+            n_cols: 100,
+            values: Values::Summed,
+        };
+        for total in [499, 501] {
+            let given = Known(&entries, Some(total));
+            let e = assemble(shape, &given, &mut |_, _| None).unwrap_err();
+            assert!(e.message.contains("expected"), "{e}");
+            let (mut o, mut c, mut v) = (vec![0; 101], vec![0; 600], vec![0.0; 600]);
+            let mut slices = Some(CsrSlices {
+                offsets: &mut o,
+                columns: &mut c,
+                values: &mut v,
+            });
+            let e = assemble(shape, &given, &mut |_, _| slices.take()).unwrap_err();
+            assert!(e.message.contains("expected"), "{e}");
+        }
+    }
+
     #[test]
     fn every_mode_matches_a_map_in_memory_and_in_the_callers_storage() {
         let n_rows = UNBLOCKED_ROWS + 2 * BLOCK_ROWS + 17;
@@ -547,14 +617,20 @@ mod tests {
                 degree_diagonal: true,
             },
         ];
-        for values in modes {
+        let known_entries = Known(&entries, Some(entries.len()));
+        for (values, known) in modes.into_iter().flat_map(|m| [(m, false), (m, true)]) {
             let shape = Shape {
                 n_rows,
                 n_cols: n_rows + 40,
                 values,
             };
+            let given: &dyn Fn(Storage) -> Result<Assembled> = match known {
+                true => &|offer| assemble(shape, &known_entries, offer),
+                false => &|offer| assemble(shape, &entries[..], offer),
+            };
             let want = brute(shape, &entries);
-            assert_eq!(owned(shape, &entries), want, "{values:?} in memory");
+            let mine = given(&mut |_, _| None).unwrap().owned().unwrap();
+            assert_eq!(mine, want, "{values:?} in memory, total known: {known}");
             let total = entries.len();
             let (mut o, mut c, mut v) = (vec![9; n_rows + 1], vec![9; total], vec![9.0; total]);
             let mut slices = Some(CsrSlices {
@@ -566,7 +642,7 @@ mod tests {
                 assert_eq!((rows, n), (n_rows + 1, total));
                 slices.take()
             };
-            let got = assemble(shape, &entries[..], &mut offer).unwrap();
+            let got = given(&mut offer).unwrap();
             let Assembled::Written {
                 n_offsets,
                 n_entries,

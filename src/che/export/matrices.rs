@@ -76,10 +76,15 @@ impl Che {
                     false => pattern(1.0),
                 };
                 let o = self.opposites_or_computed();
+                let diagonal = laplacian.then_some(nv as u32);
+                // A half-edge gives one entry, a boundary one two; an edge has two
+                // half-edges or is a boundary one, so 2E - 3T half-edges are.
+                let boundary = (2 * ne).checked_sub(3 * nt);
                 let pairs = VertexPairs {
                     v: &self.v,
                     o: &o,
-                    diagonal: laplacian.then_some(nv as u32),
+                    diagonal,
+                    total: boundary.map(|b| 3 * nt + b + diagonal.map_or(0, |n| n as usize)),
                 };
                 assemble(shape(nv, nv, values), &pairs, offer)
             }
@@ -113,9 +118,15 @@ struct VertexPairs<'a> {
     v: &'a [u32],
     o: &'a [u32],
     diagonal: Option<u32>,
+    /// The number of entries, from the counts of the mesh.
+    total: Option<usize>,
 }
 
 impl Entries for VertexPairs<'_> {
+    fn total(&self) -> Option<usize> {
+        self.total
+    }
+
     fn each<P: Put>(&self, p: &mut P) {
         for v in 0..self.diagonal.unwrap_or(0) {
             p.put(v, v, 0.0);

@@ -569,21 +569,13 @@ void report(Out &out, const Soup &s, std::vector<LibBench> &rows, int reps) {
 int main(int argc, char **argv) {
   BenchArgs args;
   Out out;
-  if (!parse_bench_args(argc, argv, args, out)) return 1;
+  if (int status = parse_bench_args(argc, argv, "topomesh_bench [--reps N] [--md FILE] MESH.off...", args, out))
+    return status;
   const int reps = args.reps;
   const std::vector<std::string> &files = args.files;
-  if (files.empty()) {
-    std::fprintf(stderr, "usage: topomesh_bench [--reps N] [--md FILE] MESH.off...\n");
-    return 2;
-  }
   for (auto &f : files) {
     Soup s;
-    std::string err;
-    if (!read_off(f, s, err)) {
-      std::fprintf(stderr, "bench: %s\n", err.c_str());
-      return 1;
-    }
-    std::fprintf(stderr, "bench: %s (%zu triangles)\n", s.name.c_str(), s.n_triangles());
+    if (!read_bench_mesh("bench", f, s)) return 1;
     PeerInput in{s.n_vertices, s.positions.data(), s.triangles.data(), s.n_triangles()};
     std::vector<std::unique_ptr<Subject>> subjects;
     subjects.push_back(openmesh_subject(in));

@@ -163,19 +163,11 @@ int main(int argc, char **argv) {
     if (std::string(argv[i]) == "--flips" && i + 1 < argc) params.flips = size_t(std::atoll(argv[++i]));
     else rest.push_back(argv[i]);
   }
-  if (!parse_bench_args(int(rest.size()), rest.data(), args, out)) return 1;
-  if (args.files.empty() || args.reps < 1) {
-    std::fprintf(stderr, "usage: topomesh_bench_edit [--reps N] [--md FILE] [--flips N] MESH.off...\n");
-    return 2;
-  }
+  const char *usage = "topomesh_bench_edit [--reps N] [--md FILE] [--flips N] MESH.off...";
+  if (int status = parse_bench_args(int(rest.size()), rest.data(), usage, args, out)) return status;
   for (const std::string &f : args.files) {
     Soup s;
-    std::string err;
-    if (!read_off(f, s, err)) {
-      std::fprintf(stderr, "bench_edit: %s\n", err.c_str());
-      return 1;
-    }
-    std::fprintf(stderr, "bench_edit: %s (%zu triangles)\n", s.name.c_str(), s.n_triangles());
+    if (!read_bench_mesh("bench_edit", f, s)) return 1;
     const PeerInput in{s.n_vertices, s.positions.data(), s.triangles.data(), s.n_triangles()};
     double mean = 0;
     std::vector<EditRow> tm;

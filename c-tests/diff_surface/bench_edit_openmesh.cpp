@@ -21,12 +21,7 @@ using OpenMesh::VertexHandle;
 class OmEdit {
 public:
   explicit OmEdit(const PeerInput &in) {
-    PeerBuild b;
-    om::build(in, m_, b, nullptr);
-    m_.request_vertex_status();
-    m_.request_edge_status();
-    m_.request_halfedge_status();
-    m_.request_face_status();
+    om::build_editable(in, m_);
     live_ = m_.n_faces();
   }
   uint32_t n_edges() const { return uint32_t(m_.n_edges()); }

@@ -476,21 +476,14 @@ void report_betti(Out &out, const MeshBench &b) {
 int main(int argc, char **argv) {
   BenchArgs args;
   Out out;
-  if (!parse_bench_args(argc, argv, args, out)) return 1;
+  if (int status =
+          parse_bench_args(argc, argv, "topomesh_bench_export [--reps N] [--md FILE] MESH.off...", args, out))
+    return status;
   const int reps = args.reps;
   const std::vector<std::string> &files = args.files;
-  if (files.empty() || reps < 1) {
-    std::fprintf(stderr, "usage: topomesh_bench_export [--reps N] [--md FILE] MESH.off...\n");
-    return 2;
-  }
   for (auto &f : files) {
     Soup s;
-    std::string err;
-    if (!read_off(f, s, err)) {
-      std::fprintf(stderr, "bench_export: %s\n", err.c_str());
-      return 1;
-    }
-    std::fprintf(stderr, "bench_export: %s (%zu triangles)\n", s.name.c_str(), s.n_triangles());
+    if (!read_bench_mesh("bench_export", f, s)) return 1;
     MeshBench b(s, reps);
     b.add_builds();
     b.add_half_edges();

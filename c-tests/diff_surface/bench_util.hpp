@@ -118,21 +118,27 @@ struct Out {
 };
 
 // The benchmark programs' arguments: [--reps N] [--md FILE] MESH.off...; `--md` opens
-// FILE into `out`. False (with the reason printed) when FILE cannot be opened.
+// FILE into `out`. Gives the exit status to leave with, 0 to go on: 1 (the reason
+// printed) when FILE cannot be opened, 2 (`usage: USAGE` printed) without a mesh or with
+// fewer than one repetition.
 struct BenchArgs {
   int reps = 5;
   std::vector<std::string> files;
 };
-inline bool parse_bench_args(int argc, char **argv, BenchArgs &args, Out &out) {
+inline int parse_bench_args(int argc, char **argv, const char *usage, BenchArgs &args, Out &out) {
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--reps" && i + 1 < argc) args.reps = std::atoi(argv[++i]);
     else if (a == "--md" && i + 1 < argc) {
       out.file = std::fopen(argv[++i], "w");
-      if (!out.file) { std::perror(argv[i]); return false; }
+      if (!out.file) { std::perror(argv[i]); return 1; }
     } else args.files.push_back(a);
   }
-  return true;
+  if (args.files.empty() || args.reps < 1) {
+    std::fprintf(stderr, "usage: %s\n", usage);
+    return 2;
+  }
+  return 0;
 }
 
 inline std::string fmt_ms(double ms) {

@@ -16,12 +16,7 @@ using HH = OpenMesh::HalfedgeHandle;
 class OpenMeshEditor : public EditPeer {
 public:
   explicit OpenMeshEditor(const PeerInput &in) {
-    PeerBuild b;
-    om::build(in, m_, b, nullptr);
-    m_.request_vertex_status();
-    m_.request_edge_status();
-    m_.request_halfedge_status();
-    m_.request_face_status();
+    om::build_editable(in, m_);
     m_.add_property(id_);
     for (auto v : m_.vertices()) {
       m_.property(id_, v) = uint32_t(v.idx());

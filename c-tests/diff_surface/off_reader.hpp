@@ -11,6 +11,7 @@
 #include "../diff_common/text.hpp"
 
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -99,6 +100,18 @@ inline bool read_off(const std::string &path, Soup &s, std::string &err) {
       if (s.is_degenerate(s.n_triangles() - 1)) s.degenerate++;
     }
   }
+  return true;
+}
+
+// A benchmark's mesh: read, then `tool: name (N triangles)` on stderr; false, with
+// `tool: reason` on stderr, when it cannot be read.
+inline bool read_bench_mesh(const char *tool, const std::string &path, Soup &s) {
+  std::string err;
+  if (!read_off(path, s, err)) {
+    std::fprintf(stderr, "%s: %s\n", tool, err.c_str());
+    return false;
+  }
+  std::fprintf(stderr, "%s: %s (%zu triangles)\n", tool, s.name.c_str(), s.n_triangles());
   return true;
 }
 

@@ -5,7 +5,7 @@
 use super::MeshData;
 use super::text::{self, Lexer};
 use super::warning::Warning;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::util::alloc::{try_push, try_reserve};
 use glam::DVec3;
 
@@ -136,7 +136,14 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
         dim: 3,
         have_vertices: false,
     };
-    while let Some(kw) = lx.next() {
+    // Nothing but blanks and comments is not a mesh file at all: say so rather than give
+    // back an empty mesh.
+    let Some(first) = lx.next() else {
+        let msg = format!("{name}: empty file (no keyword; expected 'MeshVersionFormatted')");
+        return Err(Error::parse(msg));
+    };
+    let mut pending = Some(first);
+    while let Some(kw) = pending.take().or_else(|| lx.next()) {
         if kw.eq_ignore_ascii_case("End") {
             if let Some(t) = lx.next() {
                 let msg = format!("text after 'End', from '{}' (ignored)", text::quote(t));
@@ -311,6 +318,20 @@ End
                 "m.mesh:36: text after 'End', from 'Vertices' (ignored)",
             ]
         );
+    }
+
+    #[test]
+    fn a_file_without_a_keyword_is_not_an_empty_mesh() {
+        let empty = "m.mesh: empty file (no keyword; expected 'MeshVersionFormatted')";
+        assert_errors(
+            |b| parse(utf8(b), "m.mesh"),
+            [
+                ("", Parse, empty),
+                ("\n  # only a comment\n\n", Parse, empty),
+            ],
+        );
+        // A file that starts with a keyword is read as before.
+        assert!(parse("MeshVersionFormatted 2\nEnd\n", "m.mesh").is_ok());
     }
 
     #[test]

@@ -4,6 +4,7 @@
 
 use crate::exit::Failure;
 use crate::input::{build_surface, load};
+use crate::json::{Field, export_document};
 use crate::output::Out;
 use crate::progress::Progress;
 use std::fs::File;
@@ -45,6 +46,9 @@ pub struct ExportOptions {
     /// Structure level to build (the answers are the same at every level).
     #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(0..=3))]
     level: u8,
+    /// One JSON object on one line instead of the text layout (fields below).
+    #[arg(long)]
+    json: bool,
 }
 
 pub fn run(options: &ExportOptions) -> Result<ExitCode, Failure> {
@@ -60,16 +64,25 @@ pub fn run(options: &ExportOptions) -> Result<ExitCode, Failure> {
     if options.output.as_os_str() == "-" {
         // Stdout flushes at every line: a buffer in front of it for the many rows.
         let mut out = BufWriter::new(Out::new());
-        write(&mut out, &che, options)?;
+        write_as_asked(&mut out, &che, options)?;
         out.into_inner().map_err(|e| e.into_error())?.finish()?;
     } else {
         let file = File::create(&options.output)
             .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", options.output.display())))?;
         let mut out = BufWriter::new(file);
-        write(&mut out, &che, options)?;
+        write_as_asked(&mut out, &che, options)?;
         out.flush()?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The text layout or, with `--json`, the JSON document.
+fn write_as_asked(out: &mut impl Write, che: &Che, options: &ExportOptions) -> Result<(), Failure> {
+    if options.json {
+        json(out, che, options)
+    } else {
+        write(out, che, options)
+    }
 }
 
 /// One row of ids, `-1` for none, written straight to the buffered output.
@@ -178,4 +191,86 @@ fn market(out: &mut impl Write, m: &SparseMatrix) -> io::Result<()> {
         }
     }
     Ok(())
+}
+
+/// The JSON document of a representation: the arrays of the Rust and C exports under their
+/// names there, flat (`stride` entries per element where it says so).
+fn json(out: &mut impl Write, che: &Che, options: &ExportOptions) -> Result<(), Failure> {
+    use Field::*;
+    let name = clap::ValueEnum::to_possible_value(&options.representation)
+        .map(|v| v.get_name().to_owned())
+        .unwrap_or_default();
+    let (nv, nt, ne) = (che.num_vertices(), che.num_triangles(), che.num_edges());
+    let counts = [
+        ("vertices", Count(nv)),
+        ("triangles", Count(nt)),
+        ("edges", Count(ne)),
+    ];
+    let doc = |out: &mut _, fields: &[(&str, Field)]| -> Result<(), Failure> {
+        let all: Vec<(&str, Field)> = counts.iter().chain(fields).copied().collect();
+        Ok(export_document(out, &name, &all)?)
+    };
+    if let Some(kind) = matrix_kind(options.representation) {
+        let m = che.matrix(kind)?;
+        let shape = [("rows", Count(m.n_rows)), ("cols", Count(m.n_cols))];
+        let csr = [
+            ("offsets", Offsets64(&m.offsets)),
+            ("columns", Ids(&m.columns)),
+            ("values", Values(&m.values)),
+        ];
+        return doc(out, &[&shape[..], &csr[..]].concat());
+    }
+    match options.representation {
+        Representation::Halfedge => {
+            let explicit_boundary = options.explicit_boundary;
+            let a = che.half_edge_arrays(HalfEdgeOptions { explicit_boundary })?;
+            doc(
+                out,
+                &[
+                    ("explicit_boundary", Flag(explicit_boundary)),
+                    ("next", Ids(&a.next)),
+                    ("prev", Ids(&a.prev)),
+                    ("twin", Ids(&a.twin)),
+                    ("tail", Ids(&a.vertex)),
+                    ("face", Ids(&a.face)),
+                    ("edge", Ids(&a.edge)),
+                    ("vertex_half_edge", Ids(&a.vertex_half_edge)),
+                    ("face_half_edge", Ids(&a.face_half_edge)),
+                ],
+            )
+        }
+        Representation::Winged => {
+            let w = che.winged_edges()?;
+            doc(
+                out,
+                &[
+                    ("edge_vertices", Ids(&w.vertices)),
+                    ("edge_faces", Ids(&w.faces)),
+                    ("wings", Ids(&w.wings)),
+                    ("vertex_edge", Ids(&w.vertex_edge)),
+                    ("face_edge", Ids(&w.face_edge)),
+                ],
+            )
+        }
+        Representation::Corner => {
+            let c = che.corner_table()?;
+            doc(out, &[("v", Ids(c.v)), ("o", Ids(&c.o))])
+        }
+        Representation::Edges => doc(out, &[("edge_vertices", Ids(&che.edge_list()?))]),
+        Representation::Dual => doc(
+            out,
+            &[("triangle_triangles", Ids(&che.all_triangle_triangles()?))],
+        ),
+        Representation::Strips => {
+            let s = che.triangle_strips()?;
+            doc(
+                out,
+                &[
+                    ("offsets", Offsets(&s.offsets)),
+                    ("strip_vertices", Ids(&s.vertices)),
+                ],
+            )
+        }
+        _ => unreachable!("the matrices are written above"),
+    }
 }

@@ -1,4 +1,4 @@
-//! The JSON of `info`, `check` and `bench --json`. Each document starts with `"schema"`, an
+//! The JSON of `info`, `check`, `bench` and `export --json`. Each document starts with `"schema"`, an
 //! integer raised whenever a field is renamed, removed or changes meaning (adding a field
 //! keeps it); an undefined value is `null`, never a sentinel. The library's summary, build
 //! report and memory types carry no serde derives, so their fields are named here, in the
@@ -6,9 +6,9 @@
 
 use crate::output::Out;
 use serde::Serialize;
-use serde::ser::SerializeStruct;
+use serde::ser::{SerializeMap, SerializeStruct};
 use std::io::{self, Write};
-use topomesh::{che, chf};
+use topomesh::{NONE, che, chf};
 
 /// `info --json`. 2: the schema field, and `genus` `null` where it was -1.
 pub const INFO_SCHEMA: u32 = 2;
@@ -16,6 +16,8 @@ pub const INFO_SCHEMA: u32 = 2;
 pub const CHECK_SCHEMA: u32 = 1;
 /// `bench --json`.
 pub const BENCH_SCHEMA: u32 = 1;
+/// `export --json`.
+pub const EXPORT_SCHEMA: u32 = 1;
 
 /// A document: its schema version first, then the command's fields.
 #[derive(Serialize)]
@@ -110,4 +112,45 @@ pub fn memory_table(out: &mut Out, memory: &impl Serialize) -> io::Result<()> {
         }
     }
     Ok(())
+}
+
+/// One field of an `export --json` document: an array is written whole, an id array with
+/// `null` for [`NONE`].
+#[derive(Clone, Copy)]
+pub enum Field<'a> {
+    Count(usize),
+    Flag(bool),
+    Ids(&'a [u32]),
+    Offsets(&'a [usize]),
+    Offsets64(&'a [u64]),
+    Values(&'a [f64]),
+}
+
+impl Serialize for Field<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match *self {
+            Field::Count(n) => s.serialize_u64(n as u64),
+            Field::Flag(b) => s.serialize_bool(b),
+            Field::Ids(ids) => s.collect_seq(ids.iter().map(|&x| (x != NONE).then_some(x))),
+            Field::Offsets(o) => s.collect_seq(o),
+            Field::Offsets64(o) => s.collect_seq(o),
+            Field::Values(v) => s.collect_seq(v),
+        }
+    }
+}
+
+/// An `export --json` document on one line: the schema, the representation's name, then
+/// `fields` in order. Streamed from the arrays, never built as a JSON value in memory.
+pub fn export_document(
+    out: &mut impl Write, representation: &str, fields: &[(&str, Field)],
+) -> io::Result<()> {
+    let mut json = serde_json::Serializer::new(&mut *out);
+    let mut map = serde::Serializer::serialize_map(&mut json, Some(fields.len() + 2))?;
+    map.serialize_entry("schema", &EXPORT_SCHEMA)?;
+    map.serialize_entry("representation", representation)?;
+    for (name, field) in fields {
+        map.serialize_entry(name, field)?;
+    }
+    SerializeMap::end(map)?;
+    writeln!(out)
 }

@@ -89,7 +89,8 @@ enum Command {
         "Examples:
   topomesh export bunny.off --as halfedge -o bunny.he
   topomesh export bunny.off --as laplacian -o L.mtx   Matrix Market, for SciPy or Eigen
-  topomesh export bunny.off --as strips -o -          to stdout\n\n",
+  topomesh export bunny.off --as strips -o -          to stdout
+  topomesh export bunny.off --as d1 --json -o d1.json CSR arrays as JSON\n\n",
         "Layouts (one header line, then rows of space-separated numbers; ids from 0, -1 for none):
   halfedge   'halfedge H V T', then H rows 'next prev twin tail face edge' (tail: the
              origin; with --explicit-boundary the boundary twins are rows 3T.., face -1),
@@ -107,6 +108,19 @@ enum Command {
              Matrix Market: '%%MatrixMarket matrix coordinate real general', then
              'rows columns entries', then one 'row column value' row per entry, from 1,
              sorted by row and column (scipy.io.mmread, Eigen's loadMarket)\n\n",
+        "With --json: one object on one line, \"schema\" (1) and \"representation\" first, then
+\"vertices\", \"triangles\", \"edges\" and the arrays of the library's export, flat, ids from 0,
+null for none:
+  halfedge   explicit_boundary, next, prev, twin, tail, face, edge (one per half-edge),
+             vertex_half_edge, face_half_edge
+  winged     edge_vertices (2 per edge), edge_faces (2: left, right), wings (4: left_prev
+             left_next right_prev right_next), vertex_edge, face_edge
+  corner     v, o (one per corner)
+  edges      edge_vertices (2 per edge)
+  dual       triangle_triangles (3 per triangle)
+  strips     offsets, strip_vertices (strip k is strip_vertices[offsets[k]..offsets[k+1]])
+  matrices   rows, cols, then CSR: offsets (rows + 1), columns, values (scipy.sparse.csr_matrix
+             ((values, columns, offsets)), Eigen::Map<SparseMatrix<double, RowMajor>>)\n\n",
         exit_code_table!()
     ))]
     Export(export::ExportOptions),

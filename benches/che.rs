@@ -85,6 +85,26 @@ fn build(c: &mut Criterion) {
     }
 }
 
+/// Small meshes, where a build's fixed costs show (a program that builds one part at a
+/// time pays them per part): a 96-triangle torus at every level, one thread.
+fn build_small(c: &mut Criterion) {
+    let torus = topomesh::generate::torus(8, 6);
+    let mut group = c.benchmark_group(format!("build/torus-{}", torus.triangles.len()));
+    for level in 0..=3u8 {
+        group.bench_with_input(BenchmarkId::new("level", level), &level, |b, &level| {
+            b.iter(|| {
+                let options = BuildOptions {
+                    threads: 1,
+                    ..BuildOptions::level(level)
+                };
+                let n = torus.positions.len();
+                Che::from_triangles(black_box(&torus.triangles), n, &[], options).unwrap()
+            })
+        });
+    }
+    group.finish();
+}
+
 fn sweeps(c: &mut Criterion) {
     for input in inputs() {
         let che = Che::from_triangles(
@@ -186,5 +206,5 @@ fn below_level_2(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, build, sweeps, below_level_2);
+criterion_group!(benches, build, build_small, sweeps, below_level_2);
 criterion_main!(benches);

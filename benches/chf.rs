@@ -117,6 +117,19 @@ fn build(c: &mut Criterion) {
     }
 }
 
+/// Small meshes, where a build's fixed costs show (a program that builds one part at a
+/// time pays them per part): the 48 tetrahedra of `grid(2)` at every level, one thread.
+fn build_small(c: &mut Criterion) {
+    let input = grid(2);
+    let mut group = c.benchmark_group(format!("chf build/{}-tetrahedra", input.tets.len()));
+    for level in 0..=3u8 {
+        group.bench_with_input(BenchmarkId::new("level", level), &level, |b, &level| {
+            b.iter(|| build_chf(black_box(&input), level, 1))
+        });
+    }
+    group.finish();
+}
+
 fn sweeps(c: &mut Criterion) {
     for input in inputs() {
         let chf = build_chf(&input, 2, 0);
@@ -158,5 +171,5 @@ fn sweeps(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, build, sweeps);
+criterion_group!(benches, build, build_small, sweeps);
 criterion_main!(benches);

@@ -24,6 +24,11 @@ pub(crate) fn build_threads(option: usize, n: usize) -> usize {
 /// `MIN_ELEMENTS_PER_THREAD` elements per thread, and 1 below `PARALLEL_MIN_ELEMENTS`.
 /// The result of a build does not depend on it.
 pub fn planned_threads(requested: usize, elements: usize) -> usize {
+    // Asking the machine reads its cgroup files on Linux, which costs more than a whole
+    // build of a small mesh: ask only when the answer can change the plan.
+    if elements < PARALLEL_MIN_ELEMENTS {
+        return 1;
+    }
     let available = std::thread::available_parallelism().map_or(1, |n| n.get());
     plan(requested, elements, available)
 }

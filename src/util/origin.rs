@@ -35,6 +35,32 @@ impl OriginMap {
         crate::util::alloc::try_push(&mut self.0, x, what)
     }
 
+    /// The first violation of a vertex map's rules, in words: `n` vertices over `n_input`
+    /// input vertices, the input vertices their own origins, each copy from an input
+    /// vertex, and a map written out as soon as there is a copy. A file can state any of
+    /// these wrongly; queries index by the origins, so they are checked before use.
+    pub(crate) fn vertex_violation(&self, n: usize, n_input: usize) -> Option<String> {
+        if n < n_input {
+            return Some(format!(
+                "{n} vertices, fewer than the {n_input} input vertices"
+            ));
+        }
+        if self.0.is_empty() {
+            return (n != n_input).then(|| format!("no vertex origins for {} copies", n - n_input));
+        }
+        if self.0.len() != n {
+            return Some(format!("{} vertex origins for {n} vertices", self.0.len()));
+        }
+        self.0.iter().enumerate().find_map(|(v, &x)| {
+            let ok = if v < n_input {
+                x as usize == v
+            } else {
+                (x as usize) < n_input
+            };
+            (!ok).then(|| format!("vertex {v} has origin {x}"))
+        })
+    }
+
     /// The map, or `None` when it is the identity.
     pub(crate) fn explicit(&self) -> Option<&[u32]> {
         (!self.0.is_empty()).then_some(&self.0[..])
@@ -68,4 +94,18 @@ impl From<Vec<u32>> for OriginMap {
 #[inline]
 pub(crate) fn origin(map: &[u32], x: u32) -> u32 {
     if map.is_empty() { x } else { map[x as usize] }
+}
+
+/// Where a sorted id list (an origin map, the flagged half-edges or half-faces) breaks its
+/// rule: each id below `n` and larger than the one before. `name` names the list.
+pub(crate) fn increasing_below_violation(xs: &[u32], n: usize, name: &str) -> Option<String> {
+    xs.iter().enumerate().find_map(|(i, &x)| {
+        if x as usize >= n {
+            Some(format!("{name}[{i}] = {x} is not below {n}"))
+        } else if i > 0 && xs[i - 1] >= x {
+            Some(format!("{name}[{i}] = {x} does not increase"))
+        } else {
+            None
+        }
+    })
 }

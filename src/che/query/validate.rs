@@ -8,10 +8,16 @@ use crate::che::ids::{next, tri};
 use crate::che::tables::is_canonical;
 use crate::error::{Error, Result};
 use crate::util::alloc::try_vec;
+use crate::util::origin::increasing_below_violation;
 
 /// A violation: an invalid-input error naming the element.
 fn broken(what: String) -> Result<()> {
     Err(Error::invalid(format!("invalid CHE: {what}")))
+}
+
+/// `Err` unless `xs` increases strictly and stays below `n`.
+fn increasing_below(xs: &[u32], n: usize, name: &str) -> Result<()> {
+    increasing_below_violation(xs, n, name).map_or(Ok(()), broken)
 }
 
 impl Che {
@@ -26,6 +32,7 @@ impl Che {
             return self.validate_edited();
         }
         self.validate_v()?;
+        self.validate_maps()?;
         if self.level >= 1 {
             self.validate_o()?;
         }
@@ -37,6 +44,27 @@ impl Che {
             self.validate_curves()?;
         }
         Ok(())
+    }
+
+    /// The origin maps, which the summary and the queries use as indices.
+    fn validate_maps(&self) -> Result<()> {
+        let n_input = self.n_input_vertices;
+        if let Some(what) = self
+            .vertex_origin
+            .vertex_violation(self.n_vertices, n_input)
+        {
+            return broken(what);
+        }
+        let n_tris = self.num_triangles();
+        let tris = &self.triangle_origin;
+        if !tris.is_empty() && tris.len() != n_tris {
+            return broken(format!(
+                "{} triangle origins for {n_tris} triangles",
+                tris.len()
+            ));
+        }
+        let n_input_tris = self.report.input_triangles.max(n_tris);
+        increasing_below(tris, n_input_tris, "triangle origin")
     }
 
     fn validate_v(&self) -> Result<()> {
@@ -296,5 +324,28 @@ mod tests {
         let mut c = mesh(3);
         c.ch.to_mut("test").unwrap()[0] = 1;
         fails(&c, "CH[0]");
+    }
+
+    /// The maps the summary indexes by: a level file can state them wrongly (the `levelfile`
+    /// fuzz target found a file with 0 input vertices for 5 vertices and no origin map,
+    /// whose summary indexed past its marks).
+    #[test]
+    fn origin_maps_are_checked() {
+        let mut c = mesh(0);
+        c.n_input_vertices = 0;
+        fails(&c, "no vertex origins for 11 copies");
+        let mut c = mesh(1);
+        c.n_input_vertices = 12;
+        fails(&c, "fewer than the 12 input vertices");
+        let mut c = mesh(2);
+        c.n_input_vertices = 10;
+        c.vertex_origin = (0..11).collect::<Vec<u32>>().into();
+        fails(&c, "vertex 10 has origin 10");
+        let mut c = mesh(2);
+        c.vertex_origin = vec![0; 3].into();
+        fails(&c, "3 vertex origins for 11 vertices");
+        let mut c = mesh(3);
+        c.triangle_origin = vec![0, 1, 2, 3, 4, 5, 6, 8, 7].into();
+        fails(&c, "triangle origin[8] = 7 does not increase");
     }
 }

@@ -8,6 +8,7 @@ use crate::chf::ids::{face_cycle, same_direction, sorted_triple};
 use crate::chf::star_pass::{self, Pairs, StarPass};
 use crate::error::{Error, Result};
 use crate::util::alloc::try_vec;
+use crate::util::origin::increasing_below_violation;
 
 /// The first violation, as an error naming the structure.
 fn broken(what: String) -> Result<()> {
@@ -37,17 +38,9 @@ fn ensure(ok: bool, what: impl FnOnce() -> String) -> Result<()> {
     if ok { Ok(()) } else { broken(what()) }
 }
 
-/// Whether `xs` increases strictly and stays below `n`.
+/// `Err` unless `xs` increases strictly and stays below `n`.
 fn increasing_below(xs: &[u32], n: usize, name: &str) -> Result<()> {
-    for (i, &x) in xs.iter().enumerate() {
-        ensure((x as usize) < n, || {
-            format!("{name}[{i}] = {x} is not below {n}")
-        })?;
-        ensure(i == 0 || xs[i - 1] < x, || {
-            format!("{name}[{i}] = {x} does not increase")
-        })?;
-    }
-    Ok(())
+    increasing_below_violation(xs, n, name).map_or(Ok(()), broken)
 }
 
 impl Chf {
@@ -141,23 +134,8 @@ impl Chf {
     /// The origin maps, the positions and the flagged half-faces.
     fn validate_maps(&self) -> Result<()> {
         let (n, n_input) = (self.n_vertices, self.n_input_vertices);
-        ensure(n >= n_input, || {
-            format!("{n} vertices, fewer than the {n_input} input vertices")
-        })?;
-        let origins = &self.vertex_origin;
-        ensure(origins.is_empty() || origins.len() == n, || {
-            format!("{} vertex origins for {n} vertices", origins.len())
-        })?;
-        ensure(!origins.is_empty() || n == n_input, || {
-            format!("no vertex origins for {} copies", n - n_input)
-        })?;
-        for (v, &x) in origins.iter().enumerate() {
-            let ok = if v < n_input {
-                x as usize == v
-            } else {
-                (x as usize) < n_input
-            };
-            ensure(ok, || format!("vertex {v} has origin {x}"))?;
+        if let Some(what) = self.vertex_origin.vertex_violation(n, n_input) {
+            return broken(what);
         }
         let n_tets = self.num_tetrahedra();
         ensure(

@@ -35,6 +35,10 @@ impl Che {
         self.validate_maps()?;
         if self.level >= 1 {
             self.validate_o()?;
+        } else {
+            // Level 0 stores no `O`, but its edge count must match the rule's pairs, which
+            // the edge queries enumerate.
+            self.validate_edge_count(&self.try_opposites_or_computed()?)?;
         }
         if self.level >= 2 {
             self.validate_vh()?;
@@ -139,6 +143,12 @@ impl Che {
                 ));
             }
         }
+        self.validate_edge_count(o)
+    }
+
+    /// The live edges of `o` (the canonical half-edges of live triangles) are the count.
+    fn validate_edge_count(&self, o: &[u32]) -> Result<()> {
+        let v = &self.v;
         let edges = (0..o.len())
             .filter(|&h| v[h] != NONE && is_canonical(o, h))
             .count();
@@ -324,6 +334,16 @@ mod tests {
         let mut c = mesh(3);
         c.ch.to_mut("test").unwrap()[0] = 1;
         fails(&c, "CH[0]");
+    }
+
+    /// Level 0 stores no edge table, yet its edge queries enumerate the edges up to the
+    /// stated count: a level file stating more (the `levelfile` fuzz target found one with
+    /// 2048 edges for 4 triangles) would send them past the arrays.
+    #[test]
+    fn the_edge_count_is_checked_at_level_0() {
+        let mut c = mesh(0);
+        c.num_edges += 1;
+        fails(&c, "edges in O");
     }
 
     /// The maps the summary indexes by: a level file can state them wrongly (the `levelfile`

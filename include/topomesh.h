@@ -671,6 +671,39 @@ typedef struct che_memory {
 } che_memory;
 
 /**
+ * The arrays an inline walk reads and the counts that bound its ids, in one call: what
+ * `che_mesh_half_edge_vertices`, `che_mesh_opposites`, `che_mesh_vertex_half_edges`,
+ * `che_mesh_edge_half_edges`, `che_mesh_positions` and `che_mesh_num_*` give one at a
+ * time, for a wrapper that fetches them again after every edit. NULL where the level
+ * stores none; `positions` NULL unless every vertex has one. Valid as the views are.
+ */
+typedef struct che_views {
+    /**
+     * `V`, `3 * num_triangles` entries.
+     */
+    const uint32_t *half_edge_vertices;
+    /**
+     * `O`, `3 * num_triangles` entries, from level 1.
+     */
+    const uint32_t *opposites;
+    /**
+     * `VH`, `num_vertices` entries, from level 2.
+     */
+    const uint32_t *vertex_half_edges;
+    /**
+     * `EH`, `num_edges` entries, from level 2.
+     */
+    const uint32_t *edge_half_edges;
+    /**
+     * x, y, z per vertex.
+     */
+    const double *positions;
+    size_t num_vertices;
+    size_t num_triangles;
+    size_t num_edges;
+} che_views;
+
+/**
  * How to build a CHF.
  */
 typedef struct chf_build_options {
@@ -1576,6 +1609,11 @@ topomesh_status che_edge_is_removed(const struct che_mesh *m, uint32_t e, bool *
 topomesh_status che_mesh_set_position(struct che_mesh *m, uint32_t v, const double *position_xyz);
 
 /* ---- CHE: zero-copy views of the structure's arrays ---- */
+
+/**
+ * The views and counts into `*out` (see `che_views`), all at once. O(1).
+ */
+topomesh_status che_mesh_views(const struct che_mesh *m, struct che_views *out);
 
 /**
  * `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is

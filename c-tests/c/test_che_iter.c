@@ -134,6 +134,20 @@ static const any_view_fn VIEWS[] = {
     q_che_mesh_triangle_origins,   q_che_mesh_vertex_half_edges, q_che_mesh_edge_half_edges,
     q_che_mesh_curve_half_edges};
 
+/* che_mesh_views gives at once what the single views and counts give. */
+static void views_match(const che_mesh *m) {
+    che_views all;
+    CHECK_OK(che_mesh_views(m, &all));
+    CHECK(all.half_edge_vertices == che_mesh_half_edge_vertices(m, NULL));
+    CHECK(all.opposites == che_mesh_opposites(m, NULL));
+    CHECK(all.vertex_half_edges == che_mesh_vertex_half_edges(m, NULL));
+    CHECK(all.edge_half_edges == che_mesh_edge_half_edges(m, NULL));
+    CHECK(all.positions == che_mesh_positions(m, NULL));
+    CHECK(all.num_vertices == che_mesh_num_vertices(m));
+    CHECK(all.num_triangles == che_mesh_num_triangles(m));
+    CHECK(all.num_edges == che_mesh_num_edges(m));
+}
+
 static void test_views(void) {
     che_mesh *m = make(STRIP, 2, 4, STRIP_POS, 0);
     size_t len = 99;
@@ -157,6 +171,7 @@ static void test_views(void) {
     CHECK(to != NULL);
     if (to) CHECK_IDS(to, len, 0, 1);
     CHECK(che_mesh_vertex_origins(m, NULL) == vo); /* the same storage on every call */
+    views_match(m);
 
     CHECK_OK(che_mesh_build_level(m, 1));
     const uint32_t *O = che_mesh_opposites(m, &len);
@@ -177,11 +192,16 @@ static void test_views(void) {
     const uint32_t *CH = che_mesh_curve_half_edges(m, &len);
     CHECK(CH != NULL && len == 1);
     if (CH) CHECK_IDS(CH, len, 0);
+    views_match(m);
 
     /* Going down drops them again. */
     CHECK_OK(che_mesh_build_level(m, 1));
     CHECK(che_mesh_vertex_half_edges(m, &len) == NULL && len == 0);
     CHECK(che_mesh_opposites(m, &len) != NULL && len == 6);
+    views_match(m);
+    che_views none;
+    CHECK(che_mesh_views(NULL, &none) == TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK(che_mesh_views(m, NULL) == TOPOMESH_STATUS_NULL_ARGUMENT);
 
     /* NULL handle: NULL and 0; a NULL len is allowed. */
     check_null_views(VIEWS, sizeof VIEWS / sizeof VIEWS[0]);

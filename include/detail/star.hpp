@@ -31,20 +31,21 @@ struct SurfaceViews {
     std::uint32_t nv = 0, nt = 0, ne = 0;
 
     void fetch(const che_mesh *m) noexcept {
-        if (m == nullptr) { // no calls: they would record a NULL_ARGUMENT detail
+        che_views all;
+        // One call (every edit fetches again); a NULL handle gives no views and no call
+        // that would record a NULL_ARGUMENT detail.
+        if (m == nullptr || che_mesh_views(m, &all) != TOPOMESH_STATUS_OK) {
             *this = SurfaceViews{};
             return;
         }
-        V = che_mesh_half_edge_vertices(m, nullptr);
-        O = che_mesh_opposites(m, nullptr);
-        VH = che_mesh_vertex_half_edges(m, nullptr);
-        EH = che_mesh_edge_half_edges(m, nullptr);
-        std::size_t n_coordinates = 0;
-        P = che_mesh_positions(m, &n_coordinates);
-        nv = static_cast<std::uint32_t>(che_mesh_num_vertices(m));
-        if (n_coordinates < 3 * static_cast<std::size_t>(nv)) P = nullptr;
-        nt = static_cast<std::uint32_t>(che_mesh_num_triangles(m));
-        ne = static_cast<std::uint32_t>(che_mesh_num_edges(m));
+        V = all.half_edge_vertices;
+        O = all.opposites;
+        VH = all.vertex_half_edges;
+        EH = all.edge_half_edges;
+        P = all.positions;
+        nv = static_cast<std::uint32_t>(all.num_vertices);
+        nt = static_cast<std::uint32_t>(all.num_triangles);
+        ne = static_cast<std::uint32_t>(all.num_edges);
     }
     bool vertex(std::uint32_t v) const noexcept { return v < nv; }
     bool triangle(std::uint32_t t) const noexcept { return t < nt; }

@@ -204,3 +204,52 @@ fn a_loaded_mesh_lends_the_reader_warnings() {
         che_mesh_free(built);
     }
 }
+
+/// `che_mesh_views` gives at once what the single views and counts give, at every level,
+/// and NULL_ARGUMENT for a NULL handle or out.
+#[test]
+fn views_at_once_match_the_single_views() {
+    let positions = [0.0f64; 12];
+    for level in 0..=3 {
+        let m = build(&STRIP, 4, level);
+        let mut p = null_mut();
+        // SAFETY: live arrays of the stated sizes, a local out.
+        let s = unsafe {
+            che_mesh_from_triangles(STRIP.as_ptr(), 2, 4, positions.as_ptr(), level, &mut p)
+        };
+        assert_eq!(s, Status::Ok);
+        for (m, with_positions) in [(m, false), (p, true)] {
+            let mut v = std::mem::MaybeUninit::<CheViews>::uninit();
+            // SAFETY: live mesh, a local out; NULL `len` is allowed.
+            unsafe {
+                assert_eq!(che_mesh_views(m, v.as_mut_ptr()), Status::Ok);
+                let v = v.assume_init();
+                let null = null_mut();
+                assert_eq!(v.half_edge_vertices, che_mesh_half_edge_vertices(m, null));
+                assert_eq!(v.opposites, che_mesh_opposites(m, null));
+                assert_eq!(v.vertex_half_edges, che_mesh_vertex_half_edges(m, null));
+                assert_eq!(v.edge_half_edges, che_mesh_edge_half_edges(m, null));
+                assert_eq!(v.positions, che_mesh_positions(m, null));
+                assert_eq!(v.positions.is_null(), !with_positions);
+                assert_eq!(v.opposites.is_null(), level < 1);
+                assert_eq!(v.edge_half_edges.is_null(), level < 2);
+                let counts = (v.num_vertices, v.num_triangles, v.num_edges);
+                let single = (
+                    che_mesh_num_vertices(m),
+                    che_mesh_num_triangles(m),
+                    che_mesh_num_edges(m),
+                );
+                assert_eq!(counts, single);
+                assert_eq!(counts, (4, 2, 5));
+                assert_eq!(che_mesh_views(m, null_mut()), Status::NullArgument);
+                che_mesh_free(m);
+            }
+        }
+    }
+    let mut v = std::mem::MaybeUninit::<CheViews>::uninit();
+    // SAFETY: a NULL handle is allowed.
+    assert_eq!(
+        unsafe { che_mesh_views(std::ptr::null(), v.as_mut_ptr()) },
+        Status::NullArgument
+    );
+}

@@ -2,9 +2,60 @@
 //! level changes.
 
 use super::CheMesh;
+use crate::che::Che;
 use crate::ffi::boundary::origins;
 use crate::ffi::mesh_arrays::coordinates;
-use crate::ffi::shapes::view;
+use crate::ffi::shapes::{value, view};
+use crate::ffi::status::Status;
+use std::ptr::null;
+
+/// The arrays an inline walk reads and the counts that bound its ids, in one call: what
+/// `che_mesh_half_edge_vertices`, `che_mesh_opposites`, `che_mesh_vertex_half_edges`,
+/// `che_mesh_edge_half_edges`, `che_mesh_positions` and `che_mesh_num_*` give one at a
+/// time, for a wrapper that fetches them again after every edit. NULL where the level
+/// stores none; `positions` NULL unless every vertex has one. Valid as the views are.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct CheViews {
+    /// `V`, `3 * num_triangles` entries.
+    pub half_edge_vertices: *const u32,
+    /// `O`, `3 * num_triangles` entries, from level 1.
+    pub opposites: *const u32,
+    /// `VH`, `num_vertices` entries, from level 2.
+    pub vertex_half_edges: *const u32,
+    /// `EH`, `num_edges` entries, from level 2.
+    pub edge_half_edges: *const u32,
+    /// x, y, z per vertex.
+    pub positions: *const f64,
+    pub num_vertices: usize,
+    pub num_triangles: usize,
+    pub num_edges: usize,
+}
+
+fn views_of(c: &Che) -> CheViews {
+    let ptr = |s: Option<&[u32]>| s.map_or(null(), <[u32]>::as_ptr);
+    let p = c.positions();
+    CheViews {
+        half_edge_vertices: c.half_edge_vertices().as_ptr(),
+        opposites: ptr(c.opposites()),
+        vertex_half_edges: ptr(c.vertex_half_edges()),
+        edge_half_edges: ptr(c.edge_half_edges()),
+        positions: if p.len() < c.num_vertices() || p.is_empty() {
+            null()
+        } else {
+            coordinates(p).as_ptr()
+        },
+        num_vertices: c.num_vertices(),
+        num_triangles: c.num_triangles(),
+        num_edges: c.num_edges(),
+    }
+}
+
+/// The views and counts into `*out` (see `che_views`), all at once. O(1).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn che_mesh_views(m: *const CheMesh, out: *mut CheViews) -> Status {
+    value!(m, out, |c| Ok(views_of(c)))
+}
 
 /// `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
 /// `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.

@@ -43,6 +43,18 @@ fn half_edge_map(tmap: &[u32], h: u32) -> u32 {
     }
 }
 
+/// Keeps the entries of `list` whose `map` entry is not `NONE`, in order, in place.
+fn compact_in_place<T: Copy>(list: &mut Vec<T>, map: &[u32]) {
+    let mut w = 0;
+    for i in 0..list.len() {
+        if map[i] != NONE {
+            list[w] = list[i];
+            w += 1;
+        }
+    }
+    list.truncate(w);
+}
+
 /// The kept entries of `list`, in order.
 fn compact<T: Copy>(list: &[T], map: &[u32], what: &str) -> Result<Vec<T>> {
     let mut out = try_with_capacity(list.len(), what)?;
@@ -72,44 +84,37 @@ impl Che {
                 edges: identity(self.num_edges)?,
             });
         }
-        let old_o = match level {
-            0 => self.live_opposites()?,
-            _ => self.try_opposites_or_computed()?.into_owned(),
-        };
         let (vmap, new_nv) = ranks(nv, |x| !self.is_vertex_removed(x as u32), "the vertex map")?;
         let (tmap, _) = ranks(
             nt,
             |t| !self.is_triangle_removed(t as u32),
             "the triangle map",
         )?;
-        let (v, o) = self.compacted_half_edges(&old_o, &vmap, &tmap)?;
-        let new_edge = crate::che::tables::edge_ids(&o)?;
-        let emap = self.edge_map(&old_o, &new_edge, &tmap)?;
-        let positions = if self.positions.is_empty() {
-            Vec::new()
+        // Level 0 stores no `O`: the live one is computed for the edge map.
+        let level0_o = if level == 0 {
+            Some(self.live_opposites()?)
         } else {
-            compact(&self.positions, &vmap, "the positions")?
+            None
         };
+        let (emap, num_edges) = self.edge_map(level0_o.as_deref().unwrap_or(&self.o), &tmap)?;
         let (vorigin, torigin) = self.compacted_origins(&vmap, &tmap, new_nv)?;
         let flags = |list: &[u32]| -> Result<Vec<u32>> {
             let kept = list.iter().map(|&h| half_edge_map(&tmap, h));
             crate::util::alloc::try_collect(kept.filter(|&h| h != NONE), "the flagged half-edges")
         };
         let (nm, seams) = (flags(&self.non_manifold)?, flags(&self.seams)?);
-        // From here on nothing is allocated but the rebuilt levels.
-        *v_mut(self) = v;
-        *o_mut(self) = o;
-        *positions_mut(self) = positions;
+        // From here on nothing is allocated but the rebuilt levels: the arrays are
+        // compacted in place, as the peers' collections do (they keep their capacity).
+        self.compact_half_edges(&vmap, &tmap, level0_o.is_none());
+        if !self.positions.is_empty() {
+            compact_in_place(positions_mut(self), &vmap);
+        }
         *vertex_origin_mut(self) = vorigin;
         *triangle_origin_mut(self) = torigin;
         *non_manifold_mut(self) = nm;
         *seams_mut(self) = seams;
         self.n_vertices = new_nv;
-        self.num_edges = new_edge
-            .iter()
-            .enumerate()
-            .filter(|&(h, &e)| e != NONE && (self.o[h] == NONE || (h as u32) < self.o[h]))
-            .count();
+        self.num_edges = num_edges;
         self.rebuild_levels(level)?;
         Ok(GarbageMaps {
             vertices: vmap,
@@ -118,37 +123,53 @@ impl Che {
         })
     }
 
-    /// `V` and `O` of the live triangles, in the new ids.
-    fn compacted_half_edges(
-        &self, old_o: &[u32], vmap: &[u32], tmap: &[u32],
-    ) -> Result<(Vec<u32>, Vec<u32>)> {
-        let mut v = try_with_capacity(self.v.len(), "the half-edge vertices V")?;
-        v.extend(
-            self.v
-                .iter()
-                .filter(|&&x| x != NONE)
-                .map(|&x| vmap[x as usize]),
-        );
-        let mut o = try_with_capacity(self.v.len(), "the opposites O")?;
-        o.extend(
-            (0..old_o.len())
-                .filter(|&h| self.v[h] != NONE)
-                .map(|h| half_edge_map(tmap, old_o[h])),
-        );
-        Ok((v, o))
-    }
-
-    /// Old edge id -> new edge id (`NONE` for a removed edge).
-    fn edge_map(&self, old_o: &[u32], new_edge: &[u32], tmap: &[u32]) -> Result<Vec<u32>> {
-        let old_edge = self.old_edge_ids(old_o)?;
-        let mut emap = try_vec(self.num_edges, NONE, "the edge map")?;
-        for (h, &e) in old_edge.iter().enumerate() {
-            let g = half_edge_map(tmap, h as u32);
-            if e != NONE && g != NONE {
-                emap[e as usize] = new_edge[g as usize];
+    /// `V` (and `O` when the level stores it) of the live triangles in the new ids, in
+    /// place: an entry moves only down, onto one already read.
+    fn compact_half_edges(&mut self, vmap: &[u32], tmap: &[u32], with_o: bool) {
+        let v = v_mut(self);
+        let mut w = 0;
+        for h in 0..v.len() {
+            if v[h] != NONE {
+                v[w] = vmap[v[h] as usize];
+                w += 1;
             }
         }
-        Ok(emap)
+        v.truncate(w);
+        if with_o {
+            let o = o_mut(self);
+            let mut w = 0;
+            for h in 0..o.len() {
+                if tmap[h / 3] != NONE {
+                    o[w] = half_edge_map(tmap, o[h]);
+                    w += 1;
+                }
+            }
+            o.truncate(w);
+        }
+    }
+
+    /// Old edge id -> new edge id (`NONE` for a removed edge), and the number of edges
+    /// left. A fresh build numbers the edges by their canonical half-edges in order, and
+    /// compaction keeps that order: the live half-edges canonical after it (unpaired, or
+    /// before their kept twin) take the new ids in turn.
+    fn edge_map(&self, old_o: &[u32], tmap: &[u32]) -> Result<(Vec<u32>, usize)> {
+        let computed;
+        let old_ids = match self.edited_edge_ids() {
+            Some(ids) if self.level >= 2 => ids,
+            _ => {
+                computed = self.old_edge_ids(old_o)?;
+                &computed[..]
+            }
+        };
+        let mut emap = try_vec(self.num_edges, NONE, "the edge map")?;
+        let mut next = 0u32;
+        for (h, &g) in old_o.iter().enumerate() {
+            if self.v[h] != NONE && (half_edge_map(tmap, g) == NONE || (h as u32) < g) {
+                emap[old_ids[h] as usize] = next;
+                next += 1;
+            }
+        }
+        Ok((emap, next as usize))
     }
 
     /// The vertex and triangle origin maps over the new ids. An identity map over the old

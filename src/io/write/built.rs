@@ -24,61 +24,52 @@ fn positions<'a>(positions: &'a [DVec3], n_vertices: usize, path: &Path) -> Resu
     Ok(positions)
 }
 
-impl Che {
-    /// Writes the built surface to `path`, the format from its extension (see
-    /// [`Che::write_with`]).
-    pub fn write(&self, path: &Path) -> Result<()> {
-        self.write_with(path, &WriteOptions::default())
-    }
+/// `write`, `write_with` and `to_write` of a built structure `$ty`, whose `V` array
+/// (`$ids`) is its elements of `$k` vertices, written as the mesh's `$field`; `$what` names
+/// the structure ("surface") and `$element` an element ("triangle") in docs and errors.
+macro_rules! write_methods {
+    ($ty:ident, $what:literal, $field:ident, $k:literal, $ids:ident, $element:literal) => {
+        impl $ty {
+            #[doc = concat!("Writes the built ", $what, " to `path`, the format from its extension (see")]
+            #[doc = concat!("[`", stringify!($ty), "::write_with`]).")]
+            pub fn write(&self, path: &Path) -> Result<()> {
+                self.write_with(path, &WriteOptions::default())
+            }
 
-    /// Writes the built surface: its oriented triangles over its vertices (split copies as
-    /// vertices of their own), and, where the format has a vertex attribute, the input
-    /// vertex each comes from. Whole or not at all; a mesh built without positions is
-    /// refused (`InvalidInput`).
-    pub fn write_with(&self, path: &Path, options: &WriteOptions) -> Result<()> {
-        write_mesh(path, &self.to_write(path)?, options)
-    }
+            #[doc = concat!("Writes the built ", $what, ": its oriented ", stringify!($field), " over its vertices (split")]
+            /// copies as vertices of their own), and, where the format has a vertex attribute,
+            /// the input vertex each comes from. Whole or not at all; a mesh built without
+            /// positions is refused (`InvalidInput`).
+            pub fn write_with(&self, path: &Path, options: &WriteOptions) -> Result<()> {
+                write_mesh(path, &self.to_write(path)?, options)
+            }
 
-    /// The surface as a [`Mesh`] to write (borrowed); `path` names it in the error for a
-    /// mesh without positions.
-    pub fn to_write(&self, path: &Path) -> Result<Mesh<'_>> {
-        self.check_collected("writing the mesh")?;
-        Ok(Mesh {
-            positions: positions(self.positions(), self.num_vertices(), path)?,
-            triangles: as_elements::<3>(self.half_edge_vertices(), "triangle")?,
-            tetrahedra: &[],
-            origin: Some(self.vertex_origins().unwrap_or(&[])),
-        })
-    }
+            #[doc = concat!("The ", $what, " as a [`Mesh`] to write (borrowed); `path` names it in the error for a")]
+            /// mesh without positions.
+            pub fn to_write(&self, path: &Path) -> Result<Mesh<'_>> {
+                self.check_collected("writing the mesh")?;
+                Ok(Mesh {
+                    positions: positions(self.positions(), self.num_vertices(), path)?,
+                    $field: as_elements::<$k>(self.$ids(), $element)?,
+                    origin: Some(self.vertex_origins().unwrap_or(&[])),
+                    ..Mesh::default()
+                })
+            }
+        }
+    };
 }
 
+write_methods!(Che, "surface", triangles, 3, half_edge_vertices, "triangle");
+write_methods!(
+    Chf,
+    "volume",
+    tetrahedra,
+    4,
+    half_face_vertices,
+    "tetrahedron"
+);
+
 impl Chf {
-    /// Writes the built volume to `path`, the format from its extension (see
-    /// [`Chf::write_with`]).
-    pub fn write(&self, path: &Path) -> Result<()> {
-        self.write_with(path, &WriteOptions::default())
-    }
-
-    /// Writes the built volume: its oriented tetrahedra over its vertices (split copies as
-    /// vertices of their own), and, where the format has a vertex attribute, the input
-    /// vertex each comes from. Whole or not at all; a mesh built without positions is
-    /// refused (`InvalidInput`).
-    pub fn write_with(&self, path: &Path, options: &WriteOptions) -> Result<()> {
-        write_mesh(path, &self.to_write(path)?, options)
-    }
-
-    /// The volume as a [`Mesh`] to write (borrowed); `path` names it in the error for a
-    /// mesh without positions.
-    pub fn to_write(&self, path: &Path) -> Result<Mesh<'_>> {
-        self.check_collected("writing the mesh")?;
-        Ok(Mesh {
-            positions: positions(self.positions(), self.num_vertices(), path)?,
-            triangles: &[],
-            tetrahedra: as_elements::<4>(self.half_face_vertices(), "tetrahedron")?,
-            origin: Some(self.vertex_origins().unwrap_or(&[])),
-        })
-    }
-
     /// Writes the boundary surface to `path`, the format from its extension (see
     /// [`Chf::write_boundary_with`]).
     pub fn write_boundary(&self, path: &Path) -> Result<()> {

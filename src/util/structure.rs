@@ -69,6 +69,26 @@ fn out_of_range(id: u32, count: usize, one: &str, many: &str) -> Error {
     ))
 }
 
+/// `Ok` unless the mesh has `holes` (removed elements waiting for `garbage_collect`), else
+/// the error that refuses `what` until then.
+pub(crate) fn refuse_holes(holes: bool, what: &str) -> Result<()> {
+    if holes {
+        let detail = format!("{what}: the mesh has removed elements; call garbage_collect first");
+        return Err(Error::invalid(detail));
+    }
+    Ok(())
+}
+
+/// `Ok` unless the mesh was `edited` since its last garbage collection, else the error
+/// that refuses `what` until then.
+pub(crate) fn refuse_edited(edited: bool, what: &str) -> Result<()> {
+    if edited {
+        let detail = format!("{what}: the mesh was edited; call garbage_collect first");
+        return Err(Error::invalid(detail));
+    }
+    Ok(())
+}
+
 /// A flat id array as elements of `K` ids, without copying (the build's peak is what it
 /// allocates); an error naming the `element` kind when the length is not a multiple of
 /// `K`.

@@ -76,23 +76,14 @@ impl Che {
         let holes = self.num_live_vertices() != self.n_vertices
             || self.num_live_triangles() != self.num_triangles()
             || self.num_live_edges() != self.num_edges;
-        if holes {
-            let detail =
-                format!("{what}: the mesh has removed elements; call garbage_collect first");
-            return Err(crate::error::Error::invalid(detail));
-        }
-        Ok(())
+        crate::util::structure::refuse_holes(holes, what)
     }
 
     /// Refuses a mesh changed since its last garbage collection: its arrays are right,
     /// but a level file holds the tables the build's rules define, which only
     /// `garbage_collect` restores.
     pub(crate) fn check_unchanged(&self, what: &str) -> Result<()> {
-        if self.edits().is_some_and(|s| s.changed) {
-            let detail = format!("{what}: the mesh was edited; call garbage_collect first");
-            return Err(crate::error::Error::invalid(detail));
-        }
-        Ok(())
+        crate::util::structure::refuse_edited(self.edits().is_some_and(|s| s.changed), what)
     }
 
     pub(super) fn live_vertex(&self, x: u32) -> Result<()> {

@@ -194,22 +194,13 @@ impl Chf {
             || self.num_live_tetrahedra() != self.num_tetrahedra()
             || self.num_live_edges() != self.num_edges
             || self.num_live_faces() != self.num_faces;
-        if holes {
-            let detail =
-                format!("{what}: the mesh has removed elements; call garbage_collect first");
-            return Err(crate::error::Error::invalid(detail));
-        }
-        Ok(())
+        crate::util::structure::refuse_holes(holes, what)
     }
 
     /// Refuses an edited CHF (`garbage_collect` ends the edit state): its arrays are
     /// right, but a level file holds the explicit-id-free tables of the build's rules.
     pub(crate) fn check_unchanged(&self, what: &str) -> Result<()> {
-        if self.is_edited() {
-            let detail = format!("{what}: the mesh was edited; call garbage_collect first");
-            return Err(crate::error::Error::invalid(detail));
-        }
-        Ok(())
+        crate::util::structure::refuse_edited(self.is_edited(), what)
     }
 
     /// A live vertex id (or an error naming it).

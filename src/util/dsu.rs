@@ -55,17 +55,56 @@ pub(crate) fn element_components<const K: usize>(
     Ok((components, isolated))
 }
 
+/// The boundary a summary walks: the vertices on it (of `0..n`) and the union-find that
+/// joins them along its edges, whose sets among them are its components (curves).
+pub(crate) struct BoundaryMarks {
+    pub on_boundary: Vec<bool>,
+    dsu: Dsu,
+}
+
+impl BoundaryMarks {
+    pub(crate) fn new(n: usize) -> crate::error::Result<Self> {
+        Ok(BoundaryMarks {
+            on_boundary: crate::util::alloc::try_vec(n, false, "the summary's boundary marks")?,
+            dsu: Dsu::new(n)?,
+        })
+    }
+
+    /// Boundary edge `a-b`: both ends on the boundary, in one component.
+    pub(crate) fn edge(&mut self, a: u32, b: u32) {
+        self.on_boundary[a as usize] = true;
+        self.on_boundary[b as usize] = true;
+        self.dsu.union(a, b);
+    }
+
+    /// The components of the boundary edges given.
+    pub(crate) fn components(&mut self) -> u64 {
+        self.dsu.roots_among(&self.on_boundary)
+    }
+}
+
+/// The input boundary among the half-elements (half-edges, half-faces) with opposites
+/// `o`: the unpaired ones that are neither `non_manifold` nor `seams` (both sorted).
+pub(crate) fn input_boundary<'a>(
+    o: &'a [u32], non_manifold: &'a [u32], seams: &'a [u32],
+) -> impl Iterator<Item = u32> + 'a {
+    (0..o.len() as u32).filter(move |h| {
+        o[*h as usize] == crate::NONE
+            && non_manifold.binary_search(h).is_err()
+            && seams.binary_search(h).is_err()
+    })
+}
+
 /// The input complex as the summaries count it (`v`, `n` and `origin` as for
 /// [`element_components`]): its components and isolated vertices and the vertices it keeps,
 /// the `welded` ones left out (the weld merged them into another: they are not vertices
-/// of the welded complex), plus the marks and the union-find over the input vertices that
-/// the summary's boundary pass fills. Panics only when memory runs out, as the summaries.
+/// of the welded complex), plus the marks of its boundary that the summary's boundary pass
+/// fills. Panics only when memory runs out, as the summaries.
 pub(crate) struct InputComplex {
     pub components: u64,
     pub isolated: u64,
     pub kept: usize,
-    pub on_boundary: Vec<bool>,
-    pub dsu: Dsu,
+    pub boundary: BoundaryMarks,
 }
 
 impl InputComplex {
@@ -77,8 +116,7 @@ impl InputComplex {
             components,
             isolated: isolated - welded as u64,
             kept: n - welded,
-            on_boundary: crate::util::alloc::try_vec(n, false, "the summary's boundary marks")?,
-            dsu: Dsu::new(n)?,
+            boundary: BoundaryMarks::new(n)?,
         })
     }
 }

@@ -7,7 +7,7 @@ use crate::che::Summary;
 use crate::che::ids::{next, tri};
 use crate::error::{Error, Result};
 use crate::util::alloc::{or_panic, try_vec};
-use crate::util::dsu::Dsu;
+use crate::util::dsu::{BoundaryMarks, Dsu};
 
 impl Che {
     /// [`Che::summary`] of an edited CHE.
@@ -38,23 +38,20 @@ impl Che {
             .filter(|&h| o[h] != NONE && (h as u32) < o[h])
             .count();
         let (mut edges, mut boundary_edges, mut non_manifold_edges) = (paired as u64, 0u64, 0u64);
-        let mut on_boundary = or_panic(try_vec(n, false, "the summary's boundary marks"));
-        let mut bdsu = or_panic(Dsu::new(n));
+        let mut boundary = or_panic(BoundaryMarks::new(n));
         for group in unpaired.chunk_by(|x, y| x == y) {
             edges += 1;
             match group.len() {
                 1 => {
                     let (a, b) = group[0];
                     boundary_edges += 1;
-                    on_boundary[a as usize] = true;
-                    on_boundary[b as usize] = true;
-                    bdsu.union(a, b);
+                    boundary.edge(a, b);
                 }
                 2 => {}
                 _ => non_manifold_edges += 1,
             }
         }
-        let boundary_curves = bdsu.roots_among(&on_boundary);
+        let boundary_curves = boundary.components();
         let mut seam_roots: Vec<u32> = self
             .seams
             .iter()
@@ -62,32 +59,21 @@ impl Che {
             .collect();
         seam_roots.sort_unstable();
         seam_roots.dedup();
-        let triangles = st.live_triangles as u64;
-        let euler = st.live_vertices as i64 - edges as i64 + triangles as i64;
-        let orientable = seam_roots.is_empty();
-        let manifold = non_manifold_edges == 0;
-        let twice = 2 * components as i64 - (euler - isolated as i64) - boundary_curves as i64;
-        let genus = if orientable && manifold && twice >= 0 && twice % 2 == 0 {
-            twice / 2
-        } else {
-            -1
-        };
         Summary {
             vertices: st.live_vertices as u64,
             edges,
-            triangles,
+            triangles: st.live_triangles as u64,
             boundary_edges,
             boundary_curves,
             components,
             isolated_vertices: isolated,
-            euler_characteristic: euler,
-            genus,
-            orientable,
-            manifold,
+            orientable: seam_roots.is_empty(),
+            manifold: non_manifold_edges == 0,
             non_manifold_edges,
             non_orientable_components: seam_roots.len() as u64,
             ..Summary::default()
         }
+        .with_genus()
     }
 
     /// [`Che::validate`] of an edited CHE: the invariants over the live elements, plus the

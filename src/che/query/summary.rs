@@ -1,12 +1,11 @@
 //! The topology of the input complex as given (input vertices, unique input edges, kept
 //! triangles), whatever the build split or left unpaired, plus what the build did.
 
-use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::next;
 use crate::error::Result;
 use crate::util::alloc::or_panic;
-use crate::util::dsu::InputComplex;
+use crate::util::dsu::{InputComplex, input_boundary};
 
 /// Field names match `che_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -49,64 +48,50 @@ impl Che {
         }
         let r = &self.report;
         let n = self.n_input_vertices;
-        let input =
-            InputComplex::new::<3>(&self.v, n, r.welded_vertices, |x| self.vertex_origin(x));
-        let InputComplex {
-            components,
-            isolated,
-            kept,
-            mut on_boundary,
-            mut dsu,
-        } = input?;
-
-        // Input boundary edges: unpaired half-edges that are neither non-manifold nor seams.
+        let mut input =
+            InputComplex::new::<3>(&self.v, n, r.welded_vertices, |x| self.vertex_origin(x))?;
         let o = self.try_opposites_or_computed()?;
-        for h in 0..self.v.len() as u32 {
-            if o[h as usize] != NONE
-                || self.non_manifold.binary_search(&h).is_ok()
-                || self.seams.binary_search(&h).is_ok()
-            {
-                continue;
-            }
+        for h in input_boundary(&o, &self.non_manifold, &self.seams) {
             let a = self.vertex_origin(self.v[h as usize]);
             let b = self.vertex_origin(self.v[next(h) as usize]);
-            on_boundary[a as usize] = true;
-            on_boundary[b as usize] = true;
-            dsu.union(a, b);
+            input.boundary.edge(a, b);
         }
-        let boundary_curves = dsu.roots_among(&on_boundary);
-
-        let euler = kept as i64 - r.input_edges as i64 + self.num_triangles() as i64;
-        let orientable = r.non_orientable_components == 0;
-        let manifold = r.non_manifold_edges == 0 && r.split_vertices == 0;
-        let genus = if orientable && manifold {
-            // Each component: chi = 2 - 2g - b; isolated vertices add 1 each to chi.
-            let twice = 2 * components as i64 - (euler - isolated as i64) - boundary_curves as i64;
-            if twice >= 0 && twice % 2 == 0 {
-                twice / 2
-            } else {
-                -1
-            }
-        } else {
-            -1
-        };
-        Ok(Summary {
-            vertices: kept as u64,
+        let summary = Summary {
+            vertices: input.kept as u64,
             edges: r.input_edges as u64,
             triangles: self.num_triangles() as u64,
             boundary_edges: r.boundary_edges as u64,
-            boundary_curves,
-            components,
-            isolated_vertices: isolated,
-            euler_characteristic: euler,
-            genus,
-            orientable,
-            manifold,
+            boundary_curves: input.boundary.components(),
+            components: input.components,
+            isolated_vertices: input.isolated,
+            orientable: r.non_orientable_components == 0,
+            manifold: r.non_manifold_edges == 0 && r.split_vertices == 0,
             dropped_degenerate: r.dropped_degenerate as u64,
             non_manifold_edges: r.non_manifold_edges as u64,
             split_vertices: r.split_vertices as u64,
             flipped_triangles: r.flipped_triangles as u64,
             non_orientable_components: r.non_orientable_components as u64,
-        })
+            ..Summary::default()
+        };
+        Ok(summary.with_genus())
+    }
+}
+
+impl Summary {
+    /// The summary with its Euler characteristic, V - E + F, and its genus, the sum of the
+    /// component genera (each has chi = 2 - 2g - b, an isolated vertex adding 1 to chi), -1
+    /// where undefined (non-manifold, non-orientable, or counts no surface has).
+    pub(crate) fn with_genus(mut self) -> Summary {
+        let euler = self.vertices as i64 - self.edges as i64 + self.triangles as i64;
+        let twice = 2 * self.components as i64
+            - (euler - self.isolated_vertices as i64)
+            - self.boundary_curves as i64;
+        self.euler_characteristic = euler;
+        self.genus = if self.orientable && self.manifold && twice >= 0 && twice % 2 == 0 {
+            twice / 2
+        } else {
+            -1
+        };
+        self
     }
 }

@@ -2,13 +2,12 @@
 //! faces, kept tetrahedra), whatever the build split or left unpaired, plus what the build
 //! did.
 
-use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::face_cycle;
 use crate::chf::query::view::Need;
 use crate::error::Result;
 use crate::util::alloc::{or_panic, try_push};
-use crate::util::dsu::InputComplex;
+use crate::util::dsu::{InputComplex, input_boundary};
 
 /// Field names match `chf_summary` in the C API and the CLI's JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -59,51 +58,35 @@ impl Chf {
         }
         let r = &self.report;
         let n = self.n_input_vertices;
-        let input =
-            InputComplex::new::<4>(&self.v, n, r.welded_vertices, |x| self.vertex_origin(x));
-        let InputComplex {
-            components,
-            isolated,
-            kept,
-            mut on_boundary,
-            mut dsu,
-        } = input?;
-
-        // Input boundary faces: unpaired half-faces that are neither non-manifold nor seams.
+        let mut input =
+            InputComplex::new::<4>(&self.v, n, r.welded_vertices, |x| self.vertex_origin(x))?;
         let view = self.try_view(Need::NOTHING)?;
         let mut pairs: Vec<u64> = Vec::new();
-        for hf in 0..self.v.len() as u32 {
-            if view.o[hf as usize] != NONE
-                || self.non_manifold.binary_search(&hf).is_ok()
-                || self.seams.binary_search(&hf).is_ok()
-            {
-                continue;
-            }
+        for hf in input_boundary(&view.o, &self.non_manifold, &self.seams) {
             let [a, b, c] = face_cycle(&self.v, hf).map(|x| self.vertex_origin(x));
             for (x, y) in [(a, b), (b, c), (c, a)] {
-                on_boundary[x as usize] = true;
-                dsu.union(x, y);
+                input.boundary.edge(x, y);
                 let pair = ((x.min(y) as u64) << 32) | x.max(y) as u64;
                 try_push(&mut pairs, pair, "the summary's boundary edges")?;
             }
         }
         pairs.sort_unstable();
         pairs.dedup();
-        let boundary_components = dsu.roots_among(&on_boundary);
+        let boundary_components = input.boundary.components();
 
         let t = self.num_tetrahedra() as i64;
-        let euler = kept as i64 - r.input_edges as i64 + r.input_faces as i64 - t;
+        let euler = input.kept as i64 - r.input_edges as i64 + r.input_faces as i64 - t;
         Ok(Summary {
-            vertices: kept as u64,
+            vertices: input.kept as u64,
             edges: r.input_edges as u64,
             faces: r.input_faces as u64,
             tetrahedra: t as u64,
             boundary_faces: r.boundary_faces as u64,
             boundary_edges: pairs.len() as u64,
-            boundary_vertices: on_boundary.iter().filter(|&&b| b).count() as u64,
+            boundary_vertices: input.boundary.on_boundary.iter().filter(|&&b| b).count() as u64,
             boundary_components,
-            components,
-            isolated_vertices: isolated,
+            components: input.components,
+            isolated_vertices: input.isolated,
             euler_characteristic: euler,
             manifold: r.non_manifold_faces == 0
                 && r.non_manifold_edges == 0

@@ -3,7 +3,6 @@
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::{half_edge, tet};
-use crate::chf::query::view::Need;
 use crate::error::Result;
 use crate::util::alloc::try_collect;
 use crate::util::betti::{forest_lines, peeled_rank};
@@ -21,16 +20,7 @@ impl Chf {
     /// persistent homology runs on the core only.
     pub fn betti_numbers(&self) -> Result<[u64; 4]> {
         self.check_collected("the Betti numbers")?;
-        let view = self.view(Need {
-            faces: true,
-            edges: true,
-        });
-        let (nv, ne, nf, nt) = (
-            self.n_vertices,
-            self.num_edges(),
-            self.num_faces(),
-            self.num_tetrahedra(),
-        );
+        let (view, [nv, ne, nf, nt]) = self.complex();
         let ends = super::matrices::edge_ends(&view, ne);
         let edge_forest = forest_lines(nv, ends.iter().map(|&[a, b]| (a, b)))?;
         let face_forest = forest_lines(

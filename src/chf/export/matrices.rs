@@ -46,16 +46,7 @@ impl Chf {
     /// [`Storage`]), else in memory of its own.
     pub fn volume_matrix_into(&self, kind: VolumeMatrixKind, offer: Storage) -> Result<Assembled> {
         self.check_collected("the matrix export")?;
-        let view = self.view(Need {
-            faces: true,
-            edges: true,
-        });
-        let (nv, ne, nf, nt) = (
-            self.n_vertices,
-            self.num_edges(),
-            self.num_faces(),
-            self.num_tetrahedra(),
-        );
+        let (view, [nv, ne, nf, nt]) = self.complex();
         let e = |row: u32, col: u32, value: f64| Entry { row, col, value };
         let summed = |n_rows, n_cols| Shape {
             n_rows,
@@ -115,6 +106,24 @@ impl Chf {
                 assemble(shape, &out[..], offer)
             }
         }
+    }
+}
+
+impl Chf {
+    /// What the matrices and the Betti numbers read: the view with face and edge ids, and
+    /// the counts of vertices, edges, faces and tetrahedra.
+    pub(super) fn complex(&self) -> (View<'_>, [usize; 4]) {
+        let view = self.view(Need {
+            faces: true,
+            edges: true,
+        });
+        let counts = [
+            self.n_vertices,
+            self.num_edges(),
+            self.num_faces(),
+            self.num_tetrahedra(),
+        ];
+        (view, counts)
     }
 }
 

@@ -83,29 +83,16 @@ impl Che {
     pub fn half_edge_arrays(&self, options: HalfEdgeOptions) -> Result<HalfEdgeArrays> {
         self.check_collected("the half-edge export")?;
         let l = self.half_edge_layout(options)?;
-        let mut all = HalfEdgeArray::ALL.map(|_| Vec::new());
-        for (slot, which) in all.iter_mut().zip(HalfEdgeArray::ALL) {
-            *slot = self.half_edge_array_in(&l, which)?;
-        }
-        let [
-            next,
-            prev,
-            twin,
-            vertex,
-            face,
-            edge,
-            vertex_half_edge,
-            face_half_edge,
-        ] = all;
+        let array = |which| self.half_edge_array_in(&l, which);
         Ok(HalfEdgeArrays {
-            next,
-            prev,
-            twin,
-            vertex,
-            face,
-            edge,
-            vertex_half_edge,
-            face_half_edge,
+            next: array(HalfEdgeArray::Next)?,
+            prev: array(HalfEdgeArray::Prev)?,
+            twin: array(HalfEdgeArray::Twin)?,
+            vertex: array(HalfEdgeArray::Vertex)?,
+            face: array(HalfEdgeArray::Face)?,
+            edge: array(HalfEdgeArray::Edge)?,
+            vertex_half_edge: array(HalfEdgeArray::VertexHalfEdge)?,
+            face_half_edge: array(HalfEdgeArray::FaceHalfEdge)?,
         })
     }
 

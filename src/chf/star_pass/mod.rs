@@ -790,37 +790,19 @@ mod against_walks {
                 .flatten()
                 .copied()
                 .collect();
+            let run = |pairs, tables, threads| {
+                let pass = StarPass {
+                    pairs,
+                    tables,
+                    threads,
+                };
+                format!("{:?}", stars(&v, n, &[], pass).unwrap())
+            };
             for pairs in [Pairs::No, Pairs::Census, Pairs::Partners, Pairs::Opposites] {
                 for tables in [false, true] {
-                    let one = format!(
-                        "{:?}",
-                        stars(
-                            &v,
-                            n,
-                            &[],
-                            StarPass {
-                                pairs,
-                                tables,
-                                threads: 1
-                            }
-                        )
-                        .unwrap()
-                    );
+                    let one = run(pairs, tables, 1);
                     for threads in [2, 3, 7] {
-                        let many = format!(
-                            "{:?}",
-                            stars(
-                                &v,
-                                n,
-                                &[],
-                                StarPass {
-                                    pairs,
-                                    tables,
-                                    threads
-                                }
-                            )
-                            .unwrap()
-                        );
+                        let many = run(pairs, tables, threads);
                         assert!(
                             one == many,
                             "n {n}, {pairs:?}, tables {tables}, {threads} threads"

@@ -153,15 +153,8 @@ impl Che {
     /// its triangles, and no edge between them is in both links), no edge between two
     /// boundary vertices unless on the boundary, no triangle left with two boundary edges.
     pub(super) fn collapse_refusal(&self, h: u32) -> Option<String> {
-        let (a, b, g) = (
-            self.v[h as usize],
-            self.v[next(h) as usize],
-            self.o[h as usize],
-        );
-        let mut wings = vec![h];
-        if g != NONE {
-            wings.push(g);
-        }
+        let (a, b, wings) = self.collapse_wings(h);
+        let interior = wings.len() == 2;
         for &w in &wings {
             if [w, next(w), prev(w)].iter().any(|&x| self.is_flagged(x)) {
                 return Some(format!(
@@ -178,7 +171,7 @@ impl Che {
             }
         }
         let boundary = |x: u32| self.o[self.vh[x as usize] as usize] == NONE;
-        if g != NONE && boundary(a) && boundary(b) {
+        if interior && boundary(a) && boundary(b) {
             return Some(format!(
                 "half-edge {h}: interior edge {a}-{b} joins two boundary vertices"
             ));

@@ -23,7 +23,9 @@ impl Che {
         })
     }
 
-    fn collapse_live(&mut self, h: u32) -> u32 {
+    /// The ends `a -> b` of half-edge `h` and the wings a collapse of `h` removes: `h`, and
+    /// its opposite when it has one.
+    pub(super) fn collapse_wings(&self, h: u32) -> (u32, u32, Vec<u32>) {
         let (a, b, g) = (
             self.v[h as usize],
             self.v[next(h) as usize],
@@ -33,6 +35,11 @@ impl Che {
         if g != NONE {
             wings.push(g);
         }
+        (a, b, wings)
+    }
+
+    fn collapse_live(&mut self, h: u32) -> u32 {
+        let (a, b, wings) = self.collapse_wings(h);
         // Per wing w: its third vertex z, and the outer half-edges across its edge at `b`
         // (whose id goes) and at `a` (whose id stays).
         let outer: Vec<(u32, u32, u32)> = wings

@@ -31,12 +31,11 @@ impl Chf {
     /// reason) when a face would have three tetrahedra or two running the same way, a
     /// vertex star or an edge fan would fall apart, or it is flat. O(the stars of `q`).
     pub fn add_tetrahedron(&mut self, q: [u32; 4]) -> Result<u32> {
-        let plan = self
-            .plan_add_tetrahedron(q)
-            .map_err(context("add_tetrahedron", || format!("{q:?}")))?;
-        let ids = self
-            .run(plan)
-            .map_err(context("add_tetrahedron", || format!("{q:?}")))?;
+        let ids = self.run_op(
+            "add_tetrahedron",
+            || format!("{q:?}"),
+            |c| c.plan_add_tetrahedron(q),
+        )?;
         Ok(ids[0])
     }
 

@@ -106,21 +106,21 @@ impl Chf {
     /// condition fails (with the simplex that breaks it), or, with positions, when a
     /// tetrahedron would invert. O(the stars of both ends).
     pub fn collapse_edge(&mut self, he: HalfEdge) -> Result<u32> {
+        let what = || format!("half-edge {he}");
         let plan = self
             .plan_collapse_edge(he)
-            .map_err(context("collapse_edge", || format!("half-edge {he}")))?;
+            .map_err(context("collapse_edge", what))?;
         let b = self.half_edge_vertices(he)[1];
-        self.run(plan)
-            .map_err(context("collapse_edge", || format!("half-edge {he}")))?;
+        self.run(plan).map_err(context("collapse_edge", what))?;
         Ok(b)
     }
 
     /// Would [`Chf::collapse_edge`] succeed? Changes nothing.
     pub fn check_collapse_edge(&self, he: HalfEdge) -> Result<()> {
-        let plan = self
-            .plan_collapse_edge(he)
-            .map_err(context("collapse_edge", || format!("half-edge {he}")))?;
-        self.check_plan(plan)
-            .map_err(context("collapse_edge", || format!("half-edge {he}")))
+        self.check_op(
+            "collapse_edge",
+            || format!("half-edge {he}"),
+            |c| c.plan_collapse_edge(he),
+        )
     }
 }

@@ -1,7 +1,7 @@
 //! The 2-3 flip: the two tetrahedra of an interior face become three around the edge
 //! joining their apexes.
 
-use super::plan::{Plan, context, replaced};
+use super::plan::{Plan, replaced};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::{local, tet};
@@ -34,21 +34,12 @@ impl Chf {
     /// positions, when the union of the two tetrahedra is not strictly convex there (a
     /// new tetrahedron would be flat or inverted). O(1) stars.
     pub fn flip_23(&mut self, f: u32) -> Result<[u32; 3]> {
-        let plan = self
-            .plan_flip_23(f)
-            .map_err(context("flip_23", || format!("face {f}")))?;
-        let ids = self
-            .run(plan)
-            .map_err(context("flip_23", || format!("face {f}")))?;
+        let ids = self.run_op("flip_23", || format!("face {f}"), |c| c.plan_flip_23(f))?;
         Ok([ids[0], ids[1], ids[2]])
     }
 
     /// Would [`Chf::flip_23`] succeed? Changes nothing.
     pub fn check_flip_23(&self, f: u32) -> Result<()> {
-        let plan = self
-            .plan_flip_23(f)
-            .map_err(context("flip_23", || format!("face {f}")))?;
-        self.check_plan(plan)
-            .map_err(context("flip_23", || format!("face {f}")))
+        self.check_op("flip_23", || format!("face {f}"), |c| c.plan_flip_23(f))
     }
 }

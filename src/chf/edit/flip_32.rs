@@ -1,7 +1,7 @@
 //! The 3-2 flip: the three tetrahedra around an interior edge become two sharing the
 //! triangle of their ring.
 
-use super::plan::{Plan, context, replaced};
+use super::plan::{Plan, replaced};
 use crate::chf::Chf;
 use crate::error::{Error, Result};
 
@@ -40,21 +40,12 @@ impl Chf {
     /// tetrahedra. Refused on a boundary edge, another number of tetrahedra, an existing
     /// ring triangle, or, with positions, a union not strictly convex. O(1) stars.
     pub fn flip_32(&mut self, e: u32) -> Result<[u32; 2]> {
-        let plan = self
-            .plan_flip_32(e)
-            .map_err(context("flip_32", || format!("edge {e}")))?;
-        let ids = self
-            .run(plan)
-            .map_err(context("flip_32", || format!("edge {e}")))?;
+        let ids = self.run_op("flip_32", || format!("edge {e}"), |c| c.plan_flip_32(e))?;
         Ok([ids[0], ids[1]])
     }
 
     /// Would [`Chf::flip_32`] succeed? Changes nothing.
     pub fn check_flip_32(&self, e: u32) -> Result<()> {
-        let plan = self
-            .plan_flip_32(e)
-            .map_err(context("flip_32", || format!("edge {e}")))?;
-        self.check_plan(plan)
-            .map_err(context("flip_32", || format!("edge {e}")))
+        self.check_op("flip_32", || format!("edge {e}"), |c| c.plan_flip_32(e))
     }
 }

@@ -310,18 +310,23 @@ impl Chf {
             if self.multi_fan.iter().any(|m| (m.a, m.b) == (a, b)) {
                 return Err(refuse(format!("edge ({a}, {b}) carries several fans")));
             }
-            let star = &stars.iter().find(|(x, _)| *x == a).expect("touched").1;
-            let fan: Vec<u32> = star
-                .iter()
-                .copied()
-                .filter(|&t| after.verts(t).contains(&b))
-                .collect();
+            let fan = fan_of(stars, a, b, |t| after.verts(t));
             self.one_piece(after, new_o, &fan, &[a, b], || {
                 format!("edge ({a}, {b}) would be non-manifold (several fans)")
             })?;
         }
         Ok(())
     }
+}
+
+/// The tetrahedra of the pair `(a, b)`: those of the star of `a` among the touched `stars`
+/// whose vertices (`verts`) hold `b`.
+fn fan_of(stars: &[(u32, Vec<u32>)], a: u32, b: u32, verts: impl Fn(u32) -> [u32; 4]) -> Vec<u32> {
+    let star = &stars.iter().find(|(x, _)| *x == a).expect("touched").1;
+    star.iter()
+        .copied()
+        .filter(|&t| verts(t).contains(&b))
+        .collect()
 }
 
 /// The vertex pairs of the removed and added tetrahedra, each once.
@@ -500,12 +505,7 @@ impl Chf {
     /// new pair; the canonical half-edge of each by the build's rule.
     fn renumber_edges(&mut self, old_ids: Vec<((u32, u32), u32)>, stars: &[(u32, Vec<u32>)]) {
         for ((a, b), old) in old_ids {
-            let star = &stars.iter().find(|(x, _)| *x == a).expect("touched").1;
-            let fan: Vec<u32> = star
-                .iter()
-                .copied()
-                .filter(|&t| self.tetrahedron_vertices(t).contains(&b))
-                .collect();
+            let fan = fan_of(stars, a, b, |t| self.tetrahedron_vertices(t));
             let s = self.edit.as_mut().expect("edited");
             let Some(&t0) = fan.first() else {
                 if old != NONE && s.edge_he[old as usize] != crate::chf::NO_HALF_EDGE {
@@ -603,6 +603,46 @@ impl Chf {
         let verified = self.verify(plan)?;
         self.edit_state()?;
         self.commit(verified)
+    }
+
+    /// Runs the operation `op` on the element `what` names, whose plan `plan` makes: the
+    /// new tetrahedra's ids; a refusal, in the plan or in the run, names both.
+    pub(crate) fn run_op(
+        &mut self, op: &'static str, what: impl Fn() -> String,
+        plan: impl FnOnce(&Chf) -> Result<Plan>,
+    ) -> Result<Vec<u32>> {
+        let plan = plan(self).map_err(context(op, &what))?;
+        self.run(plan).map_err(context(op, what))
+    }
+
+    /// Would [`Chf::run_op`] succeed? Changes nothing.
+    pub(crate) fn check_op(
+        &self, op: &'static str, what: impl Fn() -> String, plan: impl FnOnce(&Chf) -> Result<Plan>,
+    ) -> Result<()> {
+        let plan = plan(self).map_err(context(op, &what))?;
+        self.check_plan(plan).map_err(context(op, what))
+    }
+
+    /// A split's plan, to be filled, and the id of the vertex it adds: at `position`, else
+    /// (when the mesh has positions) at the centroid of `corners`.
+    pub(crate) fn split_plan(
+        &self, position: Option<DVec3>, corners: &[u32],
+    ) -> Result<(Plan, u32)> {
+        let p = self.new_position(position, || self.centroid(corners))?;
+        let plan = Plan {
+            new_vertex: Some(p),
+            ..Plan::default()
+        };
+        Ok((plan, self.n_vertices as u32))
+    }
+
+    /// Runs `plan`, a split's: the vertex it adds; a refusal names `op` on `what`.
+    pub(crate) fn run_split(
+        &mut self, plan: Plan, op: &'static str, what: impl FnOnce() -> String,
+    ) -> Result<u32> {
+        let x = self.n_vertices as u32;
+        self.run(plan).map_err(context(op, what))?;
+        Ok(x)
     }
 
     /// The position of a new vertex: `given`, else `default` when the mesh has positions;

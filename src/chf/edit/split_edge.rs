@@ -9,12 +9,7 @@ impl Chf {
     pub(super) fn plan_split_edge(&self, e: u32, position: Option<DVec3>) -> Result<Plan> {
         self.check_live_edge(e)?;
         let [a, b] = self.edge_vertices(e);
-        let p = self.new_position(position, || self.centroid(&[a, b]))?;
-        let x = self.n_vertices as u32;
-        let mut plan = Plan {
-            new_vertex: Some(p),
-            ..Plan::default()
-        };
+        let (mut plan, x) = self.split_plan(position, &[a, b])?;
         for t in self.edge_tetrahedra(e) {
             let q = self.tetrahedron_vertices(t);
             plan.remove.push(t);
@@ -28,10 +23,7 @@ impl Chf {
     /// the k tetrahedra around it becomes two. O(k) stars.
     pub fn split_edge(&mut self, e: u32, position: Option<DVec3>) -> Result<u32> {
         let plan = self.plan_split_edge(e, position)?;
-        let x = self.n_vertices as u32;
-        self.run(plan)
-            .map_err(context("split_edge", || format!("edge {e}")))?;
-        Ok(x)
+        self.run_split(plan, "split_edge", || format!("edge {e}"))
     }
 
     /// Would [`Chf::split_edge`] succeed? Changes nothing.

@@ -13,12 +13,7 @@ impl Chf {
         self.check_face(f)?;
         let hf = self.face_half_face(f);
         let tri = self.half_face_vertices_of(hf);
-        let p = self.new_position(position, || self.centroid(&tri))?;
-        let x = self.n_vertices as u32;
-        let mut plan = Plan {
-            new_vertex: Some(p),
-            ..Plan::default()
-        };
+        let (mut plan, x) = self.split_plan(position, &tri)?;
         for side in [hf, self.opposite(hf)] {
             if side == NONE {
                 continue;
@@ -35,10 +30,7 @@ impl Chf {
     /// the position is not strictly inside the face's tetrahedra union. O(1) stars.
     pub fn split_face(&mut self, f: u32, position: Option<DVec3>) -> Result<u32> {
         let plan = self.plan_split_face(f, position)?;
-        let x = self.n_vertices as u32;
-        self.run(plan)
-            .map_err(context("split_face", || format!("face {f}")))?;
-        Ok(x)
+        self.run_split(plan, "split_face", || format!("face {f}"))
     }
 
     /// Would [`Chf::split_face`] succeed? Changes nothing.

@@ -9,24 +9,17 @@ impl Chf {
     pub(super) fn plan_split_tetrahedron(&self, t: u32, position: Option<DVec3>) -> Result<Plan> {
         self.check_tetrahedron(t)?;
         let q = self.tetrahedron_vertices(t);
-        let p = self.new_position(position, || self.centroid(&q))?;
-        let x = self.n_vertices as u32;
-        Ok(Plan {
-            remove: vec![t],
-            add: q.iter().map(|&c| replaced(q, c, x)).collect(),
-            new_vertex: Some(p),
-            retire: Vec::new(),
-        })
+        let (mut plan, x) = self.split_plan(position, &q)?;
+        plan.remove.push(t);
+        plan.add.extend(q.map(|c| replaced(q, c, x)));
+        Ok(plan)
     }
 
     /// Splits tetrahedron `t` in four at a new vertex (returned), at `position` or the
     /// centroid; refused when the position is not strictly inside. O(1) stars.
     pub fn split_tetrahedron(&mut self, t: u32, position: Option<DVec3>) -> Result<u32> {
         let plan = self.plan_split_tetrahedron(t, position)?;
-        let x = self.n_vertices as u32;
-        self.run(plan)
-            .map_err(context("split_tetrahedron", || format!("tetrahedron {t}")))?;
-        Ok(x)
+        self.run_split(plan, "split_tetrahedron", || format!("tetrahedron {t}"))
     }
 
     /// Would [`Chf::split_tetrahedron`] succeed? Changes nothing.

@@ -84,27 +84,13 @@ impl Chf {
         let (fresh, vertices, tetrahedra) = self.compacted()?;
         let s = self.edit.as_ref().expect("edited");
         let new_hf = |h: u32| 4 * tetrahedra[tet(h) as usize] + local(h);
-        let faces = try_collect(
-            s.face_hf.iter().map(|&h| {
-                if h == NONE {
-                    NONE
-                } else {
-                    fresh.face_of(new_hf(h))
-                }
-            }),
-            "the face map",
-        )?;
+        let faces = remap(&s.face_hf, NONE, "the face map", |h| {
+            fresh.face_of(new_hf(h))
+        })?;
         let new_he = |he: HalfEdge| 3 * new_hf(he_face(he)) as u64 + he_index(he) as u64;
-        let edges = try_collect(
-            s.edge_he.iter().map(|&he| {
-                if he == NO_HALF_EDGE {
-                    NONE
-                } else {
-                    fresh.edge_of(new_he(he))
-                }
-            }),
-            "the edge map",
-        )?;
+        let edges = remap(&s.edge_he, NO_HALF_EDGE, "the edge map", |he| {
+            fresh.edge_of(new_he(he))
+        })?;
         let _ = first;
         *self = fresh;
         Ok(GarbageMaps {
@@ -114,4 +100,15 @@ impl Chf {
             edges,
         })
     }
+}
+
+/// The new id of each element of an edited CHF from its canonical part in `old` (`new`
+/// maps it), `NONE` where that is `gone` (the element was removed).
+fn remap<T: Copy + PartialEq>(
+    old: &[T], gone: T, what: &str, new: impl Fn(T) -> u32,
+) -> Result<Vec<u32>> {
+    try_collect(
+        old.iter().map(|&x| if x == gone { NONE } else { new(x) }),
+        what,
+    )
 }

@@ -49,13 +49,9 @@ impl Che {
         let (b, c) = (self.v[h1 as usize], self.v[h2 as usize]);
         let m = self.push_vertex(p, NONE);
         let t3 = first(self.push_triangle([m, b, c], self.triangle_origin.get(tri(h))));
-        let (oh1, e_bc) = (self.o[h1 as usize], self.edge_id(h1));
-        self.move_flags(h1, t3 + 1);
+        self.hand_over(h1, t3 + 1);
         v_mut(self)[h1 as usize] = m;
-        self.link(t3 + 1, oh1);
-        self.name_edge(t3 + 1, e_bc);
-        self.link(h1, t3 + 2);
-        self.name_edge(h1, NONE);
+        self.link_new(h1, t3 + 2);
         // No old vertex changes its boundary, so a `VH` changes only where its half-edge
         // changed: `b -> c` and `b -> a` now leave `m`, and `d -> b` now ends at `m`; each
         // is replaced by the new half-edge that took its place. `m` leaves by `m -> b` on
@@ -69,15 +65,10 @@ impl Che {
             let g2 = prev(g);
             let d = self.v[g2 as usize];
             let t4 = first(self.push_triangle([b, m, d], self.triangle_origin.get(tri(g))));
-            let (og2, e_db) = (self.o[g2 as usize], self.edge_id(g2));
-            self.move_flags(g2, t4 + 2);
+            self.hand_over(g2, t4 + 2);
             v_mut(self)[g as usize] = m;
-            self.link(t4 + 2, og2);
-            self.name_edge(t4 + 2, e_db);
-            self.link(g2, t4 + 1);
-            self.name_edge(g2, NONE);
-            self.link(t3, t4);
-            self.name_edge(t3, NONE);
+            self.link_new(g2, t4 + 1);
+            self.link_new(t3, t4);
             replace_vh(self, b, g, t4);
             replace_vh(self, d, g2, t4 + 2);
         }
@@ -107,16 +98,11 @@ impl Che {
         let origin = self.triangle_origin.get(t);
         let p0 = first(self.push_triangle([b, c, x], origin));
         let q0 = first(self.push_triangle([c, a, x], origin));
-        for (old, new) in [(h1, p0), (h2, q0)] {
-            let (o, e) = (self.o[old as usize], self.edge_id(old));
-            self.move_flags(old, new);
-            self.link(new, o);
-            self.name_edge(new, e);
-        }
+        self.hand_over(h1, p0);
+        self.hand_over(h2, q0);
         v_mut(self)[h2 as usize] = x;
         for (u, w) in [(h1, p0 + 2), (h2, q0 + 1), (p0 + 1, q0 + 2)] {
-            self.link(u, w);
-            self.name_edge(u, NONE);
+            self.link_new(u, w);
         }
         for (y, out) in [(a, h0), (b, p0), (c, q0), (x, h2)] {
             self.fix_vh(y, out);

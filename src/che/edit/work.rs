@@ -24,6 +24,20 @@ impl Che {
         }
     }
 
+    /// `old`'s place goes to `new`: its opposite, edge id and flags.
+    pub(super) fn hand_over(&mut self, old: u32, new: u32) {
+        let (o, e) = (self.o[old as usize], self.edge_id(old));
+        self.move_flags(old, new);
+        self.link(new, o);
+        self.name_edge(new, e);
+    }
+
+    /// Links `h` and `g` across a new edge.
+    pub(super) fn link_new(&mut self, h: u32, g: u32) {
+        self.link(h, g);
+        self.name_edge(h, NONE);
+    }
+
     /// The edge id of live `h` from level 2. Below, ids are ranks and an edit names no
     /// edge: any id but `NONE` (which [`Che::name_edge`] reads as a new edge).
     pub(super) fn edge_id(&self, h: u32) -> u32 {

@@ -39,6 +39,48 @@ impl Cost {
     }
 }
 
+/// The origin maps (4 bytes per element and per vertex), which every build keeps.
+const MAPS: Cost = Cost::new(4, 4);
+/// The positions (24 bytes per vertex), when given.
+const POSITIONS: Cost = Cost::new(0, 24);
+
+/// The peak of a build of `elements` elements over `vertices` vertices (with `positions`
+/// or not) whose steps peak at `steps` (the largest counts): that, plus the origin maps
+/// and the positions held throughout.
+pub(crate) fn peak(steps: &[Cost], elements: usize, vertices: usize, positions: bool) -> u64 {
+    let steps = steps.iter().map(|s| s.bytes(elements, vertices)).max();
+    let extra = if positions {
+        MAPS.plus(POSITIONS)
+    } else {
+        MAPS
+    };
+    steps
+        .unwrap_or(0)
+        .saturating_add(extra.bytes(elements, vertices))
+}
+
+/// At each of `levels`, with `positions` and without: the `estimate` (of the positions
+/// given or not, and the level) bounds the bytes the structure built `held` (topology,
+/// positions and maps), within the factor of eight its docs state.
+#[cfg(test)]
+pub(crate) fn assert_bounds(
+    positions: &[glam::DVec3], levels: std::ops::RangeInclusive<u8>,
+    estimate: impl Fn(bool, u8) -> u64, held: impl Fn(&[glam::DVec3], u8) -> usize,
+) {
+    for level in levels {
+        for with_positions in [false, true] {
+            let pos = if with_positions { positions } else { &[] };
+            let held = held(pos, level) as u64;
+            let estimate = estimate(with_positions, level);
+            assert!(held <= estimate, "level {level}: {held} > {estimate}");
+            assert!(
+                estimate <= 8 * held,
+                "level {level}: {estimate} > 8 x {held}"
+            );
+        }
+    }
+}
+
 /// An [`ErrorKind::OutOfMemory`](crate::ErrorKind::OutOfMemory) error when `estimate`
 /// exceeds the options' limit (0: none). `what` names the build ("a CHE build of 10
 /// triangles at level 2").

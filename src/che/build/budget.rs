@@ -1,7 +1,7 @@
 //! The memory a CHE build will take at its peak, from the input's sizes: the arrays each
 //! step makes, in bytes per input triangle and per input vertex (see `util::budget`).
 
-use crate::util::budget::Cost;
+use crate::util::budget::{Cost, peak};
 
 /// The matching step's peak: `V` (12), the pair keys (8 per half-edge, 24), the smaller
 /// vertices when the keys do not pack (12), the partners (12) and the direction bits (1).
@@ -14,10 +14,6 @@ const LEVEL_2: Cost = Cost::new(13, 0);
 /// Level 3: the curve of each boundary half-edge and `CH`, at most 8 bytes per half-edge
 /// (24), and the boundary bits (1).
 const LEVEL_3: Cost = Cost::new(25, 0);
-/// The origin maps (4 per triangle and per vertex), and the positions (24 per vertex)
-/// when given.
-const MAPS: Cost = Cost::new(4, 4);
-const POSITIONS: Cost = Cost::new(0, 24);
 
 /// The bytes a build of `triangles` triangles over `vertices` vertices (with positions or
 /// not) at `level` is estimated to hold at its peak: what `BuildOptions::memory_limit_bytes`
@@ -32,21 +28,14 @@ pub fn estimated_build_bytes(triangles: usize, vertices: usize, positions: bool,
     if level >= 3 {
         kept = kept.plus(LEVEL_3);
     }
-    let steps = MATCHING
-        .bytes(triangles, vertices)
-        .max(kept.bytes(triangles, vertices));
-    let extra = if positions {
-        MAPS.plus(POSITIONS)
-    } else {
-        MAPS
-    };
-    steps.saturating_add(extra.bytes(triangles, vertices))
+    peak(&[MATCHING, kept], triangles, vertices, positions)
 }
 
 #[cfg(test)]
 mod tests {
     use crate::che::{BuildOptions, Che};
     use crate::generate;
+    use crate::util::budget::assert_bounds;
 
     /// The estimate bounds what the structure holds, within the factor the docs state.
     #[test]
@@ -55,22 +44,14 @@ mod tests {
         for mesh in meshes {
             let (triangles, positions) = (mesh.triangles, mesh.positions);
             let n = positions.len();
-            for level in 0..=3 {
-                for with_positions in [false, true] {
-                    let pos = if with_positions { &positions[..] } else { &[] };
-                    let che = Che::from_triangles(&triangles, n, pos, BuildOptions::level(level))
-                        .unwrap();
-                    let m = che.memory_bytes();
-                    let held = (m.topology + m.positions + m.maps) as u64;
-                    let estimate =
-                        super::estimated_build_bytes(triangles.len(), n, with_positions, level);
-                    assert!(held <= estimate, "level {level}: {held} > {estimate}");
-                    assert!(
-                        estimate <= 8 * held,
-                        "level {level}: {estimate} > 8 x {held}"
-                    );
-                }
-            }
+            let estimate = |with_positions, level| {
+                super::estimated_build_bytes(triangles.len(), n, with_positions, level)
+            };
+            assert_bounds(&positions, 0..=3, estimate, |pos, level| {
+                let che = Che::from_triangles(&triangles, n, pos, BuildOptions::level(level));
+                let m = che.unwrap().memory_bytes();
+                m.topology + m.positions + m.maps
+            });
         }
     }
 }

@@ -3,7 +3,7 @@
 //! The boundary surface of level 3 is a CHE build of its own, checked against what is left
 //! of the limit once the volume is built.
 
-use crate::util::budget::Cost;
+use crate::util::budget::{Cost, peak};
 
 /// The star pass's peak: `V` (16), the determinant signs (1), the records buffer (16, 20
 /// with the level-2 tables), the pairs (8 per half-face, 32) and each thread's vertex
@@ -17,10 +17,6 @@ const LEVEL_1: Cost = Cost::new(32, 0);
 /// Level 2: `FH`, at most a face per half-face (16), `EH`, at most an edge per slot (24),
 /// the face and edge bits (3) and `VH` (4 per vertex).
 const LEVEL_2: Cost = Cost::new(43, 4);
-/// The origin maps (4 per tetrahedron and per vertex), and the positions (24 per vertex)
-/// when given.
-const MAPS: Cost = Cost::new(4, 4);
-const POSITIONS: Cost = Cost::new(0, 24);
 
 /// The bytes a build of `tets` tetrahedra over `vertices` vertices (with positions or not)
 /// at `level` is estimated to hold at its peak, the boundary surface of level 3 aside (a
@@ -34,18 +30,13 @@ pub fn estimated_build_bytes(tets: usize, vertices: usize, positions: bool, leve
     } else {
         (STAR_PASS, LEVEL_1)
     };
-    let steps = pass.bytes(tets, vertices).max(kept.bytes(tets, vertices));
-    let extra = if positions {
-        MAPS.plus(POSITIONS)
-    } else {
-        MAPS
-    };
-    steps.saturating_add(extra.bytes(tets, vertices))
+    peak(&[pass, kept], tets, vertices, positions)
 }
 
 #[cfg(test)]
 mod tests {
     use crate::chf::{BuildOptions, Chf};
+    use crate::util::budget::assert_bounds;
     use glam::DVec3;
 
     fn cubes(n: u32) -> (Vec<[u32; 4]>, Vec<DVec3>) {
@@ -59,23 +50,16 @@ mod tests {
         for n in [3, 12] {
             let (tets, positions) = cubes(n);
             let nv = positions.len();
-            for level in 0..=2 {
-                for with_positions in [false, true] {
-                    let pos = if with_positions { &positions[..] } else { &[] };
-                    let chf =
-                        Chf::from_tetrahedra(&tets, nv, pos, BuildOptions::level(level)).unwrap();
-                    assert_eq!(chf.report.inverted_tetrahedra, 0, "positive determinants");
-                    let m = chf.memory_bytes();
-                    let held = (m.topology + m.positions + m.maps) as u64;
-                    let estimate =
-                        super::estimated_build_bytes(tets.len(), nv, with_positions, level);
-                    assert!(held <= estimate, "level {level}: {held} > {estimate}");
-                    assert!(
-                        estimate <= 8 * held,
-                        "level {level}: {estimate} > 8 x {held}"
-                    );
-                }
-            }
+            let estimate = |with_positions, level| {
+                super::estimated_build_bytes(tets.len(), nv, with_positions, level)
+            };
+            assert_bounds(&positions, 0..=2, estimate, |pos, level| {
+                let chf = Chf::from_tetrahedra(&tets, nv, pos, BuildOptions::level(level));
+                let chf = chf.unwrap();
+                assert_eq!(chf.report.inverted_tetrahedra, 0, "positive determinants");
+                let m = chf.memory_bytes();
+                m.topology + m.positions + m.maps
+            });
         }
     }
 }

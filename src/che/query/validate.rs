@@ -94,15 +94,8 @@ impl Che {
                 return broken(format!("triangle {t} is degenerate ({c:?})"));
             }
         }
-        for (name, list) in [("non-manifold", &self.non_manifold), ("seam", &self.seams)] {
-            if let Some(w) = list.windows(2).find(|w| w[0] >= w[1]) {
-                return broken(format!("{name} half-edges not sorted at {}", w[1]));
-            }
-            if let Some(&h) = list.iter().find(|&&h| h as usize >= self.v.len()) {
-                return broken(format!("{name} half-edge {h} out of range"));
-            }
-        }
-        Ok(())
+        increasing_below(&self.non_manifold, self.v.len(), "non-manifold half-edge")?;
+        increasing_below(&self.seams, self.v.len(), "seam half-edge")
     }
 
     pub(crate) fn validate_o(&self) -> Result<()> {
@@ -367,5 +360,11 @@ mod tests {
         let mut c = mesh(3);
         c.triangle_origin = vec![0, 1, 2, 3, 4, 5, 6, 8, 7].into();
         fails(&c, "triangle origin[8] = 7 does not increase");
+        let mut c = mesh(3);
+        c.seams = vec![5, 3];
+        fails(&c, "seam half-edge[1] = 3 does not increase");
+        let mut c = mesh(3);
+        c.non_manifold = vec![c.v.len() as u32];
+        fails(&c, "non-manifold half-edge[0] = 27 is not below 27");
     }
 }

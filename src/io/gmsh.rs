@@ -335,7 +335,7 @@ pub(crate) fn parse(text: &str, name: &str) -> Result<MeshData> {
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::{assert_errors, utf8};
+    use crate::io::text::{assert_errors, utf8, warning_lines};
 
     /// Two tets and a boundary triangle over sparse tags, plus a point, a line, a quad, a
     /// 10-node tet and a 6-node triangle, and sections to skip.
@@ -432,9 +432,8 @@ $EndElements
 
     #[test]
     fn skipped_element_types_are_reported() {
-        let w = |d: MeshData| d.warnings.iter().map(|w| w.to_string()).collect::<Vec<_>>();
         assert_eq!(
-            w(parse(V22, "g.msh").unwrap()),
+            warning_lines(&parse(V22, "g.msh").unwrap()),
             [
                 "g.msh:20: 1 point element ignored (type 15)",
                 "g.msh:21: 1 line element ignored (type 1)",
@@ -442,7 +441,7 @@ $EndElements
             ]
         );
         assert_eq!(
-            w(parse(V41, "g.msh").unwrap()),
+            warning_lines(&parse(V41, "g.msh").unwrap()),
             [
                 "g.msh:30: 1 point element ignored (type 15)",
                 "g.msh:37: 1 pyramid ignored (type 7)",
@@ -450,7 +449,7 @@ $EndElements
         );
         let t = V22.replace("1 15 2 0 1 10\n", "1 99 2 0 1 10 20 30\n");
         assert_eq!(
-            w(parse(&t, "g.msh").unwrap())[0],
+            warning_lines(&parse(&t, "g.msh").unwrap())[0],
             "g.msh:20: 1 element of another type ignored (type 99)"
         );
     }

@@ -403,7 +403,7 @@ fn split_strips(
 pub(super) mod tests {
     use super::*;
     use crate::error::ErrorKind::Parse;
-    use crate::io::text::{assert_errors, utf8};
+    use crate::io::text::{assert_errors, utf8, warning_lines};
     use glam::DVec3;
 
     /// A tet, a triangle, a quadratic tet and triangle, and a vertex, a line and a hex to skip;
@@ -524,9 +524,8 @@ TRIANGLE_STRIPS 1 5
 
     #[test]
     fn skipped_cells_and_polygons_are_reported() {
-        let w = |d: MeshData| d.warnings.iter().map(|w| w.to_string()).collect::<Vec<_>>();
         assert_eq!(
-            w(parse(LEGACY, "v.vtk").unwrap()),
+            warning_lines(&parse(LEGACY, "v.vtk").unwrap()),
             [
                 "v.vtk:25: 1 vertex cell ignored (type 1)",
                 "v.vtk:26: 1 line cell ignored (type 3)",
@@ -534,7 +533,7 @@ TRIANGLE_STRIPS 1 5
             ]
         );
         assert_eq!(
-            w(parse(POLY, "v.vtk").unwrap()),
+            warning_lines(&parse(POLY, "v.vtk").unwrap()),
             [
                 "v.vtk:7: 1 VERTICES cell ignored",
                 "v.vtk:9: 1 LINES cell ignored",

@@ -85,6 +85,17 @@ pub(crate) fn run_all<J: Send, T: Send>(jobs: Vec<J>, f: impl Fn(J) -> T + Sync)
     out.into_iter().map(|t| t.expect("every job ran")).collect()
 }
 
+/// What a loop over `0..n` stopping at its first `Some` would give, with `check` run on
+/// `threads` contiguous parts of `0..n` at once (each stopping at its own first): the
+/// answer of the first part that has one, so the same whatever the threads.
+pub(crate) fn first_found<T: Send>(
+    n: usize, threads: usize, check: impl Fn(std::ops::Range<usize>) -> Option<T> + Sync,
+) -> Option<T> {
+    let part = n.div_ceil(threads.max(1)).max(1);
+    let parts: Vec<_> = (0..n).step_by(part).map(|a| a..(a + part).min(n)).collect();
+    run_all(parts, check).into_iter().flatten().next()
+}
+
 #[cfg(test)]
 mod tests {
     use super::{MIN_ELEMENTS_PER_THREAD, PARALLEL_MIN_ELEMENTS, plan};
@@ -132,6 +143,20 @@ mod tests {
                 super::run_all(jobs, |j| j * 10),
                 (0..n).map(|j| j * 10).collect::<Vec<_>>()
             );
+        }
+    }
+
+    /// The first hit over the parts is the loop's first hit, for any number of parts.
+    #[test]
+    fn the_first_found_is_the_loops_first() {
+        let hits = [3usize, 7, 8, 19];
+        for n in [0, 1, 5, 8, 20, 33] {
+            let expected = hits.iter().copied().find(|&i| i < n);
+            for threads in 0..7 {
+                let found =
+                    super::first_found(n, threads, |r| r.into_iter().find(|i| hits.contains(i)));
+                assert_eq!(found, expected, "{n} elements, {threads} threads");
+            }
         }
     }
 

@@ -20,6 +20,56 @@ fn increasing_below(xs: &[u32], n: usize, name: &str) -> Result<()> {
     increasing_below_violation(xs, n, name).map_or(Ok(()), broken)
 }
 
+/// What is wrong with `O[h]`, if anything: it must pair `h` with a live half-edge on
+/// the same vertex pair run the other way, whose `O` is `h` (`NONE` on the boundary).
+#[inline]
+fn o_violation(v: &[u32], o: &[u32], h: usize) -> Option<String> {
+    let g = o[h];
+    // A removed half-edge (V = NONE, on an edited CHE) pairs with nothing.
+    if v[h] == NONE && g != NONE {
+        return Some(format!("removed half-edge {h} has O = {g}"));
+    }
+    if v[h] == NONE || g == NONE {
+        return None;
+    }
+    let h32 = h as u32;
+    if g as usize >= o.len() || g == h32 || o[g as usize] != h32 || v[g as usize] == NONE {
+        return Some(format!("O[{h}] = {g}: not an involution"));
+    }
+    if v[g as usize] != v[next(h32) as usize] || v[next(g) as usize] != v[h] {
+        return Some(format!(
+            "O[{h}] = {g}: not the same vertex pair run the other way"
+        ));
+    }
+    None
+}
+
+/// What is wrong with `VH[x]`, if anything, for a vertex with `degree` outgoing
+/// half-edges, one of them on the boundary when `on_boundary`.
+#[inline]
+fn vh_violation(
+    (v, o, vh): (&[u32], &[u32], &[u32]), x: usize, degree: u32, on_boundary: bool,
+) -> Option<String> {
+    let h = vh[x];
+    if h == NONE {
+        return (degree != 0).then(|| format!("VH[{x}] is NONE but vertex {x} has half-edges"));
+    }
+    if h as usize >= v.len() || v[h as usize] as usize != x {
+        return Some(format!("VH[{x}] = {h} does not start at vertex {x}"));
+    }
+    if on_boundary && o[h as usize] != NONE {
+        return Some(format!(
+            "VH[{x}] = {h} is not the boundary half-edge of a boundary vertex"
+        ));
+    }
+    let mut steps = 0u32;
+    for_each_step(o, h, |s| {
+        steps += matches!(s, super::StarStep::Out(_)) as u32
+    });
+    (steps != degree)
+        .then(|| format!("the rotation of vertex {x} meets {steps} of its {degree} half-edges"))
+}
+
 impl Che {
     /// Checks every invariant of the current level: `V` (ids in range, no degenerate
     /// triangle), `O` (an involution pairing half-edges on the same vertex pair run the
@@ -107,23 +157,14 @@ impl Che {
                 v.len()
             ));
         }
-        for (h, &g) in o.iter().enumerate() {
-            // A removed half-edge (V = NONE, on an edited CHE) pairs with nothing.
-            if v[h] == NONE && g != NONE {
-                return broken(format!("removed half-edge {h} has O = {g}"));
-            }
-            if v[h] == NONE || g == NONE {
-                continue;
-            }
-            let h32 = h as u32;
-            if g as usize >= o.len() || g == h32 || o[g as usize] != h32 || v[g as usize] == NONE {
-                return broken(format!("O[{h}] = {g}: not an involution"));
-            }
-            if v[g as usize] != v[next(h32) as usize] || v[next(g) as usize] != v[h] {
-                return broken(format!(
-                    "O[{h}] = {g}: not the same vertex pair run the other way"
-                ));
-            }
+        // The pairs are checked on every thread the machine runs (random reads of `O` and
+        // `V`: the checks of a full open), the first violation reported whatever the split.
+        let threads = crate::util::par::planned_threads(0, self.num_triangles());
+        let found = crate::util::par::first_found(o.len(), threads, |hs| {
+            hs.into_iter().find_map(|h| o_violation(v, o, h))
+        });
+        if let Some(what) = found {
+            return broken(what);
         }
         for &h in self.non_manifold.iter().chain(&self.seams) {
             if v.get(h as usize).is_none_or(|&x| x == NONE) {
@@ -171,33 +212,13 @@ impl Che {
             degree[x as usize] += 1;
             on_boundary[x as usize] |= o[h] == NONE;
         }
-        for (x, &h) in vh.iter().enumerate() {
-            if h == NONE {
-                if degree[x] != 0 {
-                    return broken(format!("VH[{x}] is NONE but vertex {x} has half-edges"));
-                }
-                continue;
-            }
-            if h as usize >= v.len() || v[h as usize] as usize != x {
-                return broken(format!("VH[{x}] = {h} does not start at vertex {x}"));
-            }
-            if on_boundary[x] && o[h as usize] != NONE {
-                return broken(format!(
-                    "VH[{x}] = {h} is not the boundary half-edge of a boundary vertex"
-                ));
-            }
-            let mut steps = 0u32;
-            for_each_step(o, h, |s| {
-                steps += matches!(s, super::StarStep::Out(_)) as u32
-            });
-            if steps != degree[x] {
-                return broken(format!(
-                    "the rotation of vertex {x} meets {steps} of its {} half-edges",
-                    degree[x]
-                ));
-            }
-        }
-        Ok(())
+        // Each rotation walked on every thread the machine runs, as the pairs are.
+        let threads = crate::util::par::planned_threads(0, self.num_triangles());
+        let found = crate::util::par::first_found(vh.len(), threads, |xs| {
+            xs.into_iter()
+                .find_map(|x| vh_violation((v, o, vh), x, degree[x], on_boundary[x]))
+        });
+        found.map_or(Ok(()), broken)
     }
 
     fn validate_edges(&self) -> Result<()> {

@@ -333,6 +333,20 @@ fn che_call(m: *mut CheMesh, b: &mut Bytes, seen: &mut Seen) {
             read_view(che_mesh_vertex_origins(m, &mut len), len);
             read_view(che_mesh_triangle_origins(m, null_mut()), 0);
             read_view(che_mesh_edge_ranks(m, &mut len), len);
+            // All at once: the same pointers, readable over the lengths the counts give.
+            let mut all = MaybeUninit::<CheViews>::zeroed().assume_init();
+            assert_eq!(che_mesh_views(m, &mut all), Status::Ok);
+            assert_eq!(all.opposites, che_mesh_opposites(m, null_mut()));
+            assert_eq!(
+                all.vertex_half_edges,
+                che_mesh_vertex_half_edges(m, null_mut())
+            );
+            let (nv, nt) = (all.num_vertices, all.num_triangles);
+            read_view(all.half_edge_vertices, 3 * nt);
+            read_view(all.opposites, 3 * nt);
+            read_view(all.vertex_half_edges, nv);
+            read_view(all.edge_half_edges, all.num_edges);
+            read_view(all.positions, 3 * nv);
         },
         _ => last_error(b),
     }

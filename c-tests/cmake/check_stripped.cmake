@@ -1,14 +1,8 @@
 # Fails when the installed shared library LIB carries debug info (.debug_info), or names a
 # separate debug file (.gnu_debuglink) that is not installed beside it.
-find_program(READELF readelf)
-if(NOT READELF)
-  message(STATUS "readelf not found: nothing to check")
-  return()
-endif()
-execute_process(COMMAND "${READELF}" -S -W "${LIB}" OUTPUT_VARIABLE sections RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "readelf -S ${LIB} failed")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/readelf.cmake")
+readelf_or_pass()
+readelf_output(sections "${LIB}" -S -W)
 if(sections MATCHES "\\.debug_info")
   message(FATAL_ERROR "${LIB} keeps its debug info")
 endif()

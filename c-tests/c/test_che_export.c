@@ -2,7 +2,7 @@
    sparse matrices, Betti numbers and strips: exact answers on a strip of two triangles,
    the same answers at every level on every fixture, d1 * d2 == 0, Betti numbers against
    the Euler characteristic, and the buffer rules. */
-#include "check.h"
+#include "export_matrix.h"
 
 #define CAP 512
 
@@ -35,24 +35,7 @@ static size_t get_list(list_fn f, const che_mesh *m, uint32_t *out) {
     return n;
 }
 
-typedef struct matrix {
-    uint64_t offsets[CAP];
-    uint32_t columns[CAP];
-    double values[CAP];
-    size_t rows, nnz;
-} matrix;
-
-static void get_matrix(const che_mesh *m, uint32_t kind, matrix *a) {
-    size_t no = 0, nn = 0;
-    CHECK_OK(che_mesh_export_matrix(m, kind, NULL, 0, NULL, 0, NULL, 0, &no, &nn));
-    CHECK(no <= CAP && nn <= CAP);
-    size_t no2 = 0, nn2 = 0;
-    CHECK_OK(che_mesh_export_matrix(m, kind, a->offsets, CAP, a->columns, CAP, a->values, CAP,
-                                    &no2, &nn2));
-    CHECK(no == no2 && nn == nn2 && a->offsets[0] == 0 && a->offsets[no - 1] == nn);
-    a->rows = no - 1;
-    a->nnz = nn;
-}
+MATRIX_QUERY(che_mesh, che_mesh_export_matrix)
 
 static void test_strip_exact(void) {
     che_mesh *m = make(STRIP, 2, 4, NULL, 2);
@@ -95,10 +78,10 @@ static void test_strip_exact(void) {
     CHECK_IDS(b, n, 0, 1, 2, 3);
 
     matrix a;
-    get_matrix(m, CHE_MATRIX_KIND_LAPLACIAN, &a);
+    get_matrix(q_che_mesh_export_matrix, m, CHE_MATRIX_KIND_LAPLACIAN, &a);
     CHECK(a.rows == 4 && a.nnz == 14);
     CHECK(a.offsets[1] == 3 && a.columns[0] == 0 && a.values[0] == 2 && a.values[1] == -1);
-    get_matrix(m, CHE_MATRIX_KIND_D1, &a);
+    get_matrix(q_che_mesh_export_matrix, m, CHE_MATRIX_KIND_D1, &a);
     CHECK(a.rows == 4 && a.nnz == 10);
     /* Vertex 0: edge 0 (0 -> 1) leaves it, edge 2 (2 -> 0) enters it. */
     CHECK(a.offsets[1] == 2 && a.columns[0] == 0 && a.values[0] == -1);
@@ -110,22 +93,12 @@ static void test_strip_exact(void) {
     che_mesh_free(m);
 }
 
-/* d1 * d2 == 0, computed densely. */
+/* d1 * d2 == 0. */
 static void check_boundary_of_boundary(const che_mesh *m) {
     static matrix d1, d2;
-    get_matrix(m, CHE_MATRIX_KIND_D1, &d1);
-    get_matrix(m, CHE_MATRIX_KIND_D2, &d2);
-    const size_t nt = che_mesh_num_triangles(m);
-    for (size_t v = 0; v < d1.rows; v++)
-        for (size_t t = 0; t < nt; t++) {
-            double sum = 0;
-            for (uint64_t i = d1.offsets[v]; i < d1.offsets[v + 1]; i++) {
-                const uint32_t e = d1.columns[i];
-                for (uint64_t j = d2.offsets[e]; j < d2.offsets[e + 1]; j++)
-                    if (d2.columns[j] == t) sum += d1.values[i] * d2.values[j];
-            }
-            CHECK(sum == 0);
-        }
+    get_matrix(q_che_mesh_export_matrix, m, CHE_MATRIX_KIND_D1, &d1);
+    get_matrix(q_che_mesh_export_matrix, m, CHE_MATRIX_KIND_D2, &d2);
+    check_product_zero(&d1, &d2, che_mesh_num_triangles(m));
 }
 
 /* Every export of m equals that of ref (the same mesh at level 3). */
@@ -147,8 +120,8 @@ static void check_same(const che_mesh *m, const che_mesh *ref) {
     }
     static matrix x, y;
     for (uint32_t kind = 0; kind <= CHE_MATRIX_KIND_DUAL_ADJACENCY; kind++) {
-        get_matrix(m, kind, &x);
-        get_matrix(ref, kind, &y);
+        get_matrix(q_che_mesh_export_matrix, m, kind, &x);
+        get_matrix(q_che_mesh_export_matrix, ref, kind, &y);
         CHECK(x.rows == y.rows && x.nnz == y.nnz);
         CHECK(memcmp(x.offsets, y.offsets, (x.rows + 1) * sizeof *x.offsets) == 0);
         CHECK(memcmp(x.columns, y.columns, x.nnz * sizeof *x.columns) == 0);

@@ -1,40 +1,11 @@
 /* The CHF exports: half-face arrays, the dual graph, the incidence matrices (d1 d2 == 0,
    d2 d3 == 0), Betti numbers, the same at every level, and the buffer rules. */
 #include "chf_fixtures.h"
+#include "export_matrix.h"
 
 #define CAP 1024
 
-typedef struct matrix {
-    uint64_t offsets[CAP];
-    uint32_t columns[CAP];
-    double values[CAP];
-    size_t rows, nnz;
-} matrix;
-
-static void get_matrix(const chf_mesh *m, uint32_t kind, matrix *a) {
-    size_t no = 0, nn = 0;
-    CHECK_OK(chf_mesh_export_matrix(m, kind, NULL, 0, NULL, 0, NULL, 0, &no, &nn));
-    CHECK(no >= 1 && no <= CAP && nn <= CAP);
-    CHECK_OK(chf_mesh_export_matrix(m, kind, a->offsets, CAP, a->columns, CAP, a->values, CAP,
-                                    &no, &nn));
-    CHECK(a->offsets[0] == 0 && a->offsets[no - 1] == nn);
-    a->rows = no - 1;
-    a->nnz = nn;
-}
-
-/* a * b == 0, densely (b has `cols` columns). */
-static void check_product_zero(const matrix *a, const matrix *b, size_t cols) {
-    for (size_t r = 0; r < a->rows; r++)
-        for (size_t c = 0; c < cols; c++) {
-            double sum = 0;
-            for (uint64_t i = a->offsets[r]; i < a->offsets[r + 1]; i++) {
-                const uint32_t k = a->columns[i];
-                for (uint64_t j = b->offsets[k]; j < b->offsets[k + 1]; j++)
-                    if (b->columns[j] == c) sum += a->values[i] * b->values[j];
-            }
-            CHECK(sum == 0);
-        }
-}
+MATRIX_QUERY(chf_mesh, chf_mesh_export_matrix)
 
 static size_t get_ids(const chf_mesh *m, int which, uint32_t *out) {
     size_t need = 0, n = 0;
@@ -75,11 +46,11 @@ static void test_every_level(void) {
     static matrix d[3], ref[3];
     for (size_t f = 0; f < sizeof F / sizeof F[0]; f++) {
         chf_mesh *top = make_chf(F[f].tets, F[f].n_tets, F[f].n_verts, NULL, 3);
-        for (uint32_t k = 0; k < 3; k++) get_matrix(top, k, &ref[k]);
+        for (uint32_t k = 0; k < 3; k++) get_matrix(q_chf_mesh_export_matrix, top, k, &ref[k]);
         for (uint32_t level = 0; level <= 3; level++) {
             chf_mesh *m = make_chf(F[f].tets, F[f].n_tets, F[f].n_verts, NULL, level);
             for (uint32_t k = 0; k < 3; k++) {
-                get_matrix(m, k, &d[k]);
+                get_matrix(q_chf_mesh_export_matrix, m, k, &d[k]);
                 CHECK(d[k].nnz == ref[k].nnz && d[k].rows == ref[k].rows);
                 CHECK(memcmp(d[k].columns, ref[k].columns, d[k].nnz * sizeof(uint32_t)) == 0);
                 CHECK(memcmp(d[k].values, ref[k].values, d[k].nnz * sizeof(double)) == 0);

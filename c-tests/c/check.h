@@ -112,6 +112,14 @@ static inline void print_ids_(const char *what, const uint32_t *got, size_t n) {
         CHECK_DETAIL(needle);                                                              \
     } while (0)
 
+/* A copy of ids[0..n) (malloc'ed, never NULL), to compare with after a call. */
+static inline uint32_t *copy_ids(const uint32_t *ids, size_t n) {
+    uint32_t *out = malloc((n + 1) * sizeof *out);
+    if (!out) exit(2);
+    if (n) memcpy(out, ids, n * sizeof *out);
+    return out;
+}
+
 /* Writes a test input file into the working directory. */
 static inline void write_file(const char *path, const char *text) {
     FILE *f = fopen(path, "w");

@@ -14,10 +14,7 @@ static const double OCTA_XYZ[] = {0, 0, 1,  1, 0, 0,  0, 1, 0, -1, 0, 0,
 /* A copy of V (malloc'ed), to compare before and after a refusal. */
 static uint32_t *copy_v(const che_mesh *m, size_t *len) {
     const uint32_t *v = che_mesh_half_edge_vertices(m, len);
-    uint32_t *out = malloc((*len + 1) * sizeof *out);
-    if (!out) exit(2);
-    if (*len) memcpy(out, v, *len * sizeof *out);
-    return out;
+    return copy_ids(v, *len);
 }
 
 /* `call` is refused with `want` and a detail containing `needle`, V unchanged. */

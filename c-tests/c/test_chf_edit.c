@@ -8,10 +8,7 @@
 /* A copy of the half-face vertices (malloc'ed), to compare before and after a refusal. */
 static uint32_t *copy_hf(const chf_mesh *m, size_t *len) {
     const uint32_t *v = chf_mesh_half_face_vertices(m, len);
-    uint32_t *out = malloc((*len + 1) * sizeof *out);
-    if (!out) exit(2);
-    if (*len) memcpy(out, v, *len * sizeof *out);
-    return out;
+    return copy_ids(v, *len);
 }
 
 /* `call` is refused with `want` and a detail containing `needle`; the tetrahedra, the
@@ -37,6 +34,36 @@ static uint32_t *copy_hf(const chf_mesh *m, size_t *len) {
 static const uint32_t NONE_ = TOPOMESH_NONE;
 
 /* Adding and removing vertices and tetrahedra. */
+/* Splitting a face or an edge: its call, its check, and the elements around a vertex. */
+typedef struct split_op {
+    topomesh_status (*split)(chf_mesh *m, uint32_t id, const double *position, uint32_t *v);
+    topomesh_status (*check)(const chf_mesh *m, uint32_t id, const double *position);
+    topomesh_status (*around)(const chf_mesh *m, uint32_t v, uint32_t *buf, size_t cap,
+                              size_t *len);
+    const char *what; /* in the detail of an out-of-range id */
+} split_op;
+static const split_op SPLIT_FACE = {chf_mesh_split_face, chf_mesh_check_split_face,
+                                    chf_vertex_faces, "face"};
+static const split_op SPLIT_EDGE = {chf_mesh_split_edge, chf_mesh_check_split_edge,
+                                    chf_vertex_edges, "edge"};
+
+/* Splits the first element around vertex x (the check accepts it first) at a new vertex,
+   which must be `want`; then that element is refused as removed, and NONE as out of range.
+   Returns the new vertex. */
+static uint32_t split_around(chf_mesh *m, uint32_t x, const split_op *op, uint32_t want) {
+    uint32_t ids[16];
+    size_t n = 0;
+    CHECK_OK(op->around(m, x, ids, 16, &n));
+    CHECK(n >= 1);
+    CHECK_OK(op->check(m, ids[0], NULL));
+    CHECK_OK(op->split(m, ids[0], NULL, &x));
+    CHECK(x == want);
+    CHECK_REFUSED(m, op->split(m, ids[0], NULL, &x), TOPOMESH_STATUS_OUT_OF_RANGE, "removed");
+    CHECK_REFUSED(m, op->check(m, NONE_, NULL), TOPOMESH_STATUS_OUT_OF_RANGE, op->what);
+    CHECK_OK(chf_mesh_validate(m));
+    return x;
+}
+
 static void add_and_remove(chf_mesh *m) {
     uint32_t x = NONE_, t = NONE_;
     bool flag = false;
@@ -126,7 +153,6 @@ static void flips(chf_mesh *m) {
 /* 1-4, 2-6 and edge splits; a refused position; a collapse, accepted and refused. */
 static void splits_and_collapse(chf_mesh *m, bool positions) {
     uint32_t x = NONE_, t = NONE_;
-    size_t n = 0;
     const size_t nv = chf_mesh_num_vertices(m);
     for (t = 0; t < chf_mesh_num_tetrahedra(m); t++) {
         bool removed = true;
@@ -150,27 +176,8 @@ static void splits_and_collapse(chf_mesh *m, bool positions) {
     CHECK_OK(chf_mesh_split_tetrahedron(m, t, NULL, &x));
     CHECK(x == nv && chf_mesh_num_vertices(m) == nv + 1);
     CHECK_OK(chf_mesh_validate(m));
-    uint32_t faces[16], edges[16];
-    CHECK_OK(chf_vertex_faces(m, x, faces, 16, &n));
-    CHECK(n >= 1);
-    CHECK_OK(chf_mesh_check_split_face(m, faces[0], NULL));
-    CHECK_OK(chf_mesh_split_face(m, faces[0], NULL, &x));
-    CHECK(x == nv + 1);
-    CHECK_REFUSED(m, chf_mesh_split_face(m, faces[0], NULL, &x), TOPOMESH_STATUS_OUT_OF_RANGE,
-                  "removed");
-    CHECK_REFUSED(m, chf_mesh_check_split_face(m, NONE_, NULL), TOPOMESH_STATUS_OUT_OF_RANGE,
-                  "face");
-    CHECK_OK(chf_mesh_validate(m));
-    CHECK_OK(chf_vertex_edges(m, x, edges, 16, &n));
-    CHECK(n >= 1);
-    CHECK_OK(chf_mesh_check_split_edge(m, edges[0], NULL));
-    CHECK_OK(chf_mesh_split_edge(m, edges[0], NULL, &x));
-    CHECK(x == nv + 2);
-    CHECK_REFUSED(m, chf_mesh_split_edge(m, edges[0], NULL, &x), TOPOMESH_STATUS_OUT_OF_RANGE,
-                  "removed");
-    CHECK_REFUSED(m, chf_mesh_check_split_edge(m, NONE_, NULL), TOPOMESH_STATUS_OUT_OF_RANGE,
-                  "edge");
-    CHECK_OK(chf_mesh_validate(m));
+    x = split_around(m, x, &SPLIT_FACE, nv + 1);
+    x = split_around(m, x, &SPLIT_EDGE, nv + 2);
 
     /* Every half-edge of the live tetrahedra: the check and the call agree; collapse the
        first accepted one, refuse the first refused one. */

@@ -157,12 +157,32 @@ static inline int load_test_main(int argc, char **argv, const char *usage, void 
 
 /* ---- Loading files, for either library ---------------------------------------------- */
 
-/* The load calls of CHE or CHF, adapted to a mesh given as void *. */
+/* The load calls of CHE or CHF, and the views of what they load, adapted to a mesh given
+   as void * (by ANY_LOADER). */
 typedef struct any_loader {
     topomesh_status (*load)(const char *path, uint32_t level, void **m);
     topomesh_status (*load_ex)(const char *path, const void *options, void **m);
+    const double *(*positions)(const void *m, size_t *len);
+    const uint32_t *(*cells)(const void *m, size_t *len); /* the cells' corners */
     const char *ext; /* of a format it reads, with the dot */
 } any_loader;
+
+/* Defines the any_loader `name` of a library's mesh_t, its load calls and its views. */
+#define ANY_LOADER(name, mesh_t, load_fn, load_ex_fn, positions_fn, cells_fn, ext)         \
+    static topomesh_status name##_load_(const char *path, uint32_t level, void **m) {      \
+        return load_fn(path, level, (mesh_t **)m);                                         \
+    }                                                                                      \
+    static topomesh_status name##_load_ex_(const char *path, const void *o, void **m) {    \
+        return load_ex_fn(path, o, (mesh_t **)m);                                          \
+    }                                                                                      \
+    static const double *name##_positions_(const void *m, size_t *len) {                   \
+        return positions_fn((const mesh_t *)m, len);                                       \
+    }                                                                                      \
+    static const uint32_t *name##_cells_(const void *m, size_t *len) {                     \
+        return cells_fn((const mesh_t *)m, len);                                           \
+    }                                                                                      \
+    static const any_loader name = {name##_load_, name##_load_ex_, name##_positions_,      \
+                                    name##_cells_, ext}
 
 /* The argument errors of a loader, which need no file reader: a NULL path (named in the
    detail) or out, level 4, and a file whose extension (of `unknown`) is no mesh format. */
@@ -195,15 +215,18 @@ static inline void check_load_file_errors(const any_loader *l, const bad_files *
     CHECK(m == NULL);
 }
 
-/* A loaded mesh holds the arrays of its file: positions p[0..lp) (3 a vertex) and the
-   corners v[0..lv) of its cells, against the expected ones (zero-copy views each). */
-#define CHECK_LOADED_ARRAYS(p, lp, want_p, v, lv, want_v)                                 \
+/* A mesh m loaded by l holds the arrays of its file: positions (3 a vertex) and the
+   corners of its cells, the expected arrays want_p and want_v (zero-copy views each). */
+#define CHECK_LOADED_ARRAYS(l, m, want_p, want_v)                                          \
     do {                                                                                   \
+        size_t lp_ = 0, lv_ = 0;                                                           \
+        const double *p_ = (l)->positions((m), &lp_);                                      \
+        const uint32_t *v_ = (l)->cells((m), &lv_);                                        \
         const size_t np_ = sizeof(want_p) / sizeof(want_p)[0];                             \
-        CHECK((p) != NULL && (lp) == np_);                                                 \
-        if ((p) && (lp) == np_) CHECK(memcmp((p), (want_p), sizeof(want_p)) == 0);         \
-        CHECK((lv) == sizeof(want_v) / sizeof(want_v)[0] &&                                \
-              memcmp((v), (want_v), sizeof(want_v)) == 0);                                 \
+        CHECK(p_ != NULL && lp_ == np_);                                                   \
+        if (p_ && lp_ == np_) CHECK(memcmp(p_, (want_p), sizeof(want_p)) == 0);           \
+        CHECK(lv_ == sizeof(want_v) / sizeof(want_v)[0] &&                                 \
+              memcmp(v_, (want_v), sizeof(want_v)) == 0);                                  \
     } while (0)
 
 /* ---- Queries of either library ------------------------------------------------------ */

@@ -3,13 +3,8 @@
    `test_che_load readers`: needs the OFF and Medit readers (src/io). */
 #include "check.h"
 
-static topomesh_status load(const char *path, uint32_t level, void **m) {
-    return che_mesh_load(path, level, (che_mesh **)m);
-}
-static topomesh_status load_ex(const char *path, const void *options, void **m) {
-    return che_mesh_load_ex(path, options, (che_mesh **)m);
-}
-static const any_loader LOADER = {load, load_ex, ".off"};
+ANY_LOADER(LOADER, che_mesh, che_mesh_load, che_mesh_load_ex, che_mesh_positions,
+           che_mesh_half_edge_vertices, ".off");
 
 static void test_args(void) { check_load_args(&LOADER, "not-a-mesh.xyz"); }
 
@@ -28,10 +23,7 @@ static void test_readers(void) {
         CHECK(che_mesh_level(m) == 3);
         CHECK(che_mesh_num_vertices(m) == 4 && che_mesh_num_triangles(m) == 4);
         CHECK(che_mesh_num_edges(m) == 6);
-        size_t lp = 0, lv = 0;
-        const double *p = che_mesh_positions(m, &lp);
-        const uint32_t *V = che_mesh_half_edge_vertices(m, &lv);
-        CHECK_LOADED_ARRAYS(p, lp, TETRA_POS, V, lv, TETRA);
+        CHECK_LOADED_ARRAYS(&LOADER, m, TETRA_POS, TETRA);
         che_summary s;
         CHECK_OK(che_mesh_summary(m, &s));
         CHECK(s.genus == 0 && s.euler_characteristic == 2 && s.manifold && s.orientable);

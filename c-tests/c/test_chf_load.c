@@ -3,13 +3,8 @@
    `test_chf_load readers`: needs the Medit, TetGen and OFF readers (src/io). */
 #include "chf_fixtures.h"
 
-static topomesh_status load(const char *path, uint32_t level, void **m) {
-    return chf_mesh_load(path, level, (chf_mesh **)m);
-}
-static topomesh_status load_ex(const char *path, const void *options, void **m) {
-    return chf_mesh_load_ex(path, options, (chf_mesh **)m);
-}
-static const any_loader LOADER = {load, load_ex, ".mesh"};
+ANY_LOADER(LOADER, chf_mesh, chf_mesh_load, chf_mesh_load_ex, chf_mesh_positions,
+           chf_mesh_half_face_vertices, ".mesh");
 
 static void test_args(void) {
     check_load_args(&LOADER, "chf-not-a-volume.xyz");
@@ -39,10 +34,7 @@ static void test_readers(void) {
         CHECK(chf_mesh_level(m) == level);
         CHECK(chf_mesh_num_vertices(m) == 5 && chf_mesh_num_tetrahedra(m) == 2);
         CHECK(chf_mesh_num_faces(m) == 7 && chf_mesh_num_edges(m) == 9);
-        size_t lp = 0, lv = 0;
-        const double *p = chf_mesh_positions(m, &lp);
-        const uint32_t *V = chf_mesh_half_face_vertices(m, &lv);
-        CHECK_LOADED_ARRAYS(p, lp, PAIR_POS, V, lv, PAIR);
+        CHECK_LOADED_ARRAYS(&LOADER, m, PAIR_POS, PAIR);
         chf_summary s;
         CHECK_OK(chf_mesh_summary(m, &s));
         CHECK(s.euler_characteristic == 1 && s.boundary_faces == 6 && s.manifold);

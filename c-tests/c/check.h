@@ -138,22 +138,35 @@ static inline int finish(const char *name) {
     return 0;
 }
 
-/* The main of a load test: `args` (argument errors, independent of the file readers) or
-   `readers` (needs them). */
-static inline int load_test_main(int argc, char **argv, const char *usage, void (*args)(void),
-                                 void (*readers)(void)) {
-    const char *what = argc > 1 ? argv[1] : "args";
-    if (strcmp(what, "args") == 0) {
-        args();
-    } else if (strcmp(what, "readers") == 0) {
-        readers();
-    } else {
-        fprintf(stderr, "usage: %s args|readers\n", usage);
-        return 2;
-    }
-    return finish(what);
+/* A part of a test program, run by the program's argument `name`. */
+typedef struct test_part {
+    const char *name;
+    void (*run)(void);
+} test_part;
+
+/* The main of a test in parts: runs the part its argument names (`fallback` without one);
+   prints `usage` ("prog a|b") for any other argument. */
+static inline int parts_main(int argc, char **argv, const char *fallback, const char *usage,
+                             const test_part *parts, size_t n) {
+    const char *what = argc > 1 ? argv[1] : fallback;
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(what, parts[i].name) == 0) {
+            parts[i].run();
+            return finish(what);
+        }
+    fprintf(stderr, "usage: %s\n", usage);
+    return 2;
 }
 
+/* The main of a load test: `args` (argument errors, independent of the file readers) or
+   `readers` (needs them). */
+static inline int load_test_main(int argc, char **argv, const char *prog, void (*args)(void),
+                                 void (*readers)(void)) {
+    const test_part parts[] = {{"args", args}, {"readers", readers}};
+    char usage[80];
+    snprintf(usage, sizeof usage, "%s args|readers", prog);
+    return parts_main(argc, argv, "args", usage, parts, 2);
+}
 
 /* ---- Loading files, for either library ---------------------------------------------- */
 

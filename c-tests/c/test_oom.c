@@ -180,14 +180,6 @@ static void budget_test(void) {
 }
 
 int main(int argc, char **argv) {
-    const char *what = argc > 1 ? argv[1] : "";
-    if (strcmp(what, "rlimit") == 0) {
-        rlimit_test();
-    } else if (strcmp(what, "budget") == 0) {
-        budget_test();
-    } else {
-        fprintf(stderr, "usage: test_oom rlimit|budget\n");
-        return 2;
-    }
-    return finish(what);
+    const test_part parts[] = {{"rlimit", rlimit_test}, {"budget", budget_test}};
+    return parts_main(argc, argv, "", "test_oom rlimit|budget", parts, 2);
 }

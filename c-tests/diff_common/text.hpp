@@ -7,8 +7,23 @@
 #include <cstdio>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace difftext {
+
+// The vertices of a mesh read from a file: the part that the triangle soup (diff_surface)
+// and the tetrahedron soup (diff_volume) share.
+struct Points {
+  std::string name;              // the file's name, without its folder (or extension)
+  size_t n_vertices = 0;
+  std::vector<double> positions; // 3 per vertex
+};
+
+// `path` without its folder.
+inline std::string file_name(const std::string &path) {
+  const auto slash = path.find_last_of('/');
+  return path.substr(slash == std::string::npos ? 0 : slash + 1);
+}
 
 // Reads the whole file at `path` into `text`; false when it cannot.
 inline bool slurp(const std::string &path, std::string &text) {

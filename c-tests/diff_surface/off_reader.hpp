@@ -18,10 +18,7 @@
 
 namespace diffmesh {
 
-struct Soup {
-  std::string name;
-  size_t n_vertices = 0;
-  std::vector<double> positions;   // 3 per vertex
+struct Soup : difftext::Points {
   std::vector<uint32_t> triangles; // 3 per triangle, after fan triangulation
   size_t n_faces = 0;              // faces in the file
   std::map<int, size_t> face_sizes; // corners -> how many faces
@@ -48,8 +45,7 @@ inline bool read_off(const std::string &path, Soup &s, std::string &err) {
   std::string text;
   if (!difftext::slurp(path, text)) { err = "cannot read " + path; return false; }
   s = Soup();
-  auto slash = path.find_last_of('/');
-  s.name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+  s.name = difftext::file_name(path);
   if (s.name.size() > 4 && s.name.compare(s.name.size() - 4, 4, ".off") == 0)
     s.name.resize(s.name.size() - 4);
 

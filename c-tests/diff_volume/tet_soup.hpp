@@ -12,10 +12,7 @@
 
 namespace diffvol {
 
-struct TetSoup {
-  std::string name;
-  size_t n_vertices = 0;
-  std::vector<double> positions; // 3 per vertex
+struct TetSoup : difftext::Points {
   std::vector<uint32_t> tets;    // 4 per tetrahedron, input vertex ids
   size_t n_tets() const { return tets.size() / 4; }
 };
@@ -31,8 +28,7 @@ using difftext::slurp;
 // 4 corners). On failure returns false with a message in `err`.
 inline bool read_tetgen(const std::string &base, TetSoup &s, std::string &err) {
   s = TetSoup();
-  auto slash = base.find_last_of('/');
-  s.name = base.substr(slash == std::string::npos ? 0 : slash + 1);
+  s.name = difftext::file_name(base);
   std::string text;
   const char *b, *e;
   if (!detail::slurp(base + ".node", text)) { err = "cannot read " + base + ".node"; return false; }

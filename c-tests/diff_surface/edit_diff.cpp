@@ -19,6 +19,7 @@
 // shared ids) must be equal, up to the rule differences same_meshes() checks exactly.
 // Exit status 1 on any difference, 2 for bad arguments or a mesh the sequences cannot
 // compare (see unflagged()); one summary line per run.
+#include "../diff_common/splitmix.hpp"
 #include "edit_ops.hpp"
 #include "off_reader.hpp"
 
@@ -39,12 +40,7 @@ namespace {
 // splitmix64: the same sequence on every platform (std's distributions are not).
 struct Rng {
   uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
+  uint64_t next() { return diffcommon::splitmix64(s); }
   uint32_t below(size_t n) { return uint32_t(next() % n); }
 };
 

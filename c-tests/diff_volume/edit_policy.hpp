@@ -4,6 +4,8 @@
 // the live ones), then the operation and its local face or edge.
 #pragma once
 
+#include "../diff_common/splitmix.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <ctime>
@@ -22,12 +24,7 @@ inline double cpu_ms() {
 struct EditRng {
   uint64_t s;
   explicit EditRng(uint64_t seed) : s(seed) {}
-  uint64_t next() {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
+  uint64_t next() { return diffcommon::splitmix64(s); }
   // Uniform enough in [0, n) for n far below 2^64.
   size_t below(size_t n) { return size_t(next() % n); }
 };

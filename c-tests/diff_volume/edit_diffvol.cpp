@@ -62,7 +62,8 @@ const char *const kind_name[KINDS] = {"1-4", "2-3", "3-2"};
 
 // One operation as both sides see it.
 struct Op {
-  Kind kind = SPLIT;
+  explicit Op(Kind k) : kind(k) {}
+  Kind kind;
   uint32_t target = NONE;             // topomesh tetrahedron, face or edge
   std::vector<uint32_t> tuple;        // its topomesh vertices (4, 3 or 2)
   std::array<double, 3> point{};      // a split's new vertex
@@ -90,8 +91,11 @@ std::vector<uint32_t> rel(Run &r, topomesh_status (*f)(const chf_mesh *, uint32_
   return out;
 }
 
+// rel() on f, named in a failure by its own name.
+#define REL(r, f, id) rel(r, f, id, #f)
+
 Quad tv(Run &r, uint32_t t) {
-  std::vector<uint32_t> v = rel(r, chf_tetrahedron_vertices, t, "chf_tetrahedron_vertices");
+  std::vector<uint32_t> v = REL(r, chf_tetrahedron_vertices, t);
   Quad q{NONE, NONE, NONE, NONE};
   std::copy_n(v.begin(), std::min<size_t>(4, v.size()), q.begin());
   return q;
@@ -115,8 +119,7 @@ uint32_t random_live_tet(Run &r) {
 }
 
 Op pick_split(Run &r) {
-  Op op;
-  op.kind = SPLIT;
+  Op op(SPLIT);
   op.target = random_live_tet(r);
   Quad q = tv(r, op.target);
   op.tuple.assign(q.begin(), q.end());
@@ -132,12 +135,11 @@ Op pick_split(Run &r) {
 
 // A random face of a random tetrahedron; the plan of src/chf/edit/flip_23.rs.
 Op pick_flip23(Run &r) {
-  Op op;
-  op.kind = FLIP23;
-  std::vector<uint32_t> faces = rel(r, chf_tetrahedron_faces, random_live_tet(r), "chf_tetrahedron_faces");
+  Op op(FLIP23);
+  std::vector<uint32_t> faces = REL(r, chf_tetrahedron_faces, random_live_tet(r));
   if (faces.size() != 4) return op;
   op.target = faces[r.rng() % 4];
-  op.tuple = rel(r, chf_face_vertices, op.target, "chf_face_vertices");
+  op.tuple = REL(r, chf_face_vertices, op.target);
   uint32_t hf = NONE, g = NONE;
   chf_face_half_face(r.tm.m, op.target, &hf);
   if (chf_half_face_opposite(r.tm.m, hf, &g) != TOPOMESH_STATUS_OK || g == NONE) return op;
@@ -151,16 +153,15 @@ Op pick_flip23(Run &r) {
 // An edge of a random tetrahedron, one with three tetrahedra around it when there is one;
 // the plan of src/chf/edit/flip_32.rs.
 Op pick_flip32(Run &r) {
-  Op op;
-  op.kind = FLIP32;
-  std::vector<uint32_t> edges = rel(r, chf_tetrahedron_edges, random_live_tet(r), "chf_tetrahedron_edges");
+  Op op(FLIP32);
+  std::vector<uint32_t> edges = REL(r, chf_tetrahedron_edges, random_live_tet(r));
   if (edges.size() != 6) return op;
   std::vector<uint32_t> three;
   for (uint32_t e : edges)
-    if (rel(r, chf_edge_tetrahedra, e, "chf_edge_tetrahedra").size() == 3) three.push_back(e);
+    if (REL(r, chf_edge_tetrahedra, e).size() == 3) three.push_back(e);
   op.target = three.empty() ? edges[r.rng() % 6] : three[r.rng() % three.size()];
-  op.tuple = rel(r, chf_edge_vertices, op.target, "chf_edge_vertices");
-  std::vector<uint32_t> ring = rel(r, chf_edge_tetrahedra, op.target, "chf_edge_tetrahedra");
+  op.tuple = REL(r, chf_edge_vertices, op.target);
+  std::vector<uint32_t> ring = REL(r, chf_edge_tetrahedra, op.target);
   if (ring.size() != 3 || op.tuple.size() != 2) return op;
   const Quad q = tv(r, ring[0]);
   uint32_t far = NONE;

@@ -47,31 +47,25 @@ Volume block(std::uint32_t k) {
     return Volume::from_tetrahedra(tets, std::size_t(m) * m * m);
 }
 
+// Relations `rel...` of every element 0..n-1 of m, element by element.
+template <class Id, class M, class... R>
+std::uint64_t digest_all(std::uint64_t h, const M &m, std::uint32_t n, R (M::*... rel)(Id) const) {
+    for (std::uint32_t i = 0; i < n; i++) ((h = digest(h, (m.*rel)(Id{i}))), ...);
+    return h;
+}
+
 // Every relation of every element of both meshes, through the wrapper.
 std::uint64_t relations(const Surface &s, const Volume &v) {
     std::uint64_t h = 1;
-    for (std::uint32_t i = 0; i < s.num_vertices(); i++) {
-        h = digest(h, s.vertex_vertices(VertexId{i}));
-        h = digest(h, s.vertex_edges(VertexId{i}));
-        h = digest(h, s.vertex_triangles(VertexId{i}));
-    }
-    for (std::uint32_t i = 0; i < s.num_edges(); i++) {
-        h = digest(h, s.edge_vertices(EdgeId{i}));
-        h = digest(h, s.edge_edges(EdgeId{i}));
-        h = digest(h, s.edge_triangles(EdgeId{i}));
-    }
-    for (std::uint32_t i = 0; i < s.num_triangles(); i++) {
-        h = digest(h, s.triangle_vertices(TriangleId{i}));
-        h = digest(h, s.triangle_edges(TriangleId{i}));
-        h = digest(h, s.triangle_triangles(TriangleId{i}));
-    }
-    for (std::uint32_t i = 0; i < v.num_vertices(); i++) {
-        h = digest(h, v.vertex_vertices(VertexId{i}));
-        h = digest(h, v.vertex_tetrahedra(VertexId{i}));
-    }
-    for (std::uint32_t i = 0; i < v.num_faces(); i++) h = digest(h, v.face_tetrahedra(FaceId{i}));
-    for (std::uint32_t i = 0; i < v.num_tetrahedra(); i++)
-        h = digest(h, v.tetrahedron_tetrahedra(TetrahedronId{i}));
+    h = digest_all(h, s, s.num_vertices(), &Surface::vertex_vertices, &Surface::vertex_edges,
+                   &Surface::vertex_triangles);
+    h = digest_all(h, s, s.num_edges(), &Surface::edge_vertices, &Surface::edge_edges,
+                   &Surface::edge_triangles);
+    h = digest_all(h, s, s.num_triangles(), &Surface::triangle_vertices,
+                   &Surface::triangle_edges, &Surface::triangle_triangles);
+    h = digest_all(h, v, v.num_vertices(), &Volume::vertex_vertices, &Volume::vertex_tetrahedra);
+    h = digest_all(h, v, v.num_faces(), &Volume::face_tetrahedra);
+    h = digest_all(h, v, v.num_tetrahedra(), &Volume::tetrahedron_tetrahedra);
     return h;
 }
 

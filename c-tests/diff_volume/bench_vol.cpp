@@ -109,12 +109,7 @@ uint64_t bulk(const chf_mesh *m, CsrCall f, CsrBuf &b) {
 const unsigned n_threads = std::max(1u, std::thread::hardware_concurrency());
 
 void bench(const std::string &base, int reps) {
-  TetSoup s;
-  std::string err;
-  if (!read_tetgen(base, s, err)) {
-    std::fprintf(stderr, "%s\n(run scripts/fetch-tets.sh first)\n", err.c_str());
-    std::exit(1);
-  }
+  const TetSoup s = read_bench_tets(base);
   std::printf("\n### %s: %zu vertices, %zu tetrahedra\n\n", s.name.c_str(), s.n_vertices, s.n_tets());
   std::fflush(stdout);
 

@@ -142,6 +142,21 @@ FlipPick draw_live(Volume &vol, std::vector<uint32_t> &live, EditRng &rng) {
   }
 }
 
+// One flip of the storm, of face or edge `x`: `checked`, the wrapper's `can` then `flip`;
+// else the C call `raw` alone. The N new tetrahedra join `live`.
+template <size_t N, class X, class New>
+void storm_flip(Volume &vol, bool checked, X x, bool (Volume::*can)(X) const,
+                std::array<New, N> (Volume::*flip)(X),
+                topomesh_status (*raw)(chf_mesh *, uint32_t, uint32_t *), std::vector<uint32_t> &live) {
+  if (checked) {
+    if ((vol.*can)(x))
+      for (New t : (vol.*flip)(x)) live.push_back(t.value());
+  } else {
+    uint32_t out[N];
+    if (raw(vol.handle(), x.value(), out) == TOPOMESH_STATUS_OK) live.insert(live.end(), out, out + N);
+  }
+}
+
 // `checked`: can_flip_* then flip_* through the wrapper (the check-then-act pattern); else
 // one C call per attempt whose status says whether it was done (one verification).
 Row tm_flips(const TetSoup &s, uint64_t attempts, uint64_t seed, bool checked) {
@@ -152,7 +167,6 @@ Row tm_flips(const TetSoup &s, uint64_t attempts, uint64_t seed, bool checked) {
   std::iota(live.begin(), live.end(), 0u);
   EditRng rng(seed);
   EditRun &r = row.run;
-  uint32_t out[3];
   double t0 = cpu_ms();
   for (uint64_t i = 0; i < attempts; ++i) {
     FlipPick pk = draw_live(vol, live, rng);
@@ -161,26 +175,14 @@ Row tm_flips(const TetSoup &s, uint64_t attempts, uint64_t seed, bool checked) {
     if (pk.flip23) {
       ++r.attempts23;
       FaceId f = vol.face(HalfFaceId{4 * t + uint32_t(pk.local)});
-      if (checked ? vol.can_flip_23(f) : true) {
-        if (checked) {
-          auto three = vol.flip_23(f);
-          for (auto x : three) live.push_back(x.value());
-        } else if (chf_mesh_flip_23(vol.handle(), f.value(), out) == TOPOMESH_STATUS_OK) {
-          live.insert(live.end(), out, out + 3);
-        }
-      }
+      storm_flip<3>(vol, checked, f, &Volume::can_flip_23, &Volume::flip_23, chf_mesh_flip_23,
+                    live);
       r.accepted23 += live.size() != before;
     } else {
       ++r.attempts32;
       EdgeId e = vol.tetrahedron_edges(TetrahedronId{t})[size_t(pk.local)];
-      if (checked ? vol.can_flip_32(e) : true) {
-        if (checked) {
-          auto two = vol.flip_32(e);
-          for (auto x : two) live.push_back(x.value());
-        } else if (chf_mesh_flip_32(vol.handle(), e.value(), out) == TOPOMESH_STATUS_OK) {
-          live.insert(live.end(), out, out + 2);
-        }
-      }
+      storm_flip<2>(vol, checked, e, &Volume::can_flip_32, &Volume::flip_32, chf_mesh_flip_32,
+                    live);
       r.accepted32 += live.size() != before;
     }
     if (i == 0) r.first_ms = cpu_ms() - t0;
@@ -322,12 +324,7 @@ double first_split_ms(const TetSoup &s, uint32_t level) {
 }
 
 void bench(const std::string &base, uint64_t ops, int reps, uint64_t seed, bool level1) {
-  TetSoup s;
-  std::string err;
-  if (!read_tetgen(base, s, err)) {
-    std::fprintf(stderr, "%s\n(run scripts/fetch-tets.sh first)\n", err.c_str());
-    std::exit(1);
-  }
+  const TetSoup s = read_bench_tets(base);
   std::printf("\n### Editing %s: %zu vertices, %zu tetrahedra\n\n", s.name.c_str(), s.n_vertices, s.n_tets());
   std::fflush(stdout);
 

@@ -2,6 +2,8 @@
 // median, the resident-set probes and the number formats of their tables.
 #pragma once
 
+#include "tet_soup.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -82,6 +84,18 @@ inline std::string ratio(double a, double b) {
   // Two significant digits below 0.1 (a ratio far under 1 would print as 0.00).
   std::snprintf(buf, sizeof buf, a / b < 0.1 ? "%.2g" : "%.2f", a / b);
   return buf;
+}
+
+// A benchmark's tetrahedra, tetgen's `<base>.node` and `<base>.ele`; exits with status 1
+// when they cannot be read.
+inline TetSoup read_bench_tets(const std::string &base) {
+  TetSoup s;
+  std::string err;
+  if (!read_tetgen(base, s, err)) {
+    std::fprintf(stderr, "%s\n(run scripts/fetch-tets.sh first)\n", err.c_str());
+    std::exit(1);
+  }
+  return s;
 }
 
 } // namespace diffvol

@@ -567,15 +567,8 @@ void report(Out &out, const Soup &s, std::vector<LibBench> &rows, int reps) {
 } // namespace
 
 int main(int argc, char **argv) {
-  BenchArgs args;
-  Out out;
-  if (int status = parse_bench_args(argc, argv, "topomesh_bench [--reps N] [--md FILE] MESH.off...", args, out))
-    return status;
-  const int reps = args.reps;
-  const std::vector<std::string> &files = args.files;
-  for (auto &f : files) {
-    Soup s;
-    if (!read_bench_mesh("bench", f, s)) return 1;
+  const char *usage = "topomesh_bench [--reps N] [--md FILE] MESH.off...";
+  return bench_main(argc, argv, "bench", usage, [](const Soup &s, int reps, Out &out) {
     PeerInput in{s.n_vertices, s.positions.data(), s.triangles.data(), s.n_triangles()};
     std::vector<std::unique_ptr<Subject>> subjects;
     subjects.push_back(openmesh_subject(in));
@@ -583,7 +576,5 @@ int main(int argc, char **argv) {
     for (uint32_t level = 1; level <= 3; ++level) subjects.push_back(std::make_unique<TmSubject>(s, level));
     std::vector<LibBench> rows = run(subjects, reps);
     report(out, s, rows, reps);
-  }
-  if (out.file) std::fclose(out.file);
-  return 0;
+  });
 }

@@ -154,8 +154,6 @@ void report_memory(Out &out, const std::vector<EditRow> &tm, const EditRow &om, 
 } // namespace
 
 int main(int argc, char **argv) {
-  BenchArgs args;
-  Out out;
   EditParams params;
   // --flips N is ours; the rest goes to the common parser.
   std::vector<char *> rest = {argv[0]};
@@ -164,10 +162,7 @@ int main(int argc, char **argv) {
     else rest.push_back(argv[i]);
   }
   const char *usage = "topomesh_bench_edit [--reps N] [--md FILE] [--flips N] MESH.off...";
-  if (int status = parse_bench_args(int(rest.size()), rest.data(), usage, args, out)) return status;
-  for (const std::string &f : args.files) {
-    Soup s;
-    if (!read_bench_mesh("bench_edit", f, s)) return 1;
+  return bench_main(int(rest.size()), rest.data(), "bench_edit", usage, [&params](const Soup &s, int reps, Out &out) {
     const PeerInput in{s.n_vertices, s.positions.data(), s.triangles.data(), s.n_triangles()};
     double mean = 0;
     std::vector<EditRow> tm;
@@ -177,20 +172,18 @@ int main(int argc, char **argv) {
       if (level == 2) mean = mean_edge_length(*make());
       never_edited.push_back(make()->structure_bytes());
       tm.push_back(run_edits("topomesh L" + std::to_string(level), make, params, params.split_factor * mean,
-                             args.reps));
+                             reps));
     }
     const double threshold = params.split_factor * mean;
-    const EditRow om = openmesh_edits(in, params, threshold, args.reps);
-    const EditRow cg = cgal_edits(in, params, threshold, args.reps);
+    const EditRow om = openmesh_edits(in, params, threshold, reps);
+    const EditRow cg = cgal_edits(in, params, threshold, reps);
     out("\n### Editing: %s\n\n%zu vertices, %zu triangles. CPU milliseconds of the benchmark thread, median of %d "
         "run(s), each on a fresh build; %zu flip attempts (seed %llu); splits of the edges longer than %.2f x the "
         "mean edge length (%.6g); simplification to %.0f %% of the triangles. Ratio: topomesh ÷ the faster peer "
         "(the target is 0.50×).\n",
-        s.name.c_str(), s.n_vertices, s.n_triangles(), args.reps, params.flips, (unsigned long long)params.seed,
+        s.name.c_str(), s.n_vertices, s.n_triangles(), reps, params.flips, (unsigned long long)params.seed,
         params.split_factor, mean, params.simplify_ratio * 100);
     report_times(out, tm, om, cg);
     report_memory(out, tm, om, cg, never_edited);
-  }
-  if (out.file) std::fclose(out.file);
-  return 0;
+  });
 }

@@ -474,16 +474,8 @@ void report_betti(Out &out, const MeshBench &b) {
 } // namespace
 
 int main(int argc, char **argv) {
-  BenchArgs args;
-  Out out;
-  if (int status =
-          parse_bench_args(argc, argv, "topomesh_bench_export [--reps N] [--md FILE] MESH.off...", args, out))
-    return status;
-  const int reps = args.reps;
-  const std::vector<std::string> &files = args.files;
-  for (auto &f : files) {
-    Soup s;
-    if (!read_bench_mesh("bench_export", f, s)) return 1;
+  const char *usage = "topomesh_bench_export [--reps N] [--md FILE] MESH.off...";
+  return bench_main(argc, argv, "bench_export", usage, [](const Soup &s, int reps, Out &out) {
     MeshBench b(s, reps);
     b.add_builds();
     b.add_half_edges();
@@ -498,7 +490,5 @@ int main(int argc, char **argv) {
     report_laplacian(out, b);
     report_strips(out, b);
     report_betti(out, b);
-  }
-  if (out.file) std::fclose(out.file);
-  return 0;
+  });
 }

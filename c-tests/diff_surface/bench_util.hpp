@@ -6,6 +6,8 @@
 // row in turn, so that load from other jobs on the machine spreads over all of them.
 #pragma once
 
+#include "off_reader.hpp"
+
 #include <algorithm>
 #include <cstdarg>
 #include <cstdlib>
@@ -138,6 +140,23 @@ inline int parse_bench_args(int argc, char **argv, const char *usage, BenchArgs 
     std::fprintf(stderr, "usage: %s\n", usage);
     return 2;
   }
+  return 0;
+}
+
+// The main of a benchmark program (`tool`, `usage` as for parse_bench_args): each mesh
+// of its arguments read by read_bench_mesh, then given to `each(soup, reps, out)`. The
+// exit status: parse_bench_args's, or 1 when a mesh cannot be read.
+template <class Each>
+int bench_main(int argc, char **argv, const char *tool, const char *usage, Each each) {
+  BenchArgs args;
+  Out out;
+  if (int status = parse_bench_args(argc, argv, usage, args, out)) return status;
+  for (const std::string &f : args.files) {
+    Soup s;
+    if (!read_bench_mesh(tool, f, s)) return 1;
+    each(s, args.reps, out);
+  }
+  if (out.file) std::fclose(out.file);
   return 0;
 }
 

@@ -11,7 +11,9 @@
 // 3. Given a volume file instead, to_triangulation() fills a Mesh_3 triangulation whose
 //    finite cells and vertices are the volume's, combinatorially valid, positively oriented.
 // Exit status 1 on any mismatch.
+#include "cgal_mesh.hpp"
 #include "compare.hpp"
+#include "om_mesh.hpp"
 #include "tm_answers.hpp"
 
 #include <topomesh/cgal.hpp>
@@ -33,29 +35,9 @@ using namespace diffmesh;
 
 namespace {
 
-struct OmTraits : OpenMesh::DefaultTraits {
-  typedef OpenMesh::Vec3d Point;
-};
-using OmMesh = OpenMesh::TriMesh_ArrayKernelT<OmTraits>;
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SmMesh = CGAL::Surface_mesh<K::Point_3>;
-
-// Per-edge answers (ev, ef, ee) from a half-edge pair h0, h1 of either library: `face`
-// gives a face id or NONE, `ends` a half-edge's (source, target), `around` its next and
-// previous half-edges.
-template <class H, class Face, class Ends, class Around>
-void edge_answers(Answers &a, size_t i, H h0, H h1, Face face, Ends ends, Around around) {
-  a.have_e[i] = 1;
-  a.ev[i] = ends(h0);
-  for (H h : {h0, h1}) {
-    const uint32_t f = face(h);
-    if (f == NONE) continue;
-    a.ef[i].push_back(f);
-    for (H g : around(h)) a.ee[i].push_back(ends(g));
-  }
-  std::sort(a.ef[i].begin(), a.ef[i].end());
-  std::sort(a.ee[i].begin(), a.ee[i].end());
-}
+using OmMesh = om::Mesh;
+using K = cg::K;
+using SmMesh = cg::Mesh;
 
 Answers openmesh_answers_of(const OmMesh &m) {
   Answers a;
@@ -63,17 +45,7 @@ Answers openmesh_answers_of(const OmMesh &m) {
   a.resize(m.n_vertices(), m.n_edges(), m.n_faces());
   auto vid = [](OpenMesh::VertexHandle v) { return uint32_t(v.idx()); };
   auto fid = [](OpenMesh::FaceHandle f) { return f.is_valid() ? uint32_t(f.idx()) : NONE; };
-  for (auto v : m.vertices()) {
-    const size_t i = size_t(v.idx());
-    a.have_v[i] = 1;
-    if (!m.halfedge_handle(v).is_valid()) continue;
-    for (auto it = m.cvv_ccwiter(v); it.is_valid(); ++it) {
-      a.vv[i].push_back(vid(*it));
-      a.ve[i].push_back(mkpair(uint32_t(i), vid(*it)));
-    }
-    for (auto it = m.cvf_ccwiter(v); it.is_valid(); ++it) a.vf[i].push_back(fid(*it));
-    a.v_boundary[i] = m.is_boundary(v);
-  }
+  om::star_answers(m, a, fid);
   for (auto f : m.faces()) {
     const size_t i = size_t(f.idx());
     a.have_f[i] = 1;
@@ -123,23 +95,7 @@ Answers cgal_answers_of(const SmMesh &m) {
   a.resize(m.number_of_vertices(), m.number_of_edges(), m.number_of_faces());
   auto vid = [](VI v) { return uint32_t(size_t(v)); };
   auto fid = [](FI f) { return f == SmMesh::null_face() ? NONE : uint32_t(size_t(f)); };
-  for (VI v : m.vertices()) {
-    const size_t i = size_t(v);
-    a.have_v[i] = 1;
-    const HI h = m.halfedge(v);
-    if (h == SmMesh::null_halfedge()) continue;
-    // CGAL circulates clockwise: reversed to counter-clockwise.
-    for (VI w : CGAL::vertices_around_target(h, m)) {
-      a.vv[i].push_back(vid(w));
-      a.ve[i].push_back(mkpair(uint32_t(i), vid(w)));
-    }
-    for (FI f : CGAL::faces_around_target(h, m))
-      if (f != SmMesh::null_face()) a.vf[i].push_back(fid(f));
-    std::reverse(a.vv[i].begin(), a.vv[i].end());
-    std::reverse(a.ve[i].begin(), a.ve[i].end());
-    std::reverse(a.vf[i].begin(), a.vf[i].end());
-    a.v_boundary[i] = m.is_border(v);
-  }
+  cg::star_answers(m, a, fid);
   for (FI f : m.faces()) {
     const size_t i = size_t(f);
     a.have_f[i] = 1;

@@ -67,6 +67,23 @@ struct Answers {
   long long euler() const { return (long long)n_vertices - (long long)n_edges + (long long)n_faces; }
 };
 
+// Per-edge answers (ev, ef, ee) from a half-edge pair h0, h1 of any library: `face`
+// gives a face id or NONE, `ends` a half-edge's (source, target), `around` its next and
+// previous half-edges.
+template <class H, class Face, class Ends, class Around>
+void edge_answers(Answers &a, size_t i, H h0, H h1, Face face, Ends ends, Around around) {
+  a.have_e[i] = 1;
+  a.ev[i] = ends(h0);
+  for (H h : {h0, h1}) {
+    const uint32_t f = face(h);
+    if (f == NONE) continue;
+    a.ef[i].push_back(f);
+    for (H g : around(h)) a.ee[i].push_back(ends(g));
+  }
+  std::sort(a.ef[i].begin(), a.ef[i].end());
+  std::sort(a.ee[i].begin(), a.ee[i].end());
+}
+
 // What the peer did with the submitted triangles.
 struct PeerBuild {
   size_t submitted = 0;  // triangles offered (degenerate ones are not offered)

@@ -6,6 +6,9 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
 
 namespace diffmesh {
 namespace cg {
@@ -15,6 +18,28 @@ using Mesh = CGAL::Surface_mesh<K::Point_3>;
 
 // Builds from the arrays; `face_input[f]` is the submitted index of face f.
 void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input);
+
+// The answers of every vertex (VV, VE, VF counter-clockwise, boundary flag) into `a`;
+// `fid` gives a face's common id.
+template <class Fid> void star_answers(const Mesh &m, Answers &a, Fid fid) {
+  for (Mesh::Vertex_index v : m.vertices()) {
+    const size_t i = size_t(v);
+    a.have_v[i] = 1;
+    const Mesh::Halfedge_index h = m.halfedge(v);
+    if (h == Mesh::null_halfedge()) continue;
+    // Around the target, CGAL's circulators run clockwise: reverse them.
+    for (Mesh::Vertex_index w : CGAL::vertices_around_target(h, m)) {
+      a.vv[i].push_back(uint32_t(size_t(w)));
+      a.ve[i].push_back(mkpair(uint32_t(i), uint32_t(size_t(w))));
+    }
+    for (Mesh::Face_index f : CGAL::faces_around_target(h, m))
+      if (f != Mesh::null_face()) a.vf[i].push_back(fid(f));
+    std::reverse(a.vv[i].begin(), a.vv[i].end());
+    std::reverse(a.ve[i].begin(), a.ve[i].end());
+    std::reverse(a.vf[i].begin(), a.vf[i].end());
+    a.v_boundary[i] = m.is_border(v);
+  }
+}
 
 } // namespace cg
 } // namespace diffmesh

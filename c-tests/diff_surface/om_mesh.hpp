@@ -28,5 +28,24 @@ inline void build_editable(const PeerInput &in, Mesh &m) {
   m.request_face_status();
 }
 
+// The answers of every vertex (VV, VE, VF counter-clockwise, boundary flag) into `a`;
+// `fid` gives a face's common id.
+template <class Fid> void star_answers(const Mesh &m, Answers &a, Fid fid) {
+  auto vid = [](OpenMesh::VertexHandle v) { return uint32_t(v.idx()); };
+  for (auto v : m.vertices()) {
+    const size_t i = size_t(v.idx());
+    a.have_v[i] = 1;
+    // An isolated vertex has no half-edge; OpenMesh's circulators must not start there
+    // (they return neighbours of half-edge -1's vertex).
+    if (!m.halfedge_handle(v).is_valid()) continue;
+    for (auto it = m.cvv_ccwiter(v); it.is_valid(); ++it) {
+      a.vv[i].push_back(vid(*it));
+      a.ve[i].push_back(mkpair(uint32_t(i), vid(*it)));
+    }
+    for (auto it = m.cvf_ccwiter(v); it.is_valid(); ++it) a.vf[i].push_back(fid(*it));
+    a.v_boundary[i] = m.is_boundary(v);
+  }
+}
+
 } // namespace om
 } // namespace diffmesh

@@ -82,23 +82,7 @@ Answers cgal_answers(const PeerInput &in, PeerBuild &b) {
   a.ff.assign(in.n_triangles, {NONE, NONE, NONE});
   a.fe.assign(in.n_triangles, {});
   auto fid = [&](FI f) { return f == Mesh::null_face() ? NONE : fin[size_t(f)]; };
-  for (VI v : m.vertices()) {
-    size_t i = size_t(v);
-    a.have_v[i] = 1;
-    HI h = m.halfedge(v);
-    if (h == Mesh::null_halfedge()) continue;
-    // Around the target, CGAL's circulators run clockwise: reverse them.
-    for (VI w : CGAL::vertices_around_target(h, m)) {
-      a.vv[i].push_back(id(w));
-      a.ve[i].push_back(mkpair(uint32_t(i), id(w)));
-    }
-    for (FI f : CGAL::faces_around_target(h, m))
-      if (f != Mesh::null_face()) a.vf[i].push_back(fid(f));
-    std::reverse(a.vv[i].begin(), a.vv[i].end());
-    std::reverse(a.ve[i].begin(), a.ve[i].end());
-    std::reverse(a.vf[i].begin(), a.vf[i].end());
-    a.v_boundary[i] = m.is_border(v);
-  }
+  cg::star_answers(m, a, fid);
   for (FI f : m.faces()) {
     size_t i = fin[size_t(f)];
     a.have_f[i] = 1;
@@ -112,20 +96,11 @@ Answers cgal_answers(const PeerInput &in, PeerBuild &b) {
       ++k;
     }
   }
-  for (auto e : m.edges()) {
-    size_t i = size_t(e);
-    a.have_e[i] = 1;
-    HI h0 = m.halfedge(e), h1 = m.opposite(h0);
-    a.ev[i] = mkpair(id(m.source(h0)), id(m.target(h0)));
-    for (HI h : {h0, h1}) {
-      FI f = m.face(h);
-      if (f == Mesh::null_face()) continue;
-      a.ef[i].push_back(fid(f));
-      for (HI g : {m.next(h), m.prev(h)}) a.ee[i].push_back(mkpair(id(m.source(g)), id(m.target(g))));
-    }
-    std::sort(a.ef[i].begin(), a.ef[i].end());
-    std::sort(a.ee[i].begin(), a.ee[i].end());
-  }
+  for (auto e : m.edges())
+    edge_answers(
+        a, size_t(e), m.halfedge(e), m.opposite(m.halfedge(e)), [&](HI h) { return fid(m.face(h)); },
+        [&](HI h) { return mkpair(id(m.source(h)), id(m.target(h))); },
+        [&](HI h) { return std::array<HI, 2>{m.next(h), m.prev(h)}; });
   boundary_loops<Peer>(m, m.number_of_halfedges(), a);
   return a;
 }

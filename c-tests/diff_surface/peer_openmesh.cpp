@@ -75,19 +75,7 @@ Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
   a.lib = "OpenMesh";
   a.resize(m.n_vertices(), m.n_edges(), m.n_faces());
   auto fid = [&](OpenMesh::FaceHandle f) { return f.is_valid() ? fin[size_t(f.idx())] : NONE; };
-  for (auto v : m.vertices()) {
-    size_t i = size_t(v.idx());
-    a.have_v[i] = 1;
-    // An isolated vertex has no half-edge; OpenMesh's circulators must not start there
-    // (they return neighbours of half-edge -1's vertex).
-    if (!m.halfedge_handle(v).is_valid()) continue;
-    for (auto it = m.cvv_ccwiter(v); it.is_valid(); ++it) {
-      a.vv[i].push_back(vid(*it));
-      a.ve[i].push_back(mkpair(uint32_t(i), vid(*it)));
-    }
-    for (auto it = m.cvf_ccwiter(v); it.is_valid(); ++it) a.vf[i].push_back(fid(*it));
-    a.v_boundary[i] = m.halfedge_handle(v).is_valid() && m.is_boundary(v);
-  }
+  om::star_answers(m, a, fid);
   // Faces are stored by submitted index: resize to the submitted count.
   a.n_faces = m.n_faces();
   a.have_f.assign(in.n_triangles, 0);
@@ -106,21 +94,13 @@ Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
       a.ff[i][k] = fid(m.face_handle(m.opposite_halfedge_handle(h)));
     }
   }
-  for (auto e : m.edges()) {
-    size_t i = size_t(e.idx());
-    a.have_e[i] = 1;
-    auto h0 = m.halfedge_handle(e, 0), h1 = m.halfedge_handle(e, 1);
-    a.ev[i] = mkpair(vid(m.from_vertex_handle(h0)), vid(m.to_vertex_handle(h0)));
-    for (auto h : {h0, h1}) {
-      auto f = m.face_handle(h);
-      if (!f.is_valid()) continue;
-      a.ef[i].push_back(fid(f));
-      for (auto g : {m.next_halfedge_handle(h), m.prev_halfedge_handle(h)})
-        a.ee[i].push_back(mkpair(vid(m.from_vertex_handle(g)), vid(m.to_vertex_handle(g))));
-    }
-    std::sort(a.ef[i].begin(), a.ef[i].end());
-    std::sort(a.ee[i].begin(), a.ee[i].end());
-  }
+  using HH = OpenMesh::HalfedgeHandle;
+  for (auto e : m.edges())
+    edge_answers(
+        a, size_t(e.idx()), HH(m.halfedge_handle(e, 0)), HH(m.halfedge_handle(e, 1)),
+        [&](HH h) { return fid(m.face_handle(h)); },
+        [&](HH h) { return mkpair(vid(m.from_vertex_handle(h)), vid(m.to_vertex_handle(h))); },
+        [&](HH h) { return std::array<HH, 2>{m.next_halfedge_handle(h), m.prev_halfedge_handle(h)}; });
   boundary_loops<Peer>(m, m.n_halfedges(), a);
   return a;
 }

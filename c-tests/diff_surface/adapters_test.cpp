@@ -45,32 +45,7 @@ Answers openmesh_answers_of(const OmMesh &m) {
   a.resize(m.n_vertices(), m.n_edges(), m.n_faces());
   auto vid = [](OpenMesh::VertexHandle v) { return uint32_t(v.idx()); };
   auto fid = [](OpenMesh::FaceHandle f) { return f.is_valid() ? uint32_t(f.idx()) : NONE; };
-  om::star_answers(m, a, fid);
-  for (auto f : m.faces()) {
-    const size_t i = size_t(f.idx());
-    a.have_f[i] = 1;
-    // From the face's own half-edge: the adapter made it CHE's 3t, so FV starts where
-    // the CHE's does.
-    auto h = m.halfedge_handle(f);
-    for (int k = 0; k < 3; ++k, h = m.next_halfedge_handle(h)) {
-      const uint32_t from = vid(m.from_vertex_handle(h)), to = vid(m.to_vertex_handle(h));
-      a.fv[i][k] = from;
-      a.fe[i][k] = mkpair(from, to);
-      a.ff[i][k] = fid(m.face_handle(m.opposite_halfedge_handle(h)));
-    }
-  }
-  for (auto e : m.edges())
-    edge_answers(
-        a, size_t(e.idx()), OpenMesh::HalfedgeHandle(m.halfedge_handle(e, 0)),
-        OpenMesh::HalfedgeHandle(m.halfedge_handle(e, 1)),
-        [&](OpenMesh::HalfedgeHandle h) { return fid(m.face_handle(h)); },
-        [&](OpenMesh::HalfedgeHandle h) {
-          return mkpair(vid(m.from_vertex_handle(h)), vid(m.to_vertex_handle(h)));
-        },
-        [&](OpenMesh::HalfedgeHandle h) {
-          return std::array<OpenMesh::HalfedgeHandle, 2>{m.next_halfedge_handle(h),
-                                                         m.prev_halfedge_handle(h)};
-        });
+  om::element_answers(m, a, fid);
   a.have_curves = true;
   std::vector<uint8_t> seen(m.n_halfedges(), 0);
   for (auto h : m.halfedges()) {
@@ -95,24 +70,7 @@ Answers cgal_answers_of(const SmMesh &m) {
   a.resize(m.number_of_vertices(), m.number_of_edges(), m.number_of_faces());
   auto vid = [](VI v) { return uint32_t(size_t(v)); };
   auto fid = [](FI f) { return f == SmMesh::null_face() ? NONE : uint32_t(size_t(f)); };
-  cg::star_answers(m, a, fid);
-  for (FI f : m.faces()) {
-    const size_t i = size_t(f);
-    a.have_f[i] = 1;
-    HI h = m.halfedge(f);
-    for (int k = 0; k < 3; ++k, h = m.next(h)) {
-      const uint32_t from = vid(m.source(h)), to = vid(m.target(h));
-      a.fv[i][k] = from;
-      a.fe[i][k] = mkpair(from, to);
-      a.ff[i][k] = fid(m.face(m.opposite(h)));
-    }
-  }
-  for (auto e : m.edges())
-    edge_answers(
-        a, size_t(e), m.halfedge(e), m.opposite(m.halfedge(e)),
-        [&](HI h) { return fid(m.face(h)); },
-        [&](HI h) { return mkpair(vid(m.source(h)), vid(m.target(h))); },
-        [&](HI h) { return std::array<HI, 2>{m.next(h), m.prev(h)}; });
+  cg::element_answers(m, a, fid);
   a.have_curves = true;
   std::vector<uint8_t> seen(m.number_of_halfedges(), 0);
   for (HI h : m.halfedges()) {

@@ -55,17 +55,36 @@ struct Answers {
     vf.assign(nv, {});
     ve.assign(nv, {});
     v_boundary.assign(nv, 0);
-    have_f.assign(nf, 0);
-    fv.assign(nf, {NONE, NONE, NONE});
-    ff.assign(nf, {NONE, NONE, NONE});
-    fe.assign(nf, {});
+    resize_faces(nf, nf);
     have_e.assign(ne, 0);
     ev.assign(ne, {NONE, NONE});
     ef.assign(ne, {});
     ee.assign(ne, {});
   }
+  // `nf` faces, stored in `slots` places (a peer's: by submitted index).
+  void resize_faces(size_t nf, size_t slots) {
+    n_faces = nf;
+    have_f.assign(slots, 0);
+    fv.assign(slots, {NONE, NONE, NONE});
+    ff.assign(slots, {NONE, NONE, NONE});
+    fe.assign(slots, {});
+  }
   long long euler() const { return (long long)n_vertices - (long long)n_edges + (long long)n_faces; }
 };
+
+// The answers (fv, fe, ff) of triangle i of any library, from its half-edge h on (`next`
+// the next one): `ends` gives a half-edge's (source, target) as they are (not a Pair),
+// `across` the face id across it or NONE.
+template <class H, class Next, class Ends, class Across>
+void face_answers(Answers &a, size_t i, H h, Next next, Ends ends, Across across) {
+  a.have_f[i] = 1;
+  for (int k = 0; k < 3; ++k, h = next(h)) {
+    const auto [from, to] = ends(h);
+    a.fv[i][k] = from;
+    a.fe[i][k] = mkpair(from, to);
+    a.ff[i][k] = across(h);
+  }
+}
 
 // Per-edge answers (ev, ef, ee) from a half-edge pair h0, h1 of any library: `face`
 // gives a face id or NONE, `ends` a half-edge's (source, target), `around` its next and

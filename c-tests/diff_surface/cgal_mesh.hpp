@@ -19,18 +19,21 @@ using Mesh = CGAL::Surface_mesh<K::Point_3>;
 // Builds from the arrays; `face_input[f]` is the submitted index of face f.
 void build(const PeerInput &in, Mesh &m, PeerBuild &b, std::vector<uint32_t> *face_input);
 
-// The answers of every vertex (VV, VE, VF counter-clockwise, boundary flag) into `a`;
-// `fid` gives a face's common id.
-template <class Fid> void star_answers(const Mesh &m, Answers &a, Fid fid) {
-  for (Mesh::Vertex_index v : m.vertices()) {
+// The answers of every vertex, face and edge of m into `a` (sized for them); `fid` gives a
+// face's common id (NONE for none), which is also where its answers go.
+template <class Fid> void element_answers(const Mesh &m, Answers &a, Fid fid) {
+  using VI = Mesh::Vertex_index;
+  using HI = Mesh::Halfedge_index;
+  auto vid = [](VI v) { return uint32_t(size_t(v)); };
+  for (VI v : m.vertices()) {
     const size_t i = size_t(v);
     a.have_v[i] = 1;
-    const Mesh::Halfedge_index h = m.halfedge(v);
+    const HI h = m.halfedge(v);
     if (h == Mesh::null_halfedge()) continue;
     // Around the target, CGAL's circulators run clockwise: reverse them.
-    for (Mesh::Vertex_index w : CGAL::vertices_around_target(h, m)) {
-      a.vv[i].push_back(uint32_t(size_t(w)));
-      a.ve[i].push_back(mkpair(uint32_t(i), uint32_t(size_t(w))));
+    for (VI w : CGAL::vertices_around_target(h, m)) {
+      a.vv[i].push_back(vid(w));
+      a.ve[i].push_back(mkpair(uint32_t(i), vid(w)));
     }
     for (Mesh::Face_index f : CGAL::faces_around_target(h, m))
       if (f != Mesh::null_face()) a.vf[i].push_back(fid(f));
@@ -39,6 +42,16 @@ template <class Fid> void star_answers(const Mesh &m, Answers &a, Fid fid) {
     std::reverse(a.vf[i].begin(), a.vf[i].end());
     a.v_boundary[i] = m.is_border(v);
   }
+  for (auto f : m.faces())
+    face_answers(
+        a, fid(f), m.halfedge(f), [&](HI h) { return m.next(h); },
+        [&](HI h) { return std::make_pair(vid(m.source(h)), vid(m.target(h))); },
+        [&](HI h) { return fid(m.face(m.opposite(h))); });
+  for (auto e : m.edges())
+    edge_answers(
+        a, size_t(e), m.halfedge(e), m.opposite(m.halfedge(e)), [&](HI h) { return fid(m.face(h)); },
+        [&](HI h) { return mkpair(vid(m.source(h)), vid(m.target(h))); },
+        [&](HI h) { return std::array<HI, 2>{m.next(h), m.prev(h)}; });
 }
 
 } // namespace cg

@@ -28,9 +28,10 @@ inline void build_editable(const PeerInput &in, Mesh &m) {
   m.request_face_status();
 }
 
-// The answers of every vertex (VV, VE, VF counter-clockwise, boundary flag) into `a`;
-// `fid` gives a face's common id.
-template <class Fid> void star_answers(const Mesh &m, Answers &a, Fid fid) {
+// The answers of every vertex, face and edge of m into `a` (sized for them); `fid` gives a
+// face's common id (NONE for none), which is also where its answers go.
+template <class Fid> void element_answers(const Mesh &m, Answers &a, Fid fid) {
+  using HH = OpenMesh::HalfedgeHandle;
   auto vid = [](OpenMesh::VertexHandle v) { return uint32_t(v.idx()); };
   for (auto v : m.vertices()) {
     const size_t i = size_t(v.idx());
@@ -45,6 +46,17 @@ template <class Fid> void star_answers(const Mesh &m, Answers &a, Fid fid) {
     for (auto it = m.cvf_ccwiter(v); it.is_valid(); ++it) a.vf[i].push_back(fid(*it));
     a.v_boundary[i] = m.is_boundary(v);
   }
+  for (auto f : m.faces())
+    face_answers(
+        a, fid(f), HH(m.halfedge_handle(f)), [&](HH h) { return m.next_halfedge_handle(h); },
+        [&](HH h) { return std::make_pair(vid(m.from_vertex_handle(h)), vid(m.to_vertex_handle(h))); },
+        [&](HH h) { return fid(m.face_handle(m.opposite_halfedge_handle(h))); });
+  for (auto e : m.edges())
+    edge_answers(
+        a, size_t(e.idx()), HH(m.halfedge_handle(e, 0)), HH(m.halfedge_handle(e, 1)),
+        [&](HH h) { return fid(m.face_handle(h)); },
+        [&](HH h) { return mkpair(vid(m.from_vertex_handle(h)), vid(m.to_vertex_handle(h))); },
+        [&](HH h) { return std::array<HH, 2>{m.next_halfedge_handle(h), m.prev_halfedge_handle(h)}; });
 }
 
 } // namespace om

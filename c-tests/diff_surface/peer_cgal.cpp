@@ -76,31 +76,10 @@ Answers cgal_answers(const PeerInput &in, PeerBuild &b) {
   Answers a;
   a.lib = "CGAL";
   a.resize(m.number_of_vertices(), m.number_of_edges(), 0);
-  a.n_faces = m.number_of_faces();
-  a.have_f.assign(in.n_triangles, 0);
-  a.fv.assign(in.n_triangles, {NONE, NONE, NONE});
-  a.ff.assign(in.n_triangles, {NONE, NONE, NONE});
-  a.fe.assign(in.n_triangles, {});
+  // Faces are stored by submitted index: resize to the submitted count.
+  a.resize_faces(m.number_of_faces(), in.n_triangles);
   auto fid = [&](FI f) { return f == Mesh::null_face() ? NONE : fin[size_t(f)]; };
-  cg::star_answers(m, a, fid);
-  for (FI f : m.faces()) {
-    size_t i = fin[size_t(f)];
-    a.have_f[i] = 1;
-    int k = 0;
-    for (HI h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
-      if (k == 3) break;
-      uint32_t from = id(m.source(h)), to = id(m.target(h));
-      a.fv[i][k] = from;
-      a.fe[i][k] = mkpair(from, to);
-      a.ff[i][k] = fid(m.face(m.opposite(h)));
-      ++k;
-    }
-  }
-  for (auto e : m.edges())
-    edge_answers(
-        a, size_t(e), m.halfedge(e), m.opposite(m.halfedge(e)), [&](HI h) { return fid(m.face(h)); },
-        [&](HI h) { return mkpair(id(m.source(h)), id(m.target(h))); },
-        [&](HI h) { return std::array<HI, 2>{m.next(h), m.prev(h)}; });
+  cg::element_answers(m, a, fid);
   boundary_loops<Peer>(m, m.number_of_halfedges(), a);
   return a;
 }

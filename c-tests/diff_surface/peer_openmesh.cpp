@@ -73,34 +73,11 @@ Answers openmesh_answers(const PeerInput &in, PeerBuild &b) {
   om::build(in, m, b, &fin);
   Answers a;
   a.lib = "OpenMesh";
-  a.resize(m.n_vertices(), m.n_edges(), m.n_faces());
-  auto fid = [&](OpenMesh::FaceHandle f) { return f.is_valid() ? fin[size_t(f.idx())] : NONE; };
-  om::star_answers(m, a, fid);
+  a.resize(m.n_vertices(), m.n_edges(), 0);
   // Faces are stored by submitted index: resize to the submitted count.
-  a.n_faces = m.n_faces();
-  a.have_f.assign(in.n_triangles, 0);
-  a.fv.assign(in.n_triangles, {NONE, NONE, NONE});
-  a.ff.assign(in.n_triangles, {NONE, NONE, NONE});
-  a.fe.assign(in.n_triangles, {});
-  for (auto f : m.faces()) {
-    size_t i = fin[size_t(f.idx())];
-    a.have_f[i] = 1;
-    int k = 0;
-    for (auto it = m.cfh_ccwiter(f); it.is_valid() && k < 3; ++it, ++k) {
-      auto h = *it;
-      auto from = vid(m.from_vertex_handle(h)), to = vid(m.to_vertex_handle(h));
-      a.fv[i][k] = from;
-      a.fe[i][k] = mkpair(from, to);
-      a.ff[i][k] = fid(m.face_handle(m.opposite_halfedge_handle(h)));
-    }
-  }
-  using HH = OpenMesh::HalfedgeHandle;
-  for (auto e : m.edges())
-    edge_answers(
-        a, size_t(e.idx()), HH(m.halfedge_handle(e, 0)), HH(m.halfedge_handle(e, 1)),
-        [&](HH h) { return fid(m.face_handle(h)); },
-        [&](HH h) { return mkpair(vid(m.from_vertex_handle(h)), vid(m.to_vertex_handle(h))); },
-        [&](HH h) { return std::array<HH, 2>{m.next_halfedge_handle(h), m.prev_halfedge_handle(h)}; });
+  a.resize_faces(m.n_faces(), in.n_triangles);
+  auto fid = [&](OpenMesh::FaceHandle f) { return f.is_valid() ? fin[size_t(f.idx())] : NONE; };
+  om::element_answers(m, a, fid);
   boundary_loops<Peer>(m, m.n_halfedges(), a);
   return a;
 }

@@ -10,6 +10,7 @@ use crate::che::Che;
 use crate::error::Result;
 use crate::util::alloc::{try_vec, try_with_capacity};
 use crate::util::origin::OriginMap;
+use std::borrow::Cow;
 
 /// Old id -> new id after [`Che::garbage_collect`] (`NONE` for a removed element).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -43,12 +44,15 @@ fn half_edge_map(tmap: &[u32], h: u32) -> u32 {
     }
 }
 
-/// Keeps the entries of `list` whose `map` entry is not `NONE`, in order, in place.
-fn compact_in_place<T: Copy>(list: &mut Vec<T>, map: &[u32]) {
+/// Keeps, in order and in place, the entries `i` of `list` that are `kept(i)`, each as
+/// `map` gives it: an entry moves only down, onto one already read.
+fn compact_in_place<T: Copy>(
+    list: &mut Vec<T>, kept: impl Fn(usize) -> bool, map: impl Fn(T) -> T,
+) {
     let mut w = 0;
     for i in 0..list.len() {
-        if map[i] != NONE {
-            list[w] = list[i];
+        if kept(i) {
+            list[w] = map(list[i]);
             w += 1;
         }
     }
@@ -107,7 +111,7 @@ impl Che {
         // compacted in place, as the peers' collections do (they keep their capacity).
         self.compact_half_edges(&vmap, &tmap, level0_o.is_none());
         if !self.positions.is_empty() {
-            compact_in_place(positions_mut(self), &vmap);
+            compact_in_place(positions_mut(self), |x| vmap[x] != NONE, |p| p);
         }
         *vertex_origin_mut(self) = vorigin;
         *triangle_origin_mut(self) = torigin;
@@ -123,28 +127,12 @@ impl Che {
         })
     }
 
-    /// `V` (and `O` when the level stores it) of the live triangles in the new ids, in
-    /// place: an entry moves only down, onto one already read.
+    /// `V` (and `O` when the level stores it) of the live triangles in the new ids.
     fn compact_half_edges(&mut self, vmap: &[u32], tmap: &[u32], with_o: bool) {
-        let v = v_mut(self);
-        let mut w = 0;
-        for h in 0..v.len() {
-            if v[h] != NONE {
-                v[w] = vmap[v[h] as usize];
-                w += 1;
-            }
-        }
-        v.truncate(w);
+        let live = |h: usize| tmap[h / 3] != NONE;
+        compact_in_place(v_mut(self), live, |x| vmap[x as usize]);
         if with_o {
-            let o = o_mut(self);
-            let mut w = 0;
-            for h in 0..o.len() {
-                if tmap[h / 3] != NONE {
-                    o[w] = half_edge_map(tmap, o[h]);
-                    w += 1;
-                }
-            }
-            o.truncate(w);
+            compact_in_place(o_mut(self), live, |g| half_edge_map(tmap, g));
         }
     }
 
@@ -153,14 +141,7 @@ impl Che {
     /// compaction keeps that order: the live half-edges canonical after it (unpaired, or
     /// before their kept twin) take the new ids in turn.
     fn edge_map(&self, old_o: &[u32], tmap: &[u32]) -> Result<(Vec<u32>, usize)> {
-        let computed;
-        let old_ids = match self.edited_edge_ids() {
-            Some(ids) if self.level >= 2 => ids,
-            _ => {
-                computed = self.old_edge_ids(old_o)?;
-                &computed[..]
-            }
-        };
+        let old_ids = self.old_edge_ids(old_o)?;
         let mut emap = try_vec(self.num_edges, NONE, "the edge map")?;
         let mut next = 0u32;
         for (h, &g) in old_o.iter().enumerate() {
@@ -198,9 +179,13 @@ impl Che {
         Ok((vorigin, torigin))
     }
 
-    /// The edge id of every half-edge before the collection (`NONE` when removed).
-    fn old_edge_ids(&self, old_o: &[u32]) -> Result<Vec<u32>> {
+    /// The edge id of every half-edge before the collection (`NONE` when removed): from
+    /// level 2 the edit state's own ids when it holds them, else computed.
+    fn old_edge_ids(&self, old_o: &[u32]) -> Result<Cow<'_, [u32]>> {
         if self.level >= 2 {
+            if let Some(ids) = self.edited_edge_ids() {
+                return Ok(Cow::Borrowed(ids));
+            }
             let ids = (0..self.v.len() as u32).map(|h| {
                 if self.v[h as usize] == NONE {
                     NONE
@@ -208,9 +193,12 @@ impl Che {
                     self.edge_of(h)
                 }
             });
-            return crate::util::alloc::try_collect(ids, "the edge ids");
+            return Ok(Cow::Owned(crate::util::alloc::try_collect(
+                ids,
+                "the edge ids",
+            )?));
         }
-        self.live_edge_ids(old_o)
+        Ok(Cow::Owned(self.live_edge_ids(old_o)?))
     }
 
     /// Every table of `level` again from `V` and `O` (or `V` alone at level 0), and the

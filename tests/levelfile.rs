@@ -5,10 +5,10 @@
 mod che_common;
 mod chf_common;
 
-use che_common::{Rng, answers as che_answers, perturb};
-use glam::DVec3;
+use che_common::{answers as che_answers, che_n, surfaces};
+use chf_common::volumes;
 use std::path::{Path, PathBuf};
-use topomesh::generate::{grid, sphere, torus};
+use topomesh::generate::{grid, torus};
 use topomesh::levelfile::{Mode, OpenOptions, Verify};
 use topomesh::{BuildOptions, Che, Chf, ErrorKind, chf};
 
@@ -30,46 +30,6 @@ const MODES: [Mode; 2] = [Mode::Loaded, Mode::Mapped];
 /// Every array and count the structure holds (its `Debug` prints them all).
 fn che_state(che: &Che) -> String {
     format!("{che:?}")
-}
-
-/// Surfaces with every kind of repair: closed, with boundary, perturbed (flips, splits,
-/// non-manifold edges, degenerate and duplicate triangles), a Möbius strip.
-fn surfaces() -> Vec<(Vec<[u32; 3]>, Vec<DVec3>)> {
-    let mut out = Vec::new();
-    for s in [grid(3, 2), torus(4, 3), sphere(4, 3)] {
-        out.push((s.triangles.clone(), s.positions.clone()));
-        let n = s.positions.len();
-        let mut rng = Rng(n as u64);
-        out.push((perturb(&s.triangles, n, &mut rng, 0.4), Vec::new()));
-    }
-    let moebius: Vec<[u32; 3]> = (0..6u32)
-        .flat_map(|i| {
-            let (t0, b0) = (i, 6 + i);
-            let (t1, b1) = if i < 5 { (i + 1, 7 + i) } else { (6, 0) };
-            [[t0, b0, b1], [t0, b1, t1]]
-        })
-        .collect();
-    out.push((moebius, Vec::new()));
-    let pinch = vec![
-        [0, 1, 2],
-        [0, 1, 3],
-        [0, 1, 4],
-        [2, 2, 5],
-        [0, 5, 6],
-        [0, 6, 5],
-    ];
-    out.push((pinch, Vec::new()));
-    out
-}
-
-fn che_n(tris: &[[u32; 3]], positions: &[DVec3]) -> usize {
-    positions.len().max(
-        tris.iter()
-            .flatten()
-            .map(|&x| x as usize + 1)
-            .max()
-            .unwrap_or(0),
-    )
 }
 
 #[test]
@@ -106,24 +66,6 @@ fn surfaces_round_trip_at_every_level() {
 /// Every array and count the structure holds.
 fn chf_state(chf: &Chf) -> String {
     format!("{chf:?}")
-}
-
-fn volumes() -> Vec<chf_common::Mesh> {
-    let cube = chf_common::cube(2, 2, 1, false);
-    let mut out = vec![cube.clone(), chf_common::cube(2, 1, 2, true)];
-    out.push(chf_common::scramble(&cube, 7, 70));
-    // Two tetrahedra sharing only an edge, one sharing only a vertex, a degenerate one.
-    let mut pinched = chf_common::cube(1, 1, 1, true);
-    let base = pinched.positions.len() as u32;
-    pinched.positions.extend([
-        DVec3::new(3.0, 0.0, 0.0),
-        DVec3::new(3.0, 1.0, 0.0),
-        DVec3::new(3.0, 0.0, 1.0),
-    ]);
-    pinched.tets.push([0, base, base + 1, base + 2]);
-    pinched.tets.push([0, 0, base, base + 1]);
-    out.push(pinched);
-    out
 }
 
 #[test]

@@ -12,7 +12,7 @@ use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use topomesh::io::{self, Format, Mesh, MeshData, WriteOptions};
-use topomesh::{BuildOptions, Error, chf};
+use topomesh::{BuildOptions, BuildProgress, Che, Chf, Error, chf};
 
 #[derive(clap::Args)]
 pub struct ConvertOptions {
@@ -93,7 +93,7 @@ pub fn run(options: &ConvertOptions) -> Result<ExitCode, Failure> {
     };
     progress.step(format!("writing {}", shown.display()));
     let counts = if let Some(kind) = level_file_output(options, &name, &data)? {
-        save_level_file(output, kind, &data)?
+        save_level_file(output, kind, std::mem::take(&mut data), &progress)?
     } else if options.as_read {
         emit(output, &Mesh::from_data(&data), &write)?
     } else if data.is_volume() {
@@ -188,22 +188,32 @@ fn level_file_output(
 }
 
 /// Builds `data` at the library's default level and saves it to `output`; the counts of
-/// the structure.
+/// the structure. The arrays are handed to the build, so that the input is not held twice
+/// (a generated mesh near the machine's memory builds).
 pub(crate) fn save_level_file(
-    output: &Path, kind: LevelFile, data: &MeshData,
+    output: &Path, kind: LevelFile, data: MeshData, progress: &Progress,
 ) -> Result<[usize; 3], Error> {
-    match kind {
+    let n = data.num_vertices();
+    let (positions, triangles, tetrahedra) = (data.positions, data.triangles, data.tetrahedra);
+    let hook = progress.build_hook(format!("building level {}", BuildOptions::default().level));
+    let shown = BuildProgress::new(&hook);
+    let counts = match kind {
         LevelFile::Surface => {
-            let che = build_surface(data, BuildOptions::default())?;
+            let options = BuildOptions::default();
+            let che = Che::from_vecs_with_progress(triangles, n, positions, options, shown)?;
+            progress.step(format!("writing {}", output.display()));
             che.save(output)?;
-            Ok([che.num_vertices(), che.num_triangles(), 0])
+            [che.num_vertices(), che.num_triangles(), 0]
         }
         LevelFile::Volume => {
-            let chf = build_volume(data, chf::BuildOptions::default())?;
+            let options = chf::BuildOptions::default();
+            let chf = Chf::from_vecs_with_progress(tetrahedra, n, positions, options, shown)?;
+            progress.step(format!("writing {}", output.display()));
             chf.save(output)?;
-            Ok([chf.num_vertices(), 0, chf.num_tetrahedra()])
+            [chf.num_vertices(), 0, chf.num_tetrahedra()]
         }
-    }
+    };
+    Ok(counts)
 }
 
 /// Writes `mesh` to `output` (a file, or standard output for `-`); the counts written.

@@ -70,7 +70,7 @@ pub fn run(options: &GenerateOptions) -> Result<ExitCode, Failure> {
                     "{shown}: --binary does not apply to a level file"
                 ))));
             }
-            save_level_file(output, kind, &data)?
+            save_level_file(output, kind, data, &progress)?
         }
         None => {
             let write = WriteOptions {

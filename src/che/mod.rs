@@ -35,6 +35,7 @@ pub(crate) use tables::edge_directory;
 
 use crate::NONE;
 use crate::error::Result;
+use crate::util::input::Input;
 use crate::util::origin::OriginMap;
 use crate::util::progress::BuildProgress;
 use crate::util::rank::RankBits;
@@ -98,7 +99,17 @@ impl Che {
     pub fn from_triangles(
         triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     ) -> Result<Che> {
-        build::build(
+        let input = Input::borrowed(triangles, n_vertices, positions);
+        build::build(input, options, BuildProgress::default())
+    }
+
+    /// [`Che::from_triangles`] from arrays handed over: the triangles become `V` in place
+    /// and the positions move into the structure, so the input is not held twice (a build
+    /// near the machine's memory needs that). On an error the arrays are dropped.
+    pub fn from_vecs(
+        triangles: Vec<[u32; 3]>, n_vertices: usize, positions: Vec<DVec3>, options: BuildOptions,
+    ) -> Result<Che> {
+        Self::from_vecs_with_progress(
             triangles,
             n_vertices,
             positions,
@@ -107,12 +118,22 @@ impl Che {
         )
     }
 
+    /// [`Che::from_vecs`], telling `progress` how far the build is after each step.
+    pub fn from_vecs_with_progress(
+        triangles: Vec<[u32; 3]>, n_vertices: usize, positions: Vec<DVec3>, options: BuildOptions,
+        progress: BuildProgress,
+    ) -> Result<Che> {
+        let input = Input::owned(triangles, n_vertices, positions);
+        build::build(input, options, progress)
+    }
+
     /// [`Che::from_triangles`], telling `progress` how far the build is after each step.
     pub fn from_triangles_with_progress(
         triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
         progress: BuildProgress,
     ) -> Result<Che> {
-        build::build(triangles, n_vertices, positions, options, progress)
+        let input = Input::borrowed(triangles, n_vertices, positions);
+        build::build(input, options, progress)
     }
 
     /// Builds from a flat array of `3 * n` vertex ids.

@@ -72,6 +72,7 @@ pub type ChfMemory = Memory;
 pub type ChfSummary = Summary;
 
 use crate::error::{Error, Result};
+use crate::util::input::Input;
 use crate::util::origin::OriginMap;
 use crate::util::progress::BuildProgress;
 use crate::util::rank::RankBits;
@@ -161,7 +162,17 @@ impl Chf {
     pub fn from_tetrahedra(
         tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     ) -> Result<Chf> {
-        build::build(
+        let input = Input::borrowed(tets, n_vertices, positions);
+        build::build(input, options, BuildProgress::default())
+    }
+
+    /// [`Chf::from_tetrahedra`] from arrays handed over: the tetrahedra become `V` in place
+    /// and the positions move into the structure, so the input is not held twice (a build
+    /// near the machine's memory needs that). On an error the arrays are dropped.
+    pub fn from_vecs(
+        tets: Vec<[u32; 4]>, n_vertices: usize, positions: Vec<DVec3>, options: BuildOptions,
+    ) -> Result<Chf> {
+        Self::from_vecs_with_progress(
             tets,
             n_vertices,
             positions,
@@ -170,12 +181,22 @@ impl Chf {
         )
     }
 
+    /// [`Chf::from_vecs`], telling `progress` how far the build is after each step.
+    pub fn from_vecs_with_progress(
+        tets: Vec<[u32; 4]>, n_vertices: usize, positions: Vec<DVec3>, options: BuildOptions,
+        progress: BuildProgress,
+    ) -> Result<Chf> {
+        let input = Input::owned(tets, n_vertices, positions);
+        build::build(input, options, progress)
+    }
+
     /// [`Chf::from_tetrahedra`], telling `progress` how far the build is after each step.
     pub fn from_tetrahedra_with_progress(
         tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
         progress: BuildProgress,
     ) -> Result<Chf> {
-        build::build(tets, n_vertices, positions, options, progress)
+        let input = Input::borrowed(tets, n_vertices, positions);
+        build::build(input, options, progress)
     }
 
     /// Builds from a flat array of `4 * n` vertex ids.

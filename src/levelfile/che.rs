@@ -29,11 +29,6 @@ super::report_sections!(
     ]
 );
 
-/// The positions as `3 * V` coordinates.
-pub(crate) fn flat_positions(p: &[DVec3]) -> Vec<f64> {
-    p.iter().flat_map(|x| x.to_array()).collect()
-}
-
 /// Every array of `che` at its level, each name after `prefix` (a CHF stores its boundary
 /// surface with the prefix `b.`).
 pub(crate) fn sections<'a>(che: &'a Che, prefix: &str) -> Vec<Section<'a>> {
@@ -53,10 +48,7 @@ pub(crate) fn sections<'a>(che: &'a Che, prefix: &str) -> Vec<Section<'a>> {
         Section::u32s(n("seams"), &che.seams[..]),
     ];
     if !che.positions.is_empty() {
-        out.push(Section::f64s(
-            n("positions"),
-            flat_positions(&che.positions),
-        ));
+        out.push(Section::points(n("positions"), &che.positions));
     }
     out.extend(report_sections(&che.report, prefix));
     if che.level >= 1 {

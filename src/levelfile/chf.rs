@@ -1,7 +1,7 @@
 //! A CHF as named sections (`docs/level-files.md` lists them) and back; at level 3 the
 //! boundary surface is a CHE, stored as its own sections under the prefix `b.`.
 
-use super::che::{check_vertex_counts, flat_positions, rank_bits, read_che, read_positions};
+use super::che::{check_vertex_counts, rank_bits, read_che, read_positions};
 use super::format::{FLAG_POSITIONS, Kind};
 use super::read::LevelFile;
 use super::write::{Contents, Section, save};
@@ -58,7 +58,7 @@ fn sections(chf: &Chf) -> Vec<Section<'_>> {
         Section::u64s("multi_fan", multi_fan),
     ];
     if !chf.positions.is_empty() {
-        out.push(Section::f64s("positions", flat_positions(&chf.positions)));
+        out.push(Section::points("positions", &chf.positions));
     }
     out.extend(report_sections(&chf.report, ""));
     if chf.level >= 1 {

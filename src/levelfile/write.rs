@@ -3,6 +3,7 @@
 
 use super::format::{self, ALIGN, Elem, Entry, Header, Kind};
 use crate::error::{Error, Result};
+use glam::DVec3;
 use std::borrow::Cow;
 use std::io::Write;
 use std::path::Path;
@@ -13,7 +14,8 @@ use std::path::Path;
 pub(crate) enum Data<'a> {
     U32(Cow<'a, [u32]>),
     U64(Cow<'a, [u64]>),
-    F64(Cow<'a, [f64]>),
+    /// Points, stored as their `x, y, z` coordinates (three `f64` each).
+    Points(&'a [DVec3]),
 }
 
 impl Data<'_> {
@@ -21,34 +23,37 @@ impl Data<'_> {
         match self {
             Data::U32(_) => Elem::U32,
             Data::U64(_) => Elem::U64,
-            Data::F64(_) => Elem::F64,
+            Data::Points(_) => Elem::F64,
         }
     }
     fn len(&self) -> usize {
         match self {
             Data::U32(x) => x.len(),
             Data::U64(x) => x.len(),
-            Data::F64(x) => x.len(),
+            Data::Points(x) => 3 * x.len(),
         }
     }
     /// Feeds the little-endian bytes to `out`, a chunk at a time.
     fn bytes(&self, out: &mut dyn FnMut(&[u8]) -> std::io::Result<()>) -> std::io::Result<()> {
         let mut buf = Vec::with_capacity(1 << 14);
         macro_rules! chunks {
-            ($xs:expr) => {
+            ($xs:expr, $per:expr) => {
                 for chunk in $xs.chunks(1 << 11) {
                     buf.clear();
-                    chunk
-                        .iter()
-                        .for_each(|x| buf.extend_from_slice(&x.to_le_bytes()));
+                    chunk.iter().for_each(|x| $per(&mut buf, x));
                     out(&buf)?;
                 }
             };
         }
+        let le = |buf: &mut Vec<u8>, bytes: &[u8]| buf.extend_from_slice(bytes);
         match self {
-            Data::U32(x) => chunks!(x),
-            Data::U64(x) => chunks!(x),
-            Data::F64(x) => chunks!(x),
+            Data::U32(x) => chunks!(x, |b, x: &u32| le(b, &x.to_le_bytes())),
+            Data::U64(x) => chunks!(x, |b, x: &u64| le(b, &x.to_le_bytes())),
+            Data::Points(x) => chunks!(x, |b: &mut Vec<u8>, p: &DVec3| {
+                for c in p.to_array() {
+                    le(b, &c.to_le_bytes());
+                }
+            }),
         }
         Ok(())
     }
@@ -74,10 +79,10 @@ impl<'a> Section<'a> {
             data: Data::U64(xs.into()),
         }
     }
-    pub(crate) fn f64s(name: impl Into<String>, xs: Vec<f64>) -> Self {
+    pub(crate) fn points(name: impl Into<String>, xs: &'a [DVec3]) -> Self {
         Section {
             name: name.into(),
-            data: Data::F64(Cow::Owned(xs)),
+            data: Data::Points(xs),
         }
     }
 }

@@ -1,6 +1,7 @@
 //! Helpers below both structures: build options and size checks, orientation, origin
 //! maps, the accessors both structures share, CSR arrays, threads, huge pages, rank
-//! directories, union-find, small id lists, closing the holes of dropped elements, the weld
+//! directories, union-find, small id lists, closing the holes of dropped elements, the
+//! build input (borrowed or handed over), the weld
 //! of nearly equal vertices, and the build reports' example lists.
 
 #[allow(dead_code)]
@@ -10,6 +11,7 @@ pub(crate) mod budget;
 pub(crate) mod csr;
 pub(crate) mod dsu;
 pub(crate) mod holes;
+pub(crate) mod input;
 pub(crate) mod options;
 pub(crate) mod orient;
 pub(crate) mod origin;

@@ -34,15 +34,16 @@ pub(crate) struct Welded<'a, const K: usize> {
     pub welded_vertices: usize,
 }
 
-/// The weld of `elements` over `positions` (one per vertex) at `tolerance`: off at 0. A
-/// tolerance that is negative or not finite, or a weld without positions, is an error.
-/// Corner ids out of range are kept as they are, for the soup step to report.
+/// The weld of `elements` over `positions` (one per vertex) at `tolerance`: off at 0 (the
+/// elements pass through, borrowed or owned as given). A tolerance that is negative or not
+/// finite, or a weld without positions, is an error. Corner ids out of range are kept as
+/// they are, for the soup step to report.
 pub(crate) fn weld_elements<'a, const K: usize>(
-    elements: &'a [[u32; K]], positions: &[DVec3], tolerance: f64,
+    elements: Cow<'a, [[u32; K]]>, positions: &[DVec3], tolerance: f64,
 ) -> Result<Welded<'a, K>> {
     if tolerance == 0.0 {
         return Ok(Welded {
-            elements: Cow::Borrowed(elements),
+            elements,
             welded_vertices: 0,
         });
     }
@@ -324,7 +325,7 @@ mod tests {
         // 3 - 1 - 0 - 2 along x, each 0.9 apart at tolerance 1; 4 far away.
         let p = [0.0, -0.9, 0.9, -1.8, 50.0].map(|x| DVec3::new(x, 0.0, 0.0));
         assert_eq!(representatives(&p, 1.0).unwrap(), vec![0, 0, 0, 0, 4]);
-        let w = weld_elements(&[[3, 4, 2], [9, 1, 4]], &p, 1.0).unwrap();
+        let w = weld_elements(Cow::Borrowed(&[[3, 4, 2], [9, 1, 4]]), &p, 1.0).unwrap();
         assert_eq!(&*w.elements, &[[0, 4, 0], [9, 0, 4]]);
         assert_eq!(w.welded_vertices, 3);
     }
@@ -332,21 +333,27 @@ mod tests {
     #[test]
     fn bad_tolerances_and_positions_are_errors() {
         let p = [DVec3::ZERO, DVec3::new(f64::NAN, 0.0, 0.0)];
-        let e = weld_elements(&[[0, 1, 0]], &p, 1e-3).err().unwrap();
+        let e = weld_elements(Cow::Borrowed(&[[0, 1, 0]]), &p, 1e-3)
+            .err()
+            .unwrap();
         assert!(e.message.contains("vertex 1"), "{}", e.message);
         for t in [-1.0, f64::NAN, f64::INFINITY] {
-            let e = weld_elements(&[[0, 1, 0]], &p[..1], t).err().unwrap();
+            let e = weld_elements(Cow::Borrowed(&[[0, 1, 0]]), &p[..1], t)
+                .err()
+                .unwrap();
             assert!(e.message.contains("weld_tolerance"), "{}", e.message);
         }
-        let empty = weld_elements::<3>(&[], &[], 0.5).unwrap(); // an empty mesh is no error
+        let empty = weld_elements::<3>(Cow::Borrowed(&[]), &[], 0.5).unwrap(); // an empty mesh is no error
         assert!(empty.elements.is_empty() && empty.welded_vertices == 0);
-        let e = weld_elements(&[[0, 1, 2]], &[], 0.5).err().unwrap();
+        let e = weld_elements(Cow::Borrowed(&[[0, 1, 2]]), &[], 0.5)
+            .err()
+            .unwrap();
         assert!(
             e.message.contains("without vertex positions"),
             "{}",
             e.message
         );
-        let off = weld_elements(&[[0, 1, 2]], &[], 0.0).unwrap();
+        let off = weld_elements(Cow::Borrowed(&[[0, 1, 2]]), &[], 0.0).unwrap();
         assert!(matches!(off.elements, Cow::Borrowed(_)));
     }
 }

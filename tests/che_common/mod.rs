@@ -3,8 +3,10 @@
 //! the raw input triangle list.
 #![allow(dead_code)]
 
+use glam::DVec3;
 use std::collections::{BTreeMap, BTreeSet};
 use topomesh::che::{StarStep, next, prev, tri};
+use topomesh::generate::{grid, sphere, torus};
 use topomesh::{BuildOptions, Che, NONE};
 
 pub struct Rng(pub u64);
@@ -442,4 +444,45 @@ pub fn check_structure(che: &Che, tris: &[[u32; 3]], r: &Reference) {
         s.euler_characteristic,
         r.n as i64 - r.edges.len() as i64 + r.kept.len() as i64
     );
+}
+
+/// Surfaces with every kind of repair: closed, with boundary, perturbed (flips, splits,
+/// non-manifold edges, degenerate and duplicate triangles), a Möbius strip.
+pub fn surfaces() -> Vec<(Vec<[u32; 3]>, Vec<DVec3>)> {
+    let mut out = Vec::new();
+    for s in [grid(3, 2), torus(4, 3), sphere(4, 3)] {
+        out.push((s.triangles.clone(), s.positions.clone()));
+        let n = s.positions.len();
+        let mut rng = Rng(n as u64);
+        out.push((perturb(&s.triangles, n, &mut rng, 0.4), Vec::new()));
+    }
+    let moebius: Vec<[u32; 3]> = (0..6u32)
+        .flat_map(|i| {
+            let (t0, b0) = (i, 6 + i);
+            let (t1, b1) = if i < 5 { (i + 1, 7 + i) } else { (6, 0) };
+            [[t0, b0, b1], [t0, b1, t1]]
+        })
+        .collect();
+    out.push((moebius, Vec::new()));
+    let pinch = vec![
+        [0, 1, 2],
+        [0, 1, 3],
+        [0, 1, 4],
+        [2, 2, 5],
+        [0, 5, 6],
+        [0, 6, 5],
+    ];
+    out.push((pinch, Vec::new()));
+    out
+}
+
+/// The vertex count of a test surface: its positions, or one past its largest id.
+pub fn che_n(tris: &[[u32; 3]], positions: &[DVec3]) -> usize {
+    positions.len().max(
+        tris.iter()
+            .flatten()
+            .map(|&x| x as usize + 1)
+            .max()
+            .unwrap_or(0),
+    )
 }

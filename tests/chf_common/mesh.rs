@@ -146,3 +146,23 @@ pub fn sorted<const N: usize>(mut a: [u32; N]) -> [u32; N] {
     a.sort_unstable();
     a
 }
+
+/// Volumes with every kind of repair: closed and bounded boxes, a scrambled one, pinched
+/// tetrahedra (an edge, a vertex) and a degenerate one.
+pub fn volumes() -> Vec<Mesh> {
+    let closed = cube(2, 2, 1, false);
+    let mut out = vec![closed.clone(), cube(2, 1, 2, true)];
+    out.push(scramble(&closed, 7, 70));
+    // Two tetrahedra sharing only an edge, one sharing only a vertex, a degenerate one.
+    let mut pinched = cube(1, 1, 1, true);
+    let base = pinched.positions.len() as u32;
+    pinched.positions.extend([
+        DVec3::new(3.0, 0.0, 0.0),
+        DVec3::new(3.0, 1.0, 0.0),
+        DVec3::new(3.0, 0.0, 1.0),
+    ]);
+    pinched.tets.push([0, base, base + 1, base + 2]);
+    pinched.tets.push([0, 0, base, base + 1]);
+    out.push(pinched);
+    out
+}

@@ -21,7 +21,7 @@ pub(crate) use split::walk_fan;
 use super::Che;
 use crate::NONE;
 use crate::error::{Error, Result};
-use crate::util::alloc::{try_reserve, try_to_vec};
+use crate::util::input::{Input, positions_with_copies};
 use crate::util::options::check_input;
 use crate::util::origin::OriginMap;
 use crate::util::progress::BuildProgress;
@@ -29,44 +29,20 @@ use crate::util::rank::RankBits;
 use crate::util::rank_directory::RankDirectory;
 use glam::DVec3;
 use report::push_example;
+use std::borrow::Cow;
 
 pub(crate) fn build(
-    triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-    progress: BuildProgress,
+    input: Input<'_, 3>, options: BuildOptions, progress: BuildProgress,
 ) -> Result<Che> {
-    let n = triangles.len();
-    check_input(
-        &options,
-        &options::TRIANGLES,
-        n,
+    let Input {
+        elements: triangles,
         n_vertices,
-        positions.len(),
-    )?;
-    let (non_finite_vertices, non_finite_vertex_examples) =
-        crate::util::non_finite_vertices(positions);
-    let estimate = budget::estimated_build_bytes(
-        triangles.len(),
-        n_vertices,
-        !positions.is_empty(),
-        options.level,
-    );
-    crate::util::budget::check(&options, estimate, || {
-        format!(
-            "a CHE build of {} triangles at level {}",
-            triangles.len(),
-            options.level
-        )
-    })?;
-    let mut report = BuildReport {
-        input_triangles: triangles.len(),
-        input_vertices: n_vertices,
-        non_finite_vertices,
-        non_finite_vertex_examples,
-        ..BuildReport::default()
-    };
-    let welded = crate::util::weld::weld_elements(triangles, positions, options.weld_tolerance)?;
+        positions,
+    } = input;
+    let mut report = prepared(&triangles, n_vertices, &positions, &options)?;
+    let welded = crate::util::weld::weld_elements(triangles, &positions, options.weld_tolerance)?;
     report.welded_vertices = welded.welded_vertices;
-    let triangles = &*welded.elements;
+    let triangles = welded.elements;
     let threads = crate::util::par::build_threads(options.threads, triangles.len());
     progress.at(0.0, "the soup");
     let (mut v, triangle_origin) = soup::soup(triangles, n_vertices, &mut report, threads)?;
@@ -101,6 +77,28 @@ pub(crate) fn build(
     finish_level(&mut che, options.level, vh)?;
     progress.at(1.0, "done");
     Ok(che)
+}
+
+/// The checks before anything is allocated, and the report of the input.
+fn prepared(
+    triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: &BuildOptions,
+) -> Result<BuildReport> {
+    let n = triangles.len();
+    check_input(options, &options::TRIANGLES, n, n_vertices, positions.len())?;
+    let (non_finite_vertices, non_finite_vertex_examples) =
+        crate::util::non_finite_vertices(positions);
+    let estimate =
+        budget::estimated_build_bytes(n, n_vertices, !positions.is_empty(), options.level);
+    crate::util::budget::check(options, estimate, || {
+        format!("a CHE build of {n} triangles at level {}", options.level)
+    })?;
+    Ok(BuildReport {
+        input_triangles: n,
+        input_vertices: n_vertices,
+        non_finite_vertices,
+        non_finite_vertex_examples,
+        ..BuildReport::default()
+    })
 }
 
 /// Step 3: orients only when some pair runs the same way (otherwise the partners are the
@@ -186,16 +184,11 @@ struct Canonical {
 
 /// The structure at level 1, with the vertex copies of the split appended.
 fn assemble(
-    c: Canonical, copies: &[u32], n_vertices: usize, positions: &[DVec3], report: BuildReport,
+    c: Canonical, copies: &[u32], n_vertices: usize, positions: Cow<'_, [DVec3]>,
+    report: BuildReport,
 ) -> Result<Che> {
     let vertex_origin = OriginMap::with_copies(n_vertices, copies)?;
-    let mut positions = try_to_vec(positions, "the positions")?;
-    if !positions.is_empty() {
-        try_reserve(&mut positions, copies.len(), "the positions")?;
-        for &x in copies {
-            positions.push(positions[x as usize]);
-        }
-    }
+    let positions = positions_with_copies(positions, copies)?;
     let num_edges =
         c.o.iter()
             .enumerate()

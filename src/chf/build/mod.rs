@@ -22,11 +22,13 @@ use crate::chf::ids::tet;
 use crate::chf::star_pass::link::FaceCensus;
 use crate::chf::star_pass::{self as stars, Pairs, StarPass, Stars, merged};
 use crate::error::{Error, Result};
-use crate::util::alloc::{try_reserve, try_to_vec, try_vec};
+use crate::util::alloc::try_vec;
+use crate::util::input::{Input, positions_with_copies};
 use crate::util::options::{Cells, check_input};
 use crate::util::origin::OriginMap;
 use crate::util::progress::BuildProgress;
 use glam::DVec3;
+use std::borrow::Cow;
 
 pub use crate::util::options::BuildOptions;
 pub use budget::estimated_build_bytes;
@@ -36,11 +38,17 @@ pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
 
 /// The pipeline: each step is a function below, in this order.
 pub(crate) fn build(
-    tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-    progress: BuildProgress,
+    input: Input<'_, 4>, options: BuildOptions, progress: BuildProgress,
 ) -> Result<Chf> {
-    let (mut report, welded) = prepared(tets, n_vertices, positions, &options)?;
-    let tets = &*welded.elements;
+    let Input {
+        elements: tets,
+        n_vertices,
+        positions,
+    } = input;
+    let mut report = prepared(&tets, n_vertices, &positions, &options)?;
+    let welded = crate::util::weld::weld_elements(tets, &positions, options.weld_tolerance)?;
+    report.welded_vertices = welded.welded_vertices;
+    let tets = welded.elements;
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
     progress.at(0.0, "stars and orientation");
@@ -54,7 +62,7 @@ pub(crate) fn build(
         tet_origin,
         pairs,
         pass,
-    } = oriented(tets, n_vertices, positions, options, &mut report)?;
+    } = oriented(tets, n_vertices, &positions, options, &mut report)?;
     let origin_of = |t: u32| tet_origin.get(t);
     non_manifold.sort_unstable();
     // 4. Vertex split, when some star is in several pieces.
@@ -96,7 +104,7 @@ pub(crate) fn build(
         n_vertices: n_total,
         num_edges: stars.num_edges,
         num_faces: count_faces(&o, &seams, v.len() - pairs),
-        positions: with_copies(positions, &copies)?.into(),
+        positions: positions_with_copies(positions, &copies)?.into(),
         vertex_origin,
         tet_origin,
         non_manifold,
@@ -113,10 +121,10 @@ pub(crate) fn build(
     Ok(chf)
 }
 
-/// The checks before anything is allocated, the report of the input, and the weld.
-fn prepared<'a>(
-    tets: &'a [[u32; 4]], n_vertices: usize, positions: &[DVec3], options: &BuildOptions,
-) -> Result<(BuildReport, crate::util::weld::Welded<'a, 4>)> {
+/// The checks before anything is allocated, and the report of the input.
+fn prepared(
+    tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: &BuildOptions,
+) -> Result<BuildReport> {
     check_input(
         options,
         &TETRAHEDRA,
@@ -130,9 +138,7 @@ fn prepared<'a>(
         report.non_finite_vertices,
         report.non_finite_vertex_examples,
     ) = crate::util::non_finite_vertices(positions);
-    let welded = crate::util::weld::weld_elements(tets, positions, options.weld_tolerance)?;
-    report.welded_vertices = welded.welded_vertices;
-    Ok((report, welded))
+    Ok(report)
 }
 
 /// Refuses, before allocating, a build whose estimate exceeds the memory limit.
@@ -167,7 +173,7 @@ struct Oriented {
 
 /// Steps 1 to 3: the soup, the star pass, and the orientation when some pair needs it.
 fn oriented(
-    tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
+    tets: Cow<'_, [[u32; 4]]>, n_vertices: usize, positions: &[DVec3], options: BuildOptions,
     report: &mut BuildReport,
 ) -> Result<Oriented> {
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
@@ -317,18 +323,6 @@ fn split_vertices(
         )));
     }
     Ok(split.copies)
-}
-
-/// The positions, each copy repeating its origin's.
-fn with_copies(positions: &[DVec3], copies: &[u32]) -> Result<Vec<DVec3>> {
-    let mut positions = try_to_vec(positions, "the positions")?;
-    if !positions.is_empty() {
-        try_reserve(&mut positions, copies.len(), "the positions")?;
-        for &c in copies {
-            positions.push(positions[c as usize]);
-        }
-    }
-    Ok(positions)
 }
 
 /// Canonical half-faces: the unpaired ones and one per pair (`unpaired_or_pairs` when

@@ -13,6 +13,7 @@ use crate::chf::build::report::{BuildReport, push_example};
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_extend, try_push, try_vec};
 use glam::DVec3;
+use std::borrow::Cow;
 
 pub(crate) struct Soup {
     /// `V`, flipped where the determinant is negative.
@@ -37,29 +38,38 @@ struct Run {
     flipped: usize,
 }
 
-/// Runs of tetrahedra on up to `threads` threads, each writing its own part of `V` (and
-/// of the signs); degenerate ones leave a hole, closed afterwards by one pass when there
-/// is any.
+/// Runs of tetrahedra on up to `threads` threads, each checking (and flipping) its own part
+/// of `V` and writing its part of the signs; degenerate ones leave a hole, closed afterwards
+/// by one pass when there is any. Tetrahedra handed over as a `Vec` become `V` in place;
+/// borrowed ones are copied into it run by run.
 pub(crate) fn soup(
-    tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], report: &mut BuildReport,
+    tets: Cow<'_, [[u32; 4]]>, n_vertices: usize, positions: &[DVec3], report: &mut BuildReport,
     threads: usize,
 ) -> Result<Soup> {
     let n = tets.len();
     let chunk = n.div_ceil(threads.max(1)).max(1);
-    let mut v: Vec<u32> = crate::util::pages::zeroed(4 * n, "the tetrahedron vertices V")?;
+    let (mut v, source) = match tets {
+        Cow::Owned(t) => (t.into_flattened(), None),
+        Cow::Borrowed(t) => (
+            crate::util::pages::zeroed(4 * n, "the tetrahedron vertices V")?,
+            Some(t),
+        ),
+    };
     let n_signs = if positions.is_empty() { 0 } else { n };
     let mut sign: Vec<i8> = try_vec(n_signs, 0, "the determinant signs")?;
     let mut sign_parts: Vec<&mut [i8]> = if positions.is_empty() {
-        tets.chunks(chunk).map(|_| &mut [][..]).collect()
+        v.chunks(4 * chunk).map(|_| &mut [][..]).collect()
     } else {
         sign.chunks_mut(chunk).collect()
     };
-    let jobs: Vec<_> = tets
-        .chunks(chunk)
-        .zip(v.chunks_mut(4 * chunk))
+    let jobs: Vec<_> = v
+        .chunks_mut(4 * chunk)
         .zip(sign_parts.drain(..))
         .enumerate()
-        .map(|(j, ((tets, v), sign))| (j * chunk, tets, v, sign))
+        .map(|(j, (v, sign))| {
+            let t0 = j * chunk;
+            (t0, source.map(|s| &s[t0..][..v.len() / 4]), v, sign)
+        })
         .collect();
     let runs = crate::util::par::run_all(jobs, |(t0, tets, v, sign)| {
         run(t0, tets, v, sign, n_vertices, positions)
@@ -91,15 +101,19 @@ pub(crate) fn soup(
     })
 }
 
-/// One run: `tets` from input id `t0` on, into `v` (four per tetrahedron) and `sign`
-/// (empty without positions).
+/// One run: the tetrahedra from input id `t0` on, in `v` (four per tetrahedron; copied from
+/// `tets` first when borrowed), and their `sign` (empty without positions).
 fn run(
-    t0: usize, tets: &[[u32; 4]], v: &mut [u32], sign: &mut [i8], n_vertices: usize,
+    t0: usize, tets: Option<&[[u32; 4]]>, v: &mut [u32], sign: &mut [i8], n_vertices: usize,
     positions: &[DVec3],
 ) -> Run {
     let mut out = Run::default();
-    for (k, (tet, q)) in tets.iter().zip(v.chunks_exact_mut(4)).enumerate() {
+    for (k, q) in v.chunks_exact_mut(4).enumerate() {
         let t = t0 + k;
+        if let Some(tets) = tets {
+            q.copy_from_slice(&tets[k]);
+        }
+        let tet = &[q[0], q[1], q[2], q[3]];
         if let Some(i) = tet.iter().position(|&x| x as usize >= n_vertices) {
             out.error = Some(Error::out_of_range(format!(
                 "tetrahedron {t}, corner {i}: vertex {} out of range (there are {n_vertices} vertices)",
@@ -116,7 +130,6 @@ fn run(
             continue;
         }
         if positions.is_empty() {
-            q.copy_from_slice(tet);
             continue;
         }
         let [p0, p1, p2, p3] = tet.map(|x| positions[x as usize]);
@@ -139,8 +152,6 @@ fn run(
         if s < 0 {
             out.flipped += 1;
             q.copy_from_slice(&[a, c, b, d]);
-        } else {
-            q.copy_from_slice(tet);
         }
     }
     out

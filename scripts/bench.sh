@@ -5,9 +5,11 @@
 # machine, the compilers, the flags, the commit and this command. The page holds the latest
 # run only; what changed between runs, and why, goes to CHANGELOG.md.
 #
-#   scripts/bench.sh [--reps N] [--export-meshes "A B"] [--edit-meshes "A B"] [--edit-reps N] [MESH...]
+#   scripts/bench.sh [--reps N] [--export-meshes "A B"] [--edit-meshes "A B"] [--edit-reps N]
+#                    [--levelfile-meshes "A B"] [MESH...]
 #   scripts/bench.sh --edit-only [--edit-meshes "A B"] [--edit-reps N]
 #   scripts/bench.sh --export-only [--reps N] [--export-meshes "A B"]
+#   scripts/bench.sh --levelfile-only [--reps N] [--levelfile-meshes "A B"]
 #   scripts/bench.sh --charts-only
 #
 # MESH: names in the mesh cache (default: bunny00 armadillo holes polygon_mesh
@@ -18,11 +20,16 @@
 # the --export-meshes (default: bunny00 bunny00-sub3), and the editing benchmark
 # topomesh_bench_edit (flip storm, split refinement, simplification, garbage collection,
 # against OpenMesh and CGAL) on the --edit-meshes (default: bunny00 bunny00-sub3), --edit-reps
-# runs each (default 1: the large mesh takes minutes per library). --edit-only runs the
-# editing benchmark alone and replaces the page's last section (Editing) with its tables,
-# keeping the rest of the page; --export-only does the same for the Exports section. Then writes the charts of the page (docs/bench-surfaces-*.svg,
-# by tools/plot from the page's tables); --charts-only redraws them from the page as it is,
-# without running anything. Respects CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
+# runs each (default 1: the large mesh takes minutes per library), and the level-file
+# benchmark topomesh_bench_levelfile (the build against che_mesh_save and che_mesh_open,
+# mapped or loaded, trusted or verified, and against OpenMesh reading its binary .om) on the
+# --levelfile-meshes (default: bunny00 bunny00-sub3), --reps rounds. --edit-only runs the
+# editing benchmark alone and replaces the page's Editing section with its tables,
+# keeping the rest of the page; --export-only does the same for the Exports section and
+# --levelfile-only for the Level files section (added when the page has none). Then writes
+# the charts of the page (docs/bench-surfaces-*.svg, by tools/plot from the page's tables);
+# --charts-only redraws them from the page as it is, without running anything. Respects
+# CARGO_TARGET_DIR and TOPOMESH_MESH_DIR.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -32,8 +39,10 @@ meshes=()
 export_meshes=(bunny00 bunny00-sub3)
 edit_meshes=(bunny00 bunny00-sub3)
 edit_reps=1
+levelfile_meshes=(bunny00 bunny00-sub3)
 edit_only=0
 export_only=0
+levelfile_only=0
 charts_only=0
 while (($#)); do
   case "$1" in
@@ -41,10 +50,12 @@ while (($#)); do
     --export-meshes) read -r -a export_meshes <<<"$2"; shift 2 ;;
     --edit-meshes) read -r -a edit_meshes <<<"$2"; shift 2 ;;
     --edit-reps) edit_reps="$2"; shift 2 ;;
+    --levelfile-meshes) read -r -a levelfile_meshes <<<"$2"; shift 2 ;;
     --edit-only) edit_only=1; shift ;;
     --export-only) export_only=1; shift ;;
+    --levelfile-only) levelfile_only=1; shift ;;
     --charts-only) charts_only=1; shift ;;
-    -h|--help) sed -n 2,27p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,32p "$0"; exit 0 ;;
     *) meshes+=("$1"); shift ;;
   esac
 done
@@ -105,8 +116,11 @@ if ((edit_only)); then
   cmake --build "$work/diff" --target topomesh_bench_edit >/dev/null
 elif ((export_only)); then
   cmake --build "$work/diff" --target topomesh_bench_export >/dev/null
+elif ((levelfile_only)); then
+  cmake --build "$work/diff" --target topomesh_bench_levelfile >/dev/null
 else
-  cmake --build "$work/diff" --target topomesh_bench topomesh_bench_export topomesh_bench_edit >/dev/null
+  cmake --build "$work/diff" --target topomesh_bench topomesh_bench_export topomesh_bench_edit \
+    topomesh_bench_levelfile >/dev/null
 fi
 
 # The editing benchmark into $work/editing.md: a section of its own, with its command,
@@ -175,6 +189,66 @@ exports() {
     cat "$work/export-tables.md"
   } >"$work/exports.md"
 }
+# The level-file benchmark into $work/levelfile.md: a section of its own, with its command,
+# commit and load, so that --levelfile-only can replace it in a page written by a full run.
+# Its temporary .che and .om files go to $work.
+levelfile() {
+  local files=() m load0
+  for m in "${levelfile_meshes[@]}"; do
+    if [[ -f "$m" ]]; then files+=("$m"); else files+=("$dir/$m.off"); fi
+  done
+  ((${#files[@]})) || return 0
+  echo "== level files on ${#files[@]} meshes, $reps rounds"
+  load0="$(cut -d' ' -f1-3 /proc/loadavg)"
+  TMPDIR="$work" "$work/diff/topomesh_bench_levelfile" --reps "$reps" --md "$work/levelfile-tables.md" "${files[@]}"
+  {
+    echo
+    echo "## Level files"
+    echo
+    echo "\`c-tests/diff_surface/bench_levelfile.cpp\` (\`topomesh_bench_levelfile\`): what opening a saved CHE costs"
+    echo "(\`che_mesh_save\`, \`che_mesh_open\`; the layout in [docs/level-files.md](docs/level-files.md)) against"
+    echo "building it from the arrays, and against OpenMesh reading its own binary format. In one process,"
+    echo "interleaved rounds (each runs every step once, from a different first one), medians of the"
+    echo "wall-clock time (the build and the verified opens run on every thread), the process's CPU time beside it:"
+    echo
+    echo "- the build: \`che_mesh_from_triangles_ex\` at level 2 on every thread (\`che_build_options_default\`,"
+    echo "  what a program without a level file pays) and on one;"
+    echo "- \`che_mesh_save\` of that mesh to a .che (a temporary file written, synced, renamed);"
+    echo "- \`che_mesh_open\` with \`TOPOMESH_OPEN_MAPPED | TOPOMESH_OPEN_TRUSTED\` (the header and the section table"
+    echo "  checked; the arrays are the file's pages), \`TOPOMESH_OPEN_MAPPED\` (every checksum and invariant checked)"
+    echo "  and 0 (read into memory, everything checked), each with the first query, vertex 0's one-ring"
+    echo "  (\`che_vertex_vertices\`); the mapped trusted open also right after an untimed one (caches warm, as for"
+    echo "  a program opening one file after another);"
+    echo "- OpenMesh: \`OpenMesh::IO::read_mesh\` into its TriMesh of the same mesh written once as a binary .om"
+    echo "  (\`write_mesh\`, \`Options::Binary\`), then vertex 0's one-ring;"
+    echo "- a VV sweep over every vertex through the C++ wrapper (\`Surface::vertex_vertices\`, the *C++ wrapper*"
+    echo "  path of the tables above) on the built mesh, on a mapped trusted mesh just opened (its pages touched"
+    echo "  for the first time) and on one whose pages an earlier sweep touched."
+    echo
+    echo "The files are in the page cache (each was just written): these are warm-cache times, not a disk's."
+    echo "The targets: the mapped trusted open with its first query at least 1000× faster than the build (the"
+    echo "faster of the two) and 100× faster than OpenMesh's read; a verified open at least 5× faster than the"
+    echo "build; the mapped sweep at most 1.20× the in-memory one."
+    echo
+    echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty); $reps rounds; load average"
+    echo "before: $load0; after: $(cut -d' ' -f1-3 /proc/loadavg). Machine and compilers as above."
+    cat "$work/levelfile-tables.md"
+  } >"$work/levelfile.md"
+}
+# Replaces the page's section "## $1" (up to the next "## " heading) with the file $2 (a
+# blank line, then the section), or adds it at the end when the page has none: the page
+# into $work/page.md. Blank lines before the replaced section are dropped, as its file
+# brings its own.
+replace_section() {
+  awk -v head="## $1" -v file="$2" '
+    function section(  l) { while ((getline l < file) > 0) print l; close(file); done = 1 }
+    $0 == head { blanks = 0; section(); skip = 1; next }
+    skip && /^## / { skip = 0; print "" }
+    skip { next }
+    /^$/ { blanks++; next }
+    { for (; blanks > 0; blanks--) print ""; print }
+    END { if (!done) section() }' "$out" >"$work/page.md"
+}
 eigen_v="$(dpkg-query -W -f '${Version}' libeigen3-dev 2>/dev/null || echo 'not installed')"
 meshopt_v="$(dpkg-query -W -f '${Version}' libmeshoptimizer-dev 2>/dev/null || echo 'not installed')"
 commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
@@ -182,8 +256,7 @@ dirty="$(git -C "$root" status --porcelain 2>/dev/null | grep -q . && echo ' (wi
 if ((edit_only)); then
   [[ -f "$out" ]] || { echo "bench.sh: --edit-only needs a page written by a full run" >&2; exit 1; }
   editing
-  awk '/^## Editing$/ { exit } { print }' "$out" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}' >"$work/page.md"
-  cat "$work/editing.md" >>"$work/page.md"
+  replace_section Editing "$work/editing.md"
   mv "$work/page.md" "$out"
   echo "== wrote $out (Editing)"
   exit 0
@@ -191,11 +264,17 @@ fi
 if ((export_only)); then
   [[ -f "$out" ]] || { echo "bench.sh: --export-only needs a page written by a full run" >&2; exit 1; }
   exports
-  awk '/^## Exports$/ { exit } { print }' "$out" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}' >"$work/page.md"
-  cat "$work/exports.md" >>"$work/page.md"
-  awk '/^## Editing$/ { on = 1; print ""; } on { print }' "$out" >>"$work/page.md"
+  replace_section Exports "$work/exports.md"
   mv "$work/page.md" "$out"
   echo "== wrote $out (Exports)"
+  exit 0
+fi
+if ((levelfile_only)); then
+  [[ -f "$out" ]] || { echo "bench.sh: --levelfile-only needs a page written by a full run" >&2; exit 1; }
+  levelfile
+  replace_section "Level files" "$work/levelfile.md"
+  mv "$work/page.md" "$out"
+  echo "== wrote $out (Level files)"
   exit 0
 fi
 
@@ -210,6 +289,8 @@ load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 exports
 : >"$work/editing.md"
 ((${#edit_meshes[@]})) && editing
+: >"$work/levelfile.md"
+levelfile
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 # The machine and the toolchain.
@@ -261,6 +342,9 @@ cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
   echo "  against OpenMesh's one-rings and Eigen's triplets, triangle strips against meshoptimizer's"
   echo "  \`meshopt_stripify\` (as given, and after its \`meshopt_optimizeVertexCacheStrip\`), Betti numbers"
   echo "  against the build; same timing rules (CPU time, medians, interleaved rounds)."
+  echo "- Level files (\`c-tests/diff_surface/bench_levelfile.cpp\`, on the meshes of \`--levelfile-meshes\`):"
+  echo "  the build against \`che_mesh_save\` and \`che_mesh_open\` (mapped or loaded, trusted or verified) and"
+  echo "  against OpenMesh reading its binary .om; wall-clock medians (see its section)."
   echo
   echo "## Charts"
   echo
@@ -293,6 +377,7 @@ cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
   cat "$work/tables.md"
   cat "$work/exports.md"
   cat "$work/editing.md"
+  cat "$work/levelfile.md"
 } > "$work/page.md"
 mv "$work/page.md" "$out"
 echo "== wrote $out"

@@ -12,7 +12,8 @@
 #     benchmark builds it, the arrays freed, one VV sweep over every vertex);
 #   - topomesh: `topomesh generate torus --triangles N -o DIR/torus-N.che` (generate, build
 #     at level 2 on every thread, save), then `topomesh bench DIR/torus-N.che --repeat 1
-#     --json` (its opens, then the sweeps on the mapped file), and the file's size;
+#     --mapped-only --json` (its mapped opens, then the sweeps on the mapped file), and the
+#     file's size;
 # each under /usr/bin/time -v: its wall-clock time, its maximum resident set, and whether it
 # was killed (signal 9: the OOM killer) or ran out of memory. A library that fails at one
 # size is not run at the larger ones. Builds and installs the package into a temporary
@@ -121,7 +122,7 @@ topomesh_run() {
   fi
   gen="$run_s | $run_gib"
   bytes="$(stat -c %s "$che")"
-  timed "$topomesh" bench "$che" --repeat 1 --json
+  timed "$topomesh" bench "$che" --repeat 1 --mapped-only --json
   if [[ "$run_end" == ok ]]; then
     sweep="$(jq -r '.sweeps.relations[] | select(.relation == "VV") | .seconds.median' "$work/run.out")"
     echo "topomesh bench $n: opens $(jq -c '[.opens[] | {(.mode + " " + .verify): .seconds.median}] | add' \
@@ -193,10 +194,9 @@ cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
   echo "  process's VmHWM (the arrays included, as they are while a program builds)."
   echo "- topomesh: \`topomesh generate torus --triangles N -o torus-N.che\` generates the arrays, builds"
   echo "  level 2 on every thread and saves the level file: *generate s* and *peak* are that whole process's."
-  echo "  Then \`topomesh bench torus-N.che --repeat 1 --json\` opens the file every way (mapped and loaded,"
-  echo "  trusted and verified) and sweeps VV, VF and FF on the mapped file: *VV sweep s* is its VV sweep,"
-  echo "  *bench RSS* that process's maximum resident set, which the loaded opens (the whole file read into"
-  echo "  memory) set as much as the sweeps; the mapped file's pages count in it while they are mapped."
+  echo "  Then \`topomesh bench torus-N.che --repeat 1 --mapped-only --json\` opens the file mapped (trusted,"
+  echo "  checksums, full) and sweeps VV, VF and FF on the mapping: *VV sweep s* is its VV sweep, *bench RSS*"
+  echo "  that process's maximum resident set, where the mapped file's pages count while they are mapped."
   echo "- GiB are 2^30 bytes."
   echo
   echo "## Results"

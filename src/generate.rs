@@ -82,16 +82,81 @@ pub fn torus(nu: u32, nv: u32) -> Surface {
 
 /// [`torus`] appended to the empty `s`.
 fn torus_into(s: &mut Surface, nu: u32, nv: u32) {
-    let id = |i: u32, j: u32| (j % nv) * nu + (i % nu);
-    for j in 0..nv {
-        for i in 0..nu {
-            let (u, v) = (TAU * i as f64 / nu as f64, TAU * j as f64 / nv as f64);
-            let r = 2.0 + v.cos();
-            s.positions
-                .push(DVec3::new(r * u.cos(), r * u.sin(), v.sin()));
+    let grid = TorusGrid { nu, nv };
+    s.positions.extend((0..nu * nv).map(|k| grid.position(k)));
+    s.triangles
+        .extend((0..2 * nu * nv).map(|t| grid.triangle(t)));
+}
+
+/// The torus of `nu` by `nv` quads element by element, so that a triangle or a point is
+/// had without the others: what [`torus`] lists, and what a streaming build reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TorusGrid {
+    pub nu: u32,
+    pub nv: u32,
+}
+
+impl TorusGrid {
+    /// The grid [`torus_of`] makes for at least `triangles` triangles.
+    pub fn of(triangles: u64) -> Result<TorusGrid> {
+        check_size(triangles, 3, "triangles")?;
+        let quads = triangles.div_ceil(2).max(9);
+        let nv = ((quads as f64 / 3.0).sqrt().ceil() as u64).max(3);
+        let nu = quads.div_ceil(nv).max(3);
+        check_size(2 * nu * nv, 3, "triangles")?;
+        Ok(TorusGrid {
+            nu: nu as u32,
+            nv: nv as u32,
+        })
+    }
+
+    /// Vertex `k`, the corner `(k % nu, k / nu)` of the grid.
+    pub fn position(&self, k: u32) -> DVec3 {
+        let (i, j) = (k % self.nu, k / self.nu);
+        let (u, v) = (
+            TAU * i as f64 / self.nu as f64,
+            TAU * j as f64 / self.nv as f64,
+        );
+        let r = 2.0 + v.cos();
+        DVec3::new(r * u.cos(), r * u.sin(), v.sin())
+    }
+
+    /// Triangle `t`: the first or second half of quad `t / 2` (row by row).
+    pub fn triangle(&self, t: u32) -> [u32; 3] {
+        let (nu, nv) = (self.nu, self.nv);
+        let id = |i: u32, j: u32| (j % nv) * nu + (i % nu);
+        let (i, j) = ((t / 2) % nu, (t / 2) / nu);
+        let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+        if t.is_multiple_of(2) {
+            [a, b, c]
+        } else {
+            [a, c, d]
         }
     }
-    push_quads(s, nu, nv, id);
+}
+
+impl crate::che::TriangleSource for TorusGrid {
+    fn num_triangles(&self) -> usize {
+        2 * self.nu as usize * self.nv as usize
+    }
+    fn num_vertices(&self) -> usize {
+        self.nu as usize * self.nv as usize
+    }
+    fn has_positions(&self) -> bool {
+        true
+    }
+    fn triangles(&self, first: usize, out: &mut [[u32; 3]]) -> Result<()> {
+        for (t, x) in (first as u32..).zip(out) {
+            *x = self.triangle(t);
+        }
+        Ok(())
+    }
+    fn positions(&self, first: usize, out: &mut [DVec3]) -> Result<()> {
+        for (k, x) in (first as u32..).zip(out) {
+            *x = self.position(k);
+        }
+        Ok(())
+    }
 }
 
 /// A sphere of `nu` meridians and `nv` bands (nu >= 3, nv >= 2) with two poles: closed,
@@ -169,13 +234,10 @@ fn surface_with_room(n: u64, m: u64) -> Result<Surface> {
 /// A torus of at least `triangles` triangles (and at least 18), its tube a third of its
 /// ring in quads, as close to the count as the grid allows.
 pub fn torus_of(triangles: u64) -> Result<Surface> {
-    check_size(triangles, 3, "triangles")?;
-    let quads = triangles.div_ceil(2).max(9);
-    let nv = ((quads as f64 / 3.0).sqrt().ceil() as u64).max(3);
-    let nu = quads.div_ceil(nv).max(3);
-    check_size(2 * nu * nv, 3, "triangles")?;
-    let mut s = surface_with_room(nu * nv, 2 * nu * nv)?;
-    torus_into(&mut s, nu as u32, nv as u32);
+    let TorusGrid { nu, nv } = TorusGrid::of(triangles)?;
+    let (nu64, nv64) = (u64::from(nu), u64::from(nv));
+    let mut s = surface_with_room(nu64 * nv64, 2 * nu64 * nv64)?;
+    torus_into(&mut s, nu, nv);
     Ok(s)
 }
 
@@ -248,6 +310,23 @@ mod tests {
         assert_eq!(chi(&grid(4, 3)), (1, 0, 1));
         assert_eq!(chi(&torus(5, 4)), (0, 1, 0));
         assert_eq!(chi(&sphere(6, 4)), (2, 0, 0));
+    }
+
+    /// The grid as a source reads, block by block, what `torus_of` lists.
+    #[test]
+    fn the_torus_grid_reads_what_torus_of_lists() {
+        use crate::che::TriangleSource;
+        let grid = TorusGrid::of(1000).unwrap();
+        let listed = torus_of(1000).unwrap();
+        let (mut tris, mut points) = (vec![[0; 3]; 7], vec![DVec3::ZERO; 5]);
+        assert_eq!(grid.num_triangles(), listed.triangles.len());
+        assert_eq!(grid.num_vertices(), listed.positions.len());
+        for first in [0, 13, listed.positions.len() - 5] {
+            grid.triangles(first, &mut tris).unwrap();
+            grid.positions(first, &mut points).unwrap();
+            assert_eq!(&tris[..], &listed.triangles[first..first + 7]);
+            assert_eq!(&points[..], &listed.positions[first..first + 5]);
+        }
     }
 
     /// The sized forms give at least the count asked (within a few percent above it on

@@ -11,6 +11,7 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use topomesh::io::{Mesh, MeshData, WriteOptions};
+use topomesh::levelfile::{StreamOptions, save_streamed};
 use topomesh::{Error, generate};
 
 /// The shapes `generate` makes.
@@ -40,12 +41,20 @@ pub struct GenerateOptions {
     /// Binary PLY (STL is always binary).
     #[arg(long)]
     binary: bool,
+    /// A torus saved as a .che level file by the streaming build: the triangles go from the
+    /// generator straight into the file and are paired there, so that a surface larger
+    /// than memory is built (level 2).
+    #[arg(long)]
+    stream: bool,
 }
 
 /// The default size: a mesh that builds in a blink.
 const DEFAULT_COUNT: u64 = 100_000;
 
 pub fn run(options: &GenerateOptions) -> Result<ExitCode, Failure> {
+    if options.stream {
+        return stream(options);
+    }
     let data = shape_data(options)?;
     let progress = Progress::new();
     let output = &options.output;
@@ -90,6 +99,33 @@ pub fn run(options: &GenerateOptions) -> Result<ExitCode, Failure> {
         counts[0],
         counts[1],
         counts[2]
+    )?;
+    out.finish()?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `--stream`: the torus built into its level file by the streaming build.
+fn stream(options: &GenerateOptions) -> Result<ExitCode, Failure> {
+    let output = &options.output;
+    if options.shape != Shape::Torus || LevelFile::of(output) != Some(LevelFile::Surface) {
+        return Err(Failure::from(Error::invalid(format!(
+            "{}: --stream writes a torus to a .che level file",
+            output.display()
+        ))));
+    }
+    let grid = generate::TorusGrid::of(options.triangles.unwrap_or(DEFAULT_COUNT))?;
+    let progress = Progress::new();
+    progress.step(format!("streaming the build into {}", output.display()));
+    let report = save_streamed(&grid, output, StreamOptions::default())?;
+    drop(progress);
+    let mut out = Out::new();
+    writeln!(
+        out,
+        "torus -> {}: {} vertices, {} triangles, {} edges (streamed)",
+        output.display(),
+        report.input_vertices,
+        report.input_triangles,
+        report.input_edges
     )?;
     out.finish()?;
     Ok(ExitCode::SUCCESS)

@@ -106,3 +106,27 @@ fn refusals_name_the_problem_and_write_nothing() {
         assert!(!ok && stderr.contains(says), "{shape}: {stderr}");
     }
 }
+
+/// `--stream` writes the file the in-memory build saves, and refuses what it cannot write.
+#[test]
+fn a_streamed_torus_is_the_file_the_build_saves() {
+    let (streamed, built) = (path("streamed.che"), path("built.che"));
+    let (ok, _, stdout, stderr) =
+        generate(&["torus", "--triangles", "20000", "-o", &streamed, "--stream"]);
+    assert!(ok, "{stderr}");
+    assert!(stdout.contains("(streamed)"), "{stdout}");
+    let (ok, ..) = generate(&["torus", "--triangles", "20000", "-o", &built]);
+    assert!(ok);
+    assert!(std::fs::read(&streamed).unwrap() == std::fs::read(&built).unwrap());
+    assert_eq!(info(&streamed)["genus"].as_i64(), Some(1));
+    for args in [
+        ["sphere", "-o", streamed.as_str()],
+        ["torus", "-o", path("t.off").as_str()],
+    ] {
+        let mut all = args.to_vec();
+        all.push("--stream");
+        let (ok, code, _, stderr) = generate(&all);
+        assert!(!ok && code == Some(3), "{args:?}: {code:?} {stderr}");
+        assert!(stderr.contains("--stream writes a torus"), "{stderr}");
+    }
+}

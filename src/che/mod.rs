@@ -8,25 +8,26 @@
 //! canonicalises the input (degenerate triangles dropped, components oriented, non-manifold
 //! vertices split) so that the half-edge and edge ids are the same at every level.
 
-mod build;
+pub(crate) mod build;
 mod edit;
 pub mod export;
 pub mod ids;
 mod pairs;
-mod query;
-mod tables;
+pub(crate) mod query;
+pub(crate) mod tables;
 
 pub use crate::Ids;
 pub use crate::util::sparse::{Assembled, CsrSlices, SparseMatrix, Storage};
 pub use build::{
-    BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts,
-    estimated_build_bytes,
+    BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, SliceSource, SweepLimits,
+    TriangleSource, check_counts, estimated_build_bytes,
 };
 pub use edit::GarbageMaps;
 pub use export::{
     CornerTable, HalfEdgeArray, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges,
 };
 pub use ids::{first, next, prev, tri};
+pub(crate) use query::for_each_step;
 pub use query::{
     BoundaryWalk, Csr, LentStar, LentStep, Memory, Rotation, StarCursor, StarStep, Summary,
 };

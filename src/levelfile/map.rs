@@ -1,7 +1,10 @@
-//! The one `unsafe` of the level files: mapping a file into memory, read-only.
+//! The `unsafe`s of the level files: mapping a file into memory, read-only to open it, and
+//! writable to fill a new file in place (the streaming build writes arrays larger than
+//! memory straight into their sections); and giving back the resident pages of a mapping
+//! (a sweep over a file larger than memory).
 
 use crate::error::{Error, Result};
-use memmap2::Mmap;
+use memmap2::{Mmap, MmapMut, UncheckedAdvice};
 use std::path::Path;
 use std::sync::Arc;
 
@@ -22,6 +25,29 @@ pub(crate) fn map_file(path: &Path) -> Result<Arc<Mmap>> {
     // contract is stated on `Mode::Mapped` and `TOPOMESH_OPEN_MAPPED`.
     let map = unsafe { Mmap::map(&file) }.map_err(io)?;
     Ok(Arc::new(map))
+}
+
+/// The new file `file` (at `path`, for errors) mapped writable, to be filled in place.
+pub(crate) fn map_new_file_mut(file: &std::fs::File, path: &Path) -> Result<MmapMut> {
+    // SAFETY: `file` is a temporary file this process has just created exclusively
+    // (`create_new`) under a name of its own, and sized before this call; this mapping is
+    // the only one, and every access goes through the `&mut [u8]` it derefs to, bounds-
+    // checked against its length. As for `map_file`, another process that truncates or
+    // writes the temporary file while it is mapped is outside what Rust can rule out (a
+    // truncation raises SIGBUS); nothing else knows the temporary name.
+    unsafe { MmapMut::map_mut(file) }.map_err(|e| Error::io(format!("{}: {e}", path.display())))
+}
+
+/// Takes the pages of `map` out of this process's resident set; they come back from the
+/// file (usually still in the page cache) when next read.
+pub(crate) fn release(map: &Mmap) -> Result<()> {
+    // SAFETY: `map` is a read-only shared mapping of a file (`map_file`), and nothing writes
+    // through it. MADV_DONTNEED on such a mapping only drops the page-table entries: the
+    // next access faults the same bytes in again from the file, so every slice into the
+    // mapping stays valid and reads what it read before. (What memmap2 guards against with
+    // `unsafe` is a private or anonymous mapping, whose written pages would be lost.)
+    unsafe { map.unchecked_advise(UncheckedAdvice::DontNeed) }
+        .map_err(|e| Error::io(format!("giving back the pages of a mapped file: {e}")))
 }
 
 #[cfg(test)]

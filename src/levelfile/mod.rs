@@ -12,8 +12,12 @@
 mod che;
 mod chf;
 mod format;
-mod map;
+pub(crate) mod map;
+mod placed;
 mod read;
+mod stream;
+
+pub use stream::{StreamOptions, save_streamed};
 mod write;
 
 /// How much an open checks.

@@ -19,22 +19,34 @@ pub(crate) enum Data<'a> {
 }
 
 impl Data<'_> {
-    fn elem(&self) -> Elem {
+    pub(crate) fn elem(&self) -> Elem {
         match self {
             Data::U32(_) => Elem::U32,
             Data::U64(_) => Elem::U64,
             Data::Points(_) => Elem::F64,
         }
     }
-    fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         match self {
             Data::U32(x) => x.len(),
             Data::U64(x) => x.len(),
             Data::Points(x) => 3 * x.len(),
         }
     }
+    /// Writes the little-endian bytes to the start of `out`, which holds at least as many.
+    pub(crate) fn copy_to(&self, out: &mut [u8]) {
+        let mut at = 0;
+        let _ = self.bytes(&mut |b| {
+            out[at..at + b.len()].copy_from_slice(b);
+            at += b.len();
+            Ok(())
+        });
+    }
+
     /// Feeds the little-endian bytes to `out`, a chunk at a time.
-    fn bytes(&self, out: &mut dyn FnMut(&[u8]) -> std::io::Result<()>) -> std::io::Result<()> {
+    pub(crate) fn bytes(
+        &self, out: &mut dyn FnMut(&[u8]) -> std::io::Result<()>,
+    ) -> std::io::Result<()> {
         let mut buf = Vec::with_capacity(1 << 14);
         macro_rules! chunks {
             ($xs:expr, $per:expr) => {
@@ -115,27 +127,23 @@ impl<'a> Contents<'a> {
     }
 }
 
-/// The table entries (with checksums) and the file length.
-fn layout(sections: &[Section]) -> Result<(Vec<Entry>, u64)> {
+/// The table entries of sections of these names, element types and counts, one after
+/// the other from the end of the table (checksums zero), and the file length.
+pub(crate) fn place(
+    sections: impl ExactSizeIterator<Item = (String, Elem, u64)>,
+) -> Result<(Vec<Entry>, u64)> {
     let mut at = format::table_end(sections.len());
     let mut entries = Vec::with_capacity(sections.len());
-    for s in sections {
-        if s.name.len() > format::NAME_BYTES || !s.name.bytes().all(|c| c.is_ascii_graphic()) {
-            return Err(Error::invalid(format!("section name {:?}", s.name)));
+    for (name, elem, count) in sections {
+        if name.len() > format::NAME_BYTES || !name.bytes().all(|c| c.is_ascii_graphic()) {
+            return Err(Error::invalid(format!("section name {name:?}")));
         }
-        let mut hasher = crc32fast::Hasher::new();
-        s.data
-            .bytes(&mut |b| {
-                hasher.update(b);
-                Ok(())
-            })
-            .map_err(|e| Error::io(e.to_string()))?;
         let e = Entry {
-            name: s.name.clone(),
-            elem: s.data.elem(),
-            crc: hasher.finalize(),
+            name,
+            elem,
+            crc: 0,
             offset: at,
-            count: s.data.len() as u64,
+            count,
         };
         at = format::aligned(at + e.byte_len());
         entries.push(e);
@@ -143,25 +151,55 @@ fn layout(sections: &[Section]) -> Result<(Vec<Entry>, u64)> {
     Ok((entries, at))
 }
 
-/// Writes `contents` to `path`, atomically.
-pub(crate) fn save(path: &Path, contents: &Contents) -> Result<()> {
-    let (entries, file_len) = layout(&contents.sections)?;
+/// The table entries (with checksums) and the file length.
+fn layout(sections: &[Section]) -> Result<(Vec<Entry>, u64)> {
+    let shapes = sections
+        .iter()
+        .map(|s| (s.name.clone(), s.data.elem(), s.data.len() as u64));
+    let (mut entries, file_len) = place(shapes)?;
+    for (s, e) in sections.iter().zip(&mut entries) {
+        let mut hasher = crc32fast::Hasher::new();
+        s.data
+            .bytes(&mut |b| {
+                hasher.update(b);
+                Ok(())
+            })
+            .map_err(|e| Error::io(e.to_string()))?;
+        e.crc = hasher.finalize();
+    }
+    Ok((entries, file_len))
+}
+
+/// The header and the section table of a file of `entries`, as they start it.
+pub(crate) fn head(kind: Kind, level: u8, flags: u32, entries: &[Entry], file_len: u64) -> Vec<u8> {
     let table: Vec<u8> = entries.iter().flat_map(format::encode_entry).collect();
     let header = format::encode_header(
         &Header {
-            kind: contents.kind,
-            level: contents.level,
-            flags: contents.flags,
+            kind,
+            level,
+            flags,
             sections: entries.len() as u32,
             file_len,
         },
         &table,
     );
+    [&header[..], &table].concat()
+}
+
+/// Writes `contents` to `path`, atomically.
+pub(crate) fn save(path: &Path, contents: &Contents) -> Result<()> {
+    let (entries, file_len) = layout(&contents.sections)?;
+    let head = head(
+        contents.kind,
+        contents.level,
+        contents.flags,
+        &entries,
+        file_len,
+    );
     let zeros = [0u8; ALIGN as usize];
     let mut body = |w: &mut dyn Write| -> std::io::Result<()> {
-        w.write_all(&header)?;
-        w.write_all(&table)?;
-        let mut at = (header.len() + table.len()) as u64;
+        w.write_all(&head)?;
+        let mut at = head.len() as u64;
         for (s, e) in contents.sections.iter().zip(&entries) {
             w.write_all(&zeros[..(e.offset - at) as usize])?;
             s.data.bytes(&mut |b| w.write_all(b))?;

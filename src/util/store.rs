@@ -37,6 +37,14 @@ impl<T: Pod> Store<T> {
         matches!(self, Store::Mapped { .. })
     }
 
+    /// The mapping the elements live in, if they do.
+    pub(crate) fn mapping(&self) -> Option<&Mmap> {
+        match self {
+            Store::Mapped { map, .. } => Some(map),
+            Store::Owned(_) => None,
+        }
+    }
+
     /// The elements as an owned vector to write to: a mapped range is copied first, into
     /// memory reserved fallibly (`what` names the array in the error).
     pub(crate) fn to_mut(&mut self, what: &str) -> Result<&mut Vec<T>> {

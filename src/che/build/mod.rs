@@ -12,11 +12,13 @@ mod orient;
 mod report;
 mod soup;
 mod split;
+pub(crate) mod stream;
 
 pub use budget::estimated_build_bytes;
 pub use options::{BuildOptions, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts};
 pub use report::BuildReport;
 pub(crate) use split::walk_fan;
+pub use stream::{SliceSource, SweepLimits, TriangleSource};
 
 use super::Che;
 use crate::NONE;

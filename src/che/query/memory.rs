@@ -24,6 +24,17 @@ pub struct Memory {
 }
 
 impl Che {
+    /// On a structure opened mapped, takes the file's pages out of the process's resident
+    /// set: they come back from the file (usually from the page cache) when a query next
+    /// reads them. A sweep over a file larger than memory calls it every so often to keep
+    /// its resident set bounded. Nothing happens on a structure in memory.
+    pub fn release_mapped_pages(&self) -> crate::error::Result<()> {
+        match self.v.mapping() {
+            Some(map) => crate::levelfile::map::release(map),
+            None => Ok(()),
+        }
+    }
+
     pub fn memory_bytes(&self) -> Memory {
         let ints = |n: usize| 4 * n;
         let mut m = Memory {

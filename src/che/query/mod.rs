@@ -16,6 +16,7 @@ pub use bulk::Csr;
 pub(crate) use bulk::{Push, Rows};
 pub use curves::BoundaryWalk;
 pub use memory::Memory;
+pub(crate) use star::for_each_step;
 pub use star::{Rotation, StarCursor, StarStep};
 pub use star_lent::{LentStar, LentStep};
 pub use summary::Summary;

@@ -106,8 +106,9 @@ fn fill(file: File, body: Body, sync: bool) -> std::io::Result<()> {
 }
 
 /// A new file beside `target`, named after it with a tag unique to this process and call
-/// (created exclusively, so two writers never share one).
-fn create_temp(target: &Path) -> std::io::Result<(PathBuf, File)> {
+/// (created exclusively, so two writers never share one), open to read and write (a file
+/// filled in place is mapped).
+pub(crate) fn create_temp(target: &Path) -> std::io::Result<(PathBuf, File)> {
     static NEXT: AtomicU64 = AtomicU64::new(0);
     let name = target
         .file_name()
@@ -125,25 +126,31 @@ fn create_temp(target: &Path) -> std::io::Result<(PathBuf, File)> {
     ));
     let temp = folder.join(temp_name);
     let file = OpenOptions::new()
+        .read(true)
         .write(true)
         .create_new(true)
         .open(&temp)?;
     Ok((temp, file))
 }
 
+/// Renames the written `temp` over `target`, then syncs the folder so that the rename
+/// itself survives a crash (best effort: not every file system lets a folder be opened and
+/// synced, and the data is already safe). Errors name `shown`.
+pub(crate) fn rename_into_place(temp: &Path, target: &Path, shown: &Path) -> Result<()> {
+    std::fs::rename(temp, target).map_err(|e| io_error(shown, e))?;
+    if let Some(folder) = target.parent().filter(|p| !p.as_os_str().is_empty()) {
+        let _ = File::open(folder).and_then(|f| f.sync_all());
+    }
+    Ok(())
+}
+
 impl Staged {
-    /// Renames the temporary file over the target, then syncs the folder so that the
-    /// rename itself survives a crash (best effort: not every file system lets a folder
-    /// be opened and synced, and the data is already safe).
+    /// Renames the temporary file over the target ([`rename_into_place`]).
     fn commit(&self) -> Result<()> {
         let Some(temp) = &self.temp else {
             return Ok(());
         };
-        std::fs::rename(temp, &self.target).map_err(|e| io_error(&self.shown, e))?;
-        if let Some(folder) = self.target.parent().filter(|p| !p.as_os_str().is_empty()) {
-            let _ = File::open(folder).and_then(|f| f.sync_all());
-        }
-        Ok(())
+        rename_into_place(temp, &self.target, &self.shown)
     }
 
     fn discard(&self) {

@@ -12,7 +12,7 @@
 #     benchmark builds it, the arrays freed, one VV sweep over every vertex);
 #   - topomesh: `topomesh generate torus --triangles N -o DIR/torus-N.che` (generate, build
 #     at level 2 on every thread, save), then `topomesh bench DIR/torus-N.che --repeat 1
-#     --mapped-only --json` (its mapped opens, then the sweeps on the mapped file), and the
+#     --trusted-only --json` (the mapped trusted open, then the sweeps on the mapping), and the
 #     file's size;
 # each under /usr/bin/time -v: its wall-clock time, its maximum resident set, and whether it
 # was killed (signal 9: the OOM killer) or ran out of memory. A library that fails at one
@@ -50,10 +50,9 @@ trap 'rm -rf "$work"' EXIT
 files="${keep_dir:-$work/files}"
 mkdir -p "$files"
 prefix="$work/prefix"
-echo "== topomesh package -> $prefix"
-cmake -S "$root/cmake" -B "$work/pkg" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$work/pkg" >/dev/null
-cmake --install "$work/pkg" >/dev/null
+# shellcheck source=scripts/package.sh
+source "$root/scripts/package.sh"
+install_package "$root" "$prefix" "$work/pkg"
 echo "== topomesh_bench_scale (OpenMesh and CGAL compile slowly: about a minute)"
 cmake -S "$root/c-tests/diff_surface" -B "$work/diff" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
   -DTOPOMESH_MESH_DIR="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}" >/dev/null
@@ -122,7 +121,7 @@ topomesh_run() {
   fi
   gen="$run_s | $run_gib"
   bytes="$(stat -c %s "$che")"
-  timed "$topomesh" bench "$che" --repeat 1 --mapped-only --json
+  timed "$topomesh" bench "$che" --repeat 1 --trusted-only --json
   if [[ "$run_end" == ok ]]; then
     sweep="$(jq -r '.sweeps.relations[] | select(.relation == "VV") | .seconds.median' "$work/run.out")"
     echo "topomesh bench $n: opens $(jq -c '[.opens[] | {(.mode + " " + .verify): .seconds.median}] | add' \
@@ -194,8 +193,8 @@ cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
   echo "  process's VmHWM (the arrays included, as they are while a program builds)."
   echo "- topomesh: \`topomesh generate torus --triangles N -o torus-N.che\` generates the arrays, builds"
   echo "  level 2 on every thread and saves the level file: *generate s* and *peak* are that whole process's."
-  echo "  Then \`topomesh bench torus-N.che --repeat 1 --mapped-only --json\` opens the file mapped (trusted,"
-  echo "  checksums, full) and sweeps VV, VF and FF on the mapping: *VV sweep s* is its VV sweep, *bench RSS*"
+  echo "  Then \`topomesh bench torus-N.che --repeat 1 --trusted-only --json\` opens the file mapped and trusted"
+  echo "  (reading nothing) and sweeps VV, VF and FF on the mapping: *VV sweep s* is its VV sweep, *bench RSS*"
   echo "  that process's maximum resident set, where the mapped file's pages count while they are mapped."
   echo "- GiB are 2^30 bytes."
   echo

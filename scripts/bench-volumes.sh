@@ -162,10 +162,9 @@ work="$(mktemp -d "${TMPDIR:-/tmp}/topomesh-bench-vol.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
 if [[ -z "$prefix" ]]; then
   prefix="$work/prefix"
-  echo "== topomesh package -> $prefix"
-  cmake -S "$root/cmake" -B "$work/pkg" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$work/pkg" >/dev/null
-  cmake --install "$work/pkg" >/dev/null
+  # shellcheck source=scripts/package.sh
+  source "$root/scripts/package.sh"
+  install_package "$root" "$prefix" "$work/pkg"
 fi
 echo "== topomesh_bench_vol, topomesh_bench_vol_edit (the CGAL translation unit compiles slowly: about a minute)"
 # An empty build type: the only optimisation flags are the target's -O2 -DNDEBUG.

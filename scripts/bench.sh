@@ -105,10 +105,9 @@ dir="${TOPOMESH_MESH_DIR:-$HOME/.cache/topomesh/meshes}"
 work="$(mktemp -d "${TMPDIR:-/tmp}/topomesh-bench.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
 prefix="$work/prefix"
-echo "== topomesh package -> $prefix"
-cmake -S "$root/cmake" -B "$work/pkg" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$work/pkg" >/dev/null
-cmake --install "$work/pkg" >/dev/null
+# shellcheck source=scripts/package.sh
+source "$root/scripts/package.sh"
+install_package "$root" "$prefix" "$work/pkg"
 echo "== topomesh_bench (OpenMesh and CGAL compile slowly: about a minute)"
 cmake -S "$root/c-tests/diff_surface" -B "$work/diff" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
   -DTOPOMESH_MESH_DIR="$dir" >/dev/null

@@ -40,15 +40,12 @@ pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
 pub(crate) fn build(
     input: Input<'_, 4>, options: BuildOptions, progress: BuildProgress,
 ) -> Result<Chf> {
+    let (mut report, welded) = prepared(input, &options)?;
     let Input {
         elements: tets,
         n_vertices,
         positions,
-    } = input;
-    let mut report = prepared(&tets, n_vertices, &positions, &options)?;
-    let welded = crate::util::weld::weld_elements(tets, &positions, options.weld_tolerance)?;
-    report.welded_vertices = welded.welded_vertices;
-    let tets = welded.elements;
+    } = welded;
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // Steps 1 to 3.
     progress.at(0.0, "stars and orientation");
@@ -121,10 +118,16 @@ pub(crate) fn build(
     Ok(chf)
 }
 
-/// The checks before anything is allocated, and the report of the input.
-fn prepared(
-    tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: &BuildOptions,
-) -> Result<BuildReport> {
+/// The checks before anything is allocated, the report of the input, and the weld: the
+/// report and the input with its tetrahedra welded.
+fn prepared<'a>(
+    input: Input<'a, 4>, options: &BuildOptions,
+) -> Result<(BuildReport, Input<'a, 4>)> {
+    let Input {
+        elements: tets,
+        n_vertices,
+        positions,
+    } = input;
     check_input(
         options,
         &TETRAHEDRA,
@@ -137,8 +140,15 @@ fn prepared(
     (
         report.non_finite_vertices,
         report.non_finite_vertex_examples,
-    ) = crate::util::non_finite_vertices(positions);
-    Ok(report)
+    ) = crate::util::non_finite_vertices(&positions);
+    let welded = crate::util::weld::weld_elements(tets, &positions, options.weld_tolerance)?;
+    report.welded_vertices = welded.welded_vertices;
+    let welded = Input {
+        elements: welded.elements,
+        n_vertices,
+        positions,
+    };
+    Ok((report, welded))
 }
 
 /// Refuses, before allocating, a build whose estimate exceeds the memory limit.

@@ -93,7 +93,7 @@ pub fn run(options: &ConvertOptions) -> Result<ExitCode, Failure> {
     };
     progress.step(format!("writing {}", shown.display()));
     let counts = if let Some(kind) = level_file_output(options, &name, &data)? {
-        save_level_file(output, kind, std::mem::take(&mut data), &progress)?
+        save_level_file(output, kind, std::mem::take(&mut data), None, &progress)?
     } else if options.as_read {
         emit(output, &Mesh::from_data(&data), &write)?
     } else if data.is_volume() {
@@ -187,27 +187,33 @@ fn level_file_output(
     }
 }
 
-/// Builds `data` at the library's default level and saves it to `output`; the counts of
-/// the structure. The arrays are handed to the build, so that the input is not held twice
-/// (a generated mesh near the machine's memory builds).
+/// Builds `data` at `level` (`None`: the library's default) and saves it to `output`; the
+/// counts of the structure. The arrays are handed to the build, so that the input is not
+/// held twice (a generated mesh near the machine's memory builds).
 pub(crate) fn save_level_file(
-    output: &Path, kind: LevelFile, data: MeshData, progress: &Progress,
+    output: &Path, kind: LevelFile, data: MeshData, level: Option<u8>, progress: &Progress,
 ) -> Result<[usize; 3], Error> {
     let n = data.num_vertices();
     let (positions, triangles, tetrahedra) = (data.positions, data.triangles, data.tetrahedra);
-    let hook = progress.build_hook(format!("building level {}", BuildOptions::default().level));
+    let surface = BuildOptions {
+        level: level.unwrap_or(BuildOptions::default().level),
+        ..BuildOptions::default()
+    };
+    let volume = chf::BuildOptions {
+        level: level.unwrap_or(chf::BuildOptions::default().level),
+        ..chf::BuildOptions::default()
+    };
+    let hook = progress.build_hook(format!("building level {}", surface.level));
     let shown = BuildProgress::new(&hook);
     let counts = match kind {
         LevelFile::Surface => {
-            let options = BuildOptions::default();
-            let che = Che::from_vecs_with_progress(triangles, n, positions, options, shown)?;
+            let che = Che::from_vecs_with_progress(triangles, n, positions, surface, shown)?;
             progress.step(format!("writing {}", output.display()));
             che.save(output)?;
             [che.num_vertices(), che.num_triangles(), 0]
         }
         LevelFile::Volume => {
-            let options = chf::BuildOptions::default();
-            let chf = Chf::from_vecs_with_progress(tetrahedra, n, positions, options, shown)?;
+            let chf = Chf::from_vecs_with_progress(tetrahedra, n, positions, volume, shown)?;
             progress.step(format!("writing {}", output.display()));
             chf.save(output)?;
             [chf.num_vertices(), 0, chf.num_tetrahedra()]

@@ -46,6 +46,9 @@ pub struct GenerateOptions {
     /// than memory is built (level 2).
     #[arg(long)]
     stream: bool,
+    /// The level of a level file (0-3; 1 or 2 with --stream); default: the library's.
+    #[arg(long, value_name = "LEVEL")]
+    level: Option<u8>,
 }
 
 /// The default size: a mesh that builds in a blink.
@@ -79,7 +82,13 @@ pub fn run(options: &GenerateOptions) -> Result<ExitCode, Failure> {
                     "{shown}: --binary does not apply to a level file"
                 ))));
             }
-            save_level_file(output, kind, data, &progress)?
+            save_level_file(output, kind, data, options.level, &progress)?
+        }
+        None if options.level.is_some() => {
+            return Err(Failure::from(Error::invalid(format!(
+                "{}: --level applies to a level file (.che, .chf)",
+                output.display()
+            ))));
         }
         None => {
             let write = WriteOptions {
@@ -116,7 +125,11 @@ fn stream(options: &GenerateOptions) -> Result<ExitCode, Failure> {
     let grid = generate::TorusGrid::of(options.triangles.unwrap_or(DEFAULT_COUNT))?;
     let progress = Progress::new();
     progress.step(format!("streaming the build into {}", output.display()));
-    let report = save_streamed(&grid, output, StreamOptions::default())?;
+    let stream = StreamOptions {
+        level: options.level.unwrap_or(StreamOptions::default().level),
+        ..StreamOptions::default()
+    };
+    let report = save_streamed(&grid, output, stream)?;
     drop(progress);
     let mut out = Out::new();
     writeln!(

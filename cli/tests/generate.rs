@@ -130,3 +130,30 @@ fn a_streamed_torus_is_the_file_the_build_saves() {
         assert!(stderr.contains("--stream writes a torus"), "{stderr}");
     }
 }
+
+/// `--level` sets a level file's level (the header's byte 20), and is refused elsewhere.
+#[test]
+fn level_sets_the_level_of_a_level_file() {
+    for (shape, size, file, level) in [
+        ("box", "--tetrahedra", "box1.chf", "1"),
+        ("torus", "--triangles", "torus0.che", "0"),
+        ("torus", "--triangles", "torus1s.che", "1"),
+    ] {
+        let out = path(file);
+        let mut args = vec![shape, size, "3000", "-o", &out, "--level", level];
+        if file.ends_with("s.che") {
+            args.push("--stream");
+        }
+        let (ok, _, _, stderr) = generate(&args);
+        assert!(ok, "{file}: {stderr}");
+        let bytes = std::fs::read(&out).unwrap();
+        assert_eq!(bytes[20].to_string(), level, "{file}");
+    }
+    let off = path("t.off");
+    let (ok, code, _, stderr) = generate(&["torus", "-o", &off, "--level", "1"]);
+    assert!(!ok && code == Some(3), "{code:?} {stderr}");
+    assert!(
+        stderr.contains("--level applies to a level file"),
+        "{stderr}"
+    );
+}

@@ -3,6 +3,9 @@
 //! on input that needs a repair, or an order that leaves too much open, it is an error
 //! naming the place, and no file (nor a temporary one) is left.
 
+mod che_common;
+
+use che_common::{Rng, perturb, surfaces};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use topomesh::che::{SliceSource, SweepLimits};
@@ -150,4 +153,43 @@ fn input_that_needs_a_repair_is_refused_and_nothing_is_left() {
         ErrorKind::InvalidInput,
         &["level 3"],
     );
+}
+
+/// On any soup (relabelled, shuffled, flipped, with the repairs of every kind), the
+/// streaming build either refuses and leaves nothing, or writes the in-memory build's file
+/// byte for byte: it never accepts what the in-memory build would repair.
+#[test]
+fn any_soup_streams_to_the_built_file_or_is_refused() {
+    let dir = folder("soups");
+    let mut rng = Rng(17);
+    let (mut same, mut refused) = (0, 0);
+    for (tris, _) in surfaces() {
+        let n = che_common::che_n(&tris, &[]);
+        for round in 0..12 {
+            let flip = [0.0, 0.05, 0.5][round % 3];
+            let soup = perturb(&tris, n, &mut rng, flip);
+            let path = dir.join("built.che");
+            let built = Che::from_triangles(&soup, n, &[], BuildOptions::level(2)).unwrap();
+            built.save(&path).unwrap();
+            let block = [1, 5, 1 << 20][round % 3];
+            let _ = std::fs::remove_file(dir.join("streamed.che"));
+            match streamed(&dir, &soup, n, &[], options(2, block)) {
+                Ok(bytes) => {
+                    assert!(bytes == std::fs::read(&path).unwrap(), "round {round}");
+                    same += 1;
+                }
+                Err(e) => {
+                    let left = std::fs::read_dir(&dir).unwrap().count();
+                    assert_eq!(left, 1, "round {round}: {e}: only built.che stays");
+                    refused += 1;
+                }
+            }
+        }
+    }
+    println!("{same} streamed, {refused} refused");
+    assert!(
+        same > 0 && refused > 0,
+        "{same} streamed, {refused} refused"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -4,7 +4,7 @@
 //! (a sweep over a file larger than memory).
 
 use crate::error::{Error, Result};
-use memmap2::{Mmap, MmapMut, UncheckedAdvice};
+use memmap2::{Mmap, MmapMut};
 use std::path::Path;
 use std::sync::Arc;
 
@@ -39,8 +39,17 @@ pub(crate) fn map_new_file_mut(file: &std::fs::File, path: &Path) -> Result<Mmap
 }
 
 /// Takes the pages of `map` out of this process's resident set; they come back from the
+/// file (usually still in the page cache) when next read. Elsewhere than on Unix, nothing.
+#[cfg(not(unix))]
+pub(crate) fn release(_: &Mmap) -> Result<()> {
+    Ok(())
+}
+
+/// Takes the pages of `map` out of this process's resident set; they come back from the
 /// file (usually still in the page cache) when next read.
+#[cfg(unix)]
 pub(crate) fn release(map: &Mmap) -> Result<()> {
+    use memmap2::UncheckedAdvice;
     // SAFETY: `map` is a read-only shared mapping of a file (`map_file`), and nothing writes
     // through it. MADV_DONTNEED on such a mapping only drops the page-table entries: the
     // next access faults the same bytes in again from the file, so every slice into the

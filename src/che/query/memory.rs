@@ -27,7 +27,8 @@ impl Che {
     /// On a structure opened mapped, takes the file's pages out of the process's resident
     /// set: they come back from the file (usually from the page cache) when a query next
     /// reads them. A sweep over a file larger than memory calls it every so often to keep
-    /// its resident set bounded. Nothing happens on a structure in memory.
+    /// its resident set bounded. Nothing happens on a structure in memory, nor on a system other
+    /// than Unix (where the pages stay until the system wants them).
     pub fn release_mapped_pages(&self) -> crate::error::Result<()> {
         match self.v.mapping() {
             Some(map) => crate::levelfile::map::release(map),

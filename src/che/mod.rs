@@ -95,55 +95,14 @@ pub struct Che {
 }
 
 impl Che {
-    /// Builds from a triangle list over vertices `0..n_vertices`; `positions` is empty or
-    /// holds `n_vertices` points.
-    pub fn from_triangles(
-        triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-    ) -> Result<Che> {
-        let input = Input::borrowed(triangles, n_vertices, positions);
-        build::build(input, options, BuildProgress::default())
-    }
-
-    /// [`Che::from_triangles`] from arrays handed over: the triangles become `V` in place
-    /// and the positions move into the structure, so the input is not held twice (a build
-    /// near the machine's memory needs that). On an error the arrays are dropped.
-    pub fn from_vecs(
-        triangles: Vec<[u32; 3]>, n_vertices: usize, positions: Vec<DVec3>, options: BuildOptions,
-    ) -> Result<Che> {
-        Self::from_vecs_with_progress(
-            triangles,
-            n_vertices,
-            positions,
-            options,
-            BuildProgress::default(),
-        )
-    }
-
-    /// [`Che::from_vecs`], telling `progress` how far the build is after each step.
-    pub fn from_vecs_with_progress(
-        triangles: Vec<[u32; 3]>, n_vertices: usize, positions: Vec<DVec3>, options: BuildOptions,
-        progress: BuildProgress,
-    ) -> Result<Che> {
-        let input = Input::owned(triangles, n_vertices, positions);
-        build::build(input, options, progress)
-    }
-
-    /// [`Che::from_triangles`], telling `progress` how far the build is after each step.
-    pub fn from_triangles_with_progress(
-        triangles: &[[u32; 3]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-        progress: BuildProgress,
-    ) -> Result<Che> {
-        let input = Input::borrowed(triangles, n_vertices, positions);
-        build::build(input, options, progress)
-    }
-
-    /// Builds from a flat array of `3 * n` vertex ids.
-    pub fn from_flat(
-        triangles: &[u32], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-    ) -> Result<Che> {
-        let tris = as_elements::<3>(triangles, "triangle")?;
-        Self::from_triangles(tris, n_vertices, positions, options)
-    }
+    crate::util::structure::build_constructors!(
+        Che,
+        3,
+        from_triangles,
+        from_triangles_with_progress,
+        "triangles",
+        "triangle"
+    );
 
     crate::util::structure::structure_accessors!(BuildReport);
 

@@ -157,55 +157,14 @@ impl Chf {
         }
     }
 
-    /// Builds from tetrahedra over vertices `0..n_vertices`; `positions` is empty or holds
-    /// `n_vertices` points.
-    pub fn from_tetrahedra(
-        tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-    ) -> Result<Chf> {
-        let input = Input::borrowed(tets, n_vertices, positions);
-        build::build(input, options, BuildProgress::default())
-    }
-
-    /// [`Chf::from_tetrahedra`] from arrays handed over: the tetrahedra become `V` in place
-    /// and the positions move into the structure, so the input is not held twice (a build
-    /// near the machine's memory needs that). On an error the arrays are dropped.
-    pub fn from_vecs(
-        tets: Vec<[u32; 4]>, n_vertices: usize, positions: Vec<DVec3>, options: BuildOptions,
-    ) -> Result<Chf> {
-        Self::from_vecs_with_progress(
-            tets,
-            n_vertices,
-            positions,
-            options,
-            BuildProgress::default(),
-        )
-    }
-
-    /// [`Chf::from_vecs`], telling `progress` how far the build is after each step.
-    pub fn from_vecs_with_progress(
-        tets: Vec<[u32; 4]>, n_vertices: usize, positions: Vec<DVec3>, options: BuildOptions,
-        progress: BuildProgress,
-    ) -> Result<Chf> {
-        let input = Input::owned(tets, n_vertices, positions);
-        build::build(input, options, progress)
-    }
-
-    /// [`Chf::from_tetrahedra`], telling `progress` how far the build is after each step.
-    pub fn from_tetrahedra_with_progress(
-        tets: &[[u32; 4]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-        progress: BuildProgress,
-    ) -> Result<Chf> {
-        let input = Input::borrowed(tets, n_vertices, positions);
-        build::build(input, options, progress)
-    }
-
-    /// Builds from a flat array of `4 * n` vertex ids.
-    pub fn from_flat(
-        tets: &[u32], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-    ) -> Result<Chf> {
-        let quads = as_elements::<4>(tets, "tetrahedron")?;
-        Self::from_tetrahedra(quads, n_vertices, positions, options)
-    }
+    crate::util::structure::build_constructors!(
+        Chf,
+        4,
+        from_tetrahedra,
+        from_tetrahedra_with_progress,
+        "tetrahedra",
+        "tetrahedron"
+    );
 
     /// The threads `build_level` takes: the build's default for this mesh.
     fn build_threads(&self) -> usize {

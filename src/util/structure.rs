@@ -52,6 +52,65 @@ macro_rules! structure_accessors {
 }
 pub(crate) use structure_accessors;
 
+/// The constructors both structures have, for an `impl` block of `$ty` whose module has
+/// `build::build(Input, options, progress)`, `BuildOptions`, `BuildProgress`, `Input` and
+/// `as_elements` in scope: from borrowed arrays (`$from`, and `$from_progress` with a
+/// progress callback), from `Vec`s handed over (`from_vecs`, `from_vecs_with_progress`) and
+/// from a flat id array (`from_flat`); `$k` corners per element, `$what` the elements.
+macro_rules! build_constructors {
+    ($ty:ident, $k:literal, $from:ident, $from_progress:ident, $what:literal, $one:literal) => {
+        #[doc = concat!("Builds from ", $what, " over vertices `0..n_vertices`; `positions` ")]
+        #[doc = "is empty or holds `n_vertices` points."]
+        pub fn $from(
+            elements: &[[u32; $k]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
+        ) -> Result<$ty> {
+            let progress = BuildProgress::default();
+            Self::$from_progress(elements, n_vertices, positions, options, progress)
+        }
+
+        #[doc = concat!("[`", stringify!($ty), "::", stringify!($from), "`], telling ")]
+        #[doc = "`progress` how far the build is after each step."]
+        pub fn $from_progress(
+            elements: &[[u32; $k]], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
+            progress: BuildProgress,
+        ) -> Result<$ty> {
+            let input = Input::borrowed(elements, n_vertices, positions);
+            build::build(input, options, progress)
+        }
+
+        #[doc = concat!("[`", stringify!($ty), "::", stringify!($from), "`] from arrays ")]
+        #[doc = concat!("handed over: the ", $what, " become `V` in place and the positions")]
+        #[doc = "move into the structure, so the input is not held twice (a build near the"]
+        #[doc = "machine's memory needs that). On an error the arrays are dropped."]
+        pub fn from_vecs(
+            elements: Vec<[u32; $k]>, n_vertices: usize, positions: Vec<DVec3>,
+            options: BuildOptions,
+        ) -> Result<$ty> {
+            let progress = BuildProgress::default();
+            Self::from_vecs_with_progress(elements, n_vertices, positions, options, progress)
+        }
+
+        #[doc = concat!("[`", stringify!($ty), "::from_vecs`], telling `progress` how far")]
+        #[doc = "the build is after each step."]
+        pub fn from_vecs_with_progress(
+            elements: Vec<[u32; $k]>, n_vertices: usize, positions: Vec<DVec3>,
+            options: BuildOptions, progress: BuildProgress,
+        ) -> Result<$ty> {
+            let input = Input::owned(elements, n_vertices, positions);
+            build::build(input, options, progress)
+        }
+
+        #[doc = concat!("Builds from a flat array of `", $k, " * n` vertex ids.")]
+        pub fn from_flat(
+            ids: &[u32], n_vertices: usize, positions: &[DVec3], options: BuildOptions,
+        ) -> Result<$ty> {
+            let elements = as_elements::<$k>(ids, $one)?;
+            Self::$from(elements, n_vertices, positions, options)
+        }
+    };
+}
+pub(crate) use build_constructors;
+
 /// `id` below `count`, or an out-of-range error naming the element (`one` of `many`).
 #[inline]
 pub(crate) fn check_id(id: u32, count: usize, one: &str, many: &str) -> Result<()> {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The one test command. On a bare Debian 12 with Rust it installs what it needs, then runs
-# every test: formatting and lints, the Rust unit, property and integration tests (with
+# every test: formatting, lints and the API docs, the Rust unit, property and integration tests (with
 # the header drift test), a fixed-seed fuzz pass of every reader and builder, the C and C++ tests against the package installed into a
 # temporary prefix (with valgrind), and the differential tests against OpenMesh and CGAL
 # on real meshes.
@@ -18,6 +18,9 @@ python3 docs/check-links.py
 step "cargo fmt and clippy"
 cargo fmt --check
 cargo clippy --workspace --all-targets --locked -- -D warnings
+
+step "the library's API docs build with every link resolved (cargo doc)"
+RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --locked -p topomesh
 
 step "the library builds for Windows (scripts/check-windows.sh)"
 bash scripts/check-windows.sh

@@ -39,7 +39,7 @@ impl Strips {
         &self.vertices[self.offsets[k]..self.offsets[k + 1]]
     }
 
-    /// One index list, the strips separated by [`RESTART`].
+    /// One index list, the strips separated by `RESTART` (`u32::MAX`).
     pub fn with_restarts(&self) -> Vec<u32> {
         let mut out = Vec::with_capacity(self.vertices.len() + self.len());
         for k in 0..self.len() {

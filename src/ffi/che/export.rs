@@ -3,6 +3,9 @@
 //! numbers and triangle strips. Each is a size query first (`buf == NULL`, `cap == 0`)
 //! and then a fill, as the CSR calls; the layouts are stated on each call and in the
 //! core (`crate::che::export`).
+//!
+//! The docs are the C header's, for C readers: `buf[h]` is an index, not a link.
+#![allow(rustdoc::broken_intra_doc_links)]
 
 use super::CheMesh;
 use crate::che::{

@@ -10,7 +10,7 @@
 //! Positions are written so that they read back bit-exact: `{}` in the text formats, `f64`
 //! in binary PLY; binary STL stores `f32` by its specification, so STL rounds them.
 //! Built structures are written by `Che::write`, `Chf::write` and `Chf::write_boundary`
-//! (`built.rs`), the input soup by [`write`].
+//! (`built.rs`), the input soup by [`write()`](fn@write).
 
 pub(crate) mod atomic;
 mod built;

@@ -1,7 +1,7 @@
 //! The `unsafe`s of the level files: mapping a file into memory, read-only to open it, and
 //! writable to fill a new file in place (the streaming build writes arrays larger than
-//! memory straight into their sections); and giving back the resident pages of a mapping
-//! (a sweep over a file larger than memory).
+//! memory straight into their sections), with its disk blocks reserved first; and giving
+//! back the resident pages of a mapping (a sweep over a file larger than memory).
 
 use crate::error::{Error, Result};
 use memmap2::{Mmap, MmapMut};
@@ -36,6 +36,31 @@ pub(crate) fn map_new_file_mut(file: &std::fs::File, path: &Path) -> Result<Mmap
     // writes the temporary file while it is mapped is outside what Rust can rule out (a
     // truncation raises SIGBUS); nothing else knows the temporary name.
     unsafe { MmapMut::map_mut(file) }.map_err(|e| Error::io(format!("{}: {e}", path.display())))
+}
+
+/// Reserves the disk blocks of the first `len` bytes of `file` (at `path`, for errors), so
+/// that filling them through a mapping cannot fail for want of space: a full disk would
+/// then raise SIGBUS, which ends the process, where here it is an error naming the file.
+/// Linux only; elsewhere the mapping is written unreserved.
+#[cfg(target_os = "linux")]
+pub(crate) fn reserve(file: &std::fs::File, len: u64, path: &Path) -> Result<()> {
+    use std::os::fd::AsRawFd;
+    let room =
+        |e: std::io::Error| Error::io(format!("{}: no room for {len} bytes: {e}", path.display()));
+    let n = libc::off_t::try_from(len)
+        .map_err(|_| room(std::io::Error::from_raw_os_error(libc::EFBIG)))?;
+    // SAFETY: posix_fallocate reads and writes no memory of this process: it takes the
+    // descriptor of a file held open (borrowed for the call) and two integers.
+    let rc = unsafe { libc::posix_fallocate(file.as_raw_fd(), 0, n) };
+    match rc {
+        0 => Ok(()),
+        e => Err(room(std::io::Error::from_raw_os_error(e))),
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+pub(crate) fn reserve(_: &std::fs::File, _: u64, _: &Path) -> Result<()> {
+    Ok(())
 }
 
 /// Takes the pages of `map` out of this process's resident set; they come back from the

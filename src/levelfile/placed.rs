@@ -53,7 +53,8 @@ impl Placed {
         let io = |e: std::io::Error| Error::io(format!("{}: {e}", path.display()));
         let (temp, file) = create_temp(path).map_err(io)?;
         let sized = file.set_len(file_len).map_err(io);
-        let map = sized.and_then(|()| super::map::map_new_file_mut(&file, path));
+        let reserved = sized.and_then(|()| super::map::reserve(&file, file_len, path));
+        let map = reserved.and_then(|()| super::map::map_new_file_mut(&file, path));
         let map = map.inspect_err(|_| {
             let _ = std::fs::remove_file(&temp);
         })?;
@@ -164,5 +165,40 @@ impl Drop for Placed {
         if !self.temp.as_os_str().is_empty() {
             let _ = std::fs::remove_file(&self.temp);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The file's blocks are reserved before anything is written through the mapping, and
+    /// a file that is not finished is removed.
+    #[test]
+    fn a_laid_out_file_has_its_room_and_goes_unless_finished() {
+        let dir = std::env::temp_dir().join(format!("topomesh-placed-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("x.che");
+        let parts = [Part::Later {
+            name: "V".to_string(),
+            elem: Elem::U32,
+            count: 1 << 20,
+        }];
+        let placed = Placed::create(&path, (Kind::Che, 0, 0), &parts).unwrap();
+        let meta = std::fs::metadata(&placed.temp).unwrap();
+        assert_eq!(meta.len(), placed.file_len);
+        #[cfg(target_os = "linux")]
+        {
+            use std::os::unix::fs::MetadataExt;
+            assert!(
+                meta.blocks() * 512 >= placed.file_len,
+                "{} blocks",
+                meta.blocks()
+            );
+        }
+        let temp = placed.temp.clone();
+        drop(placed);
+        assert!(!temp.exists() && !path.exists());
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -19,7 +19,9 @@
 # size is not run at the larger ones. Builds and installs the package into a temporary
 # prefix and builds topomesh_bench_scale against it, as scripts/bench.sh does.
 #
-# --sizes: the sizes (default "10000000 50000000 100000000 200000000 400000000"). --dir:
+# --sizes: the sizes (default "10000000 50000000 100000000 200000000 400000000").
+# --stream-sizes: sizes for topomesh's streaming build alone (`generate --stream`; none by
+# default), in a table of their own. --dir:
 # where the .che files go, kept there (default: a temporary directory, each file removed
 # after its size; a level-2 file takes about 38 bytes per triangle). --limit-gb G: run each
 # process under `ulimit -v` of G GiB, so that it fails with "out of memory" instead of
@@ -30,14 +32,16 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cmdline="scripts/bench-scale.sh${*:+ $*}"
 sizes=(10000000 50000000 100000000 200000000 400000000)
+stream_sizes=()
 keep_dir=""
 limit_gb=""
 while (($#)); do
   case "$1" in
     --sizes) read -r -a sizes <<<"$2"; shift 2 ;;
+    --stream-sizes) read -r -a stream_sizes <<<"$2"; shift 2 ;;
     --dir) keep_dir="$2"; shift 2 ;;
     --limit-gb) limit_gb="$2"; shift 2 ;;
-    -h|--help) sed -n 2,26p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,29p "$0"; exit 0 ;;
     *) echo "bench-scale.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -104,15 +108,16 @@ peer_run() {
   return 1
 }
 
-# topomesh at size $1: generate (and save), then bench the file; cells (generate s | peak
-# GiB | VV sweep s | bench max RSS GiB | file GiB) into $work/cells.topomesh, its lines
-# into $work/lines.md; returns 1 when generate failed.
+# topomesh at size $1 (with $2 = --stream, by the streaming build): generate (and save),
+# then bench the file; cells (generate s | peak GiB | VV sweep s | bench max RSS GiB | file
+# GiB) into $work/cells.topomesh, its lines into $work/lines.md; returns 1 when generate
+# failed.
 topomesh_run() {
-  local n="$1" che="$files/torus-$1.che" gen bytes sweep
-  echo "== topomesh, $n triangles"
-  timed "$topomesh" generate torus --triangles "$n" -o "$che"
-  echo "topomesh generate $n: $(cat "$work/run.out") (/usr/bin/time: ${run_s} s, max RSS ${run_gib} GiB," \
-    "$run_end)" >>"$work/lines.md"
+  local n="$1" how="${2:-}" che="$files/torus-$1${2:+-streamed}.che" gen bytes sweep
+  echo "== topomesh, $n triangles${how:+ ($how)}"
+  timed "$topomesh" generate torus --triangles "$n" -o "$che" ${how:+"$how"}
+  echo "topomesh generate $n${how:+ $how}: $(cat "$work/run.out") (/usr/bin/time: ${run_s} s," \
+    "max RSS ${run_gib} GiB, $run_end)" >>"$work/lines.md"
   sed -n 's/.* \([0-9]*\) triangles,.*/\1/p' "$work/run.out" >>"$work/tris"
   if [[ "$run_end" != ok ]]; then
     echo "$run_end | $run_gib | – | – | –" >"$work/cells.topomesh"
@@ -156,8 +161,21 @@ run_all() {
   done
 }
 
+# Every --stream-sizes size, topomesh alone: the rows into $work/stream_rows.md.
+run_streamed() {
+  : >"$work/stream_rows.md"
+  local n
+  for n in "${stream_sizes[@]}"; do
+    : >"$work/tris"
+    topomesh_run "$n" --stream || true
+    echo "| $(head -1 "$work/tris" | grep . || echo "$n") | $(cat "$work/cells.topomesh") |" \
+      >>"$work/stream_rows.md"
+  done
+}
+
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 run_all
+run_streamed
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 # The machine and the toolchain, then the page.
@@ -210,6 +228,16 @@ cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
   echo "| triangles | OpenMesh build s | OpenMesh peak GiB | OpenMesh VV sweep s | CGAL build s | CGAL peak GiB | CGAL VV sweep s | topomesh generate s | topomesh peak GiB | topomesh VV sweep s | topomesh bench RSS GiB | .che file GiB |"
   echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   cat "$work/rows.md"
+  if ((${#stream_sizes[@]})); then
+    echo
+    echo "The streaming build (\`topomesh generate torus --triangles N -o F.che --stream\`: the triangles"
+    echo "go from the generator into the file, paired there; the resident set counts the file's mapped"
+    echo "pages, which the system writes back and drops as memory fills), swept as above:"
+    echo
+    echo "| triangles | generate s | peak GiB | VV sweep s | bench RSS GiB | .che file GiB |"
+    echo "|---:|---:|---:|---:|---:|---:|"
+    cat "$work/stream_rows.md"
+  fi
   echo
   echo "What each run printed:"
   echo

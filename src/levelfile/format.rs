@@ -148,6 +148,24 @@ pub(crate) fn table_crc(header: &[u8], table: &[u8]) -> u32 {
     hasher.finalize()
 }
 
+/// The CRC-32 of a section's bytes, its parts hashed on every thread the machine runs and
+/// combined in order (the same value as one pass): a full open checks every byte of the
+/// file, and one thread would make the checksums a large share of it.
+pub(crate) fn section_crc(bytes: &[u8]) -> u32 {
+    let threads = crate::util::par::planned_threads(0, bytes.len() / 16);
+    let part = bytes.len().div_ceil(threads.max(1)).max(1);
+    let hashed = crate::util::par::run_all(bytes.chunks(part).collect(), |c| {
+        let mut hasher = crc32fast::Hasher::new();
+        hasher.update(c);
+        hasher
+    });
+    let mut all = crc32fast::Hasher::new();
+    for h in &hashed {
+        all.combine(h);
+    }
+    all.finalize()
+}
+
 pub(crate) fn encode_entry(e: &Entry) -> [u8; ENTRY_BYTES] {
     let mut b = [0u8; ENTRY_BYTES];
     b[..e.name.len()].copy_from_slice(e.name.as_bytes());

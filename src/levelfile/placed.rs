@@ -137,7 +137,7 @@ impl Placed {
     /// renames the file into place.
     pub(crate) fn finish(mut self) -> Result<()> {
         for i in 0..self.entries.len() {
-            let crc = crc32fast::hash(self.bytes_mut(i));
+            let crc = super::format::section_crc(self.bytes_mut(i));
             self.entries[i].crc = crc;
         }
         let head = head(

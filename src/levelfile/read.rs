@@ -214,7 +214,7 @@ impl LevelFile {
             ));
         }
         let bytes = &self.bytes[e.offset as usize..(e.offset + e.byte_len()) as usize];
-        if self.checksums && crc32fast::hash(bytes) != e.crc {
+        if self.checksums && format::section_crc(bytes) != e.crc {
             return Err(format::bad(
                 e.offset,
                 format!("section {name} fails its checksum"),

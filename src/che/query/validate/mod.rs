@@ -1,10 +1,12 @@
 //! The invariants of every level, checked: [`Che::validate`] returns the first violation
 //! with the element and what is wrong. O(T) time and memory.
 
-use super::star::for_each_step;
+mod named;
+mod sweep;
+
 use crate::NONE;
 use crate::che::Che;
-use crate::che::ids::{next, tri};
+use crate::che::ids::tri;
 use crate::che::tables::is_canonical;
 use crate::error::{Error, Result};
 use crate::util::alloc::try_vec;
@@ -18,56 +20,6 @@ fn broken(what: String) -> Result<()> {
 /// `Err` unless `xs` increases strictly and stays below `n`.
 fn increasing_below(xs: &[u32], n: usize, name: &str) -> Result<()> {
     increasing_below_violation(xs, n, name).map_or(Ok(()), broken)
-}
-
-/// What is wrong with `O[h]`, if anything: it must pair `h` with a live half-edge on
-/// the same vertex pair run the other way, whose `O` is `h` (`NONE` on the boundary).
-#[inline]
-fn o_violation(v: &[u32], o: &[u32], h: usize) -> Option<String> {
-    let g = o[h];
-    // A removed half-edge (V = NONE, on an edited CHE) pairs with nothing.
-    if v[h] == NONE && g != NONE {
-        return Some(format!("removed half-edge {h} has O = {g}"));
-    }
-    if v[h] == NONE || g == NONE {
-        return None;
-    }
-    let h32 = h as u32;
-    if g as usize >= o.len() || g == h32 || o[g as usize] != h32 || v[g as usize] == NONE {
-        return Some(format!("O[{h}] = {g}: not an involution"));
-    }
-    if v[g as usize] != v[next(h32) as usize] || v[next(g) as usize] != v[h] {
-        return Some(format!(
-            "O[{h}] = {g}: not the same vertex pair run the other way"
-        ));
-    }
-    None
-}
-
-/// What is wrong with `VH[x]`, if anything, for a vertex with `degree` outgoing
-/// half-edges, one of them on the boundary when `on_boundary`.
-#[inline]
-fn vh_violation(
-    (v, o, vh): (&[u32], &[u32], &[u32]), x: usize, degree: u32, on_boundary: bool,
-) -> Option<String> {
-    let h = vh[x];
-    if h == NONE {
-        return (degree != 0).then(|| format!("VH[{x}] is NONE but vertex {x} has half-edges"));
-    }
-    if h as usize >= v.len() || v[h as usize] as usize != x {
-        return Some(format!("VH[{x}] = {h} does not start at vertex {x}"));
-    }
-    if on_boundary && o[h as usize] != NONE {
-        return Some(format!(
-            "VH[{x}] = {h} is not the boundary half-edge of a boundary vertex"
-        ));
-    }
-    let mut steps = 0u32;
-    for_each_step(o, h, |s| {
-        steps += matches!(s, super::StarStep::Out(_)) as u32
-    });
-    (steps != degree)
-        .then(|| format!("the rotation of vertex {x} meets {steps} of its {degree} half-edges"))
 }
 
 impl Che {
@@ -128,21 +80,10 @@ impl Che {
                 self.v.len()
             ));
         }
-        if let Some((h, &x)) = self
-            .v
-            .iter()
-            .enumerate()
-            .find(|&(_, &x)| x as usize >= self.n_vertices)
-        {
-            return broken(format!(
-                "V[{h}] = {x} is not a vertex (the mesh has {})",
-                self.n_vertices
-            ));
-        }
-        for (t, c) in self.v.chunks_exact(3).enumerate() {
-            if c[0] == c[1] || c[1] == c[2] || c[0] == c[2] {
-                return broken(format!("triangle {t} is degenerate ({c:?})"));
-            }
+        if !sweep::triangles_hold(&self.v, self.n_vertices) {
+            return broken(self.first_v_violation().unwrap_or_else(|| {
+                "V holds a triangle that is not three distinct vertices".into()
+            }));
         }
         increasing_below(&self.non_manifold, self.v.len(), "non-manifold half-edge")?;
         increasing_below(&self.seams, self.v.len(), "seam half-edge")
@@ -157,15 +98,26 @@ impl Che {
                 v.len()
             ));
         }
-        // The pairs are checked on every thread the machine runs (random reads of `O` and
-        // `V`: the checks of a full open), the first violation reported whatever the split.
-        let threads = crate::util::par::planned_threads(0, self.num_triangles());
-        let found = crate::util::par::first_found(o.len(), threads, |hs| {
-            hs.into_iter().find_map(|h| o_violation(v, o, h))
-        });
-        if let Some(what) = found {
-            return broken(what);
+        let edges = match sweep::pairs_hold(v, o) {
+            Some(edges) => edges,
+            None => {
+                let what = self.first_o_violation();
+                return broken(what.unwrap_or_else(|| "O breaks the pairing".into()));
+            }
+        };
+        self.validate_flagged()?;
+        if edges != self.num_live_edges() {
+            return broken(format!(
+                "{edges} edges in O, {} counted",
+                self.num_live_edges()
+            ));
         }
+        Ok(())
+    }
+
+    /// The half-edges flagged non-manifold or seams: live, and unpaired.
+    fn validate_flagged(&self) -> Result<()> {
+        let (v, o) = (&self.v, &self.o);
         for &h in self.non_manifold.iter().chain(&self.seams) {
             if v.get(h as usize).is_none_or(|&x| x == NONE) {
                 return broken(format!("flagged half-edge {h} is out of range or removed"));
@@ -177,7 +129,7 @@ impl Che {
                 ));
             }
         }
-        self.validate_edge_count(o)
+        Ok(())
     }
 
     /// The live edges of `o` (the canonical half-edges of live triangles) are the count.
@@ -204,21 +156,12 @@ impl Che {
                 self.n_vertices
             ));
         }
-        // Outgoing half-edges per vertex, and whether one is on the boundary.
-        let mut degree = try_vec(self.n_vertices, 0u32, "the vertex degrees")?;
-        let mut on_boundary = try_vec(self.n_vertices, false, "the boundary vertices")?;
-        // Removed half-edges (V = NONE, on an edited CHE) belong to no vertex.
-        for (h, &x) in v.iter().enumerate().filter(|&(_, &x)| x != NONE) {
-            degree[x as usize] += 1;
-            on_boundary[x as usize] |= o[h] == NONE;
+        let live = self.edits().map_or(v.len(), |st| 3 * st.live_triangles);
+        if sweep::rotations_cover(v, o, vh, live) {
+            return Ok(());
         }
-        // Each rotation walked on every thread the machine runs, as the pairs are.
-        let threads = crate::util::par::planned_threads(0, self.num_triangles());
-        let found = crate::util::par::first_found(vh.len(), threads, |xs| {
-            xs.into_iter()
-                .find_map(|x| vh_violation((v, o, vh), x, degree[x], on_boundary[x]))
-        });
-        found.map_or(Ok(()), broken)
+        let what = self.first_vh_violation()?;
+        broken(what.unwrap_or_else(|| "the rotations from VH do not cover the half-edges".into()))
     }
 
     fn validate_edges(&self) -> Result<()> {
@@ -231,20 +174,14 @@ impl Che {
                 self.num_edges
             ));
         }
-        if let Some(h) = (0..o.len()).find(|&h| self.edge_bits.get(h) != is_canonical(o, h)) {
-            return broken(format!("the edge directory flags half-edge {h} wrongly"));
+        let bits = &self.edge_bits;
+        if sweep::edge_directory_holds(o, &self.eh, |h| bits.get(h), |h| bits.rank(h)) {
+            return Ok(());
         }
-        for (e, &h) in self.eh.iter().enumerate() {
-            if h as usize >= o.len()
-                || !is_canonical(o, h as usize)
-                || self.edge_bits.rank(h as usize) != e
-            {
-                return broken(format!(
-                    "EH[{e}] = {h} is not the canonical half-edge of edge {e}"
-                ));
-            }
-        }
-        Ok(())
+        broken(
+            self.first_edge_violation()
+                .unwrap_or_else(|| "EH does not list the canonical half-edges in order".into()),
+        )
     }
 
     fn validate_curves(&self) -> Result<()> {

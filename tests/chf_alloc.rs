@@ -8,7 +8,9 @@
 //!   measures the same with the resident set; this catches a change that raises the peak
 //!   on any machine;
 //! - a surface built from `Vec`s handed over peaks within 1.3 times its structure plus its
-//!   input.
+//!   input;
+//! - a level file opened loaded is read into its arrays once: the open's heap peak is the
+//!   structure's, not the file's bytes on top of it.
 //!
 //! The heap counters are global, because the build allocates on threads of its own too;
 //! the tests take a lock so that they do not run (and count) at the same time on libtest's
@@ -186,6 +188,68 @@ fn che_build_from_vecs_peaks_within_1_3_structures_plus_the_input() {
         );
         drop(che);
     }
+}
+
+/// A loaded open reads each section straight into its array: the heap peak of a loaded
+/// open (CHE at level 3 verified, CHF at level 2 trusted: its full verification builds
+/// tables of its own) stays within 1.1 times what the opened structure holds plus the
+/// read buffer, where reading the whole file first would hold the file's bytes as well.
+#[test]
+fn a_loaded_open_holds_the_file_once() {
+    use topomesh::levelfile::{OpenOptions, Verify};
+    let _one_at_a_time = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let dir = std::env::temp_dir();
+    let (che_path, chf_path) = (
+        dir.join(format!("topomesh-alloc-{}.che", std::process::id())),
+        dir.join(format!("topomesh-alloc-{}.chf", std::process::id())),
+    );
+    let s = topomesh::generate::torus(300, 200);
+    let options = topomesh::BuildOptions::level(3);
+    topomesh::Che::from_triangles(&s.triangles, s.positions.len(), &s.positions, options)
+        .unwrap()
+        .save(&che_path)
+        .unwrap();
+    let v = topomesh::generate::cube_grid(24);
+    let options = topomesh::BuildOptions::level(2);
+    topomesh::Chf::from_tetrahedra(&v.tetrahedra, v.positions.len(), &v.positions, options)
+        .unwrap()
+        .save(&chf_path)
+        .unwrap();
+    let loaded = OpenOptions::loaded(Verify::Full);
+    let before = CURRENT.load(SeqCst);
+    let (che, peak) = heap_peak(|| topomesh::Che::open(&che_path, loaded).unwrap());
+    let held = CURRENT.load(SeqCst) - before;
+    check_loaded_peak(
+        "CHE",
+        peak,
+        held,
+        std::fs::metadata(&che_path).unwrap().len(),
+    );
+    drop(che);
+    let before = CURRENT.load(SeqCst);
+    let loaded = OpenOptions::loaded(Verify::Trusted);
+    let (chf, peak) = heap_peak(|| topomesh::Chf::open(&chf_path, loaded).unwrap());
+    let held = CURRENT.load(SeqCst) - before;
+    check_loaded_peak(
+        "CHF",
+        peak,
+        held,
+        std::fs::metadata(&chf_path).unwrap().len(),
+    );
+    drop(chf);
+    let _ = (
+        std::fs::remove_file(che_path),
+        std::fs::remove_file(chf_path),
+    );
+}
+
+fn check_loaded_peak(what: &str, peak: isize, held: isize, file: u64) {
+    println!("{what}: loaded open peak {peak} B, structure {held} B, file {file} B");
+    let bound = 1.1 * held as f64 + (1 << 20) as f64;
+    assert!(
+        (peak as f64) <= bound,
+        "{what}: peak {peak} B > 1.1 x {held} B + 1 MiB (the file has {file} B)"
+    );
 }
 
 /// The heap a build allocates (peak above what was held before) and its result.

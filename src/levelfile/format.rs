@@ -188,9 +188,10 @@ pub(crate) fn bad(at: u64, what: impl std::fmt::Display) -> Error {
     Error::parse(format!("byte {at}: {what}"))
 }
 
-/// The header of `file` (the whole file's bytes), checked against `expected` and the
-/// file's length; the table checksum is checked by the caller, which has the table.
-pub(crate) fn decode_header(file: &[u8], expected: Kind) -> Result<Header> {
+/// The header at the start of `file` (the file's bytes, at least its header when it has
+/// one), checked against `expected` and the file's length `len`; the table checksum is
+/// checked by the caller, which has the table.
+pub(crate) fn decode_header(file: &[u8], len: u64, expected: Kind) -> Result<Header> {
     if file.len() < HEADER_BYTES {
         return Err(bad(
             file.len() as u64,
@@ -244,25 +245,20 @@ pub(crate) fn decode_header(file: &[u8], expected: Kind) -> Result<Header> {
         sections: u32_at(b, 28),
         file_len: u64_at(b, 32),
     };
-    if header.file_len != file.len() as u64 {
+    if header.file_len != len {
         return Err(bad(
             32,
             format!(
-                "the header says {} bytes, the file has {}",
+                "the header says {} bytes, the file has {len}",
                 header.file_len,
-                file.len()
             ),
         ));
     }
     let table = (header.sections as u64) * ENTRY_BYTES as u64;
-    if HEADER_BYTES as u64 + table > file.len() as u64 {
+    if HEADER_BYTES as u64 + table > len {
         return Err(bad(
             28,
-            format!(
-                "{} sections do not fit in {} bytes",
-                header.sections,
-                file.len()
-            ),
+            format!("{} sections do not fit in {len} bytes", header.sections),
         ));
     }
     Ok(header)

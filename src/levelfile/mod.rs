@@ -38,7 +38,8 @@ pub enum Verify {
 /// Where the arrays of an opened level file live.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Mode {
-    /// Read into owned arrays: the file can go away, and the structure is editable.
+    /// Read into owned arrays, each section straight into its own (the open never holds
+    /// the file's bytes beside them): the file can go away, and the structure is editable.
     #[default]
     Loaded,
     /// Memory-mapped, read-only and zero-copy: the structure's big arrays (`V`, `O`, `VH`,

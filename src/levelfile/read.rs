@@ -2,30 +2,46 @@
 //! the file's length before any section is touched, each section against its checksum
 //! (unless trusted) when it is taken, and every length against the counts by the caller
 //! (`che.rs`, `chf.rs`) before anything is indexed. A mapped file lends its sections as
-//! they lie (`Store::Mapped`); a loaded one copies them out.
+//! they lie (`Store::Mapped`); a loaded one reads each section straight into its array,
+//! in chunks checksummed while they are in cache, so that opening a file never holds it
+//! twice.
 
 use super::format::{self, Elem, Entry, HEADER_BYTES, Header, Kind};
 use super::{Mode, OpenOptions, Verify};
 use crate::error::{Error, Result};
 use crate::util::store::Store;
+use bytemuck::Pod;
 use memmap2::Mmap;
-use std::io::Read;
+use std::fs::File;
+use std::io::{Read, Seek, SeekFrom};
 use std::ops::Deref;
 use std::path::Path;
 use std::sync::Arc;
 
-/// The bytes of a level file: read into memory, or mapped.
+/// The bytes of a level file: mapped, or (a loaded open) its header and section table read
+/// and the sections still in the file.
 pub(crate) enum Bytes {
-    Owned(Vec<u8>),
     Mapped(Arc<Mmap>),
+    File { file: File, head: Vec<u8>, len: u64 },
+}
+
+impl Bytes {
+    /// The length of the whole file.
+    fn file_len(&self) -> u64 {
+        match self {
+            Bytes::File { len, .. } => *len,
+            _ => self.len() as u64,
+        }
+    }
 }
 
 impl Deref for Bytes {
     type Target = [u8];
+    /// The bytes in memory: the whole file mapped, or the header and table of a loaded one.
     fn deref(&self) -> &[u8] {
         match self {
-            Bytes::Owned(b) => b,
             Bytes::Mapped(m) => m,
+            Bytes::File { head, .. } => head,
         }
     }
 }
@@ -43,29 +59,29 @@ fn io_error(path: &Path, e: std::io::Error) -> Error {
     Error::io(format!("{}: {e}", path.display()))
 }
 
-/// The whole file, in a buffer sized by the file's own length.
-fn read_bytes(path: &Path) -> Result<Vec<u8>> {
-    let mut file = std::fs::File::open(path).map_err(|e| io_error(path, e))?;
-    let len = file.metadata().map_err(|e| io_error(path, e))?.len();
-    let mut bytes = Vec::new();
-    usize::try_from(len)
-        .ok()
-        .and_then(|n| bytes.try_reserve_exact(n).ok())
-        .ok_or_else(|| {
-            Error::too_large(format!(
-                "{}: {len} bytes do not fit in memory",
-                path.display()
-            ))
-        })?;
-    file.read_to_end(&mut bytes)
-        .map_err(|e| io_error(path, e))?;
-    Ok(bytes)
+/// The file at `path` opened, with its header and section table read (as much of them as
+/// the file holds: `decode_header` says what is missing).
+fn read_head(path: &Path) -> Result<Bytes> {
+    let io = |e| io_error(path, e);
+    let mut file = File::open(path).map_err(io)?;
+    let len = file.metadata().map_err(io)?.len();
+    let mut head = vec![0u8; (HEADER_BYTES as u64).min(len) as usize];
+    file.read_exact(&mut head).map_err(io)?;
+    if head.len() == HEADER_BYTES {
+        let sections = u32::from_le_bytes([head[28], head[29], head[30], head[31]]);
+        let end = HEADER_BYTES as u64 + u64::from(sections) * format::ENTRY_BYTES as u64;
+        if end <= len {
+            head.resize(end as usize, 0);
+            file.read_exact(&mut head[HEADER_BYTES..]).map_err(io)?;
+        }
+    }
+    Ok(Bytes::File { file, head, len })
 }
 
 impl LevelFile {
     pub(crate) fn open(path: &Path, kind: Kind, options: OpenOptions) -> Result<LevelFile> {
         let bytes = match options.mode {
-            Mode::Loaded => Bytes::Owned(read_bytes(path)?),
+            Mode::Loaded => read_head(path)?,
             Mode::Mapped => Bytes::Mapped(super::map::map_file(path)?),
         };
         Self::parse(bytes, kind, options)
@@ -73,7 +89,7 @@ impl LevelFile {
     }
 
     pub(crate) fn parse(bytes: Bytes, kind: Kind, options: OpenOptions) -> Result<LevelFile> {
-        let header = format::decode_header(&bytes, kind)?;
+        let header = format::decode_header(&bytes, bytes.file_len(), kind)?;
         let n = header.sections as usize;
         let table = &bytes[HEADER_BYTES..HEADER_BYTES + n * format::ENTRY_BYTES];
         let checksums = options.verify != Verify::Trusted;
@@ -127,12 +143,7 @@ impl LevelFile {
     /// Section `name` of `u32`s, holding exactly `expected` elements (checked before its
     /// checksum, so that the error says what is wrong).
     pub(crate) fn u32s(&self, name: &str, expected: usize) -> Result<Vec<u32>> {
-        let (e, b) = self.checked(name, Elem::U32, expected)?;
-        collect(
-            e,
-            b.chunks_exact(4)
-                .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])),
-        )
+        self.elements(self.checked(name, Elem::U32, expected)?, 1)
     }
 
     /// Section `name` of `u32`s, of any length (the file's size bounds it).
@@ -142,45 +153,30 @@ impl LevelFile {
     }
 
     pub(crate) fn u64s(&self, name: &str, expected: usize) -> Result<Vec<u64>> {
-        let (e, b) = self.checked(name, Elem::U64, expected)?;
-        collect(
-            e,
-            b.chunks_exact(8)
-                .map(|c| u64::from_le_bytes(c.try_into().unwrap_or_default())),
-        )
+        self.elements(self.checked(name, Elem::U64, expected)?, 1)
     }
 
     /// Section `name` of `T`s (stored as `elem`), holding exactly `expected` elements of
     /// `T` (`width` file elements each): lent from a mapped file as it lies when the host
-    /// is little-endian, else copied out.
-    pub(crate) fn store<T: bytemuck::Pod>(
+    /// is little-endian, else read or copied out.
+    pub(crate) fn store<T: Pod>(
         &self, name: &str, elem: Elem, expected: usize, width: usize,
     ) -> Result<Store<T>> {
         debug_assert_eq!(size_of::<T>() as u64, width as u64 * elem.size());
         let count = expected
             .checked_mul(width)
             .ok_or_else(|| Error::parse(format!("section {name}: {expected} elements")))?;
-        let (e, b) = self.checked(name, elem, count)?;
+        let e = self.checked(name, elem, count)?;
         if let Bytes::Mapped(map) = &self.bytes
             && cfg!(target_endian = "little")
         {
             let start = e.offset as usize;
-            if let Some(s) = Store::mapped(map, start..start + b.len()) {
+            let len = self.in_memory(e)?.len();
+            if let Some(s) = Store::mapped(map, start..start + len) {
                 return Ok(s);
             }
         }
-        let mut out = Vec::new();
-        out.try_reserve_exact(expected).map_err(|_| {
-            Error::too_large(format!(
-                "section {}: {} elements do not fit in memory",
-                e.name, e.count
-            ))
-        })?;
-        out.extend(
-            b.chunks_exact(size_of::<T>())
-                .map(|c| from_le::<T>(c, elem.size() as usize)),
-        );
-        Ok(Store::Owned(out))
+        Ok(Store::Owned(self.elements(e, width)?))
     }
 
     /// Section `name` of `u32` ids, `expected` of them, as [`LevelFile::store`] lends them.
@@ -202,7 +198,8 @@ impl LevelFile {
             .ok_or_else(|| Error::parse(format!("section {name} is missing")))
     }
 
-    fn checked(&self, name: &str, elem: Elem, expected: usize) -> Result<(&Entry, &[u8])> {
+    /// The entry of section `name`, of element type `elem`, holding `expected` elements.
+    fn checked(&self, name: &str, elem: Elem, expected: usize) -> Result<&Entry> {
         let e = self.section(name, elem)?;
         if e.count != expected as u64 {
             return Err(format::bad(
@@ -213,14 +210,78 @@ impl LevelFile {
                 ),
             ));
         }
-        let bytes = &self.bytes[e.offset as usize..(e.offset + e.byte_len()) as usize];
+        Ok(e)
+    }
+
+    fn checksum_failed(e: &Entry) -> Error {
+        format::bad(e.offset, format!("section {} fails its checksum", e.name))
+    }
+
+    /// The bytes of section `e` of a mapped file, checked against its checksum.
+    fn in_memory(&self, e: &Entry) -> Result<&[u8]> {
+        let bytes = usize::try_from(e.offset)
+            .ok()
+            .zip(usize::try_from(e.offset + e.byte_len()).ok())
+            .and_then(|(a, b)| self.bytes.get(a..b))
+            .ok_or_else(|| format::bad(e.offset, format!("section {} is not in memory", e.name)))?;
         if self.checksums && format::section_crc(bytes) != e.crc {
-            return Err(format::bad(
-                e.offset,
-                format!("section {name} fails its checksum"),
-            ));
+            return Err(Self::checksum_failed(e));
         }
-        Ok((e, bytes))
+        Ok(bytes)
+    }
+
+    /// Section `e` of a loaded file, read in chunks from the file: each goes into the
+    /// checksum while it is in cache, then to `take`; the checksum is compared at the end.
+    fn read_section(&self, file: &File, e: &Entry, mut take: impl FnMut(&[u8])) -> Result<()> {
+        // A multiple of every element's size (4, 8, and 24 for a point).
+        const CHUNK: usize = 3 << 18;
+        let io = |err: std::io::Error| format::bad(e.offset, format!("section {}: {err}", e.name));
+        let mut words = vec![0u64; CHUNK / 8];
+        // Aligned for every element type, so that `take` can cast instead of copying.
+        let buf: &mut [u8] = bytemuck::cast_slice_mut(&mut words);
+        let mut file = file;
+        file.seek(SeekFrom::Start(e.offset)).map_err(io)?;
+        let mut crc = crc32fast::Hasher::new();
+        let mut left = e.byte_len();
+        while left > 0 {
+            let n = left.min(CHUNK as u64) as usize;
+            file.read_exact(&mut buf[..n]).map_err(io)?;
+            if self.checksums {
+                crc.update(&buf[..n]);
+            }
+            take(&buf[..n]);
+            left -= n as u64;
+        }
+        if self.checksums && crc.finalize() != e.crc {
+            return Err(Self::checksum_failed(e));
+        }
+        Ok(())
+    }
+
+    /// The elements of section `e` in a vector of their own, as `T`s of `width` file
+    /// elements each, reserved fallibly (the file's length bounds their number).
+    fn elements<T: Pod>(&self, e: &Entry, width: usize) -> Result<Vec<T>> {
+        let mut out = Vec::new();
+        out.try_reserve_exact(e.count as usize / width)
+            .map_err(|_| {
+                Error::too_large(format!(
+                    "section {}: {} elements do not fit in memory",
+                    e.name, e.count
+                ))
+            })?;
+        let word = e.elem.size() as usize;
+        let mut take = |b: &[u8]| match bytemuck::try_cast_slice::<u8, T>(b) {
+            Ok(xs) if cfg!(target_endian = "little") => out.extend_from_slice(xs),
+            _ => out.extend(
+                b.chunks_exact(size_of::<T>())
+                    .map(|c| from_le::<T>(c, word)),
+            ),
+        };
+        match &self.bytes {
+            Bytes::File { file, .. } => self.read_section(file, e, take)?,
+            _ => take(self.in_memory(e)?),
+        }
+        Ok(out)
     }
 }
 
@@ -233,17 +294,4 @@ fn from_le<T: bytemuck::Pod>(c: &[u8], word: usize) -> T {
         out.chunks_exact_mut(word).for_each(|w| w.reverse());
     }
     x
-}
-
-/// The elements into a vector reserved fallibly (its length is bounded by the file's).
-fn collect<T>(e: &Entry, xs: impl Iterator<Item = T>) -> Result<Vec<T>> {
-    let mut out = Vec::new();
-    out.try_reserve_exact(e.count as usize).map_err(|_| {
-        Error::too_large(format!(
-            "section {}: {} elements do not fit in memory",
-            e.name, e.count
-        ))
-    })?;
-    out.extend(xs);
-    Ok(out)
 }

@@ -42,6 +42,18 @@ pub(crate) fn soup(
     Ok((v, origin))
 }
 
+/// An out-of-range error naming the first corner of triangle `t` whose vertex is not below
+/// `n_vertices`, if there is one.
+pub(crate) fn check_corners(t: usize, tri: &[u32], n_vertices: usize) -> Result<()> {
+    match tri.iter().position(|&x| x as usize >= n_vertices) {
+        Some(i) => Err(Error::out_of_range(format!(
+            "triangle {t}, corner {i}: vertex {} out of range (there are {n_vertices} vertices)",
+            tri[i]
+        ))),
+        None => Ok(()),
+    }
+}
+
 /// One run: the triangles from input id `t0` on, in `v` (copied from `tris` first when
 /// borrowed). Returns the degenerate ones (input ids, increasing), or the first
 /// out-of-range id.
@@ -53,12 +65,7 @@ fn run(t0: usize, tris: Option<&[[u32; 3]]>, v: &mut [u32], n_vertices: usize) -
             q.copy_from_slice(&tris[k]);
         }
         let tri = [q[0], q[1], q[2]];
-        if let Some(i) = tri.iter().position(|&x| x as usize >= n_vertices) {
-            return Err(Error::out_of_range(format!(
-                "triangle {t}, corner {i}: vertex {} out of range (there are {n_vertices} vertices)",
-                tri[i]
-            )));
-        }
+        check_corners(t, &tri, n_vertices)?;
         let [a, b, c] = tri;
         if a == b || b == c || a == c {
             try_push(&mut dropped, t as u32, "the dropped triangles")?;

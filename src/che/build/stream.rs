@@ -94,12 +94,7 @@ fn key(v: &[u32], h: u32) -> u64 {
 pub(crate) fn check_triangles(v: &[u32], first: usize, n_vertices: usize) -> Result<()> {
     for (k, c) in v.chunks_exact(3).enumerate() {
         let t = first + k;
-        if let Some(i) = c.iter().position(|&x| x as usize >= n_vertices) {
-            return Err(Error::out_of_range(format!(
-                "triangle {t}, corner {i}: vertex {} out of range (there are {n_vertices} vertices)",
-                c[i]
-            )));
-        }
+        super::soup::check_corners(t, c, n_vertices)?;
         if c[0] == c[1] || c[1] == c[2] || c[0] == c[2] {
             return Err(refused(format!("triangle {t} is degenerate ({c:?})")));
         }

@@ -911,11 +911,13 @@ typedef struct chf_memory {
      */
     uint64_t vertex_half_faces;
     /**
-     * The canonical-edge-slot rank bits and the tetrahedron of each edge, level 2.
+     * The canonical-edge-slot rank bits and the tetrahedron of each edge, level 2; once
+     * edited, the explicit edge ids and the removed marks.
      */
     uint64_t edges;
     /**
-     * The canonical-half-face rank bits and `FH`, level 2.
+     * The canonical-half-face rank bits and `FH`, level 2; once edited, the explicit face
+     * ids.
      */
     uint64_t faces;
     /**

@@ -42,15 +42,6 @@ Volume tm_volume(const TetSoup &s, uint32_t level, uint32_t threads = 0) {
   return Volume::from_tetrahedra(s.tets.data(), s.n_tets(), s.n_vertices, s.positions.data(), o);
 }
 
-// The edit state an edited CHF holds besides the arrays chf_mesh_memory counts (lengths, as
-// src/chf/edit/mod.rs lists them): a removed mark per tetrahedron and vertex, a face id per
-// half-face, an edge id per edge slot (6 per tetrahedron), a half-face per face id and a
-// 64-bit half-edge per edge id.
-uint64_t edit_state_bytes(const Volume &v) {
-  uint64_t t = v.num_tetrahedra(), n = v.num_vertices();
-  return t + n + 16 * t + 24 * t + 4 * uint64_t(v.num_faces()) + 8 * uint64_t(v.num_edges());
-}
-
 // One structure after the split storm.
 struct MemRow {
   std::string lib;
@@ -101,9 +92,9 @@ Row tm_splits(const TetSoup &s, uint32_t level, uint64_t n, uint64_t seed, MemRo
     std::vector<uint32_t>().swap(live);
     chf_memory m = vol.memory();
     mem.lib = row.lib;
-    mem.structure = double(m.topology + edit_state_bytes(vol));
+    mem.structure = double(m.topology);
     mem.geometry = mem.structure + double(m.positions + m.maps);
-    mem.note = mib(double(m.topology)) + " + edit state " + mib(double(edit_state_bytes(vol)));
+    mem.note = "edit state included: faces " + mib(double(m.faces)) + ", edges " + mib(double(m.edges));
     p.end();
   }
   mem.retained = p.retained();
@@ -342,7 +333,7 @@ void bench(const std::string &base, uint64_t ops, int reps, uint64_t seed, bool 
 
   std::printf("\nMemory after the splits (MiB). Structure: CGAL = cells x sizeof(Cell) + vertices x "
               "(sizeof(Vertex) - sizeof(Point)) as in the build table; topomesh = chf_mesh_memory().topology "
-              "+ the edit state (which chf_mesh_memory does not count). \"+ geometry\": with points / "
+              "(the edit state included: explicit face and edge ids, removed marks). \"+ geometry\": with points / "
               "positions and origin maps. RSS retained: growth of the resident set over build + edits:\n\n");
   std::printf("| after the splits | structure | / CGAL | + geometry | RSS retained | RSS / CGAL's | |\n"
               "|---|---:|---:|---:|---:|---:|---|\n");

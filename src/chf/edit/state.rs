@@ -65,6 +65,20 @@ impl EditState {
             boundary: Default::default(),
         })
     }
+
+    /// Bytes of the face ids (per half-face, and the canonical half-face per face id).
+    pub(crate) fn face_bytes(&self) -> usize {
+        4 * (self.hf_face.len() + self.face_hf.len())
+    }
+
+    /// Bytes of the edge ids (per edge slot, and the canonical half-edge per edge id) and
+    /// of the removed marks.
+    pub(crate) fn edge_bytes(&self) -> usize {
+        4 * self.slot_edge.len()
+            + std::mem::size_of_val(&self.edge_he[..])
+            + self.tet_removed.len()
+            + self.vertex_removed.len()
+    }
 }
 
 /// Calls `f` with every slot of the fan of `he`.

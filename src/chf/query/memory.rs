@@ -11,9 +11,11 @@ pub struct Memory {
     pub opposites: usize,
     /// `VH`, level 2.
     pub vertex_half_faces: usize,
-    /// The canonical-slot rank bits and the tetrahedron of each edge, level 2.
+    /// The canonical-slot rank bits and the tetrahedron of each edge, level 2; once edited,
+    /// the explicit edge ids and the removed marks.
     pub edges: usize,
-    /// The canonical-half-face rank bits and `FH`, level 2.
+    /// The canonical-half-face rank bits and `FH`, level 2; once edited, the explicit face
+    /// ids.
     pub faces: usize,
     /// The boundary CHE's topology, the boundary rank bits, the triangle -> half-face map
     /// and the component of each vertex, level 3.
@@ -33,8 +35,12 @@ impl Chf {
             half_face_vertices: ints(self.v.len()),
             opposites: ints(self.o.len()),
             vertex_half_faces: ints(self.vh.len()),
-            edges: ints(self.eh.len()) + self.edge_bits.memory_bytes(),
-            faces: ints(self.fh.len()) + self.face_bits.memory_bytes(),
+            edges: ints(self.eh.len())
+                + self.edge_bits.memory_bytes()
+                + self.edit.as_ref().map_or(0, |s| s.edge_bytes()),
+            faces: ints(self.fh.len())
+                + self.face_bits.memory_bytes()
+                + self.edit.as_ref().map_or(0, |s| s.face_bytes()),
             boundary: self.boundary.as_ref().map_or(0, |b| b.memory_bytes())
                 + self.edit.as_ref().map_or(0, |s| s.boundary.memory_bytes()),
             positions: std::mem::size_of_val(&self.positions[..]),

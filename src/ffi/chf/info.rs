@@ -168,9 +168,11 @@ pub struct ChfMemory {
     pub opposites: u64,
     /// `VH`, level 2.
     pub vertex_half_faces: u64,
-    /// The canonical-edge-slot rank bits and the tetrahedron of each edge, level 2.
+    /// The canonical-edge-slot rank bits and the tetrahedron of each edge, level 2; once
+    /// edited, the explicit edge ids and the removed marks.
     pub edges: u64,
-    /// The canonical-half-face rank bits and `FH`, level 2.
+    /// The canonical-half-face rank bits and `FH`, level 2; once edited, the explicit face
+    /// ids.
     pub faces: u64,
     /// The boundary CHE's topology, its maps and the component of each vertex, level 3.
     pub boundary: u64,

@@ -17,6 +17,8 @@ python3 docs/check-links.py
 
 step "cargo fmt and clippy"
 cargo fmt --check
+# The fuzz crate is its own workspace (cargo-fuzz), outside the one above.
+cargo fmt --check --manifest-path fuzz/Cargo.toml
 cargo clippy --workspace --all-targets --locked -- -D warnings
 
 step "the library's API docs build with every link resolved (cargo doc)"

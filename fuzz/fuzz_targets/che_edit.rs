@@ -17,7 +17,10 @@ fuzz_target!(|data: &[u8]| {
         return;
     }
     let (ids, ops) = rest.split_at(n_ids);
-    let ids: Vec<u32> = ids.iter().map(|&b| u32::from(b) % n_vertices as u32).collect();
+    let ids: Vec<u32> = ids
+        .iter()
+        .map(|&b| u32::from(b) % n_vertices as u32)
+        .collect();
     let options = BuildOptions::level(level);
     let Ok(mut che) = Che::from_flat(&ids, n_vertices, &[], options) else {
         return;
@@ -41,7 +44,8 @@ fuzz_target!(|data: &[u8]| {
             0 => che.add_vertex(None).map(drop),
             1 => {
                 let (a, b) = (id(nv), id(nv) / 2);
-                che.add_triangle(a, b, (a + 1) % (nv as u32).max(1)).map(drop)
+                che.add_triangle(a, b, (a + 1) % (nv as u32).max(1))
+                    .map(drop)
             }
             2 => che.remove_triangle(id(nt)),
             3 => che.remove_vertex(id(nv)),

@@ -28,9 +28,11 @@ fuzz_target!(|data: &[u8]| {
         return;
     }
     let (ids, ops) = rest.split_at(n_ids);
-    let ids: Vec<u32> = ids.iter().map(|&b| u32::from(b) % n_vertices as u32).collect();
-    let Ok(mut chf) = Chf::from_flat(&ids, n_vertices, &[], chf::BuildOptions::level(level))
-    else {
+    let ids: Vec<u32> = ids
+        .iter()
+        .map(|&b| u32::from(b) % n_vertices as u32)
+        .collect();
+    let Ok(mut chf) = Chf::from_flat(&ids, n_vertices, &[], chf::BuildOptions::level(level)) else {
         return;
     };
     for op in ops.chunks_exact(2) {
@@ -49,7 +51,8 @@ fuzz_target!(|data: &[u8]| {
             1 => {
                 let a = id(nv);
                 let m = (nv as u32).max(1);
-                chf.add_tetrahedron([a, (a + 1) % m, (a + 2) % m, (a + 3) % m]).map(drop)
+                chf.add_tetrahedron([a, (a + 1) % m, (a + 2) % m, (a + 3) % m])
+                    .map(drop)
             }
             2 => chf.remove_tetrahedron(id(nt)),
             3 => chf.remove_vertex(id(nv)),
@@ -63,7 +66,10 @@ fuzz_target!(|data: &[u8]| {
             _ => chf.garbage_collect().map(drop),
         };
         if r.is_err() {
-            assert!(before == arrays(&chf), "a refused operation changed the mesh");
+            assert!(
+                before == arrays(&chf),
+                "a refused operation changed the mesh"
+            );
         }
         chf.validate().unwrap();
     }

@@ -7,19 +7,16 @@
 
 use crate::NONE;
 use crate::che::ids::{next, prev};
+use crate::che::tables::is_canonical;
 use crate::util::par::{planned_threads, run_all};
 use std::ops::Range;
 
-/// `f` on contiguous parts of `0..n`, one per thread the machine runs; the sums of the
-/// answers' two counts, or `None` when one part has none.
-fn sum_over_parts(
-    n: usize, f: impl Fn(Range<usize>) -> Option<(usize, usize)> + Sync,
-) -> Option<(usize, usize)> {
+/// `f` on contiguous parts of `0..n`, one per thread the machine runs; the sum of the
+/// answers, or `None` when one part has none.
+fn sum_over_parts(n: usize, f: impl Fn(Range<usize>) -> Option<usize> + Sync) -> Option<usize> {
     let part = n.div_ceil(planned_threads(0, n).max(1)).max(1);
     let parts: Vec<_> = (0..n).step_by(part).map(|a| a..(a + part).min(n)).collect();
-    run_all(parts, f)
-        .into_iter()
-        .try_fold((0, 0), |(a, b), r| r.map(|(x, y)| (a + x, b + y)))
+    run_all(parts, f).into_iter().sum()
 }
 
 /// The live canonical half-edges (the edges), when every `O[h]` pairs `h` with a live
@@ -31,7 +28,7 @@ fn sum_over_parts(
 /// only: the condition is the same from either side, and the larger side's `O[O[h]] = h`
 /// sends it there.
 pub(super) fn pairs_hold(v: &[u32], o: &[u32]) -> Option<usize> {
-    let (edges, _) = sum_over_parts(o.len(), |hs| {
+    sum_over_parts(o.len(), |hs| {
         let mut edges = 0;
         for h in hs {
             let (g, live) = (o[h], v[h] != NONE);
@@ -51,9 +48,8 @@ pub(super) fn pairs_hold(v: &[u32], o: &[u32]) -> Option<usize> {
                 edges += 1;
             }
         }
-        Some((edges, 0))
-    })?;
-    Some(edges)
+        Some(edges)
+    })
 }
 
 /// Rotations walked at once by one thread: enough independent misses to keep the memory
@@ -66,8 +62,7 @@ const LANES: usize = 16;
 /// are disjoint; the total is `live` exactly when each meets all of its vertex's, that is
 /// when every star is one fan, entered at its boundary half-edge when it has one.
 pub(super) fn rotations_cover(v: &[u32], o: &[u32], vh: &[u32], live: usize) -> bool {
-    sum_over_parts(vh.len(), |xs| Some((rotation_steps(v, o, vh, xs)?, 0)))
-        .is_some_and(|(steps, _)| steps == live)
+    sum_over_parts(vh.len(), |xs| rotation_steps(v, o, vh, xs)) == Some(live)
 }
 
 /// The outgoing half-edges the rotations of the vertices `xs` meet, walked `LANES` at a
@@ -119,7 +114,7 @@ pub(super) fn triangles_hold(v: &[u32], n: usize) -> bool {
         v[3 * ts.start..3 * ts.end]
             .chunks_exact(3)
             .all(holds)
-            .then_some((0, 0))
+            .then_some(0)
     })
     .is_some()
 }
@@ -135,7 +130,7 @@ pub(super) fn edge_directory_holds(
     sum_over_parts(o.len(), |hs| {
         let mut e = rank(hs.start);
         for h in hs {
-            let canonical = o[h] == NONE || (h as u32) < o[h];
+            let canonical = is_canonical(o, h);
             if flagged(h) != canonical {
                 return None;
             }
@@ -146,7 +141,7 @@ pub(super) fn edge_directory_holds(
                 e += 1;
             }
         }
-        Some((0, 0))
+        Some(0)
     })
     .is_some()
 }

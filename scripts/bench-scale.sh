@@ -21,7 +21,9 @@
 #
 # --sizes: the sizes (default "10000000 50000000 100000000 200000000 400000000").
 # --stream-sizes: sizes for topomesh's streaming build alone (`generate --stream`; none by
-# default), in a table of their own. --dir:
+# default), in a table of their own. --volume-stream-sizes: sizes in tetrahedra of the box
+# streamed into a level-1 .chf (`generate box --tetrahedra N --stream`, then `bench` sweeps
+# TT on the mapping), topomesh alone, in a table of their own (none by default). --dir:
 # where the .che files go, kept there (default: a temporary directory, each file removed
 # after its size; a level-2 file takes about 38 bytes per triangle). --limit-gb G: run each
 # process under `ulimit -v` of G GiB, so that it fails with "out of memory" instead of
@@ -33,15 +35,17 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cmdline="scripts/bench-scale.sh${*:+ $*}"
 sizes=(10000000 50000000 100000000 200000000 400000000)
 stream_sizes=()
+volume_sizes=()
 keep_dir=""
 limit_gb=""
 while (($#)); do
   case "$1" in
     --sizes) read -r -a sizes <<<"$2"; shift 2 ;;
     --stream-sizes) read -r -a stream_sizes <<<"$2"; shift 2 ;;
+    --volume-stream-sizes) read -r -a volume_sizes <<<"$2"; shift 2 ;;
     --dir) keep_dir="$2"; shift 2 ;;
     --limit-gb) limit_gb="$2"; shift 2 ;;
-    -h|--help) sed -n 2,29p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,31p "$0"; exit 0 ;;
     *) echo "bench-scale.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -173,9 +177,41 @@ run_streamed() {
   done
 }
 
+# The box of $1 tetrahedra streamed into a level-1 .chf, then its TT sweep on the mapping:
+# the row into $work/volume_rows.md, the lines into $work/lines.md.
+volume_run() {
+  local n="$1" chf="$files/box-$1-streamed.chf" tets gen bytes sweep
+  echo "== topomesh, $n tetrahedra (--stream)"
+  timed "$topomesh" generate box --tetrahedra "$n" -o "$chf" --stream
+  echo "topomesh generate box $n --stream: $(cat "$work/run.out") (/usr/bin/time: ${run_s} s," \
+    "max RSS ${run_gib} GiB, $run_end)" >>"$work/lines.md"
+  tets="$(sed -n 's/.* \([0-9]*\) tetrahedra,.*/\1/p' "$work/run.out")"
+  if [[ "$run_end" != ok ]]; then
+    echo "| ${tets:-$n} | $run_end | $run_gib | – | – | – |" >>"$work/volume_rows.md"
+    rm -f "$chf"
+    return
+  fi
+  gen="$run_s | $run_gib"
+  bytes="$(stat -c %s "$chf")"
+  timed "$topomesh" bench "$chf" --repeat 1 --trusted-only --json
+  if [[ "$run_end" == ok ]]; then
+    sweep="$(jq -r '.sweeps.relations[] | select(.relation == "TT") | .seconds.median' "$work/run.out")"
+    echo "topomesh bench box $n: TT sweep $sweep s (/usr/bin/time: ${run_s} s, max RSS ${run_gib} GiB)" \
+      >>"$work/lines.md"
+    sweep="$(printf '%.3f' "$sweep")"
+  else
+    sweep="$run_end"
+  fi
+  echo "| $tets | $gen | $sweep | $run_gib | $(awk -v b="$bytes" 'BEGIN { printf "%.2f", b / 2^30 }') |" \
+    >>"$work/volume_rows.md"
+  [[ -n "$keep_dir" ]] || rm -f "$chf"
+}
+
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 run_all
 run_streamed
+: >"$work/volume_rows.md"
+for n in "${volume_sizes[@]}"; do volume_run "$n"; done
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 # The machine and the toolchain, then the page.
@@ -191,7 +227,7 @@ rustc_v="$(rustc --version)"
 om_v="$(dpkg-query -W -f '${Version}' libopenmesh-dev 2>/dev/null || echo '?')"
 cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
 {
-  echo "# Benchmarks: surfaces at scale"
+  echo "# Benchmarks: at scale"
   echo
   echo "<!-- Written by scripts/bench-scale.sh: run it again instead of editing this page. -->"
   echo
@@ -237,6 +273,17 @@ cgal_v="$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo '?')"
     echo "| triangles | generate s | peak GiB | VV sweep s | bench RSS GiB | .che file GiB |"
     echo "|---:|---:|---:|---:|---:|---:|"
     cat "$work/stream_rows.md"
+  fi
+  if ((${#volume_sizes[@]})); then
+    echo
+    echo "A volume by the streaming build (\`topomesh generate box --tetrahedra N -o F.chf --stream\`: the"
+    echo "tetrahedra go from the generator into a level-1 file, paired and counted there; the resident set"
+    echo "counts the file's mapped pages), then \`topomesh bench F.chf --repeat 1 --trusted-only --json\`:"
+    echo "the mapped trusted open and a TT sweep (the four neighbours of every tetrahedron) on the mapping:"
+    echo
+    echo "| tetrahedra | generate s | peak GiB | TT sweep s | bench RSS GiB | .chf file GiB |"
+    echo "|---:|---:|---:|---:|---:|---:|"
+    cat "$work/volume_rows.md"
   fi
   echo
   echo "What each run printed:"

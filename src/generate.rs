@@ -32,19 +32,81 @@ pub fn cube_grid(n: u32) -> Volume {
 
 /// [`cube_grid`] appended to `v`.
 fn cube_grid_into(v: &mut Volume, n: u32) {
-    let id = |i: u32, j: u32, k: u32| (k * (n + 1) + j) * (n + 1) + i;
-    for k in 0..=n {
-        for j in 0..=n {
-            for i in 0..=n {
-                v.positions.push(DVec3::new(i as f64, j as f64, k as f64));
-            }
+    let grid = CubeGrid { n };
+    let (n_points, n_tets) = (grid.num_points(), grid.num_tets());
+    v.positions.extend((0..n_points).map(|k| grid.position(k)));
+    v.tetrahedra
+        .extend((0..n_tets).map(|t| grid.tetrahedron(t)));
+}
+
+/// The box of `n`^3 cubes element by element, so that a tetrahedron or a point is had
+/// without the others: what [`cube_grid`] lists, and what a streaming build reads. Cubes
+/// row by row, then layer by layer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CubeGrid {
+    pub n: u32,
+}
+
+impl CubeGrid {
+    /// The box [`cube_grid_of`] makes for at least `tetrahedra` tetrahedra.
+    pub fn of(tetrahedra: u64) -> Result<CubeGrid> {
+        check_size(tetrahedra, 4, "tetrahedra")?;
+        let mut n = (tetrahedra as f64 / 6.0).cbrt().floor().max(1.0) as u64;
+        while 6 * n * n * n < tetrahedra {
+            n += 1;
         }
+        check_size(6 * n * n * n, 4, "tetrahedra")?;
+        Ok(CubeGrid { n: n as u32 })
     }
-    for (i, j, k) in (0..n).flat_map(|k| (0..n).flat_map(move |j| (0..n).map(move |i| (i, j, k)))) {
-        let c = |b: u32| id(i + (b & 1), j + (b >> 1 & 1), k + (b >> 2));
-        for [p, q] in [[1, 2], [2, 1], [1, 4], [4, 1], [2, 4], [4, 2]] {
-            v.tetrahedra.push([c(0), c(p), c(p | q), c(7)]);
+
+    fn num_points(&self) -> u32 {
+        (self.n + 1).pow(3)
+    }
+
+    fn num_tets(&self) -> u32 {
+        6 * self.n.pow(3)
+    }
+
+    /// Vertex `k`, the corner `(k % (n + 1), k / (n + 1) % (n + 1), k / (n + 1)^2)`.
+    pub fn position(&self, k: u32) -> DVec3 {
+        let m = self.n + 1;
+        DVec3::new((k % m) as f64, (k / m % m) as f64, (k / (m * m)) as f64)
+    }
+
+    /// Tetrahedron `t`: the `t % 6`-th of cube `t / 6`, around the cube's main diagonal
+    /// from corner `(i, j, k)` to `(i + 1, j + 1, k + 1)`.
+    pub fn tetrahedron(&self, t: u32) -> [u32; 4] {
+        const PATHS: [[u32; 2]; 6] = [[1, 2], [2, 1], [1, 4], [4, 1], [2, 4], [4, 2]];
+        let (n, m) = (self.n, self.n + 1);
+        let c = t / 6;
+        let (i, j, k) = (c % n, c / n % n, c / (n * n));
+        let corner = |b: u32| ((k + (b >> 2)) * m + j + (b >> 1 & 1)) * m + i + (b & 1);
+        let [p, q] = PATHS[(t % 6) as usize];
+        [corner(0), corner(p), corner(p | q), corner(7)]
+    }
+}
+
+impl crate::Source<4> for CubeGrid {
+    fn num_elements(&self) -> usize {
+        self.num_tets() as usize
+    }
+    fn num_vertices(&self) -> usize {
+        self.num_points() as usize
+    }
+    fn has_positions(&self) -> bool {
+        true
+    }
+    fn elements(&self, first: usize, out: &mut [[u32; 4]]) -> Result<()> {
+        for (t, x) in (first as u32..).zip(out) {
+            *x = self.tetrahedron(t);
         }
+        Ok(())
+    }
+    fn positions(&self, first: usize, out: &mut [DVec3]) -> Result<()> {
+        for (k, x) in (first as u32..).zip(out) {
+            *x = self.position(k);
+        }
+        Ok(())
     }
 }
 
@@ -135,8 +197,8 @@ impl TorusGrid {
     }
 }
 
-impl crate::che::TriangleSource for TorusGrid {
-    fn num_triangles(&self) -> usize {
+impl crate::Source<3> for TorusGrid {
+    fn num_elements(&self) -> usize {
         2 * self.nu as usize * self.nv as usize
     }
     fn num_vertices(&self) -> usize {
@@ -145,7 +207,7 @@ impl crate::che::TriangleSource for TorusGrid {
     fn has_positions(&self) -> bool {
         true
     }
-    fn triangles(&self, first: usize, out: &mut [[u32; 3]]) -> Result<()> {
+    fn elements(&self, first: usize, out: &mut [[u32; 3]]) -> Result<()> {
         for (t, x) in (first as u32..).zip(out) {
             *x = self.triangle(t);
         }
@@ -258,12 +320,8 @@ pub fn sphere_of(triangles: u64) -> Result<Surface> {
 /// A box of `n`^3 cubes ([`cube_grid`]) with the smallest `n` giving at least
 /// `tetrahedra` tetrahedra.
 pub fn cube_grid_of(tetrahedra: u64) -> Result<Volume> {
-    check_size(tetrahedra, 4, "tetrahedra")?;
-    let mut n = (tetrahedra as f64 / 6.0).cbrt().floor().max(1.0) as u64;
-    while 6 * n * n * n < tetrahedra {
-        n += 1;
-    }
-    check_size(6 * n * n * n, 4, "tetrahedra")?;
+    let CubeGrid { n } = CubeGrid::of(tetrahedra)?;
+    let n = u64::from(n);
     let mut v = Volume {
         positions: try_with_capacity(
             ((n + 1) * (n + 1) * (n + 1)) as usize,
@@ -315,16 +373,48 @@ mod tests {
     /// The grid as a source reads, block by block, what `torus_of` lists.
     #[test]
     fn the_torus_grid_reads_what_torus_of_lists() {
-        use crate::che::TriangleSource;
+        use crate::Source;
         let grid = TorusGrid::of(1000).unwrap();
         let listed = torus_of(1000).unwrap();
         let (mut tris, mut points) = (vec![[0; 3]; 7], vec![DVec3::ZERO; 5]);
-        assert_eq!(grid.num_triangles(), listed.triangles.len());
+        assert_eq!(grid.num_elements(), listed.triangles.len());
         assert_eq!(grid.num_vertices(), listed.positions.len());
         for first in [0, 13, listed.positions.len() - 5] {
-            grid.triangles(first, &mut tris).unwrap();
+            grid.elements(first, &mut tris).unwrap();
             grid.positions(first, &mut points).unwrap();
             assert_eq!(&tris[..], &listed.triangles[first..first + 7]);
+            assert_eq!(&points[..], &listed.positions[first..first + 5]);
+        }
+    }
+
+    /// The box as a source reads, block by block, what `cube_grid` lists: Kuhn's six
+    /// tetrahedra per cube around its main diagonal, cubes row by row.
+    #[test]
+    fn the_cube_grid_reads_what_cube_grid_lists() {
+        use crate::Source;
+        let one = cube_grid(1);
+        let kuhn = [
+            [0, 1, 3, 7],
+            [0, 2, 3, 7],
+            [0, 1, 5, 7],
+            [0, 4, 5, 7],
+            [0, 2, 6, 7],
+            [0, 4, 6, 7],
+        ];
+        assert_eq!(one.tetrahedra, kuhn);
+        assert_eq!(one.positions[6], DVec3::new(0.0, 1.0, 1.0));
+        let grid = CubeGrid::of(1000).unwrap();
+        let listed = cube_grid_of(1000).unwrap();
+        assert_eq!(grid.num_elements(), listed.tetrahedra.len());
+        assert_eq!(grid.num_vertices(), listed.positions.len());
+        // The second cube of the second row: cube (1, 1, 0) of a box of n = 6.
+        assert_eq!(grid.n, 6);
+        assert_eq!(listed.tetrahedra[6 * 7], [8, 9, 16, 65]);
+        let (mut tets, mut points) = (vec![[0; 4]; 7], vec![DVec3::ZERO; 5]);
+        for first in [0, 13, listed.positions.len() - 5] {
+            grid.elements(first, &mut tets).unwrap();
+            grid.positions(first, &mut points).unwrap();
+            assert_eq!(&tets[..], &listed.tetrahedra[first..first + 7]);
             assert_eq!(&points[..], &listed.positions[first..first + 5]);
         }
     }

@@ -23,6 +23,7 @@ pub use error::{Error, ErrorKind};
 pub use util::par::planned_threads;
 pub use util::progress::BuildProgress;
 pub use util::small_ids::Ids;
+pub use util::source::{SliceSource, Source};
 pub use util::weld::{representatives as weld_representatives, weld_arrays};
 pub use util::{REPORT_EXAMPLES, non_finite_vertices};
 

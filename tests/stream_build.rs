@@ -4,20 +4,19 @@
 //! naming the place, and no file (nor a temporary one) is left.
 
 mod che_common;
+mod stream_common;
 
 use che_common::{Rng, perturb, surfaces};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
-use topomesh::che::{SliceSource, SweepLimits};
+use topomesh::SliceSource;
+use topomesh::che::SweepLimits;
 use topomesh::generate::{grid, sphere, torus};
 use topomesh::levelfile::{OpenOptions, StreamOptions, Verify, save_streamed};
 use topomesh::{BuildOptions, Che, ErrorKind};
 
 fn folder(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("topomesh-stream-{}-{tag}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    stream_common::folder("stream", tag)
 }
 
 fn options(level: u8, block_triangles: usize) -> StreamOptions {
@@ -35,7 +34,7 @@ fn streamed(
 ) -> topomesh::error::Result<Vec<u8>> {
     let path = dir.join("streamed.che");
     let source = SliceSource {
-        triangles: tris,
+        elements: tris,
         n_vertices: n,
         positions: pos,
     };
@@ -78,14 +77,8 @@ fn clean_surfaces_stream_to_the_file_a_build_saves() {
 /// The error's kind and words, and the folder left empty.
 fn refused(tris: &[[u32; 3]], n: usize, o: StreamOptions, kind: ErrorKind, words: &[&str]) {
     let dir = folder("refused");
-    let e = streamed(&dir, tris, n, &[], o).unwrap_err();
-    assert_eq!(e.kind, kind, "{}", e.message);
-    for w in words {
-        assert!(e.message.contains(w), "{:?} lacks {w:?}", e.message);
-    }
-    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
-    assert!(left.is_empty(), "left behind: {left:?}");
-    let _ = std::fs::remove_dir_all(&dir);
+    let result = streamed(&dir, tris, n, &[], o);
+    stream_common::assert_refused(result, &dir, kind, words);
 }
 
 #[test]
@@ -162,7 +155,7 @@ fn input_that_needs_a_repair_is_refused_and_nothing_is_left() {
 fn any_soup_streams_to_the_built_file_or_is_refused() {
     let dir = folder("soups");
     let mut rng = Rng(17);
-    let (mut same, mut refused) = (0, 0);
+    let mut tally = stream_common::Tally::default();
     for (tris, _) in surfaces() {
         let n = che_common::che_n(&tris, &[]);
         for round in 0..12 {
@@ -173,23 +166,10 @@ fn any_soup_streams_to_the_built_file_or_is_refused() {
             built.save(&path).unwrap();
             let block = [1, 5, 1 << 20][round % 3];
             let _ = std::fs::remove_file(dir.join("streamed.che"));
-            match streamed(&dir, &soup, n, &[], options(2, block)) {
-                Ok(bytes) => {
-                    assert!(bytes == std::fs::read(&path).unwrap(), "round {round}");
-                    same += 1;
-                }
-                Err(e) => {
-                    let left = std::fs::read_dir(&dir).unwrap().count();
-                    assert_eq!(left, 1, "round {round}: {e}: only built.che stays");
-                    refused += 1;
-                }
-            }
+            let got = streamed(&dir, &soup, n, &[], options(2, block));
+            tally.record(got, &std::fs::read(&path).unwrap(), &dir, round as u64);
         }
     }
-    println!("{same} streamed, {refused} refused");
-    assert!(
-        same > 0 && refused > 0,
-        "{same} streamed, {refused} refused"
-    );
+    tally.check();
     let _ = std::fs::remove_dir_all(&dir);
 }

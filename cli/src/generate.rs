@@ -11,8 +11,8 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use topomesh::io::{Mesh, MeshData, WriteOptions};
-use topomesh::levelfile::{StreamOptions, save_streamed};
-use topomesh::{Error, generate};
+use topomesh::levelfile::{StreamOptions, save_streamed, save_streamed_chf};
+use topomesh::{Error, chf, generate};
 
 /// The shapes `generate` makes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -41,12 +41,13 @@ pub struct GenerateOptions {
     /// Binary PLY (STL is always binary).
     #[arg(long)]
     binary: bool,
-    /// A torus saved as a .che level file by the streaming build: the triangles go from the
-    /// generator straight into the file and are paired there, so that a surface larger
-    /// than memory is built (level 2).
+    /// Saved as a level file by the streaming build (a torus to .che at level 1 or 2, a box
+    /// to .chf at level 1): the elements go from the generator straight into the file and
+    /// are paired there, so that a mesh larger than memory is built.
     #[arg(long)]
     stream: bool,
-    /// The level of a level file (0-3; 1 or 2 with --stream); default: the library's.
+    /// The level of a level file (0-3; with --stream 1 or 2 for a torus, 1 for a box);
+    /// default: the library's.
     #[arg(long, value_name = "LEVEL")]
     level: Option<u8>,
 }
@@ -113,35 +114,68 @@ pub fn run(options: &GenerateOptions) -> Result<ExitCode, Failure> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// `--stream`: the torus built into its level file by the streaming build.
+/// `--stream`: the torus or the box built into its level file by the streaming build.
 fn stream(options: &GenerateOptions) -> Result<ExitCode, Failure> {
     let output = &options.output;
-    if options.shape != Shape::Torus || LevelFile::of(output) != Some(LevelFile::Surface) {
+    let kind = LevelFile::of(output);
+    let fits = match options.shape {
+        Shape::Torus => kind == Some(LevelFile::Surface),
+        Shape::Box => kind == Some(LevelFile::Volume),
+        Shape::Sphere => false,
+    };
+    if !fits {
         return Err(Failure::from(Error::invalid(format!(
-            "{}: --stream writes a torus to a .che level file",
+            "{}: --stream writes a torus to a .che or a box to a .chf level file",
             output.display()
         ))));
     }
-    let grid = generate::TorusGrid::of(options.triangles.unwrap_or(DEFAULT_COUNT))?;
     let progress = Progress::new();
     progress.step(format!("streaming the build into {}", output.display()));
+    let line = if options.shape == Shape::Box {
+        stream_box(options)?
+    } else {
+        stream_torus(options)?
+    };
+    drop(progress);
+    let mut out = Out::new();
+    writeln!(out, "{line}")?;
+    out.finish()?;
+    Ok(ExitCode::SUCCESS)
+}
+
+fn stream_torus(options: &GenerateOptions) -> Result<String, Error> {
+    let grid = generate::TorusGrid::of(options.triangles.unwrap_or(DEFAULT_COUNT))?;
     let stream = StreamOptions {
         level: options.level.unwrap_or(StreamOptions::default().level),
         ..StreamOptions::default()
     };
-    let report = save_streamed(&grid, output, stream)?;
-    drop(progress);
-    let mut out = Out::new();
-    writeln!(
-        out,
+    let report = save_streamed(&grid, &options.output, stream)?;
+    Ok(format!(
         "torus -> {}: {} vertices, {} triangles, {} edges (streamed)",
-        output.display(),
+        options.output.display(),
         report.input_vertices,
         report.input_triangles,
         report.input_edges
-    )?;
-    out.finish()?;
-    Ok(ExitCode::SUCCESS)
+    ))
+}
+
+fn stream_box(options: &GenerateOptions) -> Result<String, Error> {
+    if options.level.is_some_and(|l| l != 1) {
+        return Err(Error::invalid(format!(
+            "{}: the streaming build writes a volume at level 1",
+            options.output.display()
+        )));
+    }
+    let grid = generate::CubeGrid::of(options.tetrahedra.unwrap_or(DEFAULT_COUNT))?;
+    let report = save_streamed_chf(&grid, &options.output, chf::SweepLimits::default())?;
+    Ok(format!(
+        "box -> {}: {} vertices, {} tetrahedra, {} faces, {} edges (streamed)",
+        options.output.display(),
+        report.input_vertices,
+        report.input_tetrahedra,
+        report.input_faces,
+        report.input_edges
+    ))
 }
 
 fn name(shape: Shape) -> &'static str {

@@ -19,8 +19,8 @@ pub(crate) mod tables;
 pub use crate::Ids;
 pub use crate::util::sparse::{Assembled, CsrSlices, SparseMatrix, Storage};
 pub use build::{
-    BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, SliceSource, SweepLimits,
-    TriangleSource, check_counts, estimated_build_bytes,
+    BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, SweepLimits, check_counts,
+    estimated_build_bytes,
 };
 pub use edit::GarbageMaps;
 pub use export::{

@@ -38,7 +38,7 @@
 //! Naming an edge from a half-edge walks around the edge to its canonical slot (O(k)); a
 //! per-slot edge array would make it O(1) for 24 bytes per tetrahedron (see `edges.rs`).
 
-mod build;
+pub(crate) mod build;
 mod edges;
 pub mod edit;
 pub mod export;
@@ -49,7 +49,9 @@ mod star_pass;
 
 pub use crate::Ids;
 pub use crate::util::options::MAX_UNUSED_VERTICES;
-pub use build::{BuildOptions, BuildReport, MAX_TETRAHEDRA, check_counts, estimated_build_bytes};
+pub use build::{
+    BuildOptions, BuildReport, MAX_TETRAHEDRA, SweepLimits, check_counts, estimated_build_bytes,
+};
 pub use edit::GarbageMaps;
 pub use export::{HalfFaceArrays, VolumeMatrixKind};
 pub use ids::{HalfEdge, NO_HALF_EDGE};

@@ -17,7 +17,7 @@ mod placed;
 mod read;
 mod stream;
 
-pub use stream::{StreamOptions, save_streamed};
+pub use stream::{StreamOptions, save_streamed, save_streamed_chf};
 mod write;
 
 /// How much an open checks.

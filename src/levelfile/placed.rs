@@ -88,28 +88,25 @@ impl Placed {
         i.unwrap_or_else(|| panic!("no section {name} was laid out"))
     }
 
-    /// Two sections at once, `first` laid out before `second`: the first to read, the
-    /// second to fill.
+    /// Two sections at once, in either order in the file: the first to read, the second
+    /// to fill.
     pub(crate) fn pair_mut<T: bytemuck::Pod, U: bytemuck::Pod>(
         &mut self, first: &str, second: &str,
     ) -> (&[T], &mut [U]) {
-        let (a, b) = (
-            &self.entries[self.index(first)],
-            &self.entries[self.index(second)],
-        );
-        assert!(
-            a.offset + a.byte_len() <= b.offset,
-            "{first} comes before {second}"
-        );
+        let span = |e: &Entry| (e.offset as usize, (e.offset + e.byte_len()) as usize);
         let ((a0, a1), (b0, b1)) = (
-            (a.offset as usize, (a.offset + a.byte_len()) as usize),
-            (b.offset as usize, (b.offset + b.byte_len()) as usize),
+            span(&self.entries[self.index(first)]),
+            span(&self.entries[self.index(second)]),
         );
-        let (head, tail) = self.map.split_at_mut(b0);
-        (
-            bytemuck::cast_slice(&head[a0..a1]),
-            bytemuck::cast_slice_mut(&mut tail[..b1 - b0]),
-        )
+        let (read, fill): (&[u8], &mut [u8]) = if a1 <= b0 {
+            let (head, tail) = self.map.split_at_mut(b0);
+            (&head[a0..a1], &mut tail[..b1 - b0])
+        } else {
+            assert!(b1 <= a0, "{first} and {second} overlap");
+            let (head, tail) = self.map.split_at_mut(a0);
+            (&tail[..a1 - a0], &mut head[b0..b1])
+        };
+        (bytemuck::cast_slice(read), bytemuck::cast_slice_mut(fill))
     }
 
     /// The last section holds only its first `count` elements; the file ends after them.

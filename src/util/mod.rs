@@ -23,9 +23,11 @@ pub(crate) mod rank;
 pub(crate) mod rank_directory;
 pub(crate) mod sink;
 pub(crate) mod small_ids;
+pub mod source;
 pub mod sparse;
 pub(crate) mod store;
 pub(crate) mod structure;
+pub(crate) mod sweep;
 pub(crate) mod weld;
 
 /// How many offending ids a build report keeps of each kind.

@@ -18,7 +18,7 @@ pub use budget::estimated_build_bytes;
 pub use options::{BuildOptions, MAX_TRIANGLES, MAX_UNUSED_VERTICES, check_counts};
 pub use report::BuildReport;
 pub(crate) use split::walk_fan;
-pub use stream::{SliceSource, SweepLimits, TriangleSource};
+pub use stream::SweepLimits;
 
 use super::Che;
 use crate::NONE;

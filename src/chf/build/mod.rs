@@ -9,6 +9,7 @@ mod orient;
 pub(crate) mod report;
 mod soup;
 mod split;
+pub(crate) mod stream;
 mod strict;
 
 use self::orient::flipped_id;
@@ -32,6 +33,7 @@ use std::borrow::Cow;
 
 pub use crate::util::options::BuildOptions;
 pub use budget::estimated_build_bytes;
+pub use stream::SweepLimits;
 
 /// Largest tetrahedron count whose half-face ids (`4T`) fit below `NONE`.
 pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;

@@ -28,14 +28,14 @@ pub(crate) struct Soup {
 
 /// What one run of tetrahedra found.
 #[derive(Default)]
-struct Run {
+pub(crate) struct Run {
     /// The first out-of-range id: the run stops there.
-    error: Option<Error>,
+    pub error: Option<Error>,
     /// Degenerate tetrahedra (input ids, increasing): their slots in `V` hold nothing.
-    dropped: Vec<u32>,
-    zero_volume: usize,
-    zero_volume_examples: Vec<u32>,
-    flipped: usize,
+    pub dropped: Vec<u32>,
+    pub zero_volume: usize,
+    pub zero_volume_examples: Vec<u32>,
+    pub flipped: usize,
 }
 
 /// Runs of tetrahedra on up to `threads` threads, each checking (and flipping) its own part
@@ -103,7 +103,7 @@ pub(crate) fn soup(
 
 /// One run: the tetrahedra from input id `t0` on, in `v` (four per tetrahedron; copied from
 /// `tets` first when borrowed), and their `sign` (empty without positions).
-fn run(
+pub(crate) fn run(
     t0: usize, tets: Option<&[[u32; 4]]>, v: &mut [u32], sign: &mut [i8], n_vertices: usize,
     positions: &[DVec3],
 ) -> Run {

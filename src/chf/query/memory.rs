@@ -29,6 +29,14 @@ pub struct Memory {
 }
 
 impl Chf {
+    /// On a structure opened mapped, takes the file's pages out of the resident set, as
+    /// [`Che::release_mapped_pages`](crate::Che::release_mapped_pages) does.
+    pub fn release_mapped_pages(&self) -> crate::error::Result<()> {
+        self.v
+            .mapping()
+            .map_or(Ok(()), crate::levelfile::map::release)
+    }
+
     pub fn memory_bytes(&self) -> Memory {
         let ints = |n: usize| 4 * n;
         let mut m = Memory {

@@ -40,6 +40,8 @@ pub(crate) struct Stars {
     /// Some star is in several pieces: the vertex split must run (then the pass again),
     /// and `VH`, the edges and the census are incomplete.
     pub split_needed: bool,
+    /// With `split_needed`, the first such vertex.
+    pub first_split: u32,
     /// The number of edges (fans).
     pub num_edges: usize,
     /// With `tables`: `VH` and the canonical edge slots (else empty).
@@ -94,6 +96,15 @@ pub(crate) struct StarPass {
 pub(crate) fn stars(
     v: &[u32], n_vertices: usize, flagged: &[u32], options: StarPass,
 ) -> Result<Stars> {
+    stars_within(v, n_vertices, flagged, options, usize::MAX)
+}
+
+/// [`stars`] with the records buffer held to about `max_records` records (five `u32`
+/// each; more rounds over `V` when it is smaller than a build's share): the streaming
+/// build's census, whose `V` lies in a file larger than memory.
+pub(crate) fn stars_within(
+    v: &[u32], n_vertices: usize, flagged: &[u32], options: StarPass, max_records: usize,
+) -> Result<Stars> {
     let StarPass {
         pairs,
         tables,
@@ -101,7 +112,7 @@ pub(crate) fn stars(
     } = options;
     let faces = pairs != Pairs::No;
     let collect = matches!(pairs, Pairs::Partners | Pairs::Opposites);
-    let plan = Plan::new(v, n_vertices, threads, tables)?;
+    let plan = Plan::new(v, n_vertices, threads, tables, max_records)?;
     let opposites = Opposites::new(if collect { v.len() } else { 0 })?;
     let mut vh = if tables {
         crate::util::pages::filled(n_vertices, NONE, "the vertex half-faces VH")?
@@ -117,7 +128,8 @@ pub(crate) fn stars(
         tables,
         shift: plan.shift,
     };
-    let mut records = plan.records(v.len())?;
+    // With pairs, `O` takes the records' buffer over afterwards: at least its size.
+    let mut records = plan.records(if collect { v.len() } else { 0 })?;
     let mut total = Tally::default();
     for &round in &plan.rounds {
         let vh = if tables { &mut vh[..] } else { &mut [] };
@@ -188,7 +200,9 @@ struct Plan<'v> {
 }
 
 impl<'v> Plan<'v> {
-    fn new(v: &'v [u32], n_vertices: usize, threads: usize, tables: bool) -> Result<Self> {
+    fn new(
+        v: &'v [u32], n_vertices: usize, threads: usize, tables: bool, max_records: usize,
+    ) -> Result<Self> {
         const WHAT: &str = "the star pass's plan";
         let bits = usize::BITS - n_vertices.saturating_sub(1).leading_zeros();
         // At most 2^16 vertices per coarse bucket, so that the second pass's counts stay
@@ -221,7 +235,9 @@ impl<'v> Plan<'v> {
         // 20 bytes per tetrahedron at the same peak ratio: four rounds instead of five, each
         // a pass over `V` (three rounds would take 27 bytes and lift the level-2 peak to
         // about twice the final size).
-        let budget = (v.len() / if tables { 4 } else { 5 }).max(1 << 16);
+        let budget = (v.len() / if tables { 4 } else { 5 })
+            .min(max_records)
+            .max(1 << 16);
         // Each part's records of a round fit in its share of the budget, so that the
         // regions of all parts (each as large as its part's largest round) add up to the
         // budget.
@@ -431,6 +447,7 @@ struct Mode<'a> {
 #[derive(Default)]
 struct Tally {
     split_needed: bool,
+    first_split: u32,
     num_edges: usize,
     input_edges: usize,
     non_manifold_edges: usize,
@@ -444,6 +461,7 @@ impl Tally {
     fn into_stars(self, vh: Vec<u32>, edge_bits: RankBits, o: Option<Vec<u32>>) -> Stars {
         let Tally {
             split_needed,
+            first_split,
             num_edges,
             input_edges,
             non_manifold_edges,
@@ -463,6 +481,7 @@ impl Tally {
         };
         Stars {
             split_needed,
+            first_split,
             num_edges,
             vh,
             edge_bits,
@@ -473,6 +492,9 @@ impl Tally {
 
     /// Adds `t`, which covers vertices after all those of `self`.
     fn add(&mut self, t: Tally) -> Result<()> {
+        if !self.split_needed {
+            self.first_split = t.first_split;
+        }
         self.split_needed |= t.split_needed;
         self.num_edges += t.num_edges;
         self.input_edges += t.input_edges;
@@ -547,6 +569,7 @@ impl<'o> Worker<'o> {
             partners: mode.partners,
             tables: mode.tables,
             split_needed: false,
+            first_split: NONE,
             vh,
             vh_base,
             edge_slots: &mut self.edge_slots,
@@ -631,6 +654,7 @@ impl Tally {
     fn from_sums(sums: Sums) -> Tally {
         let Sums {
             split_needed,
+            first_split,
             num_edges,
             input_edges,
             non_manifold_edges,
@@ -640,6 +664,7 @@ impl Tally {
         } = sums;
         Tally {
             split_needed,
+            first_split,
             num_edges,
             input_edges,
             non_manifold_edges,

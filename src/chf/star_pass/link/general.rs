@@ -76,7 +76,7 @@ impl Link {
             flush_events(&mut self.events, x, census);
         }
         if !self.one_piece(k)? {
-            sums.split_needed = true;
+            sums.split_at(x);
             return Ok(());
         }
         // `VH`: the first unpaired half-face, else the first half-face.

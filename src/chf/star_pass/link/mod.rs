@@ -96,6 +96,8 @@ pub(crate) struct Sums<'a, 'o> {
     /// Fill `vh` and `edge_slots` (else count the edges only).
     pub tables: bool,
     pub split_needed: bool,
+    /// The first vertex of this share whose star is in several pieces.
+    pub first_split: u32,
     /// `VH` of the vertices from `vh_base` on (this thread's range).
     pub vh: &'a mut [u32],
     pub vh_base: usize,
@@ -106,6 +108,16 @@ pub(crate) struct Sums<'a, 'o> {
     pub non_manifold_edges: usize,
     pub non_manifold_edge_examples: Vec<[u32; 2]>,
     pub multi_fan: Vec<MultiFan>,
+}
+
+impl Sums<'_, '_> {
+    /// The star of `x` is in several pieces: the vertex split must run.
+    pub(crate) fn split_at(&mut self, x: u32) {
+        if !self.split_needed {
+            self.first_split = x;
+        }
+        self.split_needed = true;
+    }
 }
 
 /// Scratch reused from vertex to vertex.

@@ -182,7 +182,7 @@ impl Link {
         }
         self.count_small_faces(star, x, matched.n_faces, sums);
         if !self.small.one_piece(k) {
-            sums.split_needed = true;
+            sums.split_at(x);
             return Ok(true);
         }
         // `VH`: the first unpaired half-face, else the first half-face.

@@ -1,5 +1,5 @@
 //! A `.che` level file written by the streaming build: the triangles come from a
-//! [`TriangleSource`] block by block and go straight into the file's `V`; `O` is paired by
+//! [`Source`](crate::Source) block by block and go straight into the file's `V`; `O` is paired by
 //! the sweep of `che::build::stream` into the mapped file; `VH`, the edge directory and
 //! `EH` follow from them as the in-memory build computes them. Memory holds the open
 //! half-edges, one block, `VH` and the edge directory (about 5 bytes per vertex and 1 per
@@ -9,18 +9,19 @@
 //! Before the file takes its name every star is walked (one fan per vertex, no edge met
 //! twice at a vertex), which is what the in-memory build repairs and the sweep cannot see.
 
-use super::format::{Elem, FLAG_POSITIONS, Kind};
-use super::placed::{Part, Placed};
-use super::write::Section;
+use super::{empty, flags, later, positions_and_report};
 use crate::NONE;
+use crate::Source;
 use crate::che::BuildReport;
 use crate::che::build::stream;
 use crate::che::ids::prev;
 use crate::che::tables::{edge_directory, vertex_half_edges};
-use crate::che::{StarStep, SweepLimits, TriangleSource, for_each_step};
+use crate::che::{StarStep, SweepLimits, for_each_step};
 use crate::error::{Error, Result};
+use crate::levelfile::format::{Elem, Kind};
+use crate::levelfile::placed::Placed;
+use crate::levelfile::write::Section;
 use crate::util::alloc::try_vec;
-use glam::DVec3;
 use std::path::Path;
 
 /// How the streaming build runs.
@@ -46,9 +47,9 @@ impl Default for StreamOptions {
 /// edge of three triangles or run the same way twice, a vertex whose star is several fans)
 /// or an order that leaves too many half-edges open is an error, and no file is left.
 pub fn save_streamed(
-    source: &impl TriangleSource, path: &Path, options: StreamOptions,
+    source: &impl Source<3>, path: &Path, options: StreamOptions,
 ) -> Result<BuildReport> {
-    let (t, n) = (source.num_triangles(), source.num_vertices());
+    let (t, n) = (source.num_elements(), source.num_vertices());
     crate::che::build::check_counts(t, n)?;
     if !(1..=2).contains(&options.level) {
         return Err(Error::invalid(format!(
@@ -59,7 +60,7 @@ pub fn save_streamed(
     let mut file = create(path, source, options.level)?;
     fill_v(&mut file, source)?;
     if source.has_positions() {
-        fill_positions(&mut file, source)?;
+        super::fill_positions(&mut file, |first, out| source.positions(first, out))?;
     }
     let (v, o) = file.pair_mut::<u32, u32>("V", "O");
     o.fill(NONE);
@@ -69,16 +70,16 @@ pub fn save_streamed(
     let report = BuildReport {
         input_triangles: t,
         input_vertices: n,
-        input_edges: swept.edges,
-        boundary_edges: swept.boundary,
+        input_edges: swept.keys(),
+        boundary_edges: swept.open,
         ..BuildReport::default()
     };
     if options.level == 2 {
         fill_edges(&mut file, &vh)?;
     }
-    let counts = [n as u64, n as u64, swept.edges as u64, 3 * t as u64];
+    let counts = [n as u64, n as u64, swept.keys() as u64, 3 * t as u64];
     file.section_mut::<u64>("counts").copy_from_slice(&counts);
-    let r = super::che::report_sections(&report, "").swap_remove(0);
+    let r = crate::levelfile::che::report_sections(&report, "").swap_remove(0);
     let Section { data, .. } = r;
     data.copy_to(file.section_mut::<u8>("r"));
     file.finish()?;
@@ -88,14 +89,8 @@ pub fn save_streamed(
 /// The file laid out as `Che::save` lays out a structure of this size: the sections whose
 /// contents are known now are written, the others filled later (`EH` at its largest,
 /// shrunk when the edges are counted).
-fn create(path: &Path, source: &impl TriangleSource, level: u8) -> Result<Placed> {
-    let (t, n) = (source.num_triangles() as u64, source.num_vertices() as u64);
-    let later = |name: &str, elem, count| Part::Later {
-        name: name.to_string(),
-        elem,
-        count,
-    };
-    let empty = |name: &str| Part::Now(Section::u32s(name, Vec::new()));
+fn create(path: &Path, source: &impl Source<3>, level: u8) -> Result<Placed> {
+    let (t, n) = (source.num_elements() as u64, source.num_vertices() as u64);
     let mut parts = vec![
         later("counts", Elem::U64, 4),
         later("V", Elem::U32, 3 * t),
@@ -104,47 +99,25 @@ fn create(path: &Path, source: &impl TriangleSource, level: u8) -> Result<Placed
         empty("non_manifold"),
         empty("seams"),
     ];
-    if source.has_positions() {
-        parts.push(later("positions", Elem::F64, 3 * n));
-    }
     let report = BuildReport::default();
-    for s in super::che::report_sections(&report, "") {
-        parts.push(match s.name.as_str() {
-            "r" => later("r", Elem::U64, s.data.len() as u64),
-            _ => Part::Now(s),
-        });
-    }
+    let sections = crate::levelfile::che::report_sections(&report, "");
+    positions_and_report(&mut parts, source.has_positions().then_some(n), sections);
     parts.push(later("O", Elem::U32, 3 * t));
     if level == 2 {
         parts.push(later("VH", Elem::U32, n));
         parts.push(later("edge_ranks", Elem::U64, (3 * t).div_ceil(32)));
         parts.push(later("EH", Elem::U32, 3 * t));
     }
-    let flags = if source.has_positions() {
-        FLAG_POSITIONS
-    } else {
-        0
-    };
+    let flags = flags(source.has_positions());
     Placed::create(path, (Kind::Che, level, flags), &parts)
 }
 
-/// Triangles the source writes at a time.
-const BLOCK: usize = 1 << 20;
-
-fn fill_v(file: &mut Placed, source: &impl TriangleSource) -> Result<()> {
+fn fill_v(file: &mut Placed, source: &impl Source<3>) -> Result<()> {
     let n = source.num_vertices();
     let v = file.section_mut::<[u32; 3]>("V");
-    for (k, block) in v.chunks_mut(BLOCK).enumerate() {
-        source.triangles(k * BLOCK, block)?;
-        stream::check_triangles(block.as_flattened(), k * BLOCK, n)?;
-    }
-    Ok(())
-}
-
-fn fill_positions(file: &mut Placed, source: &impl TriangleSource) -> Result<()> {
-    let p = file.section_mut::<DVec3>("positions");
-    for (k, block) in p.chunks_mut(BLOCK).enumerate() {
-        source.positions(k * BLOCK, block)?;
+    for (k, block) in v.chunks_mut(super::BLOCK).enumerate() {
+        source.elements(k * super::BLOCK, block)?;
+        stream::check_triangles(block.as_flattened(), k * super::BLOCK, n)?;
     }
     Ok(())
 }

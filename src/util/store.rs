@@ -47,16 +47,25 @@ impl<T: Pod> Store<T> {
 
     /// The elements as an owned vector to write to: a mapped range is copied first, into
     /// memory reserved fallibly (`what` names the array in the error).
+    #[inline]
     pub(crate) fn to_mut(&mut self, what: &str) -> Result<&mut Vec<T>> {
         if let Store::Mapped { .. } = self {
-            let mut owned = crate::util::alloc::try_with_capacity(self.len(), what)?;
-            owned.extend_from_slice(self);
-            *self = Store::Owned(owned);
+            self.promote(what)?;
         }
         match self {
             Store::Owned(v) => Ok(v),
             Store::Mapped { .. } => unreachable!("promoted above"),
         }
+    }
+
+    /// A mapped array copied into memory: once per array, on the first write (every edit
+    /// asks, so the question stays inline and the copy out of line).
+    #[cold]
+    fn promote(&mut self, what: &str) -> Result<()> {
+        let mut owned = crate::util::alloc::try_with_capacity(self.len(), what)?;
+        owned.extend_from_slice(self);
+        *self = Store::Owned(owned);
+        Ok(())
     }
 }
 

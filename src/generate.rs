@@ -393,14 +393,8 @@ mod tests {
     fn the_cube_grid_reads_what_cube_grid_lists() {
         use crate::Source;
         let one = cube_grid(1);
-        let kuhn = [
-            [0, 1, 3, 7],
-            [0, 2, 3, 7],
-            [0, 1, 5, 7],
-            [0, 4, 5, 7],
-            [0, 2, 6, 7],
-            [0, 4, 6, 7],
-        ];
+        // Each a path along the cube's edges: corner 0, corners p and q, corner 7.
+        let kuhn = [[1, 3], [2, 3], [1, 5], [4, 5], [2, 6], [4, 6]].map(|[p, q]| [0, p, q, 7]);
         assert_eq!(one.tetrahedra, kuhn);
         assert_eq!(one.positions[6], DVec3::new(0.0, 1.0, 1.0));
         let grid = CubeGrid::of(1000).unwrap();

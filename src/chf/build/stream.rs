@@ -83,7 +83,6 @@ impl sweep::Rules for HalfFaces<'_> {
 
     fn check_pair(&self, g: u32, h: u32) -> Result<()> {
         let v = self.v;
-        let face = crate::chf::ids::face_cycle(v, g);
         // Half-face `i` lies opposite corner `i`.
         if v[g as usize] == v[h as usize] {
             return Err(refused(format!(
@@ -93,6 +92,7 @@ impl sweep::Rules for HalfFaces<'_> {
             )));
         }
         if crate::chf::ids::same_direction(v, g, h) {
+            let face = crate::chf::ids::face_cycle(v, g);
             return Err(refused(format!(
                 "tetrahedra {} and {} run their face {face:?} the same way round",
                 tet(g),

@@ -598,7 +598,8 @@ typedef struct che_build_report {
      */
     uint64_t non_manifold_edges;
     /**
-     * Input vertices whose star is several fans (split into one copy per fan).
+     * Input vertices whose star is several fans (non-manifold vertices), split into one
+     * copy per fan.
      */
     uint64_t split_vertices;
     /**
@@ -606,7 +607,7 @@ typedef struct che_build_report {
      */
     uint64_t seam_split_vertices;
     /**
-     * Vertex copies appended after the input vertices.
+     * Vertex copies appended after the input vertices (by both kinds of split).
      */
     uint64_t added_vertices;
     /**
@@ -614,15 +615,16 @@ typedef struct che_build_report {
      */
     uint64_t flipped_triangles;
     /**
-     * Components that cannot be oriented.
+     * Components that cannot be oriented; one input triangle of each.
      */
     uint64_t non_orientable_components;
     /**
-     * Edges left unpaired on the seams of non-orientable components.
+     * Half-edges left unpaired on the seams of non-orientable components.
      */
     uint64_t seam_edges;
     /**
-     * Input vertices with a NaN or infinite coordinate (kept).
+     * Input vertices with a NaN or infinite coordinate (kept: the CHE build uses no
+     * positions, but a host computing geometry must skip them).
      */
     uint64_t non_finite_vertices;
     /**
@@ -649,11 +651,11 @@ typedef struct che_memory {
      */
     uint64_t vertex_half_edges;
     /**
-     * `EH` and the edge rank bits, level 2.
+     * `EH` and the canonical-half-edge rank bits, level 2.
      */
     uint64_t edges;
     /**
-     * `CH` and the curve lookup, level 3.
+     * `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3.
      */
     uint64_t curves;
     /**
@@ -665,7 +667,7 @@ typedef struct che_memory {
      */
     uint64_t positions;
     /**
-     * Origin maps and non-manifold and seam flags kept by the core (not topology).
+     * Origin maps and the non-manifold and seam flags (not topology).
      */
     uint64_t maps;
 } che_memory;
@@ -714,9 +716,10 @@ typedef struct chf_build_options {
     /**
      * Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
      * and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
-     * the offending ids) instead of keeping them (default 0). Any non-zero value is true.
-     * (A `uint8_t` rather than a `bool`, with the size and offset of the `bool` it was: a C
-     * `bool` field can hold other values, which Rust may not read as a `bool`.)
+     * the offending ids) instead of keeping them
+     * (default 0). Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the
+     * size and offset of the `bool` it was: a C `bool` field can hold other values, which
+     * Rust may not read as a `bool`.)
      */
     uint8_t strict;
     /**
@@ -820,12 +823,13 @@ typedef struct chf_build_report {
      */
     uint64_t dropped_degenerate;
     /**
-     * Tetrahedra whose positions have a zero determinant (kept).
+     * Tetrahedra whose positions have a zero determinant (kept; oriented by their
+     * neighbours).
      */
     uint64_t zero_volume;
     /**
-     * Tetrahedra whose determinant has the sign opposite to their component's orientation
-     * (a folded or tangled mesh; kept).
+     * Tetrahedra whose determinant has the sign opposite to the orientation of their
+     * component (a folded or tangled mesh; kept, oriented with their neighbours).
      */
     uint64_t inverted_tetrahedra;
     /**
@@ -849,17 +853,19 @@ typedef struct chf_build_report {
      */
     uint64_t input_edges;
     /**
-     * Input edges whose tetrahedra form several fans.
+     * Input edges whose tetrahedra form several fans (face-connected pieces around the
+     * edge): two tetrahedra sharing only an edge, the edges of a non-manifold face, ...
      */
     uint64_t non_manifold_edges;
     /**
-     * Of those, the ones whose fans still share both end vertices after the vertex split
-     * (one edge id per fan, all with the same two vertices).
+     * Of the non-manifold edges, the ones whose fans still share both end vertices after
+     * the vertex split (the stars of both ends are connected through other tetrahedra):
+     * the structure keeps one edge id per fan, all with the same two vertices.
      */
     uint64_t kept_non_manifold_edges;
     /**
-     * Input vertices whose star is several face-connected pieces (split into one copy per
-     * piece).
+     * Input vertices whose star falls into several face-connected pieces (non-manifold
+     * vertices), split into one vertex per piece.
      */
     uint64_t split_vertices;
     /**
@@ -867,7 +873,7 @@ typedef struct chf_build_report {
      */
     uint64_t seam_split_vertices;
     /**
-     * Vertex copies appended after the input vertices.
+     * Vertex copies appended after the input vertices (by both kinds of split).
      */
     uint64_t added_vertices;
     /**
@@ -875,7 +881,8 @@ typedef struct chf_build_report {
      */
     uint64_t flipped_tetrahedra;
     /**
-     * Face-connected components that cannot be consistently oriented.
+     * Face-connected components that cannot be consistently oriented; one input
+     * tetrahedron of each.
      */
     uint64_t non_orientable_components;
     /**
@@ -883,8 +890,9 @@ typedef struct chf_build_report {
      */
     uint64_t seam_faces;
     /**
-     * Input vertices with a NaN or infinite coordinate (their tetrahedra are oriented by
-     * their neighbours).
+     * Input vertices with a NaN or infinite coordinate. Their tetrahedra have no
+     * determinant sign: they are oriented by their neighbours, and counted neither as
+     * zero-volume nor as inverted.
      */
     uint64_t non_finite_vertices;
     /**
@@ -911,8 +919,8 @@ typedef struct chf_memory {
      */
     uint64_t vertex_half_faces;
     /**
-     * The canonical-edge-slot rank bits and the tetrahedron of each edge, level 2; once
-     * edited, the explicit edge ids and the removed marks.
+     * The canonical-slot rank bits and the tetrahedron of each edge, level 2; once edited,
+     * the explicit edge ids and the removed marks.
      */
     uint64_t edges;
     /**
@@ -921,7 +929,8 @@ typedef struct chf_memory {
      */
     uint64_t faces;
     /**
-     * The boundary CHE's topology, its maps and the component of each vertex, level 3.
+     * The boundary CHE's topology, the boundary rank bits, the triangle -> half-face map
+     * and the component of each vertex, level 3.
      */
     uint64_t boundary;
     /**

@@ -2,21 +2,88 @@
 //! regenerates it in memory and fails when the checked-in file differs.
 //! `TOPOMESH_BLESS=1 cargo test --test header_drift` rewrites it.
 //!
+//! The exports of one shape (a CSR call, a relation into a caller buffer, a view) come
+//! from one macro each, and cbindgen reads only what is written out, so it reads the
+//! crate after macro expansion: `rustc -Zunpretty=expanded`, an unstable flag that
+//! `RUSTC_BOOTSTRAP=1` lets the stable toolchain take (as the fuzz and sanitizer scripts
+//! do), in a target folder of its own so that it never waits on the test's build.
+//!
 //! cbindgen writes the functions in the order of the Rust modules; the header a user reads
 //! groups them by what they do, under section headings ([`SECTIONS`]), whatever the module
 //! layout. A function that no section claims fails the test, so a new export gets a place.
 
 use std::path::Path;
+use std::process::Command;
+
+/// The modules the header declares: the C skin, and the C enums that are the core's own
+/// (`repr(u32)` there).
+const MODULES: &[&[&str]] = &[
+    &["ffi"],
+    &["che", "export", "matrices"],
+    &["chf", "export", "matrices"],
+];
+
+/// The library's source with every macro expanded, as one file.
+fn expanded_crate() -> String {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let out = Command::new(cargo)
+        .current_dir(root)
+        .env("RUSTC_BOOTSTRAP", "1")
+        .env(
+            "CARGO_TARGET_DIR",
+            Path::new(env!("CARGO_TARGET_TMPDIR")).join("expand"),
+        )
+        .args([
+            "rustc",
+            "--lib",
+            "--profile=check",
+            "--locked",
+            "-p",
+            "topomesh",
+            "-q",
+        ])
+        .args(["--", "-Zunpretty=expanded"])
+        .output()
+        .expect("cargo runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success(),
+        "expanding the crate failed:\n{stderr}"
+    );
+    String::from_utf8(out.stdout).expect("expanded source is UTF-8")
+}
+
+/// The text of module `path` in the expanded source: rustc prints a module as
+/// `mod name {` and its closing `}` at the same indentation, four spaces a level.
+fn module<'a>(expanded: &'a str, path: &[&str]) -> &'a str {
+    let (mut from, mut to, mut indent) = (0, expanded.len(), String::new());
+    for name in path {
+        let scope = &expanded[from..to];
+        let opening =
+            ["pub mod", "pub(crate) mod", "mod"].map(|m| format!("\n{indent}{m} {name} {{\n"));
+        let start = opening
+            .iter()
+            .find_map(|o| scope.find(o.as_str()))
+            .unwrap_or_else(|| panic!("module {path:?} not found in the expanded source"));
+        let close = format!("\n{indent}}}\n");
+        let end = start + 1 + scope[start + 1..].find(&close).expect("module end") + close.len();
+        (from, to) = (from + start + 1, from + end);
+        indent.push_str("    ");
+    }
+    &expanded[from..to]
+}
 
 fn generate() -> String {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let config = cbindgen::Config::from_file(root.join("cbindgen.toml")).expect("cbindgen.toml");
+    let expanded = expanded_crate();
+    let declared: Vec<&str> = MODULES.iter().map(|p| module(&expanded, p)).collect();
+    let source = Path::new(env!("CARGO_TARGET_TMPDIR")).join("topomesh_ffi_expanded.rs");
+    std::fs::write(&source, declared.join("\n")).expect("write the expanded C skin");
     let bindings = cbindgen::Builder::new()
         .with_config(config)
-        .with_src(root.join("src/ffi/mod.rs"))
-        // The C enums that are the core's own (`repr(u32)` there).
-        .with_src(root.join("src/che/export/matrices.rs"))
-        .with_src(root.join("src/chf/export/matrices.rs"))
+        .with_src(source)
         .generate()
         .expect("cbindgen could not generate the header");
     let mut out = Vec::new();

@@ -44,7 +44,7 @@ pub mod edit;
 pub mod export;
 pub(crate) mod geometry;
 pub mod ids;
-mod query;
+pub(crate) mod query;
 mod star_pass;
 
 pub use crate::Ids;

@@ -92,7 +92,8 @@ pub(crate) fn guard_or<T>(fallback: T, body: impl FnOnce() -> Result<T>) -> T {
     value
 }
 
-fn null(name: &str) -> Error {
+/// The NULL_ARGUMENT error naming argument `name`.
+pub(crate) fn null_argument(name: &str) -> Error {
     Error::new(
         ErrorKind::NullArgument,
         format!("argument '{name}' is NULL"),
@@ -114,19 +115,72 @@ impl<T> Out<T> {
 
 /// An out-parameter, or a NULL_ARGUMENT error naming it.
 pub(crate) unsafe fn out_arg<T>(p: *mut T, name: &str) -> Result<Out<T>> {
-    NonNull::new(p).map(Out).ok_or_else(|| null(name))
+    NonNull::new(p).map(Out).ok_or_else(|| null_argument(name))
+}
+
+/// An optional out-parameter: `None` for NULL.
+pub(crate) unsafe fn optional_out<T>(p: *mut T) -> Option<Out<T>> {
+    NonNull::new(p).map(Out)
+}
+
+/// An optional position: NULL, or three doubles x, y, z. Safe to call from an export's
+/// body: the export's contract is what makes `p` readable.
+pub(crate) fn position_arg(p: *const f64) -> Result<Option<glam::DVec3>> {
+    if p.is_null() {
+        return Ok(None);
+    }
+    // SAFETY: the export's contract: NULL (handled) or three readable doubles.
+    let xyz = unsafe { slice_arg(p, 3, "position")? };
+    Ok(Some(glam::DVec3::new(xyz[0], xyz[1], xyz[2])))
+}
+
+/// `N` ids read from the caller's array, or a NULL_ARGUMENT error naming it (safe to call
+/// from an export's body, as `position_arg`).
+pub(crate) fn ids_arg<const N: usize>(p: *const u32, name: &str) -> Result<[u32; N]> {
+    // SAFETY: the export's contract: NULL (refused) or `N` readable ids.
+    let ids = unsafe { slice_arg(p, N, name)? };
+    Ok(std::array::from_fn(|i| ids[i]))
+}
+
+/// The old -> new maps of a garbage collection: the caller's buffers `(map, cap, need,
+/// name)`, NULL for a map not wanted; one with room for fewer than `need` ids (the count
+/// before the call) is BUFFER_TOO_SMALL, before anything changes.
+pub(crate) unsafe fn maps_out<'a, const N: usize>(
+    buffers: [(*mut u32, usize, usize, &str); N],
+) -> Result<[Option<&'a mut [u32]>; N]> {
+    for (p, cap, need, name) in buffers {
+        if !p.is_null() && cap < need {
+            return Err(Error::new(
+                ErrorKind::BufferTooSmall,
+                format!("{name}: {need} entries needed, {cap} given"),
+            ));
+        }
+    }
+    // SAFETY: forwarded contract: NULL (none) or `cap >= need` writable ids.
+    Ok(buffers.map(|(p, _, need, _)| {
+        unsafe { p.as_mut() }.map(|_| unsafe { std::slice::from_raw_parts_mut(p, need) })
+    }))
+}
+
+/// Copies each map into its buffer of [`maps_out`] (when wanted).
+pub(crate) fn fill_maps<const N: usize>(outs: [Option<&mut [u32]>; N], maps: [&[u32]; N]) {
+    for (out, map) in outs.into_iter().zip(maps) {
+        if let Some(out) = out {
+            out.copy_from_slice(map);
+        }
+    }
 }
 
 /// A handle (or any input struct) by reference.
 pub(crate) unsafe fn handle<'a, T>(p: *const T, name: &str) -> Result<&'a T> {
     // SAFETY: forwarded contract.
-    unsafe { p.as_ref() }.ok_or_else(|| null(name))
+    unsafe { p.as_ref() }.ok_or_else(|| null_argument(name))
 }
 
 /// A handle by exclusive reference.
 pub(crate) unsafe fn handle_mut<'a, T>(p: *mut T, name: &str) -> Result<&'a mut T> {
     // SAFETY: forwarded contract.
-    unsafe { p.as_mut() }.ok_or_else(|| null(name))
+    unsafe { p.as_mut() }.ok_or_else(|| null_argument(name))
 }
 
 /// An input array of `len` elements (`len * size_of::<T>()` fits `isize`: the callers
@@ -134,7 +188,7 @@ pub(crate) unsafe fn handle_mut<'a, T>(p: *mut T, name: &str) -> Result<&'a mut 
 pub(crate) unsafe fn slice_arg<'a, T>(p: *const T, len: usize, name: &str) -> Result<&'a [T]> {
     match (len, p.is_null()) {
         (0, _) => Ok(&[]),
-        (_, true) => Err(null(name)),
+        (_, true) => Err(null_argument(name)),
         // SAFETY: non-NULL, valid for `len` reads (contract), and aligned (C arrays of `T`).
         _ => Ok(unsafe { std::slice::from_raw_parts(p, len) }),
     }
@@ -149,7 +203,7 @@ pub(crate) unsafe fn options_arg<T: Copy + Default>(p: *const T) -> T {
 /// A NUL-terminated path: its bytes as they are on Unix, UTF-8 elsewhere.
 pub(crate) unsafe fn path_arg<'a>(p: *const c_char, name: &str) -> Result<&'a std::path::Path> {
     if p.is_null() {
-        return Err(null(name));
+        return Err(null_argument(name));
     }
     // SAFETY: non-NULL and NUL-terminated (contract).
     let path = unsafe { CStr::from_ptr(p) };
@@ -291,6 +345,10 @@ pub(crate) trait Handle {
     type Core;
     fn core(&self) -> &Self::Core;
     fn core_mut(&mut self) -> &mut Self::Core;
+    /// After an edit: drops each identity origin view the handle materialised whose length
+    /// no longer matches the structure (an edit added or compacted elements); the others,
+    /// and every view after a change of level, stay valid.
+    fn settle_views(&mut self);
     /// The reader's warnings, `file:line: message` each (none for a mesh built from arrays).
     fn warnings(&self) -> &[String];
 }
@@ -361,7 +419,11 @@ pub(crate) unsafe fn buf_arg<'a, T>(
     buf: *mut T, cap: usize, name: &str,
 ) -> Result<Option<&'a mut [MaybeUninit<T>]>> {
     if buf.is_null() {
-        return if cap == 0 { Ok(None) } else { Err(null(name)) };
+        return if cap == 0 {
+            Ok(None)
+        } else {
+            Err(null_argument(name))
+        };
     }
     // No object is larger than isize::MAX bytes, so a larger `cap` (say SIZE_MAX for
     // "unbounded") cannot be the real size: clamp it rather than build an invalid slice.
@@ -402,7 +464,11 @@ pub(crate) unsafe fn sink<'a, T: Copy>(
 pub(crate) unsafe fn csr_sink<'a>(bufs: [(*mut u32, usize, *mut usize); 2]) -> Result<CsrSink<'a>> {
     let [(o, oc, no), (i, ic, ni)] = bufs;
     if o.is_null() != i.is_null() {
-        return Err(null(if o.is_null() { "offsets" } else { "indices" }));
+        return Err(null_argument(if o.is_null() {
+            "offsets"
+        } else {
+            "indices"
+        }));
     }
     // SAFETY: forwarded contract.
     unsafe {

@@ -2,8 +2,9 @@
 //! (see `tests/header_drift.rs`); the C++ wrapper is `include/topomesh.hpp`.
 //!
 //! `che/` and `chf/` hold the exports, one file per kind of call (build, relations, csr,
-//! views, info, ...); each export is the guard, a conversion and one call into the core,
-//! its body one macro of `shapes`, made of the helpers of `boundary`.
+//! views, info, ...); each export is the guard, a conversion and one call into the core:
+//! the uniform shapes are entries of `declare::exports!`, the other bodies macros of
+//! `shapes`, both made of the helpers of `boundary`.
 //!
 //! Safety contract of every export (written once here and in the header): each pointer
 //! argument is NULL or valid for the access its documentation states (a handle from this
@@ -23,6 +24,7 @@ pub mod status;
 pub(crate) mod boundary;
 pub mod che;
 pub mod chf;
+mod declare;
 mod mesh_arrays;
 mod shapes;
 #[cfg(test)]

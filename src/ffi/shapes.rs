@@ -1,35 +1,11 @@
-//! The uniform bodies of the exports, as macros shared by the CHE and CHF exports.
-//! cbindgen reads the source without expanding macros, so every export keeps its doc
-//! comment and signature written out; only the body comes from here, for example
-//! `ids!(m, buf, cap, out_len, check_vertex(v) => |c| c.vertex_edges(v))`.
+//! The uniform bodies of the exports, as macros shared by the CHE and CHF exports, for
+//! example `ids!(m, buf, cap, out_len, check_vertex(v) => |c| c.vertex_edges(v))`; the
+//! signatures of the uniform shapes come from `declare::exports!`.
 //!
 //! Each macro is the guard (null checks, `catch_unwind`, error -> status and detail), the
 //! conversion of the arguments and one call into the core, reached through
 //! [`Handle`](super::boundary::Handle). The pointer arguments are passed by name so that
 //! the body stays in the caller's words; each follows the safety contract of `ffi`.
-
-/// A count or other plain value returned directly, 0 for a NULL handle:
-/// `count!(m, |c| c.num_vertices())`.
-macro_rules! count {
-    ($m:ident, |$c:ident| $value:expr) => {
-        $crate::ffi::boundary::guard_or(0 as _, || {
-            // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-            let $c = unsafe { $crate::ffi::boundary::core($m)? };
-            Ok($value)
-        })
-    };
-}
-
-/// A status alone: `status!(m, |c| result)` (the closure gives a `Result<()>`).
-macro_rules! status {
-    ($m:ident, |$c:ident| $result:expr) => {
-        $crate::ffi::boundary::guard(|| {
-            // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-            let $c = unsafe { $crate::ffi::boundary::core($m)? };
-            $result
-        })
-    };
-}
 
 /// One value into the out-parameter `out`: `value!(m, out, |c| result)` (the closure gives
 /// a `Result`), or `value!(m, out, check_vertex(v) => |c| value)` (a range check first).
@@ -45,7 +21,7 @@ macro_rules! value {
         })
     };
     ($m:ident, $out:ident, $check:ident($id:expr) => |$c:ident| $value:expr) => {
-        value!($m, $out, |$c| $c.$check($id).map(|_| $value))
+        $crate::ffi::shapes::value!($m, $out, |$c| $c.$check($id).map(|_| $value))
     };
 }
 
@@ -67,58 +43,40 @@ macro_rules! ids {
         })
     };
     ($m:ident, $buf:ident, $cap:ident, $len:ident, try |$c:ident| $items:expr) => {
-        ids!($m, $buf, $cap, $len, |$c, s| s.extend($items?))
+        $crate::ffi::shapes::ids!($m, $buf, $cap, $len, |$c, s| s.extend($items?))
     };
     ($m:ident, $buf:ident, $cap:ident, $len:ident, $check:ident($id:expr) => |$c:ident, $s:ident| $walk:expr) => {
-        ids!($m, $buf, $cap, $len, |$c, $s| ($c.$check($id)?, $walk))
+        $crate::ffi::shapes::ids!($m, $buf, $cap, $len, |$c, $s| ($c.$check($id)?, $walk))
     };
     ($m:ident, $buf:ident, $cap:ident, $len:ident, $check:ident($id:expr) => |$c:ident| $items:expr) => {
-        ids!($m, $buf, $cap, $len, |$c, s| (
+        $crate::ffi::shapes::ids!($m, $buf, $cap, $len, |$c, s| (
             $c.$check($id)?,
             s.extend($items)
         ))
     };
 }
 
-/// A bulk answer in CSR into the caller's `offsets` and `indices` (see `CsrSink`):
-/// `csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices => rows)`,
-/// where the core's method `rows` writes its rows into the sink (a `crate::che::Rows`),
-/// or the same with `|c, s| expression` in place of `rows`.
-macro_rules! csr {
-    ($m:ident, $o:ident, $oc:ident, $i:ident, $ic:ident, $no:ident, $ni:ident => $rows:ident) => {
-        csr!($m, $o, $oc, $i, $ic, $no, $ni => |c, s| c.$rows(s))
-    };
-    ($m:ident, $o:ident, $oc:ident, $i:ident, $ic:ident, $no:ident, $ni:ident => |$c:ident, $s:ident| $rows:expr) => {
+/// An edit of the mesh behind an exclusive handle (see `Handle::settle_views`), its answer into
+/// `out` when that is not NULL: `edit!(m, out_v, |c| c.add_vertex(p))`.
+macro_rules! edit {
+    ($m:ident, $out:expr, |$c:ident| $result:expr) => {
         $crate::ffi::boundary::guard(|| {
-            // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-            let ($c, mut sink) = unsafe {
-                use $crate::ffi::boundary::{core, csr_sink};
-                (core($m)?, csr_sink([($o, $oc, $no), ($i, $ic, $ni)])?)
+            // SAFETY: caller contract (see `ffi`): NULL or a live handle, not shared, and
+            // an out-parameter NULL or valid for one write.
+            let (h, out) = unsafe {
+                use $crate::ffi::boundary::{handle_mut, optional_out};
+                (handle_mut($m, "m")?, optional_out($out))
             };
-            let $s = &mut sink;
-            $crate::util::alloc::Done::done($rows)?;
-            sink.finish()
+            let $c = $crate::ffi::boundary::Handle::core_mut(h);
+            let answer = $result;
+            $crate::ffi::boundary::Handle::settle_views(h);
+            let answer = answer?;
+            if let Some(out) = out {
+                out.set(answer);
+            }
+            Ok(())
         })
     };
-}
-
-/// A zero-copy view: the first element of the slice the closure gives (`None`: NULL) and
-/// its length into `*len` (when not NULL); NULL and 0 for a NULL handle. An empty
-/// container may come as a non-NULL pointer with length 0. The closure gets the handle,
-/// which may hold materialised maps.
-macro_rules! view {
-    ($m:ident, $len:ident, |$h:ident| $slice:expr) => {{
-        let (p, n) = $crate::ffi::boundary::guard_or((std::ptr::null(), 0), || {
-            // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-            let $h = unsafe { $crate::ffi::boundary::handle($m, "m")? };
-            Ok($slice.map_or((std::ptr::null(), 0), |s| (s.as_ptr(), s.len())))
-        });
-        // SAFETY: caller contract (see `ffi`): NULL or valid for one write.
-        if let Some(len) = unsafe { $len.as_mut() } {
-            *len = n;
-        }
-        p
-    }};
 }
 
 /// A new handle into `*out` (NULL on every failure): `made` gives the core structure.
@@ -168,7 +126,7 @@ macro_rules! save {
         })
     };
     ($m:ident, $path:ident, $flags:ident => |$c:ident, $p:ident, $o:ident| $call:expr) => {
-        save!($m, $path => |$c, $p| {
+        $crate::ffi::shapes::save!($m, $path => |$c, $p| {
             let $o = $crate::ffi::boundary::write_flags_arg($flags)?;
             $call
         })
@@ -182,18 +140,6 @@ macro_rules! open {
         $crate::ffi::shapes::make!($out, {
             let options = $crate::ffi::boundary::open_flags_arg($flags)?;
             $open($crate::ffi::boundary::path_arg($path, "path")?, options)
-        })
-    };
-}
-
-/// Raises or lowers the level of a handle in place (exclusive access).
-macro_rules! relevel {
-    ($m:ident, $level:ident) => {
-        $crate::ffi::boundary::guard(|| {
-            // SAFETY: caller contract (see `ffi`): NULL or a live handle, not shared.
-            let h = unsafe { $crate::ffi::boundary::handle_mut($m, "m")? };
-            let level = $crate::ffi::boundary::level_arg($level)?;
-            $crate::ffi::boundary::Handle::core_mut(h).build_level(level)
         })
     };
 }
@@ -216,10 +162,11 @@ macro_rules! warnings {
     };
 }
 
-/// The Rust side of a handle type and its options struct: `Handle` over the core field,
-/// the handle from a core structure, the options' defaults, conversion and C layout.
+/// The Rust side of a handle type and its options struct: `Handle` over the core field
+/// (the fields after it are the origin views, each with the count it spans), the handle from a core
+/// structure, the options' defaults, conversion and C layout.
 macro_rules! handle {
-    ($h:ident { $field:ident: $core:ty, $($map:ident),* }, $opt:ident => $core_opt:ident) => {
+    ($h:ident { $field:ident: $core:ty, $($map:ident: $count:ident),* }, $opt:ident => $core_opt:ident) => {
         impl $crate::ffi::boundary::Handle for $h {
             type Core = $core;
             #[inline(always)]
@@ -228,6 +175,11 @@ macro_rules! handle {
             }
             fn core_mut(&mut self) -> &mut $core {
                 &mut self.$field
+            }
+            fn settle_views(&mut self) {
+                $(if self.$map.get().is_some_and(|m| m.len() != self.$field.$count()) {
+                    self.$map = Default::default();
+                })*
             }
             fn warnings(&self) -> &[String] {
                 &self.warnings
@@ -245,13 +197,45 @@ macro_rules! handle {
 
         impl From<$core> for $h {
             fn from($field: $core) -> Self {
-                $h { $field, $($map: Default::default()),* }
+                $h { $field, warnings: Vec::new(), $($map: Default::default()),* }
             }
         }
 
         $crate::ffi::shapes::options!($opt => $core_opt {
             level: 0, strict: 4, threads: 8, memory_limit_bytes: 16, weld_tolerance: 24,
         } 32);
+    };
+}
+
+/// A C build options struct (`che_build_options`, `chf_build_options`): the same fields
+/// for both, with what `strict` rejects in the caller's words.
+macro_rules! build_options {
+    ($(#[$doc:meta])* $name:ident { $(#[$strict:meta])* strict }) => {
+        $(#[$doc])*
+        #[repr(C)]
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        pub struct $name {
+            /// The level, 0..3 (default 2).
+            pub level: u32,
+            $(#[$strict])*
+            /// (default 0). Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the
+            /// size and offset of the `bool` it was: a C `bool` field can hold other values, which
+            /// Rust may not read as a `bool`.)
+            pub strict: u8,
+            /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
+            /// the calling thread alone; a larger number is capped at what the machine runs at once
+            /// and at one thread per 8192 elements. The mesh is the same whatever the number.
+            pub threads: u32,
+            /// A memory budget for the build, in bytes (0, the default: none). The build
+            /// estimates its peak from the input's sizes and, when the estimate exceeds the
+            /// budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
+            /// estimate and the budget).
+            pub memory_limit_bytes: u64,
+            /// Weld before building: vertices at most this distance apart (on the positions, which
+            /// it needs) become one, the smallest id of each cluster of close vertices winning;
+            /// the others keep their ids but lose their elements. 0 (default) is off.
+            pub weld_tolerance: f64,
+        }
     };
 }
 
@@ -287,20 +271,6 @@ macro_rules! options {
     };
 }
 
-/// `From<&Core>` for a C struct that mirrors the core's fields by name (each converted
-/// with `as`: the C side widens counts to 64 bits).
-macro_rules! mirror {
-    ($core:ty => $c:ident { $($field:ident),* $(,)? }) => {
-        impl From<&$core> for $c {
-            #[allow(clippy::unnecessary_cast, reason = "some fields are already 64-bit")]
-            fn from(x: &$core) -> Self {
-                $c { $($field: x.$field as _),* }
-            }
-        }
-    };
-}
-
 pub(crate) use {
-    build, count, csr, handle, ids, load, make, mirror, open, options, relevel, save, status,
-    value, view, warnings,
+    build, build_options, edit, handle, ids, load, make, open, options, save, value, warnings,
 };

@@ -1,9 +1,8 @@
 //! The weld alone, for a C host that wants the map the builds apply with `weld_tolerance`.
 
-use super::boundary::{guard, sink};
+use super::boundary::{guard, null_argument, sink};
 use super::mesh_arrays::{TRIANGLES, mesh_arrays};
 use super::status::Status;
-use crate::error::{Error, ErrorKind};
 
 /// The weld of `n_vertices` positions (`3 * n_vertices` doubles) at `tolerance`, as the
 /// builds do it with `weld_tolerance`: into `buf`, for each vertex, the smallest id of its
@@ -20,10 +19,7 @@ pub unsafe extern "C" fn topomesh_weld_representatives(
         let (_, points) =
             unsafe { mesh_arrays(TRIANGLES, std::ptr::null(), 0, n_vertices, positions)? };
         if points.is_empty() && n_vertices != 0 {
-            return Err(Error::new(
-                ErrorKind::NullArgument,
-                "argument 'positions' is NULL",
-            ));
+            return Err(null_argument("positions"));
         }
         // SAFETY: forwarded contract.
         let mut sink = unsafe { sink(buf, cap, out_len, "buf")? };

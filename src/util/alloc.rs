@@ -114,7 +114,7 @@ pub(crate) fn or_panic<T>(r: Result<T>) -> T {
     })
 }
 
-/// What a fill gives back: nothing, or a result (the C skin's `csr!` takes either).
+/// What a fill gives back: nothing, or a result (the C skin's `csr` exports take either).
 pub(crate) trait Done {
     fn done(self) -> Result<()>;
 }

@@ -10,6 +10,7 @@ pub(crate) mod betti;
 pub(crate) mod budget;
 pub(crate) mod csr;
 pub(crate) mod dsu;
+pub(crate) mod fields;
 pub(crate) mod holes;
 pub(crate) mod input;
 pub(crate) mod options;

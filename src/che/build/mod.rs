@@ -9,7 +9,7 @@ mod level3;
 mod matching;
 mod options;
 mod orient;
-mod report;
+pub(crate) mod report;
 mod soup;
 mod split;
 pub(crate) mod stream;

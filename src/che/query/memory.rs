@@ -2,25 +2,36 @@
 
 use crate::che::Che;
 
-/// Bytes held by each container (lengths, not capacities).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Memory {
-    /// `V`, level 0.
-    pub half_edge_vertices: usize,
-    /// `O`, level 1.
-    pub opposites: usize,
-    /// `VH`, level 2.
-    pub vertex_half_edges: usize,
-    /// `EH` and the canonical-half-edge rank bits, level 2.
-    pub edges: usize,
-    /// `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3.
-    pub curves: usize,
-    /// The sum of the above: the topology.
-    pub topology: usize,
-    /// Positions (not topology).
-    pub positions: usize,
-    /// Origin maps and the non-manifold and seam flags (not topology).
-    pub maps: usize,
+/// The fields of [`Memory`], once for it and for its C mirror in `ffi` (see
+/// `util::fields`).
+macro_rules! memory_fields {
+    ($int:ty; $($head:tt)*) => {
+        $crate::util::fields::fields_struct! { $($head)* {
+            /// `V`, level 0.
+            half_edge_vertices: $int,
+            /// `O`, level 1.
+            opposites: $int,
+            /// `VH`, level 2.
+            vertex_half_edges: $int,
+            /// `EH` and the canonical-half-edge rank bits, level 2.
+            edges: $int,
+            /// `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3.
+            curves: $int,
+            /// The sum of the above: the topology.
+            topology: $int,
+            /// Positions (not topology).
+            positions: $int,
+            /// Origin maps and the non-manifold and seam flags (not topology).
+            maps: $int,
+        }}
+    };
+}
+pub(crate) use memory_fields;
+
+memory_fields! { usize;
+    /// Bytes held by each container (lengths, not capacities).
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    pub struct Memory
 }
 
 impl Che {

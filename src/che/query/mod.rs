@@ -5,11 +5,11 @@
 mod bulk;
 mod components;
 mod curves;
-mod memory;
+pub(crate) mod memory;
 mod relations;
 mod star;
 mod star_lent;
-mod summary;
+pub(crate) mod summary;
 mod validate;
 
 pub use bulk::Csr;

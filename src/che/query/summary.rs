@@ -7,30 +7,41 @@ use crate::error::Result;
 use crate::util::alloc::or_panic;
 use crate::util::dsu::{InputComplex, input_boundary};
 
-/// Field names match `che_summary` in the C API and the CLI's JSON.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Summary {
-    pub vertices: u64,
-    pub edges: u64,
-    pub triangles: u64,
-    /// Edges with exactly one triangle.
-    pub boundary_edges: u64,
-    /// Connected components of the boundary edges (for a manifold, the boundary loops).
-    pub boundary_curves: u64,
-    /// Connected components of the triangles (joined through shared vertices).
-    pub components: u64,
-    pub isolated_vertices: u64,
-    /// V - E + F of the input complex (isolated vertices count).
-    pub euler_characteristic: i64,
-    /// Sum of the component genera; -1 where undefined (non-manifold or non-orientable).
-    pub genus: i64,
-    pub orientable: bool,
-    pub manifold: bool,
-    pub dropped_degenerate: u64,
-    pub non_manifold_edges: u64,
-    pub split_vertices: u64,
-    pub flipped_triangles: u64,
-    pub non_orientable_components: u64,
+/// The fields of [`Summary`], once for it and for its C mirror in `ffi` (see
+/// `util::fields`).
+macro_rules! summary_fields {
+    ($($head:tt)*) => {
+        $crate::util::fields::fields_struct! { $($head)* {
+            vertices: u64,
+            edges: u64,
+            triangles: u64,
+            /// Edges with exactly one triangle.
+            boundary_edges: u64,
+            /// Connected components of the boundary edges (for a manifold, the boundary loops).
+            boundary_curves: u64,
+            /// Connected components of the triangles (joined through shared vertices).
+            components: u64,
+            isolated_vertices: u64,
+            /// V - E + F of the input complex (isolated vertices count).
+            euler_characteristic: i64,
+            /// Sum of the component genera; -1 where undefined (non-manifold or non-orientable).
+            genus: i64,
+            orientable: bool,
+            manifold: bool,
+            dropped_degenerate: u64,
+            non_manifold_edges: u64,
+            split_vertices: u64,
+            flipped_triangles: u64,
+            non_orientable_components: u64,
+        }}
+    };
+}
+pub(crate) use summary_fields;
+
+summary_fields! {
+    /// Field names match `che_summary` in the C API and the CLI's JSON.
+    #[derive(Clone, Debug, Default, PartialEq, Eq)]
+    pub struct Summary
 }
 
 impl Che {

@@ -1,68 +1,82 @@
 //! What a build did to its input: nothing is dropped or changed without being listed here.
 
-/// Counts, plus the first [`REPORT_EXAMPLES`](crate::REPORT_EXAMPLES) offending ids of each kind (input ids:
-/// input tetrahedra, input vertices).
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct BuildReport {
-    /// Tetrahedra given.
-    pub input_tetrahedra: usize,
-    /// Vertices given (the structure may hold more after splitting).
-    pub input_vertices: usize,
-    /// Tetrahedra with a repeated vertex id, dropped.
-    pub dropped_degenerate: usize,
-    pub degenerate_examples: Vec<u32>,
-    /// Tetrahedra whose positions have a zero determinant (kept; oriented by their
-    /// neighbours).
-    pub zero_volume: usize,
-    pub zero_volume_examples: Vec<u32>,
-    /// Tetrahedra whose determinant has the sign opposite to the orientation of their
-    /// component (a folded or tangled mesh; kept, oriented with their neighbours).
-    pub inverted_tetrahedra: usize,
-    pub inverted_examples: Vec<u32>,
-    /// Pairs of tetrahedra with the same four vertices (kept).
-    pub duplicate_tetrahedra: usize,
-    pub duplicate_examples: Vec<[u32; 2]>,
-    /// Unique input faces (vertex triples), those with one tetrahedron (boundary) and those
-    /// with three or more (non-manifold: their half-faces stay unpaired).
-    pub input_faces: usize,
-    pub boundary_faces: usize,
-    pub non_manifold_faces: usize,
-    pub non_manifold_face_examples: Vec<[u32; 3]>,
-    /// Unique input edges (vertex pairs).
-    pub input_edges: usize,
-    /// Input edges whose tetrahedra form several fans (face-connected pieces around the
-    /// edge): two tetrahedra sharing only an edge, the edges of a non-manifold face, ...
-    pub non_manifold_edges: usize,
-    pub non_manifold_edge_examples: Vec<[u32; 2]>,
-    /// Of those, the ones whose fans still share both end vertices after the vertex split
-    /// (the stars of both ends are connected through other tetrahedra): the structure
-    /// keeps one edge id per fan, all with the same two vertices.
-    pub kept_non_manifold_edges: usize,
-    pub kept_non_manifold_edge_examples: Vec<[u32; 2]>,
-    /// Input vertices whose star falls into several face-connected pieces (non-manifold
-    /// vertices), split into one vertex per piece.
-    pub split_vertices: usize,
-    pub split_vertex_examples: Vec<u32>,
-    /// Input vertices split only because an orientation seam crosses their star.
-    pub seam_split_vertices: usize,
-    /// Vertex copies appended after the input vertices (by both kinds of split).
-    pub added_vertices: usize,
-    /// Tetrahedra whose local vertices 1 and 2 were swapped to orient them.
-    pub flipped_tetrahedra: usize,
-    /// Face-connected components that cannot be consistently oriented; one input
-    /// tetrahedron of each.
-    pub non_orientable_components: usize,
-    pub non_orientable_examples: Vec<u32>,
-    /// Faces left unpaired because their two tetrahedra could not agree on an orientation.
-    pub seam_faces: usize,
-    /// Input vertices with a NaN or infinite coordinate. Their tetrahedra have no
-    /// determinant sign: they are oriented by their neighbours, and counted neither as
-    /// zero-volume nor as inverted.
-    pub non_finite_vertices: u64,
-    pub non_finite_vertex_examples: Vec<u32>,
-    /// Vertices merged into another by the weld (`BuildOptions::weld_tolerance`): no
-    /// element uses them any more; they keep their ids.
-    pub welded_vertices: usize,
+/// The counts of [`BuildReport`], once for it and for its C mirror in `ffi` (see
+/// `util::fields`); `extra` fields follow them.
+macro_rules! report_fields {
+    ($int:ty; [$($head:tt)*] $($extra:tt)*) => {
+        $crate::util::fields::fields_struct! { $($head)* {
+            /// Tetrahedra given.
+            input_tetrahedra: $int,
+            /// Vertices given (the structure may hold more after splitting).
+            input_vertices: $int,
+            /// Tetrahedra with a repeated vertex id, dropped.
+            dropped_degenerate: $int,
+            /// Tetrahedra whose positions have a zero determinant (kept; oriented by their
+            /// neighbours).
+            zero_volume: $int,
+            /// Tetrahedra whose determinant has the sign opposite to the orientation of their
+            /// component (a folded or tangled mesh; kept, oriented with their neighbours).
+            inverted_tetrahedra: $int,
+            /// Pairs of tetrahedra with the same four vertices (kept).
+            duplicate_tetrahedra: $int,
+            /// Unique input faces (vertex triples).
+            input_faces: $int,
+            /// Input faces with one tetrahedron.
+            boundary_faces: $int,
+            /// Input faces with three or more tetrahedra (their half-faces stay unpaired).
+            non_manifold_faces: $int,
+            /// Unique input edges (vertex pairs).
+            input_edges: $int,
+            /// Input edges whose tetrahedra form several fans (face-connected pieces around the
+            /// edge): two tetrahedra sharing only an edge, the edges of a non-manifold face, ...
+            non_manifold_edges: $int,
+            /// Of the non-manifold edges, the ones whose fans still share both end vertices after
+            /// the vertex split (the stars of both ends are connected through other tetrahedra):
+            /// the structure keeps one edge id per fan, all with the same two vertices.
+            kept_non_manifold_edges: $int,
+            /// Input vertices whose star falls into several face-connected pieces (non-manifold
+            /// vertices), split into one vertex per piece.
+            split_vertices: $int,
+            /// Input vertices split only because an orientation seam crosses their star.
+            seam_split_vertices: $int,
+            /// Vertex copies appended after the input vertices (by both kinds of split).
+            added_vertices: $int,
+            /// Tetrahedra whose local vertices 1 and 2 were swapped to orient them.
+            flipped_tetrahedra: $int,
+            /// Face-connected components that cannot be consistently oriented; one input
+            /// tetrahedron of each.
+            non_orientable_components: $int,
+            /// Faces left unpaired because their two tetrahedra could not agree on an orientation.
+            seam_faces: $int,
+            /// Input vertices with a NaN or infinite coordinate. Their tetrahedra have no
+            /// determinant sign: they are oriented by their neighbours, and counted neither as
+            /// zero-volume nor as inverted.
+            non_finite_vertices: u64,
+            /// Vertices merged into another by the weld (`weld_tolerance` of the build options):
+            /// no element uses them any more; they keep their ids.
+            welded_vertices: $int,
+            $($extra)*
+        }}
+    };
+}
+pub(crate) use report_fields;
+
+report_fields! { usize; [
+    /// Counts, plus the first [`REPORT_EXAMPLES`](crate::REPORT_EXAMPLES) offending ids of each kind (input ids:
+    /// input tetrahedra, input vertices).
+    #[derive(Clone, Debug, Default, PartialEq, Eq)]
+    pub struct BuildReport
+]
+    degenerate_examples: Vec<u32>,
+    zero_volume_examples: Vec<u32>,
+    inverted_examples: Vec<u32>,
+    duplicate_examples: Vec<[u32; 2]>,
+    non_manifold_face_examples: Vec<[u32; 3]>,
+    non_manifold_edge_examples: Vec<[u32; 2]>,
+    kept_non_manifold_edge_examples: Vec<[u32; 2]>,
+    split_vertex_examples: Vec<u32>,
+    non_orientable_examples: Vec<u32>,
+    non_finite_vertex_examples: Vec<u32>,
 }
 
 impl BuildReport {

@@ -2,30 +2,41 @@
 
 use crate::chf::Chf;
 
-/// Bytes held by each container (lengths, not capacities).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Memory {
-    /// `V`, level 0.
-    pub half_face_vertices: usize,
-    /// `O`, level 1.
-    pub opposites: usize,
-    /// `VH`, level 2.
-    pub vertex_half_faces: usize,
-    /// The canonical-slot rank bits and the tetrahedron of each edge, level 2; once edited,
-    /// the explicit edge ids and the removed marks.
-    pub edges: usize,
-    /// The canonical-half-face rank bits and `FH`, level 2; once edited, the explicit face
-    /// ids.
-    pub faces: usize,
-    /// The boundary CHE's topology, the boundary rank bits, the triangle -> half-face map
-    /// and the component of each vertex, level 3.
-    pub boundary: usize,
-    /// The sum of the above: the topology.
-    pub topology: usize,
-    /// Positions (not topology).
-    pub positions: usize,
-    /// Origin maps, the non-manifold and seam flags, the several-fan pairs (not topology).
-    pub maps: usize,
+/// The fields of [`Memory`], once for it and for its C mirror in `ffi` (see
+/// `util::fields`).
+macro_rules! memory_fields {
+    ($int:ty; $($head:tt)*) => {
+        $crate::util::fields::fields_struct! { $($head)* {
+            /// `V`, level 0.
+            half_face_vertices: $int,
+            /// `O`, level 1.
+            opposites: $int,
+            /// `VH`, level 2.
+            vertex_half_faces: $int,
+            /// The canonical-slot rank bits and the tetrahedron of each edge, level 2; once edited,
+            /// the explicit edge ids and the removed marks.
+            edges: $int,
+            /// The canonical-half-face rank bits and `FH`, level 2; once edited, the explicit face
+            /// ids.
+            faces: $int,
+            /// The boundary CHE's topology, the boundary rank bits, the triangle -> half-face map
+            /// and the component of each vertex, level 3.
+            boundary: $int,
+            /// The sum of the above: the topology.
+            topology: $int,
+            /// Positions (not topology).
+            positions: $int,
+            /// Origin maps, the non-manifold and seam flags, the several-fan pairs (not topology).
+            maps: $int,
+        }}
+    };
+}
+pub(crate) use memory_fields;
+
+memory_fields! { usize;
+    /// Bytes held by each container (lengths, not capacities).
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    pub struct Memory
 }
 
 impl Chf {

@@ -9,36 +9,49 @@ use crate::error::Result;
 use crate::util::alloc::{or_panic, try_push};
 use crate::util::dsu::{InputComplex, input_boundary};
 
-/// Field names match `chf_summary` in the C API and the CLI's JSON.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Summary {
-    pub vertices: u64,
-    pub edges: u64,
-    pub faces: u64,
-    pub tetrahedra: u64,
-    /// Faces with exactly one tetrahedron.
-    pub boundary_faces: u64,
-    /// Edges and vertices of the boundary faces.
-    pub boundary_edges: u64,
-    pub boundary_vertices: u64,
-    /// Components of the boundary faces, joined through shared vertices.
-    pub boundary_components: u64,
-    /// Components of the tetrahedra, joined through shared vertices.
-    pub components: u64,
-    pub isolated_vertices: u64,
-    /// V - E + F - T of the input complex (isolated vertices count).
-    pub euler_characteristic: i64,
-    /// No non-manifold face, edge or vertex.
-    pub manifold: bool,
-    pub orientable: bool,
-    pub dropped_degenerate: u64,
-    pub zero_volume: u64,
-    pub inverted_tetrahedra: u64,
-    pub non_manifold_faces: u64,
-    pub non_manifold_edges: u64,
-    pub split_vertices: u64,
-    pub flipped_tetrahedra: u64,
-    pub non_orientable_components: u64,
+/// The fields of [`Summary`], once for it and for its C mirror in `ffi` (see
+/// `util::fields`).
+macro_rules! summary_fields {
+    ($($head:tt)*) => {
+        $crate::util::fields::fields_struct! { $($head)* {
+            vertices: u64,
+            edges: u64,
+            faces: u64,
+            tetrahedra: u64,
+            /// Faces with exactly one tetrahedron.
+            boundary_faces: u64,
+            /// Edges and vertices of the boundary faces.
+            boundary_edges: u64,
+            boundary_vertices: u64,
+            /// Components of the boundary faces, joined through shared vertices.
+            boundary_components: u64,
+            /// Components of the tetrahedra, joined through shared vertices.
+            components: u64,
+            isolated_vertices: u64,
+            /// V - E + F - T of the input complex (isolated vertices count).
+            euler_characteristic: i64,
+            /// No non-manifold face, edge or vertex.
+            manifold: bool,
+            orientable: bool,
+            dropped_degenerate: u64,
+            /// Tetrahedra of zero volume (kept), when built with positions.
+            zero_volume: u64,
+            /// Tetrahedra whose volume has the sign opposite to their component's orientation.
+            inverted_tetrahedra: u64,
+            non_manifold_faces: u64,
+            non_manifold_edges: u64,
+            split_vertices: u64,
+            flipped_tetrahedra: u64,
+            non_orientable_components: u64,
+        }}
+    };
+}
+pub(crate) use summary_fields;
+
+summary_fields! {
+    /// Field names match `chf_summary` in the C API and the CLI's JSON.
+    #[derive(Clone, Debug, Default, PartialEq, Eq)]
+    pub struct Summary
 }
 
 impl Chf {

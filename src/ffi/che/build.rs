@@ -1,10 +1,15 @@
-//! Making, freeing and re-levelling `che_mesh` handles, and their counts.
+//! Making, freeing and re-levelling `che_mesh` handles, and their counts; the reader's
+//! warnings of a mesh loaded from a file: what the reader read past or found
+//! odd (data after the declared elements, elements not stored, non-finite coordinates, ...),
+//! one `file:line: message` text each.
 
 use super::{CheBuildOptions, CheMesh};
 use crate::che::Che;
-use crate::ffi::boundary::free_handle;
+use crate::ffi::boundary::{free_handle, level_arg};
+use crate::ffi::declare::exports;
 use crate::ffi::mesh_arrays::TRIANGLES;
-use crate::ffi::shapes::{build, count, load, relevel};
+use crate::ffi::shapes::warnings;
+use crate::ffi::shapes::{build, load};
 use crate::ffi::status::Status;
 use std::ffi::c_char;
 
@@ -67,53 +72,43 @@ pub unsafe extern "C" fn che_mesh_free(m: *mut CheMesh) {
     unsafe { free_handle(m) }
 }
 
-/// Raises or lowers the level (0..3) in place. Ids never change with the level; views
-/// obtained before are invalid afterwards. Needs exclusive access.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_build_level(m: *mut CheMesh, level: u32) -> Status {
-    relevel!(m, level)
+exports! { CheMesh;
+    /// Raises or lowers the level (0..3) in place. Ids never change with the level; views
+    /// obtained before are invalid afterwards. Needs exclusive access.
+    edit fn che_mesh_build_level(level) { |c| c.build_level(level_arg(level)?) }
+    /// The current level (0..3); 0 for NULL.
+    count fn che_mesh_level() -> u32 { |c| c.level() as u32 }
+    /// Vertices of the structure: the input vertices, then the copies made by splitting
+    /// non-manifold vertices. 0 for NULL (and likewise for the other counts).
+    count fn che_mesh_num_vertices() -> usize { |c| c.num_vertices() }
+    /// Vertices given as input (ids `0..n` of the structure are the same vertices).
+    count fn che_mesh_num_input_vertices() -> usize { |c| c.num_input_vertices() }
+    /// Triangles kept (degenerate input triangles are dropped).
+    count fn che_mesh_num_triangles() -> usize { |c| c.num_triangles() }
+    /// Edges of the structure (the edges of a non-manifold edge count once per triangle).
+    count fn che_mesh_num_edges() -> usize { |c| c.num_edges() }
+    /// Half-edges: 3 per triangle.
+    count fn che_mesh_num_half_edges() -> usize { |c| c.num_half_edges() }
+    /// Boundary curves of the structure: O(1) at level 3, O(T) at levels 1-2, O(T) time and
+    /// memory at level 0.
+    count fn che_mesh_num_boundary_curves() -> usize { |c| c.num_boundary_curves() }
 }
 
-/// The current level (0..3); 0 for NULL.
+/// How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
+/// from arrays, and for NULL). O(1).
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_level(m: *const CheMesh) -> u32 {
-    count!(m, |c| c.level() as u32)
+pub unsafe extern "C" fn che_mesh_num_warnings(m: *const CheMesh) -> usize {
+    warnings!(m)
 }
 
-/// Vertices of the structure: the input vertices, then the copies made by splitting
-/// non-manifold vertices. 0 for NULL (and likewise for the other counts).
+/// Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
+/// `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
+/// `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
+/// and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
+/// `TOPOMESH_STATUS_OUT_OF_RANGE`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_num_vertices(m: *const CheMesh) -> usize {
-    count!(m, |c| c.num_vertices())
-}
-
-/// Vertices given as input (ids `0..n` of the structure are the same vertices).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_num_input_vertices(m: *const CheMesh) -> usize {
-    count!(m, |c| c.num_input_vertices())
-}
-
-/// Triangles kept (degenerate input triangles are dropped).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_num_triangles(m: *const CheMesh) -> usize {
-    count!(m, |c| c.num_triangles())
-}
-
-/// Edges of the structure (the edges of a non-manifold edge count once per triangle).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_num_edges(m: *const CheMesh) -> usize {
-    count!(m, |c| c.num_edges())
-}
-
-/// Half-edges: 3 per triangle.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_num_half_edges(m: *const CheMesh) -> usize {
-    count!(m, |c| c.num_half_edges())
-}
-
-/// Boundary curves of the structure: O(1) at level 3, O(T) at levels 1-2, O(T) time and
-/// memory at level 0.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_num_boundary_curves(m: *const CheMesh) -> usize {
-    count!(m, |c| c.num_boundary_curves())
+pub unsafe extern "C" fn che_mesh_warning(
+    m: *const CheMesh, i: usize, buf: *mut c_char, cap: usize, out_len: *mut usize,
+) -> Status {
+    warnings!(m, i, buf, cap, out_len)
 }

@@ -13,7 +13,7 @@ use crate::che::{
 };
 use crate::error::{Error, Result};
 use crate::ffi::boundary::{Handle, core, guard, options_arg, out_arg, report_kind, sink, zeroed};
-use crate::ffi::shapes::{ids, value};
+use crate::ffi::declare::exports;
 use crate::ffi::status::Status;
 
 /// How `che_mesh_export_half_edges` shows the boundary.
@@ -93,89 +93,61 @@ fn winged_array(w: WingedEdges, which: u32) -> Result<Vec<u32>> {
     report_kind(all, which, "che_winged_array")
 }
 
-/// Half-edge (DCEL) array `which` (a `CheHalfEdgeArray`) with `options` (NULL: marked
-/// boundary). Half-edges 0..3T are CHE's own: 3t, 3t+1, 3t+2 go round triangle t
-/// counter-clockwise, half-edge h from vertex[h] (its tail) to vertex[next[h]]. O(T) at
-/// every level. Without explicit boundary, `vertex` and `twin` are the structure's own
-/// arrays, lent without a copy by `che_mesh_half_edge_vertices` and (from level 1)
-/// `che_mesh_opposites`.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_export_half_edges(
-    m: *const CheMesh, options: *const CheHalfEdgeOptions, which: u32, buf: *mut u32, cap: usize,
-    out_len: *mut usize,
-) -> Status {
-    // SAFETY: caller contract (see `ffi`): NULL or a valid options struct.
-    let o = unsafe { options_arg(options) };
-    let options = HalfEdgeOptions {
+/// The options of `che_mesh_export_half_edges` (NULL: the defaults), read under the
+/// export's contract.
+fn half_edge_options(p: *const CheHalfEdgeOptions) -> HalfEdgeOptions {
+    // SAFETY: the export's contract: NULL or a valid options struct.
+    let o = unsafe { options_arg(p) };
+    HalfEdgeOptions {
         explicit_boundary: o.explicit_boundary,
-    };
-    ids!(m, buf, cap, out_len, |c, s| {
-        let which = report_kind(HalfEdgeArray::ALL, which, "che_half_edge_array")?;
-        c.half_edge_array_into(options, which, s)?
-    })
+    }
 }
 
-/// Winged-edge array `which` (a `CheWingedArray`) over the edge ids of `che_half_edge_edge`.
-/// O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_export_winged_edges(
-    m: *const CheMesh, which: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
-) -> Status {
-    ids!(m, buf, cap, out_len, try |c| c.winged_edges().and_then(|w| winged_array(w, which)))
-}
-
-/// The corner table's opposite corners, 3T entries. Corner c is half-edge c: the corner of
-/// triangle c / 3 at vertex V[c] (so the table's V is `che_mesh_half_edge_vertices`); the
-/// opposite corner of c faces the same edge (half-edge next(c)) from the other triangle:
-/// prev(O[next(c)]), TOPOMESH_NONE on the boundary. O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_export_corner_opposites(
-    m: *const CheMesh, buf: *mut u32, cap: usize, out_len: *mut usize,
-) -> Status {
-    ids!(m, buf, cap, out_len, try |c| c.corner_table().map(|t| t.o))
-}
-
-/// The edge list, 2E entries: edge e from [2e] to [2e + 1], in the direction of its
-/// canonical half-edge. O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_export_edge_list(
-    m: *const CheMesh, buf: *mut u32, cap: usize, out_len: *mut usize,
-) -> Status {
-    ids!(m, buf, cap, out_len, try |c| c.edge_list())
-}
-
-/// The face list with edge ids, 3T entries: entry 3t + i is the edge of half-edge 3t + i
-/// (from corner i to corner i + 1 of triangle t). O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_export_triangle_edges(
-    m: *const CheMesh, buf: *mut u32, cap: usize, out_len: *mut usize,
-) -> Status {
-    ids!(m, buf, cap, out_len, try |c| c.all_triangle_edges())
-}
-
-/// Triangle strips covering every triangle once in its orientation (greedy, from the
-/// dual graph), as list `which` (a `CheStripList`). A strip s stands for the triangles
-/// (s[i], s[i+1], s[i+2]) for even i and (s[i+1], s[i], s[i+2]) for odd i. O(T) at every
-/// level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_export_strips(
-    m: *const CheMesh, which: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
-) -> Status {
-    ids!(m, buf, cap, out_len, try |c| c.triangle_strips().and_then(|s| {
-        report_kind([s.with_restarts(), s.joined()], which, "che_strip_list")
-    }))
-}
-
-/// Betti numbers over Z/2 of the surface as given (seams and split vertices joined again,
-/// isolated vertices counted) into `*out`; b0 - b1 + b2 is the Euler characteristic of
-/// `che_mesh_summary`. Near-linear at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_betti_numbers(m: *const CheMesh, out: *mut CheBetti) -> Status {
-    value!(m, out, |c| c.betti_numbers().map(|[b0, b1, b2]| CheBetti {
-        b0,
-        b1,
-        b2
-    }))
+exports! { CheMesh;
+    /// Half-edge (DCEL) array `which` (a `CheHalfEdgeArray`) with `options` (NULL: marked
+    /// boundary). Half-edges 0..3T are CHE's own: 3t, 3t+1, 3t+2 go round triangle t
+    /// counter-clockwise, half-edge h from vertex[h] (its tail) to vertex[next[h]]. O(T) at
+    /// every level. Without explicit boundary, `vertex` and `twin` are the structure's own
+    /// arrays, lent without a copy by `che_mesh_half_edge_vertices` and (from level 1)
+    /// `che_mesh_opposites`.
+    ids fn che_mesh_export_half_edges(options: *const CheHalfEdgeOptions, which) {
+        |c, s| {
+            let which = report_kind(HalfEdgeArray::ALL, which, "che_half_edge_array")?;
+            c.half_edge_array_into(half_edge_options(options), which, s)?
+        }
+    }
+    /// Winged-edge array `which` (a `CheWingedArray`) over the edge ids of `che_half_edge_edge`.
+    /// O(T) at every level.
+    ids fn che_mesh_export_winged_edges(which) {
+        try |c| c.winged_edges().and_then(|w| winged_array(w, which))
+    }
+    /// The corner table's opposite corners, 3T entries. Corner c is half-edge c: the corner of
+    /// triangle c / 3 at vertex V[c] (so the table's V is `che_mesh_half_edge_vertices`); the
+    /// opposite corner of c faces the same edge (half-edge next(c)) from the other triangle:
+    /// prev(O[next(c)]), TOPOMESH_NONE on the boundary. O(T) at every level.
+    ids fn che_mesh_export_corner_opposites() { try |c| c.corner_table().map(|t| t.o) }
+    /// The edge list, 2E entries: edge e from [2e] to [2e + 1], in the direction of its
+    /// canonical half-edge. O(T) at every level.
+    ids fn che_mesh_export_edge_list() { try |c| c.edge_list() }
+    /// The face list with edge ids, 3T entries: entry 3t + i is the edge of half-edge 3t + i
+    /// (from corner i to corner i + 1 of triangle t). O(T) at every level.
+    ids fn che_mesh_export_triangle_edges() { try |c| c.all_triangle_edges() }
+    /// Triangle strips covering every triangle once in its orientation (greedy, from the
+    /// dual graph), as list `which` (a `CheStripList`). A strip s stands for the triangles
+    /// (s[i], s[i+1], s[i+2]) for even i and (s[i+1], s[i], s[i+2]) for odd i. O(T) at every
+    /// level.
+    ids fn che_mesh_export_strips(which) {
+        try |c| {
+            let strips = c.triangle_strips()?;
+            report_kind([strips.with_restarts(), strips.joined()], which, "che_strip_list")
+        }
+    }
+    /// Betti numbers over Z/2 of the surface as given (seams and split vertices joined again,
+    /// isolated vertices counted) into `*out`; b0 - b1 + b2 is the Euler characteristic of
+    /// `che_mesh_summary`. Near-linear at every level.
+    value fn che_mesh_betti_numbers() -> CheBetti {
+        |c| c.betti_numbers().map(|[b0, b1, b2]| CheBetti { b0, b1, b2 })
+    }
 }
 
 /// Sparse matrix `kind` (a `CheMatrixKind`) in CSR, ready for Eigen (`Map<SparseMatrix<

@@ -1,12 +1,11 @@
-//! Zero-copy views of the containers (see `view!`), valid until the mesh is freed or its
-//! level changes.
+//! Zero-copy views of the containers (`view` entries of `exports!`), valid until the mesh
+//! is freed or its level changes.
 
 use super::CheMesh;
 use crate::che::Che;
 use crate::ffi::boundary::origins;
+use crate::ffi::declare::exports;
 use crate::ffi::mesh_arrays::coordinates;
-use crate::ffi::shapes::{value, view};
-use crate::ffi::status::Status;
 use std::ptr::null;
 
 /// The arrays an inline walk reads and the counts that bound its ids, in one call: what
@@ -51,98 +50,46 @@ fn views_of(c: &Che) -> CheViews {
     }
 }
 
-/// The views and counts into `*out` (see `che_views`), all at once. O(1).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_views(m: *const CheMesh, out: *mut CheViews) -> Status {
-    value!(m, out, |c| Ok(views_of(c)))
-}
-
-/// `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
-/// `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_half_edge_vertices(
-    m: *const CheMesh, len: *mut usize,
-) -> *const u32 {
-    view!(m, len, |m| Some(m.che.half_edge_vertices()))
-}
-
-/// `O`: the opposite of every half-edge (`TOPOMESH_NONE` on the boundary). NULL below
-/// level 1.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_opposites(m: *const CheMesh, len: *mut usize) -> *const u32 {
-    view!(m, len, |m| m.che.opposites())
-}
-
-/// `VH`: one outgoing half-edge per vertex, the boundary one on a boundary vertex,
-/// `TOPOMESH_NONE` for an isolated vertex. NULL below level 2.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_vertex_half_edges(
-    m: *const CheMesh, len: *mut usize,
-) -> *const u32 {
-    view!(m, len, |m| m.che.vertex_half_edges())
-}
-
-/// `EH`: the canonical half-edge of every edge (the boundary one on a boundary edge).
-/// NULL below level 2.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_edge_half_edges(
-    m: *const CheMesh, len: *mut usize,
-) -> *const u32 {
-    view!(m, len, |m| m.che.edge_half_edges())
-}
-
-/// `CH`: one boundary half-edge per boundary curve (its smallest). NULL below level 3.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_curve_half_edges(
-    m: *const CheMesh, len: *mut usize,
-) -> *const u32 {
-    view!(m, len, |m| m.che.curve_half_edges())
-}
-
-/// Positions: x, y, z per structure vertex (copies repeat their origin's position);
-/// `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_positions(m: *const CheMesh, len: *mut usize) -> *const f64 {
-    view!(m, len, |m| {
-        let p = m.che.positions();
-        (!p.is_empty()).then(|| coordinates(p))
-    })
-}
-
-/// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
-/// vertices, then the origin of each split copy). Materialised on first use when it is the
-/// identity; then kept with the mesh.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_vertex_origins(m: *const CheMesh, len: *mut usize) -> *const u32 {
-    view!(m, len, |m| Some(origins(
-        m.che.vertex_origins(),
-        &m.vertex_origins,
-        m.che.num_vertices()
-    )))
-}
-
-/// Structure triangle -> input triangle (`num_triangles` entries; increasing, with gaps
-/// where degenerate triangles were dropped).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_triangle_origins(
-    m: *const CheMesh, len: *mut usize,
-) -> *const u32 {
-    view!(m, len, |m| Some(origins(
-        m.che.triangle_origins(),
-        &m.triangle_origins,
-        m.che.num_triangles()
-    )))
-}
-
-/// The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
-/// the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`
-/// (`O[h] == TOPOMESH_NONE || h < O[h]`, bit `h % 32`), the high 32 bits count the canonical
-/// half-edges before `32k`. With `O` it gives the edge of any half-edge in O(1) without a
-/// call: `che_edge_of` in `topomesh_inline.h`. From level 2 this is the structure's own
-/// directory (counted in `che_mesh_memory`'s `edges`); at level 1 it is computed from `O`
-/// on the first request (2 bits per half-edge, kept with the mesh until its level
-/// changes). NULL below level 1.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_edge_ranks(m: *const CheMesh, len: *mut usize) -> *const u64 {
-    view!(m, len, |m| m.che.edge_ranks())
+exports! { CheMesh;
+    /// The views and counts into `*out` (see `che_views`), all at once. O(1).
+    value fn che_mesh_views() -> CheViews { |c| Ok(views_of(c)) }
+    /// `V`: the origin vertex of every half-edge (`3 * num_triangles` entries); triangle t is
+    /// `V[3t], V[3t+1], V[3t+2]`, counter-clockwise. All levels.
+    view fn che_mesh_half_edge_vertices() -> u32 { |m| Some(m.che.half_edge_vertices()) }
+    /// `O`: the opposite of every half-edge (`TOPOMESH_NONE` on the boundary). NULL below
+    /// level 1.
+    view fn che_mesh_opposites() -> u32 { |m| m.che.opposites() }
+    /// `VH`: one outgoing half-edge per vertex, the boundary one on a boundary vertex,
+    /// `TOPOMESH_NONE` for an isolated vertex. NULL below level 2.
+    view fn che_mesh_vertex_half_edges() -> u32 { |m| m.che.vertex_half_edges() }
+    /// `EH`: the canonical half-edge of every edge (the boundary one on a boundary edge).
+    /// NULL below level 2.
+    view fn che_mesh_edge_half_edges() -> u32 { |m| m.che.edge_half_edges() }
+    /// `CH`: one boundary half-edge per boundary curve (its smallest). NULL below level 3.
+    view fn che_mesh_curve_half_edges() -> u32 { |m| m.che.curve_half_edges() }
+    /// Positions: x, y, z per structure vertex (copies repeat their origin's position);
+    /// `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
+    view fn che_mesh_positions() -> f64 {
+        |m| { let p = m.che.positions(); (!p.is_empty()).then(|| coordinates(p)) }
+    }
+    /// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
+    /// vertices, then the origin of each split copy). Materialised on first use when it is the
+    /// identity; then kept with the mesh.
+    view fn che_mesh_vertex_origins() -> u32 {
+        |m| Some(origins(m.che.vertex_origins(), &m.vertex_origins, m.che.num_vertices()))
+    }
+    /// Structure triangle -> input triangle (`num_triangles` entries; increasing, with gaps
+    /// where degenerate triangles were dropped).
+    view fn che_mesh_triangle_origins() -> u32 {
+        |m| Some(origins(m.che.triangle_origins(), &m.triangle_origins, m.che.num_triangles()))
+    }
+    /// The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
+    /// the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`
+    /// (`O[h] == TOPOMESH_NONE || h < O[h]`, bit `h % 32`), the high 32 bits count the canonical
+    /// half-edges before `32k`. With `O` it gives the edge of any half-edge in O(1) without a
+    /// call: `che_edge_of` in `topomesh_inline.h`. From level 2 this is the structure's own
+    /// directory (counted in `che_mesh_memory`'s `edges`); at level 1 it is computed from `O`
+    /// on the first request (2 bits per half-edge, kept with the mesh until its level
+    /// changes). NULL below level 1.
+    view fn che_mesh_edge_ranks() -> u64 { |m| m.che.edge_ranks() }
 }

@@ -1,10 +1,15 @@
-//! Making, freeing and re-levelling `chf_mesh` handles, and their counts.
+//! Making, freeing and re-levelling `chf_mesh` handles, and their counts; the reader's
+//! warnings of a mesh loaded from a file: what the reader read past or found
+//! odd (data after the declared elements, elements not stored, non-finite coordinates, ...),
+//! one `file:line: message` text each.
 
 use super::{ChfBuildOptions, ChfMesh};
 use crate::chf::Chf;
-use crate::ffi::boundary::free_handle;
+use crate::ffi::boundary::{free_handle, level_arg};
+use crate::ffi::declare::exports;
 use crate::ffi::mesh_arrays::TETRAHEDRA;
-use crate::ffi::shapes::{build, count, load, relevel};
+use crate::ffi::shapes::warnings;
+use crate::ffi::shapes::{build, load};
 use crate::ffi::status::Status;
 use std::ffi::c_char;
 
@@ -71,55 +76,45 @@ pub unsafe extern "C" fn chf_mesh_free(m: *mut ChfMesh) {
     unsafe { free_handle(m) }
 }
 
-/// Raises or lowers the level (0..3) in place. Ids never change with the level; views
-/// obtained before are invalid afterwards. Needs exclusive access. Runs on every thread of
-/// the machine (large meshes).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_build_level(m: *mut ChfMesh, level: u32) -> Status {
-    relevel!(m, level)
+exports! { ChfMesh;
+    /// Raises or lowers the level (0..3) in place. Ids never change with the level; views
+    /// obtained before are invalid afterwards. Needs exclusive access. Runs on every thread of
+    /// the machine (large meshes).
+    edit fn chf_mesh_build_level(level) { |c| c.build_level(level_arg(level)?) }
+    /// The current level (0..3); 0 for NULL.
+    count fn chf_mesh_level() -> u32 { |c| c.level() as u32 }
+    /// Vertices of the structure: the input vertices, then the copies made by splitting
+    /// non-manifold vertices. 0 for NULL (and likewise for the other counts).
+    count fn chf_mesh_num_vertices() -> usize { |c| c.num_vertices() }
+    /// Vertices given as input (ids `0..n` of the structure are the same vertices).
+    count fn chf_mesh_num_input_vertices() -> usize { |c| c.num_input_vertices() }
+    /// Tetrahedra kept (degenerate input tetrahedra are dropped).
+    count fn chf_mesh_num_tetrahedra() -> usize { |c| c.num_tetrahedra() }
+    /// Faces of the structure: paired half-faces count once, unpaired ones (boundary, and the
+    /// half-faces of a non-manifold face, which stay unpaired) once each.
+    count fn chf_mesh_num_faces() -> usize { |c| c.num_faces() }
+    /// Edges of the structure: one per fan of tetrahedra around a vertex pair (a non-manifold
+    /// edge whose fans the vertex split did not separate counts once per fan).
+    count fn chf_mesh_num_edges() -> usize { |c| c.num_edges() }
+    /// Half-faces: 4 per tetrahedron (half-face `4t + i` is the face opposite local vertex `i`).
+    count fn chf_mesh_num_half_faces() -> usize { |c| c.num_half_faces() }
 }
 
-/// The current level (0..3); 0 for NULL.
+/// How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
+/// from arrays, and for NULL). O(1).
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_level(m: *const ChfMesh) -> u32 {
-    count!(m, |c| c.level() as u32)
+pub unsafe extern "C" fn chf_mesh_num_warnings(m: *const ChfMesh) -> usize {
+    warnings!(m)
 }
 
-/// Vertices of the structure: the input vertices, then the copies made by splitting
-/// non-manifold vertices. 0 for NULL (and likewise for the other counts).
+/// Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
+/// `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
+/// `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
+/// and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
+/// `TOPOMESH_STATUS_OUT_OF_RANGE`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_num_vertices(m: *const ChfMesh) -> usize {
-    count!(m, |c| c.num_vertices())
-}
-
-/// Vertices given as input (ids `0..n` of the structure are the same vertices).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_num_input_vertices(m: *const ChfMesh) -> usize {
-    count!(m, |c| c.num_input_vertices())
-}
-
-/// Tetrahedra kept (degenerate input tetrahedra are dropped).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_num_tetrahedra(m: *const ChfMesh) -> usize {
-    count!(m, |c| c.num_tetrahedra())
-}
-
-/// Faces of the structure: paired half-faces count once, unpaired ones (boundary, and the
-/// half-faces of a non-manifold face, which stay unpaired) once each.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_num_faces(m: *const ChfMesh) -> usize {
-    count!(m, |c| c.num_faces())
-}
-
-/// Edges of the structure: one per fan of tetrahedra around a vertex pair (a non-manifold
-/// edge whose fans the vertex split did not separate counts once per fan).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_num_edges(m: *const ChfMesh) -> usize {
-    count!(m, |c| c.num_edges())
-}
-
-/// Half-faces: 4 per tetrahedron (half-face `4t + i` is the face opposite local vertex `i`).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_num_half_faces(m: *const ChfMesh) -> usize {
-    count!(m, |c| c.num_half_faces())
+pub unsafe extern "C" fn chf_mesh_warning(
+    m: *const ChfMesh, i: usize, buf: *mut c_char, cap: usize, out_len: *mut usize,
+) -> Status {
+    warnings!(m, i, buf, cap, out_len)
 }

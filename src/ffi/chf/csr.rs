@@ -4,77 +4,27 @@
 //! 0) once, in temporary memory. A size query followed by the call does the work twice.
 
 use super::ChfMesh;
-use crate::ffi::shapes::csr;
-use crate::ffi::status::Status;
+use crate::ffi::declare::exports;
 
-/// VV for every vertex (rows as `chf_vertex_vertices`). O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_vertex_vertices_csr(
-    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
-    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
-) -> Status {
-    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| s.copy(&c.all_vertex_vertices()?))
-}
-
-/// VE for every vertex (rows as `chf_vertex_edges`). O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_vertex_edges_csr(
-    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
-    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
-) -> Status {
-    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| s.copy(&c.all_vertex_edges()?))
-}
-
-/// VF for every vertex (rows as `chf_vertex_faces`). O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_vertex_faces_csr(
-    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
-    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
-) -> Status {
-    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| s.copy(&c.all_vertex_faces()?))
-}
-
-/// VT for every vertex (rows as `chf_vertex_tetrahedra`). O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_vertex_tetrahedra_csr(
-    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
-    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
-) -> Status {
-    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| s.copy(&c.all_vertex_tetrahedra()?))
-}
-
-/// EF for every edge (rows as `chf_edge_faces`, in rotation order). O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_edge_faces_csr(
-    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
-    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
-) -> Status {
-    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| c.for_each_edge_faces(|_, row| s.stream(row)))
-}
-
-/// ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order). O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_edge_tetrahedra_csr(
-    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
-    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
-) -> Status {
-    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| c.for_each_edge_tetrahedra(|_, row| s.stream(row)))
-}
-
-/// TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
-/// tetrahedron across face `i`, `TOPOMESH_NONE` on the boundary, as
-/// `chf_tetrahedron_tetrahedra`. O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_tetrahedron_tetrahedra_csr(
-    m: *const ChfMesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
-    indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
-) -> Status {
-    csr!(m, offsets, offsets_cap, indices, indices_cap, n_offsets, n_indices
-        => |c, s| c.for_each_tetrahedron_tetrahedra(|row| s.stream(row)))
+exports! { ChfMesh;
+    /// VV for every vertex (rows as `chf_vertex_vertices`). O(T) at every level.
+    csr fn chf_mesh_vertex_vertices_csr() { |c, s| s.copy(&c.all_vertex_vertices()?) }
+    /// VE for every vertex (rows as `chf_vertex_edges`). O(T) at every level.
+    csr fn chf_mesh_vertex_edges_csr() { |c, s| s.copy(&c.all_vertex_edges()?) }
+    /// VF for every vertex (rows as `chf_vertex_faces`). O(T) at every level.
+    csr fn chf_mesh_vertex_faces_csr() { |c, s| s.copy(&c.all_vertex_faces()?) }
+    /// VT for every vertex (rows as `chf_vertex_tetrahedra`). O(T) at every level.
+    csr fn chf_mesh_vertex_tetrahedra_csr() { |c, s| s.copy(&c.all_vertex_tetrahedra()?) }
+    /// EF for every edge (rows as `chf_edge_faces`, in rotation order). O(T) at every level.
+    csr fn chf_mesh_edge_faces_csr() { |c, s| c.for_each_edge_faces(|_, row| s.stream(row)) }
+    /// ET for every edge (rows as `chf_edge_tetrahedra`, in rotation order). O(T) at every level.
+    csr fn chf_mesh_edge_tetrahedra_csr() {
+        |c, s| c.for_each_edge_tetrahedra(|_, row| s.stream(row))
+    }
+    /// TT for every tetrahedron: 4 entries per row (so `offsets[t] == 4 t`), the
+    /// tetrahedron across face `i`, `TOPOMESH_NONE` on the boundary, as
+    /// `chf_tetrahedron_tetrahedra`. O(T) at every level.
+    csr fn chf_mesh_tetrahedron_tetrahedra_csr() {
+        |c, s| c.for_each_tetrahedron_tetrahedra(|row| s.stream(row))
+    }
 }

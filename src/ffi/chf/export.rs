@@ -7,7 +7,7 @@ use crate::chf::{HalfFaceArrays, VolumeMatrixKind};
 use crate::error::Result;
 use crate::ffi::boundary::report_kind;
 use crate::ffi::che::matrix_out;
-use crate::ffi::shapes::{ids, value};
+use crate::ffi::declare::exports;
 use crate::ffi::status::Status;
 
 /// Which array `chf_mesh_export_half_faces` writes. Half-face hf = 4t + i is face i of
@@ -38,30 +38,19 @@ fn half_face_array(a: HalfFaceArrays, which: u32) -> Result<Vec<u32>> {
     report_kind([a.twin, a.vertices, a.face], which, "chf_half_face_array")
 }
 
-/// Half-face array `which` (a `ChfHalfFaceArray`). O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_export_half_faces(
-    m: *const ChfMesh, which: u32, buf: *mut u32, cap: usize, out_len: *mut usize,
-) -> Status {
-    ids!(m, buf, cap, out_len, try |c| c.half_face_arrays().and_then(|a| half_face_array(a, which)))
-}
-
-/// The dual graph: 4 entries per tetrahedron t, the tetrahedron across each of its faces
-/// (TOPOMESH_NONE on the boundary), as `chf_tetrahedron_tetrahedra`. O(T) at every level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_export_dual_graph(
-    m: *const ChfMesh, buf: *mut u32, cap: usize, out_len: *mut usize,
-) -> Status {
-    ids!(m, buf, cap, out_len, try |c| c.tetrahedron_dual_graph())
-}
-
-/// Betti numbers over Z/2 of the structure's complex into `*out`; b0 - b1 + b2 - b3 is
-/// its Euler characteristic.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_betti_numbers(m: *const ChfMesh, out: *mut ChfBetti) -> Status {
-    value!(m, out, |c| c
-        .betti_numbers()
-        .map(|[b0, b1, b2, b3]| ChfBetti { b0, b1, b2, b3 }))
+exports! { ChfMesh;
+    /// Half-face array `which` (a `ChfHalfFaceArray`). O(T) at every level.
+    ids fn chf_mesh_export_half_faces(which) {
+        try |c| c.half_face_arrays().and_then(|a| half_face_array(a, which))
+    }
+    /// The dual graph: 4 entries per tetrahedron t, the tetrahedron across each of its faces
+    /// (TOPOMESH_NONE on the boundary), as `chf_tetrahedron_tetrahedra`. O(T) at every level.
+    ids fn chf_mesh_export_dual_graph() { try |c| c.tetrahedron_dual_graph() }
+    /// Betti numbers over Z/2 of the structure's complex into `*out`; b0 - b1 + b2 - b3 is
+    /// its Euler characteristic.
+    value fn chf_mesh_betti_numbers() -> ChfBetti {
+        |c| c .betti_numbers() .map(|[b0, b1, b2, b3]| ChfBetti { b0, b1, b2, b3 })
+    }
 }
 
 /// Sparse matrix `kind` (a `ChfMatrixKind`) in CSR, with the layout and buffer rules of

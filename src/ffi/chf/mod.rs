@@ -5,23 +5,21 @@ mod build;
 mod csr;
 mod edit;
 mod export;
+mod files;
 mod half_faces;
 mod info;
-mod levelfile;
 mod relations;
 mod surface;
 #[cfg(test)]
 mod tests;
 mod views;
-mod warnings;
-mod write;
 
 pub use {
-    build::*, csr::*, edit::*, export::*, half_faces::*, info::*, levelfile::*, relations::*,
-    surface::*, views::*, warnings::*, write::*,
+    build::*, csr::*, edit::*, export::*, files::*, half_faces::*, info::*, relations::*,
+    surface::*, views::*,
 };
 
-use super::shapes::handle;
+use super::shapes::{build_options, handle};
 use crate::chf::{BuildOptions, Chf};
 use std::sync::OnceLock;
 
@@ -35,33 +33,16 @@ pub struct ChfMesh {
     warnings: Vec<String>,
 }
 
-handle!(ChfMesh { chf: Chf, vertex_origins, tetrahedron_origins, warnings }, ChfBuildOptions => BuildOptions);
+handle!(ChfMesh { chf: Chf, vertex_origins: num_vertices, tetrahedron_origins: num_tetrahedra }, ChfBuildOptions => BuildOptions);
 
-/// How to build a CHF.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ChfBuildOptions {
-    /// The level, 0..3 (default 2).
-    pub level: u32,
-    /// Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
-    /// and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
-    /// the offending ids) instead of keeping them (default 0). Any non-zero value is true.
-    /// (A `uint8_t` rather than a `bool`, with the size and offset of the `bool` it was: a C
-    /// `bool` field can hold other values, which Rust may not read as a `bool`.)
-    pub strict: u8,
-    /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
-    /// the calling thread alone; a larger number is capped at what the machine runs at once
-    /// and at one thread per 8192 elements. The mesh is the same whatever the number.
-    pub threads: u32,
-    /// A memory budget for the build, in bytes (0, the default: none). The build
-    /// estimates its peak from the input's sizes and, when the estimate exceeds the
-    /// budget, returns `TOPOMESH_STATUS_OUT_OF_MEMORY` before allocating (detail: the
-    /// estimate and the budget).
-    pub memory_limit_bytes: u64,
-    /// Weld before building: vertices at most this distance apart (on the positions, which
-    /// it needs) become one, the smallest id of each cluster of close vertices winning;
-    /// the others keep their ids but lose their elements. 0 (default) is off.
-    pub weld_tolerance: f64,
+build_options! {
+    /// How to build a CHF.
+    ChfBuildOptions {
+        /// Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
+        /// and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
+        /// the offending ids) instead of keeping them
+        strict
+    }
 }
 
 /// The default CHF build options: level 2, not strict, every thread of the machine.

@@ -8,7 +8,6 @@ use super::info::chf_mesh_validate;
 use super::relations::*;
 use super::surface::*;
 use super::views::*;
-use super::warnings::*;
 use crate::NONE;
 use crate::ffi::boundary::with_last_error;
 use crate::ffi::che::{che_mesh_free, che_mesh_num_triangles};

@@ -1,0 +1,167 @@
+//! The uniform signatures of the exports: `exports!` writes the `extern "C"` functions of
+//! one mesh type from a list whose entries give the doc comment, the shape, the name, the
+//! id arguments and the body (a macro of `shapes`), for example
+//!
+//! ```text
+//! exports! { CheMesh;
+//!     /// VE: the edges around `v` ...
+//!     ids fn che_vertex_edges(v) { check_vertex(v) => |c, s| c.vertex_edges_into(v, s) }
+//!     /// The opposite of half-edge `h` ...
+//!     value fn che_half_edge_opposite(h) -> u32 { check_half_edge(h) => |c| c.opposite(h) }
+//! }
+//! ```
+//!
+//! The header is generated from the expanded source (see `tests/header_drift.rs`), so what
+//! a C user reads is these functions as written out by the macro. The shapes:
+//!
+//! | shape | C signature after the mesh `m` and the `uint32_t` ids | body |
+//! |---|---|---|
+//! | `ids` | `uint32_t *buf, size_t cap, size_t *out_len` -> status | `shapes::ids!` |
+//! | `value` | `T *out` -> status | `shapes::value!` |
+//! | `check` | -> status | `\|c\| result` |
+//! | `edit` | (`m` exclusive) an out-parameter named in the entry, or none | `shapes::edit!` |
+//! | `csr` | the offsets and indices buffers, their capacities and lengths | `\|c, s\| rows` |
+//! | `count` | -> `T` (0 for a NULL handle) | `\|c\| value` |
+//! | `view` | `size_t *len` -> `const T *` (NULL for a NULL handle) | `\|h\| slice` |
+
+/// The exports of one mesh type (see the module docs): each entry, shape by shape, to
+/// `export!`.
+macro_rules! exports {
+    ($mesh:ty; $($entries:tt)*) => {
+        $crate::ffi::declare::export!(@ $mesh; $($entries)*);
+    };
+}
+
+/// The entries of `exports!`, one at a time; an argument without a type is a `u32` id.
+macro_rules! export {
+    (@ $mesh:ty;) => {};
+    (@ $mesh:ty; $(#[$doc:meta])*
+        ids fn $name:ident($($a:ident $(: $t:ty)?),*) { $($body:tt)* } $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *const $mesh, $($a: $crate::ffi::declare::arg!($($t)?),)*
+            buf: *mut u32, cap: usize, out_len: *mut usize,
+        ) -> $crate::ffi::status::Status {
+            $crate::ffi::shapes::ids!(m, buf, cap, out_len, $($body)*)
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        value fn $name:ident($($a:ident $(: $t:ty)?),*) -> $out:ty { $($body:tt)* }
+        $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *const $mesh, $($a: $crate::ffi::declare::arg!($($t)?),)* out: *mut $out,
+        ) -> $crate::ffi::status::Status {
+            $crate::ffi::shapes::value!(m, out, $($body)*)
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        check fn $name:ident($($a:ident $(: $t:ty)?),*) { |$c:ident| $result:expr }
+        $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *const $mesh, $($a: $crate::ffi::declare::arg!($($t)?)),*
+        ) -> $crate::ffi::status::Status {
+            $crate::ffi::boundary::guard(|| {
+                // SAFETY: caller contract (see `ffi`): NULL or a live handle.
+                let $c = unsafe { $crate::ffi::boundary::core(m)? };
+                $result
+            })
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        edit fn $name:ident($($a:ident $(: $t:ty)?),*) -> $out:ident: $ot:ty
+        { $($body:tt)* } $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *mut $mesh, $($a: $crate::ffi::declare::arg!($($t)?),)* $out: *mut $ot,
+        ) -> $crate::ffi::status::Status {
+            $crate::ffi::shapes::edit!(m, $out, $($body)*)
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        edit fn $name:ident($($a:ident $(: $t:ty)?),*) { $($body:tt)* } $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *mut $mesh, $($a: $crate::ffi::declare::arg!($($t)?)),*
+        ) -> $crate::ffi::status::Status {
+            $crate::ffi::shapes::edit!(m, std::ptr::null_mut::<()>(), $($body)*)
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        csr fn $name:ident() { |$c:ident, $s:ident| $rows:expr } $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *const $mesh, offsets: *mut u32, offsets_cap: usize, indices: *mut u32,
+            indices_cap: usize, n_offsets: *mut usize, n_indices: *mut usize,
+        ) -> $crate::ffi::status::Status {
+            $crate::ffi::boundary::guard(|| {
+                // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated
+                // sizes.
+                let ($c, mut sink) = unsafe {
+                    use $crate::ffi::boundary::{core, csr_sink};
+                    let offsets = (offsets, offsets_cap, n_offsets);
+                    (core(m)?, csr_sink([offsets, (indices, indices_cap, n_indices)])?)
+                };
+                let $s = &mut sink;
+                $crate::util::alloc::Done::done($rows)?;
+                sink.finish()
+            })
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        count fn $name:ident() -> $ret:ty { |$c:ident| $value:expr } $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(m: *const $mesh) -> $ret {
+            $crate::ffi::boundary::guard_or(0 as _, || {
+                // SAFETY: caller contract (see `ffi`): NULL or a live handle.
+                let $c = unsafe { $crate::ffi::boundary::core(m)? };
+                Ok($value)
+            })
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        view fn $name:ident() -> $ret:ty { |$h:ident| $slice:expr } $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(m: *const $mesh, len: *mut usize) -> *const $ret {
+            let (p, n) = $crate::ffi::boundary::guard_or((std::ptr::null(), 0), || {
+                // SAFETY: caller contract (see `ffi`): NULL or a live handle.
+                let $h = unsafe { $crate::ffi::boundary::handle(m, "m")? };
+                Ok($slice.map_or((std::ptr::null(), 0), |s| (s.as_ptr(), s.len())))
+            });
+            // SAFETY: caller contract (see `ffi`): NULL or valid for one write.
+            if let Some(len) = unsafe { len.as_mut() } {
+                *len = n;
+            }
+            p
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+}
+
+/// The C type of an export's argument: a `u32` id unless the entry names one.
+macro_rules! arg {
+    () => {
+        u32
+    };
+    ($t:ty) => {
+        $t
+    };
+}
+
+pub(crate) use {arg, export, exports};

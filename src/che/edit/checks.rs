@@ -5,6 +5,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{first, next, prev, tri};
 use crate::error::{Error, Result};
+use crate::util::small_ids::Ids;
 
 /// A refused operation: an invalid-input error with the reason.
 pub(super) fn refuse<T>(what: String) -> Result<T> {
@@ -183,7 +184,7 @@ impl Che {
     pub(super) fn collapse_refusal(&self, h: u32) -> Option<String> {
         let (a, b, wings) = self.collapse_wings(h);
         let interior = wings.len() == 2;
-        for &w in &wings {
+        for &w in wings.iter() {
             if [w, next(w), prev(w)].iter().any(|&x| self.is_flagged(x)) {
                 return Some(format!(
                     "half-edge {h}: triangle {} is on a non-manifold edge or seam",
@@ -204,7 +205,10 @@ impl Che {
                 "half-edge {h}: interior edge {a}-{b} joins two boundary vertices"
             ));
         }
-        let thirds: Vec<u32> = wings.iter().map(|&w| self.v[prev(w) as usize]).collect();
+        let mut thirds = Ids::<2>::new();
+        wings
+            .iter()
+            .for_each(|&w| thirds.push(self.v[prev(w) as usize]));
         if let [c, d] = thirds[..]
             && c == d
         {
@@ -212,14 +216,10 @@ impl Che {
                 "half-edge {h}: both triangles have the same third vertex {c}"
             ));
         }
-        let mut ring_a: Vec<u32> = self.neighbours(a);
-        ring_a.sort_unstable();
-        for y in self.neighbours(b) {
-            if y != a && ring_a.binary_search(&y).is_ok() && !thirds.contains(&y) {
-                return Some(format!(
-                    "half-edge {h}: the link condition fails ({a} and {b} share neighbour {y})"
-                ));
-            }
+        if let Some(y) = self.shared_neighbour(a, b, &thirds) {
+            return Some(format!(
+                "half-edge {h}: the link condition fails ({a} and {b} share neighbour {y})"
+            ));
         }
         if let [c, d] = thirds[..]
             && self.has_triangle_on(a, c, d)
@@ -232,17 +232,55 @@ impl Che {
         None
     }
 
-    /// The vertices around `x` (each once, from its rotation).
-    fn neighbours(&self, x: u32) -> Vec<u32> {
-        let outs = self.outgoing(x);
-        let mut ring: Vec<u32> = outs.iter().map(|&h| self.v[next(h) as usize]).collect();
-        if let Some(&last) = outs.last() {
-            let p = prev(last);
-            if self.o[p as usize] == NONE {
-                ring.push(self.v[p as usize]);
+    /// A neighbour of both `a` and `b` other than `a` and the `thirds`, if there is one.
+    /// The ring of `a` is gathered on the stack when it is small, as it nearly always is.
+    fn shared_neighbour(&self, a: u32, b: u32, thirds: &[u32]) -> Option<u32> {
+        const SMALL: usize = 32;
+        let (mut ring, mut n) = ([NONE; SMALL], 0);
+        let fits = !self.any_neighbour(a, |y| {
+            if n == SMALL {
+                return true;
             }
+            ring[n] = y;
+            n += 1;
+            false
+        });
+        let large: Vec<u32>;
+        let ring_a: &[u32] = if fits {
+            &ring[..n]
+        } else {
+            let mut all = Vec::new();
+            self.any_neighbour(a, |y| {
+                all.push(y);
+                false
+            });
+            large = all;
+            &large
+        };
+        let mut shared = None;
+        self.any_neighbour(b, |y| {
+            let found = y != a && ring_a.contains(&y) && !thirds.contains(&y);
+            shared = found.then_some(y);
+            found
+        });
+        shared
+    }
+
+    /// Calls `f` on the vertices around `x` (each once, in rotation order) until it returns
+    /// true; true if it did. Allocation-free: the checks run once per flip or collapse.
+    fn any_neighbour(&self, x: u32, mut f: impl FnMut(u32) -> bool) -> bool {
+        let mut last = NONE;
+        let stopped = self.any_outgoing(x, |h| {
+            last = h;
+            f(self.v[next(h) as usize])
+        });
+        if stopped || last == NONE {
+            return stopped;
         }
-        ring
+        // On the boundary the rotation ends at the last outgoing half-edge; the vertex
+        // behind it (the tail of the incoming boundary half-edge) is a neighbour too.
+        let p = prev(last);
+        self.o[p as usize] == NONE && f(self.v[p as usize])
     }
 
     /// Is there a triangle on vertices `x`, `c`, `d`?

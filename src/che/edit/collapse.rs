@@ -6,6 +6,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{next, prev, tri};
 use crate::error::Result;
+use crate::util::small_ids::Ids;
 use glam::DVec3;
 
 impl Che {
@@ -25,65 +26,62 @@ impl Che {
 
     /// The ends `a -> b` of half-edge `h` and the wings a collapse of `h` removes: `h`, and
     /// its opposite when it has one.
-    pub(super) fn collapse_wings(&self, h: u32) -> (u32, u32, Vec<u32>) {
-        let (a, b, g) = (
-            self.v[h as usize],
-            self.v[next(h) as usize],
-            self.o[h as usize],
-        );
-        let mut wings = vec![h];
-        if g != NONE {
-            wings.push(g);
-        }
-        (a, b, wings)
+    pub(super) fn collapse_wings(&self, h: u32) -> (u32, u32, Ids<2>) {
+        let (a, b) = (self.v[h as usize], self.v[next(h) as usize]);
+        (a, b, Ids::both_sides(h, self.o[h as usize], |w| w))
     }
 
     fn collapse_live(&mut self, h: u32) -> u32 {
         let (a, b, wings) = self.collapse_wings(h);
         // Per wing w: its third vertex z, and the outer half-edges across its edge at `b`
         // (whose id goes) and at `a` (whose id stays).
-        let outer: Vec<(u32, u32, u32)> = wings
-            .iter()
-            .map(|&w| {
-                let (at_b, at_a) = if w == h {
-                    (next(w), prev(w))
-                } else {
-                    (prev(w), next(w))
-                };
-                let z = self.v[prev(w) as usize];
-                (z, self.o[at_b as usize], self.o[at_a as usize])
-            })
-            .collect();
-        for x in self.outgoing(b) {
+        let mut outer = [(NONE, NONE, NONE); 2];
+        for (k, &w) in wings.iter().enumerate() {
+            let (at_b, at_a) = if w == h {
+                (next(w), prev(w))
+            } else {
+                (prev(w), next(w))
+            };
+            let z = self.v[prev(w) as usize];
+            outer[k] = (z, self.o[at_b as usize], self.o[at_a as usize]);
+        }
+        let start = self.vh[b as usize];
+        let mut x = start;
+        while x != NONE {
+            let following = self.next_outgoing(start, x);
             if !wings.contains(&x) && !wings.contains(&prev(x)) {
                 v_mut(self)[x as usize] = a;
             }
+            x = following;
         }
-        for &w in &wings {
+        for &w in wings.iter() {
             self.unlink_triangle(tri(w));
         }
-        let mut candidates = Vec::new();
-        for &(z, gone, keep) in &outer {
+        // Half-edges leaving z or a around each merged edge: `s` and `next(s)` per side.
+        let mut near = [NONE; 8];
+        for (k, &(z, gone, keep)) in outer[..wings.len()].iter().enumerate() {
             self.merge(gone, keep);
-            // Half-edges leaving z or a around the merged edge.
-            let near: Vec<u32> = [gone, keep]
-                .into_iter()
-                .filter(|&s| s != NONE)
-                .flat_map(|s| [s, next(s)])
-                .collect();
-            let out_z = near.iter().copied().find(|&s| self.v[s as usize] == z);
-            self.fix_vh(z, out_z.unwrap_or(NONE));
-            candidates.extend(near);
+            for (i, s) in [gone, keep].into_iter().enumerate() {
+                if s != NONE {
+                    near[4 * k + 2 * i..4 * k + 2 * i + 2].copy_from_slice(&[s, next(s)]);
+                }
+            }
+            let out_z = self.leaving(&near[4 * k..4 * k + 4], z);
+            self.fix_vh(z, out_z);
         }
-        let out_a = candidates
-            .into_iter()
-            .find(|&s| s != NONE && self.v[s as usize] == a);
-        self.fix_vh(a, out_a.unwrap_or(NONE));
+        let out_a = self.leaving(&near, a);
+        self.fix_vh(a, out_a);
         vh_mut(self)[b as usize] = NONE;
         let st = self.st_mut();
         st.removed_vertex[b as usize] = true;
         st.live_vertices -= 1;
         a
+    }
+
+    /// The first of `candidates` (`NONE` entries skipped) leaving vertex `x`, else `NONE`.
+    fn leaving(&self, candidates: &[u32], x: u32) -> u32 {
+        let leaves = |&s: &u32| s != NONE && self.v[s as usize] == x;
+        candidates.iter().copied().find(leaves).unwrap_or(NONE)
     }
 
     /// Pairs `p` and `q`, left unpaired by their removed triangle, into one edge (`q`'s id).

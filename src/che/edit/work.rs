@@ -90,24 +90,25 @@ impl Che {
         out
     }
 
+    /// The outgoing half-edge after `h` in the rotation that starts at `start` (`VH`), or
+    /// `NONE` at its end: what `any_outgoing` steps by, for a walk that edits as it goes.
+    pub(super) fn next_outgoing(&self, start: u32, h: u32) -> u32 {
+        let g = self.o[prev(h) as usize];
+        if g == start { NONE } else { g }
+    }
+
     /// Walks the outgoing half-edges of `x` in rotation order (from `VH`) until `stop` says
     /// so, without allocating (the checks run once per flip or collapse); true if it did.
     pub(super) fn any_outgoing(&self, x: u32, mut stop: impl FnMut(u32) -> bool) -> bool {
-        let s = self.vh[x as usize];
-        if s == NONE {
-            return false;
-        }
-        let (o, mut h) = (&*self.o, s);
-        loop {
+        let start = self.vh[x as usize];
+        let mut h = start;
+        while h != NONE {
             if stop(h) {
                 return true;
             }
-            let g = o[prev(h) as usize];
-            if g == NONE || g == s {
-                return false;
-            }
-            h = g;
+            h = self.next_outgoing(start, h);
         }
+        false
     }
 
     /// Sets `VH[x]` from `out`, a live outgoing half-edge of `x` (`NONE`: isolated): the

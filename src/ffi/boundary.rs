@@ -142,33 +142,35 @@ pub(crate) fn ids_arg<const N: usize>(p: *const u32, name: &str) -> Result<[u32;
     Ok(std::array::from_fn(|i| ids[i]))
 }
 
-/// The old -> new maps of a garbage collection: the caller's buffers `(map, cap, need,
-/// name)`, NULL for a map not wanted; one with room for fewer than `need` ids (the count
-/// before the call) is BUFFER_TOO_SMALL, before anything changes.
-pub(crate) unsafe fn maps_out<'a, const N: usize>(
-    buffers: [(*mut u32, usize, usize, &str); N],
-) -> Result<[Option<&'a mut [u32]>; N]> {
-    for (p, cap, need, name) in buffers {
-        if !p.is_null() && cap < need {
-            return Err(Error::new(
-                ErrorKind::BufferTooSmall,
-                format!("{name}: {need} entries needed, {cap} given"),
-            ));
+/// The body of a garbage collection export: the caller's map buffers `(map, cap, name)`,
+/// NULL for a map not wanted, each checked for room for `counts` (the counts before the
+/// call: BUFFER_TOO_SMALL before anything changes), then `collect` and the old -> new
+/// maps copied out.
+pub(crate) unsafe fn collect_garbage<H: Handle, const N: usize>(
+    m: *mut H, buffers: [(*mut u32, usize, &str); N], counts: impl FnOnce(&H::Core) -> [usize; N],
+    collect: impl FnOnce(&mut H::Core) -> Result<[Vec<u32>; N]>,
+) -> Status {
+    guard(|| {
+        // SAFETY: forwarded contract: NULL or a live handle, not shared.
+        let h = unsafe { handle_mut(m, "m")? };
+        let needs = counts(h.core());
+        for ((p, cap, name), need) in buffers.into_iter().zip(needs) {
+            if !p.is_null() && cap < need {
+                let detail = format!("{name}: {need} entries needed, {cap} given");
+                return Err(Error::new(ErrorKind::BufferTooSmall, detail));
+            }
         }
-    }
-    // SAFETY: forwarded contract: NULL (none) or `cap >= need` writable ids.
-    Ok(buffers.map(|(p, _, need, _)| {
-        unsafe { p.as_mut() }.map(|_| unsafe { std::slice::from_raw_parts_mut(p, need) })
-    }))
-}
-
-/// Copies each map into its buffer of [`maps_out`] (when wanted).
-pub(crate) fn fill_maps<const N: usize>(outs: [Option<&mut [u32]>; N], maps: [&[u32]; N]) {
-    for (out, map) in outs.into_iter().zip(maps) {
-        if let Some(out) = out {
-            out.copy_from_slice(map);
+        let maps = collect(h.core_mut());
+        h.settle_views();
+        for ((p, _, _), map) in buffers.into_iter().zip(maps?) {
+            if !p.is_null() {
+                // SAFETY: forwarded contract: room for the count before the call (checked),
+                // which bounds the map's length.
+                unsafe { std::slice::from_raw_parts_mut(p, map.len()) }.copy_from_slice(&map);
+            }
         }
-    }
+        Ok(())
+    })
 }
 
 /// A handle (or any input struct) by reference.

@@ -21,6 +21,7 @@
 //! | `check` | -> status | `\|c\| result` |
 //! | `edit` | (`m` exclusive) an out-parameter named in the entry, or none | `shapes::edit!` |
 //! | `csr` | the offsets and indices buffers, their capacities and lengths | `\|c, s\| rows` |
+//! | `matrix` | `kind`, the offsets, columns and values buffers and lengths | `\|c, offer\| …` |
 //! | `count` | -> `T` (0 for a NULL handle) | `\|c\| value` |
 //! | `view` | `size_t *len` -> `const T *` (NULL for a NULL handle) | `\|h\| slice` |
 
@@ -118,6 +119,26 @@ macro_rules! export {
                 $crate::util::alloc::Done::done($rows)?;
                 sink.finish()
             })
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        matrix fn $name:ident($kind:ident) { |$c:ident, $offer:ident| $body:expr }
+        $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *const $mesh, $kind: u32, offsets: *mut u64, offsets_cap: usize,
+            columns: *mut u32, columns_cap: usize, values: *mut f64, values_cap: usize,
+            n_offsets: *mut usize, n_entries: *mut usize,
+        ) -> $crate::ffi::status::Status {
+            let bufs = (offsets, columns, values);
+            let caps = [offsets_cap, columns_cap, values_cap];
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
+            unsafe {
+                let lens = [n_offsets, n_entries];
+                $crate::ffi::matrix::matrix_out(m, bufs, caps, lens, |$c, $offer| $body)
+            }
         }
         $crate::ffi::declare::export!(@ $mesh; $($rest)*);
     };

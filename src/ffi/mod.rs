@@ -25,6 +25,7 @@ pub(crate) mod boundary;
 pub mod che;
 pub mod chf;
 mod declare;
+mod matrix;
 mod mesh_arrays;
 mod shapes;
 #[cfg(test)]

@@ -8,7 +8,7 @@ use super::CheMesh;
 use crate::che::Che;
 use crate::error::Result;
 use crate::ffi::boundary::{
-    Handle, fill_maps, guard, handle_mut, maps_out, null_argument, out_arg, position_arg,
+    Handle, collect_garbage, guard, handle_mut, null_argument, out_arg, position_arg,
 };
 use crate::ffi::declare::exports;
 use crate::ffi::status::Status;
@@ -101,25 +101,23 @@ pub unsafe extern "C" fn che_mesh_garbage_collect(
     m: *mut CheMesh, vertex_map: *mut u32, vertex_cap: usize, triangle_map: *mut u32,
     triangle_cap: usize, edge_map: *mut u32, edge_cap: usize,
 ) -> Status {
-    guard(|| {
-        // SAFETY: caller contract (see `ffi`): NULL or a live handle, not shared.
-        let h = unsafe { handle_mut(m, "m")? };
-        let c = &h.che;
-        let needs = [c.num_vertices(), c.num_triangles(), c.num_edges()];
-        // SAFETY: caller contract: NULL or buffers of the stated capacities.
-        let outs = unsafe {
-            maps_out([
-                (vertex_map, vertex_cap, needs[0], "vertex_map"),
-                (triangle_map, triangle_cap, needs[1], "triangle_map"),
-                (edge_map, edge_cap, needs[2], "edge_map"),
-            ])?
-        };
-        let maps = Handle::core_mut(h).garbage_collect();
-        Handle::settle_views(h);
-        let maps = maps?;
-        fill_maps(outs, [&maps.vertices, &maps.triangles, &maps.edges]);
-        Ok(())
-    })
+    let maps = [
+        (vertex_map, vertex_cap, "vertex_map"),
+        (triangle_map, triangle_cap, "triangle_map"),
+        (edge_map, edge_cap, "edge_map"),
+    ];
+    // SAFETY: forwarded caller contract.
+    unsafe {
+        collect_garbage(
+            m,
+            maps,
+            |c| [c.num_vertices(), c.num_triangles(), c.num_edges()],
+            |c| {
+                c.garbage_collect()
+                    .map(|g| [g.vertices, g.triangles, g.edges])
+            },
+        )
+    }
 }
 
 exports! { CheMesh;

@@ -8,13 +8,10 @@
 #![allow(rustdoc::broken_intra_doc_links)]
 
 use super::CheMesh;
-use crate::che::{
-    Assembled, CsrSlices, HalfEdgeArray, HalfEdgeOptions, MatrixKind, Storage, WingedEdges,
-};
-use crate::error::{Error, Result};
-use crate::ffi::boundary::{Handle, core, guard, options_arg, out_arg, report_kind, sink, zeroed};
+use crate::che::{HalfEdgeArray, HalfEdgeOptions, MatrixKind, WingedEdges};
+use crate::error::Result;
+use crate::ffi::boundary::{options_arg, report_kind};
 use crate::ffi::declare::exports;
-use crate::ffi::status::Status;
 
 /// How `che_mesh_export_half_edges` shows the boundary.
 #[repr(C)]
@@ -150,96 +147,15 @@ exports! { CheMesh;
     }
 }
 
-/// Sparse matrix `kind` (a `CheMatrixKind`) in CSR, ready for Eigen (`Map<SparseMatrix<
-/// double, RowMajor, int64_t>>` after a cast of the columns) or SciPy (`csr_matrix((values,
-/// columns, offsets))`): row r holds `columns[offsets[r] .. offsets[r + 1]]` (sorted) with
-/// `values` at the same places; `*n_offsets` is rows + 1, `*n_entries` the entries. All
-/// three buffers NULL (capacities 0) is a size query; some NULL and not all is an error; a
-/// short buffer gives BUFFER_TOO_SMALL with both lengths written. O(T + entries) at every
-/// level.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_export_matrix(
-    m: *const CheMesh, kind: u32, offsets: *mut u64, offsets_cap: usize, columns: *mut u32,
-    columns_cap: usize, values: *mut f64, values_cap: usize, n_offsets: *mut usize,
-    n_entries: *mut usize,
-) -> Status {
-    // SAFETY: forwarded caller contract.
-    unsafe {
-        matrix_out(
-            m,
-            (offsets, columns, values),
-            [offsets_cap, columns_cap, values_cap],
-            [n_offsets, n_entries],
-            |c, offer| {
-                c.matrix_into(
-                    report_kind(MatrixKind::ALL, kind, "che_matrix_kind")?,
-                    offer,
-                )
-            },
-        )
+exports! { CheMesh;
+    /// Sparse matrix `kind` (a `CheMatrixKind`) in CSR, ready for Eigen (`Map<SparseMatrix<
+    /// double, RowMajor, int64_t>>` after a cast of the columns) or SciPy (`csr_matrix((values,
+    /// columns, offsets))`): row r holds `columns[offsets[r] .. offsets[r + 1]]` (sorted) with
+    /// `values` at the same places; `*n_offsets` is rows + 1, `*n_entries` the entries. All
+    /// three buffers NULL (capacities 0) is a size query; some NULL and not all is an error; a
+    /// short buffer gives BUFFER_TOO_SMALL with both lengths written. O(T + entries) at every
+    /// level.
+    matrix fn che_mesh_export_matrix(kind) {
+        |c, offer| c.matrix_into(report_kind(MatrixKind::ALL, kind, "che_matrix_kind")?, offer)
     }
-}
-
-/// The body of a matrix export: `bufs` are the offsets (`u64`), columns (`u32`) and
-/// values (`f64`) buffers as the caller gave them (all NULL: a size query; some NULL and
-/// not all: an error), `lens` the offsets' and entries' out-lengths; `make` gives the
-/// matrix from the handle's core, in the caller's buffers when they hold it.
-pub(crate) unsafe fn matrix_out<H: Handle>(
-    m: *const H, bufs: (*mut u64, *mut u32, *mut f64), caps: [usize; 3], lens: [*mut usize; 2],
-    make: impl FnOnce(&H::Core, Storage) -> Result<Assembled>,
-) -> Status {
-    guard(|| {
-        let nulls = [bufs.0.is_null(), bufs.1.is_null(), bufs.2.is_null()];
-        if let Some(k) = nulls
-            .iter()
-            .position(|&n| n)
-            .filter(|_| nulls.contains(&false))
-        {
-            let name = ["offsets", "columns", "values"][k];
-            let message = format!("argument '{name}' is NULL while the other buffers are not");
-            return Err(Error::new(crate::ErrorKind::NullArgument, message));
-        }
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers of the stated sizes.
-        let (c, n_offsets, n_entries) = unsafe {
-            let lens = (
-                out_arg(lens[0], "n_offsets")?,
-                out_arg(lens[1], "n_entries")?,
-            );
-            (core(m)?, lens.0, lens.1)
-        };
-        let mut offer = |rows: usize, entries: usize| {
-            let room = !nulls[0] && caps[0] >= rows && caps[1] >= entries && caps[2] >= entries;
-            // SAFETY: each buffer is valid for its capacity (contract), at least the lengths
-            // asked; zeroed before it is seen as initialised.
-            room.then(|| unsafe {
-                CsrSlices {
-                    offsets: zeroed(bufs.0, rows),
-                    columns: zeroed(bufs.1, entries),
-                    values: zeroed(bufs.2, entries),
-                }
-            })
-        };
-        match make(c, &mut offer)? {
-            Assembled::Written {
-                n_offsets: o,
-                n_entries: e,
-            } => {
-                n_offsets.set(o);
-                n_entries.set(e);
-                Ok(())
-            }
-            Assembled::Owned(matrix) => {
-                let mut n_values = 0usize;
-                // SAFETY: as above; the slices offered are no longer in use.
-                let sinks = unsafe {
-                    (
-                        sink(bufs.0, caps[0], lens[0], "offsets")?,
-                        sink(bufs.1, caps[1], lens[1], "columns")?,
-                        sink(bufs.2, caps[2], &mut n_values, "values")?,
-                    )
-                };
-                matrix.write_into(sinks)
-            }
-        }
-    })
 }

@@ -11,7 +11,7 @@
 //! the centroid of what is split); a mesh without positions takes NULL only.
 
 use super::ChfMesh;
-use crate::ffi::boundary::{Handle, fill_maps, guard, handle_mut, ids_arg, maps_out, position_arg};
+use crate::ffi::boundary::{collect_garbage, ids_arg, position_arg};
 use crate::ffi::declare::exports;
 use crate::ffi::shapes::edit;
 use crate::ffi::status::Status;
@@ -130,37 +130,25 @@ pub unsafe extern "C" fn chf_mesh_garbage_collect(
     tetrahedron_cap: usize, face_map: *mut u32, face_cap: usize, edge_map: *mut u32,
     edge_cap: usize,
 ) -> Status {
-    guard(|| {
-        // SAFETY: caller contract (see `ffi`): NULL or a live handle, not shared.
-        let h = unsafe { handle_mut(m, "m")? };
-        let c = &h.chf;
-        let needs = [
+    let maps = [
+        (vertex_map, vertex_cap, "vertex_map"),
+        (tetrahedron_map, tetrahedron_cap, "tetrahedron_map"),
+        (face_map, face_cap, "face_map"),
+        (edge_map, edge_cap, "edge_map"),
+    ];
+    let counts = |c: &crate::Chf| {
+        [
             c.num_vertices(),
             c.num_tetrahedra(),
             c.num_faces(),
             c.num_edges(),
-        ];
-        // SAFETY: caller contract: NULL or buffers of the stated capacities.
-        let outs = unsafe {
-            maps_out([
-                (vertex_map, vertex_cap, needs[0], "vertex_map"),
-                (
-                    tetrahedron_map,
-                    tetrahedron_cap,
-                    needs[1],
-                    "tetrahedron_map",
-                ),
-                (face_map, face_cap, needs[2], "face_map"),
-                (edge_map, edge_cap, needs[3], "edge_map"),
-            ])?
-        };
-        let maps = Handle::core_mut(h).garbage_collect();
-        Handle::settle_views(h);
-        let maps = maps?;
-        fill_maps(
-            outs,
-            [&maps.vertices, &maps.tetrahedra, &maps.faces, &maps.edges],
-        );
-        Ok(())
-    })
+        ]
+    };
+    // SAFETY: forwarded caller contract.
+    unsafe {
+        collect_garbage(m, maps, counts, |c| {
+            c.garbage_collect()
+                .map(|g| [g.vertices, g.tetrahedra, g.faces, g.edges])
+        })
+    }
 }

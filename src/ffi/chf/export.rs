@@ -6,9 +6,7 @@ use super::ChfMesh;
 use crate::chf::{HalfFaceArrays, VolumeMatrixKind};
 use crate::error::Result;
 use crate::ffi::boundary::report_kind;
-use crate::ffi::che::matrix_out;
 use crate::ffi::declare::exports;
-use crate::ffi::status::Status;
 
 /// Which array `chf_mesh_export_half_faces` writes. Half-face hf = 4t + i is face i of
 /// tetrahedron t (opposite its vertex i).
@@ -49,29 +47,17 @@ exports! { ChfMesh;
     /// Betti numbers over Z/2 of the structure's complex into `*out`; b0 - b1 + b2 - b3 is
     /// its Euler characteristic.
     value fn chf_mesh_betti_numbers() -> ChfBetti {
-        |c| c .betti_numbers() .map(|[b0, b1, b2, b3]| ChfBetti { b0, b1, b2, b3 })
+        |c| c.betti_numbers().map(|[b0, b1, b2, b3]| ChfBetti { b0, b1, b2, b3 })
     }
 }
 
-/// Sparse matrix `kind` (a `ChfMatrixKind`) in CSR, with the layout and buffer rules of
-/// `che_mesh_export_matrix`.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_export_matrix(
-    m: *const ChfMesh, kind: u32, offsets: *mut u64, offsets_cap: usize, columns: *mut u32,
-    columns_cap: usize, values: *mut f64, values_cap: usize, n_offsets: *mut usize,
-    n_entries: *mut usize,
-) -> Status {
-    // SAFETY: forwarded caller contract.
-    unsafe {
-        matrix_out(
-            m,
-            (offsets, columns, values),
-            [offsets_cap, columns_cap, values_cap],
-            [n_offsets, n_entries],
-            |c, offer| {
-                let kind = report_kind(VolumeMatrixKind::ALL, kind, "chf_matrix_kind")?;
-                c.volume_matrix_into(kind, offer)
-            },
-        )
+exports! { ChfMesh;
+    /// Sparse matrix `kind` (a `ChfMatrixKind`) in CSR, with the layout and buffer rules of
+    /// `che_mesh_export_matrix`.
+    matrix fn chf_mesh_export_matrix(kind) {
+        |c, offer| {
+            let kind = report_kind(VolumeMatrixKind::ALL, kind, "chf_matrix_kind")?;
+            c.volume_matrix_into(kind, offer)
+        }
     }
 }

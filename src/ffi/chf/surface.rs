@@ -88,6 +88,6 @@ exports! { ChfMesh;
     /// see `chf_mesh_boundary_vertex_components` for the array at level 3). O(1) at level 3; O(T) time and memory below (the boundary's tables computed for the
     /// call).
     value fn chf_vertex_boundary_component(v) -> u32 {
-        |c| c .check_vertex(v) .and_then(|_| c.try_boundary_component(v))
+        |c| c.check_vertex(v).and_then(|_| c.try_boundary_component(v))
     }
 }

@@ -43,7 +43,7 @@ exports! { ChfMesh;
     /// Positions: x, y, z per structure vertex (copies repeat their origin's position);
     /// `*len` is the number of doubles, `3 * num_vertices`. NULL when built without positions.
     view fn chf_mesh_positions() -> f64 {
-        |m| Some(m.chf.positions()) .filter(|p| !p.is_empty()) .map(coordinates)
+        |m| Some(m.chf.positions()).filter(|p| !p.is_empty()).map(coordinates)
     }
     /// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
     /// vertices, then the origin of each split copy). Materialised on first use when it is the

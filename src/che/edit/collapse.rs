@@ -33,9 +33,15 @@ impl Che {
 
     fn collapse_live(&mut self, h: u32) -> u32 {
         let (a, b, wings) = self.collapse_wings(h);
+        // Whether a vertex is interior, read before the collapse: one the checks allow keeps
+        // an interior third vertex interior, and `a` interior when both ends were, so
+        // those take their new `VH` without the walk to a boundary half-edge.
+        let interior = |c: &Self, x: u32| c.o[c.vh[x as usize] as usize] != NONE;
+        let ends_interior = interior(self, a) && interior(self, b);
         // Per wing w: its third vertex z, and the outer half-edges across its edge at `b`
         // (whose id goes) and at `a` (whose id stays).
         let mut outer = [(NONE, NONE, NONE); 2];
+        let mut z_interior = [false; 2];
         for (k, &w) in wings.iter().enumerate() {
             let (at_b, at_a) = if w == h {
                 (next(w), prev(w))
@@ -44,6 +50,7 @@ impl Che {
             };
             let z = self.v[prev(w) as usize];
             outer[k] = (z, self.o[at_b as usize], self.o[at_a as usize]);
+            z_interior[k] = interior(self, z);
         }
         let start = self.vh[b as usize];
         let mut x = start;
@@ -67,10 +74,10 @@ impl Che {
                 }
             }
             let out_z = self.leaving(&near[4 * k..4 * k + 4], z);
-            self.fix_vh(z, out_z);
+            self.set_vh(z, out_z, z_interior[k]);
         }
         let out_a = self.leaving(&near, a);
-        self.fix_vh(a, out_a);
+        self.set_vh(a, out_a, ends_interior);
         vh_mut(self)[b as usize] = NONE;
         let st = self.st_mut();
         st.removed_vertex[b as usize] = true;

@@ -127,6 +127,16 @@ impl Che {
         vh_mut(self)[x as usize] = h;
     }
 
+    /// `fix_vh` for a vertex known to be interior or not: an interior one takes `out` as it
+    /// is, without the walk.
+    pub(super) fn set_vh(&mut self, x: u32, out: u32, interior: bool) {
+        if interior {
+            vh_mut(self)[x as usize] = out;
+        } else {
+            self.fix_vh(x, out);
+        }
+    }
+
     /// After triangles around `x` were removed: `outs` held its outgoing half-edges before.
     /// Each fan but the first moves to a new copy of `x` (the build splits a vertex whose
     /// triangles form several fans the same way), so every vertex keeps one rotation.

@@ -187,13 +187,13 @@ public:
     Surface &operator=(Surface &&other) noexcept;
     ~Surface();
     const che_mesh *handle() const noexcept { return m_; }
-    /// The handle, to pass to the C API. Change its level only with build_level(), or call
-    /// refresh() after changing it through the handle: the Surface keeps the zero-copy
-    /// arrays of the level it last saw.
+    /// The handle, to pass to the C API. Change its level or edit it only through the
+    /// Surface, or call refresh() after changing it through the handle: the Surface keeps
+    /// the zero-copy arrays and the counts it last saw.
     che_mesh *handle() noexcept { return m_; }
     /// Gives up ownership; the caller frees with che_mesh_free.
     che_mesh *release() noexcept;
-    /// Fetches the zero-copy arrays again (after a level change made through handle()).
+    /// Fetches the zero-copy arrays and counts again (after a change made through handle()).
     void refresh() noexcept { views_.fetch(m_); }
 
     // Level and counts.

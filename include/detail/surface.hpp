@@ -74,12 +74,14 @@ inline void Surface::build_level(std::uint32_t level) {
     views_.fetch(m_);
     detail::check(s);
 }
-inline std::size_t Surface::num_vertices() const noexcept { return che_mesh_num_vertices(m_); }
+// The counts the views were fetched with (every edit and change of level fetches them
+// again): no call into the library in a loop over the ids.
+inline std::size_t Surface::num_vertices() const noexcept { return views_.nv; }
 inline std::size_t Surface::num_input_vertices() const noexcept {
     return che_mesh_num_input_vertices(m_);
 }
-inline std::size_t Surface::num_triangles() const noexcept { return che_mesh_num_triangles(m_); }
-inline std::size_t Surface::num_edges() const noexcept { return che_mesh_num_edges(m_); }
+inline std::size_t Surface::num_triangles() const noexcept { return views_.nt; }
+inline std::size_t Surface::num_edges() const noexcept { return views_.ne; }
 inline std::size_t Surface::num_half_edges() const noexcept { return che_mesh_num_half_edges(m_); }
 inline std::size_t Surface::num_boundary_curves() const noexcept {
     return che_mesh_num_boundary_curves(m_);

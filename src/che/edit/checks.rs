@@ -235,7 +235,13 @@ impl Che {
     /// A neighbour of both `a` and `b` other than `a` and the `thirds`, if there is one.
     /// The ring of `a` is gathered on the stack when it is small, as it nearly always is.
     fn shared_neighbour(&self, a: u32, b: u32, thirds: &[u32]) -> Option<u32> {
-        const SMALL: usize = 32;
+        self.shared_neighbour_in::<32>(a, b, thirds)
+    }
+
+    /// `shared_neighbour` with a stack ring of `SMALL` vertices.
+    fn shared_neighbour_in<const SMALL: usize>(
+        &self, a: u32, b: u32, thirds: &[u32],
+    ) -> Option<u32> {
         let (mut ring, mut n) = ([NONE; SMALL], 0);
         let fits = !self.any_neighbour(a, |y| {
             if n == SMALL {
@@ -245,21 +251,25 @@ impl Che {
             n += 1;
             false
         });
-        let large: Vec<u32>;
-        let ring_a: &[u32] = if fits {
-            &ring[..n]
-        } else {
-            let mut all = Vec::new();
+        // Past `SMALL` neighbours (a rare hub), the ring goes to a sorted vector instead.
+        let mut large = Vec::new();
+        if !fits {
             self.any_neighbour(a, |y| {
-                all.push(y);
+                large.push(y);
                 false
             });
-            large = all;
-            &large
+            large.sort_unstable();
+        }
+        let around_a = |y: u32| {
+            if fits {
+                ring[..n].contains(&y)
+            } else {
+                large.binary_search(&y).is_ok()
+            }
         };
         let mut shared = None;
         self.any_neighbour(b, |y| {
-            let found = y != a && ring_a.contains(&y) && !thirds.contains(&y);
+            let found = y != a && !thirds.contains(&y) && around_a(y);
             shared = found.then_some(y);
             found
         });
@@ -340,6 +350,29 @@ mod tests {
                         che.flip_edge(e).unwrap();
                     }
                 }
+            }
+        }
+    }
+
+    /// The shared neighbour found through the stack ring and through the sorted vector of
+    /// a hub is the same, for every half-edge of meshes with vertices of degree 3 to 40.
+    #[test]
+    fn shared_neighbour_on_the_stack_or_in_a_vector_agree() {
+        for s in [sphere(40, 4), torus(6, 5), grid(4, 3), sphere(5, 4)] {
+            let n = s.positions.len();
+            let che =
+                Che::from_triangles(&s.triangles, n, &s.positions, BuildOptions::level(2)).unwrap();
+            let v = che.half_edge_vertices();
+            for h in 0..v.len() as u32 {
+                let (a, b) = (v[h as usize], v[crate::che::ids::next(h) as usize]);
+                let thirds = [v[crate::che::ids::prev(h) as usize]];
+                let stack = che.shared_neighbour_in::<64>(a, b, &thirds);
+                assert_eq!(
+                    che.shared_neighbour_in::<1>(a, b, &thirds),
+                    stack,
+                    "half-edge {h}"
+                );
+                assert_eq!(che.shared_neighbour(a, b, &thirds), stack, "half-edge {h}");
             }
         }
     }

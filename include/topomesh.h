@@ -479,9 +479,10 @@ typedef struct che_build_options {
     /**
      * Reject non-manifold edges, non-manifold vertices and duplicate triangles with
      * `TOPOMESH_STATUS_NON_MANIFOLD` (detail: the offending ids) instead of repairing them
-     * (default 0). Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the
-     * size and offset of the `bool` it was: a C `bool` field can hold other values, which
-     * Rust may not read as a `bool`.)
+     * (default 0).
+     * Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the size and
+     * offset of the `bool` it was: a C `bool` field can hold other values, which Rust
+     * may not read as a `bool`.)
      */
     uint8_t strict;
     /**
@@ -716,10 +717,10 @@ typedef struct chf_build_options {
     /**
      * Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
      * and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
-     * the offending ids) instead of keeping them
-     * (default 0). Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the
-     * size and offset of the `bool` it was: a C `bool` field can hold other values, which
-     * Rust may not read as a `bool`.)
+     * the offending ids) instead of keeping them (default 0).
+     * Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the size and
+     * offset of the `bool` it was: a C `bool` field can hold other values, which Rust
+     * may not read as a `bool`.)
      */
     uint8_t strict;
     /**

@@ -162,11 +162,11 @@ pub(crate) unsafe fn collect_garbage<H: Handle, const N: usize>(
         }
         let maps = collect(h.core_mut());
         h.settle_views();
-        for ((p, _, _), map) in buffers.into_iter().zip(maps?) {
+        for (((p, _, _), need), map) in buffers.into_iter().zip(needs).zip(maps?) {
             if !p.is_null() {
-                // SAFETY: forwarded contract: room for the count before the call (checked),
-                // which bounds the map's length.
-                unsafe { std::slice::from_raw_parts_mut(p, map.len()) }.copy_from_slice(&map);
+                // SAFETY: forwarded contract: room for `need` ids (checked above). A map of
+                // another length panics in `copy_from_slice`, inside the guard.
+                unsafe { std::slice::from_raw_parts_mut(p, need) }.copy_from_slice(&map);
             }
         }
         Ok(())

@@ -218,9 +218,9 @@ macro_rules! build_options {
             /// The level, 0..3 (default 2).
             pub level: u32,
             $(#[$strict])*
-            /// (default 0). Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the
-            /// size and offset of the `bool` it was: a C `bool` field can hold other values, which
-            /// Rust may not read as a `bool`.)
+            /// Any non-zero value is true. (A `uint8_t` rather than a `bool`, with the size and
+            /// offset of the `bool` it was: a C `bool` field can hold other values, which Rust
+            /// may not read as a `bool`.)
             pub strict: u8,
             /// Threads for the build: 0 (default) for as many as the machine runs at once, 1 for
             /// the calling thread alone; a larger number is capped at what the machine runs at once

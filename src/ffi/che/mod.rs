@@ -38,6 +38,7 @@ build_options! {
     CheBuildOptions {
         /// Reject non-manifold edges, non-manifold vertices and duplicate triangles with
         /// `TOPOMESH_STATUS_NON_MANIFOLD` (detail: the offending ids) instead of repairing them
+        /// (default 0).
         strict
     }
 }

@@ -40,7 +40,7 @@ build_options! {
     ChfBuildOptions {
         /// Reject non-manifold faces (three or more tetrahedra on a face), non-manifold edges
         /// and vertices, and duplicate tetrahedra with `TOPOMESH_STATUS_NON_MANIFOLD` (detail:
-        /// the offending ids) instead of keeping them
+        /// the offending ids) instead of keeping them (default 0).
         strict
     }
 }

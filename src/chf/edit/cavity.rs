@@ -14,7 +14,7 @@
 //! fans, goes to the generic check, which decides the same way (a test compares them).
 
 use super::arrays;
-use super::plan::{Plan, cycle, same_way, sorted3};
+use super::plan::{Plan, Shape, cycle, same_way, sorted3};
 use super::state::{canonical_half_edge, for_each_fan_slot};
 use crate::NONE;
 use crate::chf::Chf;
@@ -75,6 +75,25 @@ fn pairs(q: [u32; 4]) -> [(u32, u32); 6] {
     EDGE.map(|[p, r]| pair(q[p as usize], q[r as usize]))
 }
 
+/// The link of a 1-4 split of `t` ([`Shape::OneToFour`]), new tetrahedra from `bound` on:
+/// face `k` of new tetrahedron `k` (opposite the new vertex) replaces face `k` of `t`,
+/// and face `i` of it pairs with face `k` of new tetrahedron `i` (both hold the new vertex
+/// and the two corners other than `i` and `k`). Nothing to search, and nothing inside the
+/// cavity can exist already: every new edge and face holds the new vertex.
+fn one_to_four_link(t: u32, bound: u32) -> Small<u32, { 4 * MAX_ADD }> {
+    let mut link = Small::new();
+    for k in 0..4 {
+        for i in 0..4 {
+            link.push(if i == k {
+                first(t) + k
+            } else {
+                4 * (bound + i) + k
+            });
+        }
+    }
+    link
+}
+
 impl Chf {
     /// The cavity form of `plan`: `Ok(None)` when it is not one (the generic check
     /// decides), an error when it is one and is refused. Writes nothing.
@@ -88,6 +107,11 @@ impl Chf {
             return Ok(None);
         }
         self.verify_inputs(plan)?;
+        if plan.shape == Shape::OneToFour {
+            return Ok(Some(Cavity {
+                link: one_to_four_link(plan.remove[0], self.num_tetrahedra() as u32),
+            }));
+        }
         let view = self.try_view(Need::NOTHING)?;
         let Some(link) = self.link_half_faces(plan, &view.o) else {
             return Ok(None);
@@ -156,7 +180,7 @@ impl Chf {
         for q in &plan.add {
             for (a, b) in pairs(*q) {
                 let new_edge = Some(a) != fresh && Some(b) != fresh && !old_pair(a, b);
-                if new_edge && self.star_holds(view, plan, a, &[b]) {
+                if new_edge && self.pair_held_outside(view, plan, a, b) {
                     return Err(Error::non_manifold(format!(
                         "refused: edge ({a}, {b}) exists already"
                     )));
@@ -205,17 +229,22 @@ impl Chf {
         found
     }
 
-    /// Does a tetrahedron of the star of `x` outside the cavity hold every vertex of
-    /// `others`?
-    fn star_holds(&self, view: &View, plan: &Plan, x: u32, others: &[u32]) -> bool {
-        let mut star = Star::new(x, view.start_half_face(x));
-        while let Some((t, _)) = star.next(view, |_| 0) {
-            let q = self.tetrahedron_vertices(t);
-            if !plan.remove.contains(&t) && others.iter().all(|y| q.contains(y)) {
-                return true;
+    /// Does a tetrahedron outside the cavity hold both `a` and `b`? Either star alone
+    /// decides, so the two are walked in step and the first to end answers: the star of
+    /// a vertex a split made is small where an old vertex's may be large.
+    fn pair_held_outside(&self, view: &View, plan: &Plan, a: u32, b: u32) -> bool {
+        let mut stars = [a, b].map(|x| Star::new(x, view.start_half_face(x)));
+        loop {
+            for star in &mut stars {
+                let Some((t, _)) = star.next(view, |_| 0) else {
+                    return false;
+                };
+                let q = self.tetrahedron_vertices(t);
+                if q.contains(&a) && q.contains(&b) && !plan.remove.contains(&t) {
+                    return true;
+                }
             }
         }
-        false
     }
 }
 
@@ -441,6 +470,7 @@ impl Chf {
 mod tests {
     use crate::NONE;
     use crate::chf::edit::plan::Plan;
+    use crate::chf::query::view::Need;
     use crate::chf::{BuildOptions, Chf};
     use crate::error::Result;
 
@@ -523,6 +553,33 @@ mod tests {
             taken > 2000 && refused > 100,
             "{taken} taken, {refused} refused"
         );
+    }
+
+    /// The link a 1-4 split is given is the one the search finds, on a mesh with a
+    /// boundary, with and without positions.
+    #[test]
+    fn a_one_to_four_link_is_the_searched_one() {
+        for positions in [true, false] {
+            let g = crate::generate::cube_grid(3);
+            let p = if positions { &g.positions[..] } else { &[] };
+            let n = g.positions.len();
+            let mut chf =
+                Chf::from_tetrahedra(&g.tetrahedra, n, p, BuildOptions::level(2)).unwrap();
+            let mut rng = 11;
+            for _ in 0..300 {
+                let t = (next(&mut rng) % chf.num_tetrahedra() as u64) as u32;
+                if chf.is_tetrahedron_removed(t) {
+                    continue;
+                }
+                let plan = chf.plan_split_tetrahedron(t, None).unwrap();
+                let view = chf.try_view(Need::NOTHING).unwrap();
+                let searched = chf.link_half_faces(&plan, &view.o).expect("a cavity");
+                let known = super::one_to_four_link(t, chf.num_tetrahedra() as u32);
+                assert_eq!(searched.as_slice(), known.as_slice(), "tetrahedron {t}");
+                chf.split_tetrahedron(t, None).unwrap();
+            }
+            chf.validate().unwrap();
+        }
     }
 
     /// The faces on the cavity's boundary, with their sorted vertices.

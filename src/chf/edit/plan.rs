@@ -24,6 +24,19 @@ pub(crate) struct Plan {
     pub new_vertex: Option<Option<DVec3>>,
     /// Vertices to retire afterwards (they end with no tetrahedron).
     pub retire: Vec<u32>,
+    /// What the plan is known to be, when that spares the check a search.
+    pub shape: Shape,
+}
+
+/// A plan's known shape.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) enum Shape {
+    /// Anything: the checks find out.
+    #[default]
+    Any,
+    /// A 1-4 split: removes one tetrahedron `q` and adds, as its `k`-th new one, `q` with
+    /// vertex `k` replaced by the new vertex.
+    OneToFour,
 }
 
 /// A checked plan: the twins of the new half-faces and the stars after the edit.

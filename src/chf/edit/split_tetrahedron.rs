@@ -1,6 +1,6 @@
 //! The 1-4 split: a new vertex inside a tetrahedron, joined to its four faces.
 
-use super::plan::{Plan, context, replaced};
+use super::plan::{Plan, Shape, context, replaced};
 use crate::chf::Chf;
 use crate::error::Result;
 use glam::DVec3;
@@ -12,6 +12,7 @@ impl Chf {
         let (mut plan, x) = self.split_plan(position, &q)?;
         plan.remove.push(t);
         plan.add.extend(q.map(|c| replaced(q, c, x)));
+        plan.shape = Shape::OneToFour;
         Ok(plan)
     }
 

@@ -180,7 +180,7 @@ impl Chf {
         for q in &plan.add {
             for (a, b) in pairs(*q) {
                 let new_edge = Some(a) != fresh && Some(b) != fresh && !old_pair(a, b);
-                if new_edge && self.pair_held_outside(view, plan, a, b) {
+                if new_edge && self.star_holds(view, plan, a, &[b]) {
                     return Err(Error::non_manifold(format!(
                         "refused: edge ({a}, {b}) exists already"
                     )));
@@ -229,22 +229,17 @@ impl Chf {
         found
     }
 
-    /// Does a tetrahedron outside the cavity hold both `a` and `b`? Either star alone
-    /// decides, so the two are walked in step and the first to end answers: the star of
-    /// a vertex a split made is small where an old vertex's may be large.
-    fn pair_held_outside(&self, view: &View, plan: &Plan, a: u32, b: u32) -> bool {
-        let mut stars = [a, b].map(|x| Star::new(x, view.start_half_face(x)));
-        loop {
-            for star in &mut stars {
-                let Some((t, _)) = star.next(view, |_| 0) else {
-                    return false;
-                };
-                let q = self.tetrahedron_vertices(t);
-                if q.contains(&a) && q.contains(&b) && !plan.remove.contains(&t) {
-                    return true;
-                }
+    /// Does a tetrahedron of the star of `x` outside the cavity hold every vertex of
+    /// `others`?
+    fn star_holds(&self, view: &View, plan: &Plan, x: u32, others: &[u32]) -> bool {
+        let mut star = Star::new(x, view.start_half_face(x));
+        while let Some((t, _)) = star.next(view, |_| 0) {
+            let q = self.tetrahedron_vertices(t);
+            if !plan.remove.contains(&t) && others.iter().all(|y| q.contains(y)) {
+                return true;
             }
         }
+        false
     }
 }
 

@@ -2448,7 +2448,9 @@ topomesh_status chf_mesh_check_remove_vertex(const struct chf_mesh *m, uint32_t 
 
 /**
  * Splits tetrahedron `t` in four (1-4) at a new vertex (id into `*out_v`), at `position`
- * or the centroid; refused unless the position is strictly inside.
+ * or the centroid; refused unless the position is strictly inside. `t` keeps its id,
+ * its vertex 0 replaced by the new one; the pieces with vertex 1, 2 and 3 replaced
+ * are appended, in that order.
  */
 topomesh_status chf_mesh_split_tetrahedron(struct chf_mesh *m,
                                            uint32_t t,

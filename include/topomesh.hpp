@@ -554,7 +554,8 @@ public:
     void remove(TetrahedronId t);
     /// Removes v and its star.
     void remove(VertexId v);
-    /// 1-4, 2-6 (1-3 on the boundary) and edge splits at a new vertex, returned.
+    /// 1-4, 2-6 (1-3 on the boundary) and edge splits at a new vertex, returned. A 1-4
+    /// split keeps `t` as the piece without its vertex 0 and appends the other three.
     VertexId split(TetrahedronId t, const Vec3 *position = nullptr);
     VertexId split(FaceId f, const Vec3 *position = nullptr);
     VertexId split(EdgeId e, const Vec3 *position = nullptr);

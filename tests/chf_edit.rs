@@ -468,15 +468,25 @@ fn damaged_meshes() {
 #[test]
 fn each_operation_on_a_cube() {
     let mut chf = cube(1, 1, 1, false).build(2, true);
+    let q = chf.tetrahedron_vertices(0);
+    let n = chf.num_tetrahedra() as u32;
     let x = chf.split_tetrahedron(0, None).unwrap();
     assert_eq!(x as usize, chf.num_vertices() - 1);
-    assert!(chf.is_tetrahedron_removed(0));
+    // Tetrahedron 0 keeps its id, its vertex 0 replaced; the other pieces are appended.
+    assert!(!chf.is_tetrahedron_removed(0));
+    assert_eq!(chf.num_tetrahedra() as u32, n + 3);
+    for (k, t) in [0, n, n + 1, n + 2].into_iter().enumerate() {
+        let mut piece = q;
+        piece[k] = x;
+        assert_eq!(chf.tetrahedron_vertices(t), piece, "piece {k}");
+    }
     check(&chf, "1-4", true);
     let interior = (0..chf.num_faces() as u32)
         .find(|&f| {
             !chf.is_face_removed(f) && !chf.is_boundary_face(f) && chf.check_flip_23(f).is_ok()
         })
         .expect("a flippable face");
+    let gone = chf.face_tetrahedra(interior)[0];
     let new = chf.flip_23(interior).unwrap();
     check(&chf, "2-3", true);
     let e = chf
@@ -486,12 +496,12 @@ fn each_operation_on_a_cube() {
         .expect("the new edge");
     chf.flip_32(e).unwrap();
     check(&chf, "3-2", true);
-    let err = chf.remove_tetrahedron(0).unwrap_err();
+    let err = chf.remove_tetrahedron(gone).unwrap_err();
     assert!(err.message.contains("removed"), "{err}");
     let err = chf.split_tetrahedron(NONE, None).unwrap_err();
     assert_eq!(err.kind, topomesh::ErrorKind::OutOfRange);
     let maps = chf.garbage_collect().unwrap();
-    assert_eq!(maps.tetrahedra[0], NONE);
+    assert_eq!(maps.tetrahedra[gone as usize], NONE);
     chf.validate().unwrap();
     assert!(!chf.is_edited());
 }

@@ -61,7 +61,7 @@ std::string us_per(double ms, uint64_t n) {
 }
 
 // N splits through the wrapper; the live list is updated as CGAL's is (the split
-// tetrahedron's slot takes the first new one, the others go to the back).
+// tetrahedron keeps its slot, the three new ones go to the back).
 Row tm_splits(const TetSoup &s, uint32_t level, uint64_t n, uint64_t seed, MemRow &mem) {
   Row row{"1-4 split", "topomesh L" + std::to_string(level), "Volume::split(TetrahedronId)", {}, 0};
   MemProbe p;
@@ -82,8 +82,7 @@ Row tm_splits(const TetSoup &s, uint32_t level, uint64_t n, uint64_t seed, MemRo
         ++row.refused;
         continue;
       }
-      live[k] = bound;
-      live.insert(live.end(), {bound + 1, bound + 2, bound + 3});
+      live.insert(live.end(), {bound, bound + 1, bound + 2});
       if (i == 0) row.run.first_ms = cpu_ms() - t0;
     }
     row.run.ms = cpu_ms() - t0;

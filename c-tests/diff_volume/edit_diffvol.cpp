@@ -178,8 +178,10 @@ topomesh_status tm_apply(Run &r, const Op &op, std::vector<uint32_t> &made, uint
   case SPLIT: {
     const size_t before = chf_mesh_num_tetrahedra(r.tm.m);
     topomesh_status st = chf_mesh_split_tetrahedron(r.tm.m, op.target, op.point.data(), &new_v);
-    if (st == TOPOMESH_STATUS_OK)
+    if (st == TOPOMESH_STATUS_OK) {
+      made.push_back(op.target); // the split tetrahedron keeps its id as one piece
       for (size_t t = before; t < chf_mesh_num_tetrahedra(r.tm.m); ++t) made.push_back(uint32_t(t));
+    }
     return st;
   }
   case FLIP23: return chf_mesh_flip_23(r.tm.m, op.target, made.data());

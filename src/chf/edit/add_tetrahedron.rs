@@ -42,7 +42,7 @@ impl Chf {
     /// Would [`Chf::add_tetrahedron`] succeed? Changes nothing.
     pub fn check_add_tetrahedron(&self, q: [u32; 4]) -> Result<()> {
         let plan = self.plan_add_tetrahedron(q)?;
-        self.check_plan(plan)
+        self.check_plan(&plan)
             .map_err(context("add_tetrahedron", || format!("{q:?}")))
     }
 }

@@ -24,6 +24,12 @@ pub(crate) fn set_opposite(chf: &mut Chf, hf: u32, g: u32) {
     chf.o.owned_mut()[hf as usize] = g;
 }
 
+/// `V[hf] = x`: vertex `local(hf)` of `tet(hf)` becomes `x`.
+#[inline]
+pub(crate) fn set_corner(chf: &mut Chf, hf: u32, x: u32) {
+    chf.v.owned_mut()[hf as usize] = x;
+}
+
 /// `VH[x] = hf`.
 #[inline]
 pub(crate) fn set_vertex_half_face(chf: &mut Chf, x: u32, hf: u32) {

@@ -33,7 +33,7 @@ const MAX_ADD: usize = 16;
 
 /// A list of at most `N` items, on the stack.
 #[derive(Clone, Copy)]
-struct Small<T: Copy + Default, const N: usize> {
+pub(super) struct Small<T: Copy + Default, const N: usize> {
     items: [T; N],
     len: usize,
 }
@@ -49,7 +49,7 @@ impl<T: Copy + Default, const N: usize> Small<T, N> {
         self.items[self.len] = x;
         self.len += 1;
     }
-    fn as_slice(&self) -> &[T] {
+    pub(super) fn as_slice(&self) -> &[T] {
         &self.items[..self.len]
     }
 }
@@ -63,7 +63,7 @@ pub(crate) struct Cavity {
 }
 
 /// A pair's edge id, and whether a new tetrahedron holds the pair.
-type EdgeIds = Small<((u32, u32), u32), { 6 * MAX_ADD }>;
+pub(super) type EdgeIds = Small<((u32, u32), u32), { 6 * MAX_ADD }>;
 
 /// A vertex pair, smaller id first.
 fn pair(a: u32, b: u32) -> (u32, u32) {
@@ -71,7 +71,7 @@ fn pair(a: u32, b: u32) -> (u32, u32) {
 }
 
 /// The six vertex pairs of `q`.
-fn pairs(q: [u32; 4]) -> [(u32, u32); 6] {
+pub(super) fn pairs(q: [u32; 4]) -> [(u32, u32); 6] {
     EDGE.map(|[p, r]| pair(q[p as usize], q[r as usize]))
 }
 
@@ -272,7 +272,7 @@ impl Chf {
     /// cavity, the half-faces of its vertices, the canonical elements of its faces and
     /// edges): scattered over a large mesh, each is a cache miss, and issued together the
     /// misses overlap instead of queueing behind one another.
-    fn touch_cavity(&self, remove: &[u32]) {
+    pub(super) fn touch_cavity(&self, remove: &[u32]) {
         let s = self.edit.as_ref().expect("edited");
         let mut sum = 0u32;
         for &t in remove {
@@ -291,7 +291,7 @@ impl Chf {
     }
 
     /// Each removed pair with its edge id, read before the removal.
-    fn old_edge_slots(&self, remove: &[u32]) -> EdgeIds {
+    pub(super) fn old_edge_slots(&self, remove: &[u32]) -> EdgeIds {
         let s = self.edit.as_ref().expect("edited");
         let mut out = EdgeIds::new();
         for &t in remove {
@@ -312,20 +312,25 @@ impl Chf {
             if g < 4 * bound {
                 self.move_face(g, h);
             } else if h < g {
-                arrays::set_opposite(self, h, g);
-                arrays::set_opposite(self, g, h);
-                let s = self.edit.as_mut().expect("edited");
-                let f = s.face_hf.len() as u32;
-                s.face_hf.push(h);
-                s.hf_face[h as usize] = f;
-                s.hf_face[g as usize] = f;
-                s.live_faces += 1;
+                self.pair_as_new_face(h, g);
             }
         }
     }
 
+    /// Pairs half-faces `h < g` as a new face.
+    pub(super) fn pair_as_new_face(&mut self, h: u32, g: u32) {
+        arrays::set_opposite(self, h, g);
+        arrays::set_opposite(self, g, h);
+        let s = self.edit.as_mut().expect("edited");
+        let f = s.face_hf.len() as u32;
+        s.face_hf.push(h);
+        s.hf_face[h as usize] = f;
+        s.hf_face[g as usize] = f;
+        s.live_faces += 1;
+    }
+
     /// Half-face `new` takes the place of `old`: its twin, its face id.
-    fn move_face(&mut self, old: u32, new: u32) {
+    pub(super) fn move_face(&mut self, old: u32, new: u32) {
         let g = self.o[old as usize];
         arrays::set_opposite(self, new, g);
         if g == NONE {
@@ -426,7 +431,7 @@ impl Chf {
     }
 
     /// Edge `e`'s canonical half-edge by the build's rule, found from its slot `slot`.
-    fn set_canonical(&mut self, e: u32, slot: u64) {
+    pub(super) fn set_canonical(&mut self, e: u32, slot: u64) {
         let he: HalfEdge = canonical_half_edge(&self.v, &self.o, slot_half_edges(slot)[0]);
         self.edit.as_mut().expect("edited").edge_he[e as usize] = he;
     }

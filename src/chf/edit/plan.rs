@@ -601,10 +601,10 @@ impl Chf {
 
 impl Chf {
     /// Would `plan` be accepted? Writes nothing.
-    pub(crate) fn check_plan(&self, plan: Plan) -> Result<()> {
-        match self.verify_cavity(&plan)? {
+    pub(crate) fn check_plan(&self, plan: &Plan) -> Result<()> {
+        match self.verify_cavity(plan)? {
             Some(_) => Ok(()),
-            None => self.verify(plan).map(|_| ()),
+            None => self.verify(plan.clone()).map(|_| ()),
         }
     }
 
@@ -633,7 +633,7 @@ impl Chf {
         &self, op: &'static str, what: impl Fn() -> String, plan: impl FnOnce(&Chf) -> Result<Plan>,
     ) -> Result<()> {
         let plan = plan(self).map_err(context(op, &what))?;
-        self.check_plan(plan).map_err(context(op, what))
+        self.check_plan(&plan).map_err(context(op, what))
     }
 
     /// A split's plan, to be filled, and the id of the vertex it adds: at `position`, else

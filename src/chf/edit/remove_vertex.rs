@@ -26,7 +26,7 @@ impl Chf {
     /// Would [`Chf::remove_vertex`] succeed? Changes nothing.
     pub fn check_remove_vertex(&self, v: u32) -> Result<()> {
         let plan = self.plan_remove_vertex(v)?;
-        self.check_plan(plan)
+        self.check_plan(&plan)
             .map_err(context("remove_vertex", || format!("vertex {v}")))
     }
 }

@@ -29,7 +29,7 @@ impl Chf {
     /// Would [`Chf::split_edge`] succeed? Changes nothing.
     pub fn check_split_edge(&self, e: u32, position: Option<DVec3>) -> Result<()> {
         let plan = self.plan_split_edge(e, position)?;
-        self.check_plan(plan)
+        self.check_plan(&plan)
             .map_err(context("split_edge", || format!("edge {e}")))
     }
 }

@@ -36,7 +36,7 @@ impl Chf {
     /// Would [`Chf::split_face`] succeed? Changes nothing.
     pub fn check_split_face(&self, f: u32, position: Option<DVec3>) -> Result<()> {
         let plan = self.plan_split_face(f, position)?;
-        self.check_plan(plan)
+        self.check_plan(&plan)
             .map_err(context("split_face", || format!("face {f}")))
     }
 }

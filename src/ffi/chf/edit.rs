@@ -41,7 +41,9 @@ exports! { ChfMesh;
     /// Would `chf_mesh_remove_vertex` succeed? Changes nothing.
     check fn chf_mesh_check_remove_vertex(v) { |c| c.check_remove_vertex(v) }
     /// Splits tetrahedron `t` in four (1-4) at a new vertex (id into `*out_v`), at `position`
-    /// or the centroid; refused unless the position is strictly inside.
+    /// or the centroid; refused unless the position is strictly inside. `t` keeps its id,
+    /// its vertex 0 replaced by the new one; the pieces with vertex 1, 2 and 3 replaced
+    /// are appended, in that order.
     edit fn chf_mesh_split_tetrahedron(t, position: *const f64) -> out_v: u32 {
         |c| c.split_tetrahedron(t, position_arg(position)?)
     }

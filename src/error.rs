@@ -98,7 +98,9 @@ impl Error {
 
 /// `message` with every control character written as its Rust escape (`\n`, `\u{1b}`).
 fn escape_controls(message: String) -> String {
-    if !message.chars().any(char::is_control) {
+    // A control character is a byte below 0x20, 0x7f, or U+0080..U+009F (0xc2 then a
+    // byte): a byte scan rules them out without decoding the characters.
+    if !message.bytes().any(|b| b < 0x20 || b == 0x7f || b == 0xc2) {
         return message;
     }
     let escape = |c: char| -> String {
@@ -158,5 +160,28 @@ mod tests {
             sizes,
             ["0 B", "1023 B", "1.0 KiB", "1.5 KiB", "5.0 MiB", "16.0 EiB"]
         );
+    }
+
+    /// The byte scan lets through exactly the messages without a control character:
+    /// every character of U+0000..U+0200 alone and inside text, against `is_control`.
+    #[test]
+    fn control_characters_are_escaped_and_nothing_else() {
+        for c in (0..0x200).filter_map(char::from_u32) {
+            for message in [c.to_string(), format!("é {c} ok")] {
+                let escaped = Error::invalid(message.clone()).message;
+                let expected: String = message
+                    .chars()
+                    .map(|c| {
+                        if c.is_control() {
+                            c.escape_default().collect()
+                        } else {
+                            c.to_string()
+                        }
+                    })
+                    .collect();
+                assert_eq!(escaped, expected, "U+{:04X}", c as u32);
+                assert_eq!(escaped == message, !c.is_control(), "U+{:04X}", c as u32);
+            }
+        }
     }
 }

@@ -13,10 +13,13 @@ impl Chf {
                 "refused: edge {e} is on the boundary"
             )));
         }
-        let ring: Vec<u32> = self.edge_tetrahedra(e).collect();
-        if ring.len() != 3 {
+        // Most edges have more than three: the walk stops at the fourth.
+        let mut around = self.edge_tetrahedra(e);
+        let ring: Vec<u32> = around.by_ref().take(3).collect();
+        if ring.len() != 3 || around.next().is_some() {
+            let more = if ring.len() == 3 { "more than " } else { "" };
             return Err(Error::invalid(format!(
-                "refused: edge {e} has {} tetrahedra around it, not 3",
+                "refused: edge {e} has {more}{} tetrahedra around it, not 3",
                 ring.len()
             )));
         }

@@ -96,13 +96,11 @@ impl super::EditState {
 
 #[cfg(test)]
 mod tests {
-    use crate::chf::{BuildOptions, Chf};
+    use crate::chf::Chf;
 
     /// An `n`^3 grid of unit cubes, six tetrahedra each, at level 3 with positions.
     fn grid(n: u32) -> Chf {
-        let v = crate::generate::cube_grid(n);
-        let (t, p) = (&v.tetrahedra, &v.positions);
-        Chf::from_tetrahedra(t, p.len(), p, BuildOptions::level(3)).unwrap()
+        crate::chf::edit::test_grid(n, 3, true)
     }
 
     /// What the next rebuild will read: the half-faces it starts from.

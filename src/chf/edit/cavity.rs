@@ -469,9 +469,9 @@ impl Chf {
 #[cfg(test)]
 mod tests {
     use crate::NONE;
+    use crate::chf::Chf;
     use crate::chf::edit::plan::Plan;
     use crate::chf::query::view::Need;
-    use crate::chf::{BuildOptions, Chf};
     use crate::error::Result;
 
     fn next(s: &mut u64) -> u64 {
@@ -514,11 +514,7 @@ mod tests {
     fn the_cavity_check_agrees_with_the_generic_one() {
         let (mut taken, mut refused) = (0, 0);
         for positions in [true, false] {
-            let g = crate::generate::cube_grid(4);
-            let p = if positions { &g.positions[..] } else { &[] };
-            let n = g.positions.len();
-            let mut chf =
-                Chf::from_tetrahedra(&g.tetrahedra, n, p, BuildOptions::level(2)).unwrap();
+            let mut chf = crate::chf::edit::test_grid(4, 2, positions);
             let mut rng = 7;
             for _ in 0..3000 {
                 let Ok(plan) = random_plan(&chf, &mut rng) else {
@@ -560,11 +556,7 @@ mod tests {
     #[test]
     fn a_one_to_four_link_is_the_searched_one() {
         for positions in [true, false] {
-            let g = crate::generate::cube_grid(3);
-            let p = if positions { &g.positions[..] } else { &[] };
-            let n = g.positions.len();
-            let mut chf =
-                Chf::from_tetrahedra(&g.tetrahedra, n, p, BuildOptions::level(2)).unwrap();
+            let mut chf = crate::chf::edit::test_grid(3, 2, positions);
             let mut rng = 11;
             for _ in 0..300 {
                 let t = (next(&mut rng) % chf.num_tetrahedra() as u64) as u32;

@@ -52,3 +52,13 @@ mod validate;
 
 pub use garbage_collect::GarbageMaps;
 pub(crate) use state::{EditState, removed};
+
+/// A grid of `n`^3 cubes ([`crate::generate::cube_grid`]) built at `level`, with or without
+/// positions: the mesh of the editing unit tests.
+#[cfg(test)]
+pub(crate) fn test_grid(n: u32, level: u8, positions: bool) -> crate::chf::Chf {
+    let g = crate::generate::cube_grid(n);
+    let p = if positions { &g.positions[..] } else { &[] };
+    let options = crate::chf::BuildOptions::level(level);
+    crate::chf::Chf::from_tetrahedra(&g.tetrahedra, g.positions.len(), p, options).unwrap()
+}

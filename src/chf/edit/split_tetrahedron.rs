@@ -144,7 +144,7 @@ impl Chf {
 
 #[cfg(test)]
 mod tests {
-    use crate::chf::{BuildOptions, Chf};
+    use crate::chf::Chf;
 
     /// The live tetrahedra as sorted vertex quadruples, sorted.
     fn quads(chf: &Chf) -> Vec<[u32; 4]> {
@@ -166,12 +166,7 @@ mod tests {
     #[test]
     fn a_split_in_place_is_the_planned_split() {
         for (level, positions) in (0..=3).flat_map(|l| [(l, true), (l, false)]) {
-            let g = crate::generate::cube_grid(2);
-            let p = if positions { &g.positions[..] } else { &[] };
-            let build = || {
-                let options = BuildOptions::level(level);
-                Chf::from_tetrahedra(&g.tetrahedra, g.positions.len(), p, options).unwrap()
-            };
+            let build = || crate::chf::edit::test_grid(2, level, positions);
             let (mut fast, mut planned) = (build(), build());
             let mut rng = 5u64;
             for step in 0..80 {

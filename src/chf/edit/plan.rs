@@ -45,8 +45,11 @@ pub(crate) struct Verified {
     /// Twin of each new half-face (`4k + i` for new tetrahedron `k`), by post-edit id.
     new_o: Vec<u32>,
     /// Each touched vertex and its tetrahedra after the edit (post-edit ids).
-    stars: Vec<(u32, Vec<u32>)>,
+    stars: Stars,
 }
+
+/// Touched vertices, each with its tetrahedra after an edit.
+type Stars = Vec<(u32, Vec<u32>)>;
 
 /// The mesh as the plan would leave it, read without writing.
 struct After<'a> {
@@ -124,10 +127,17 @@ fn refuse(what: String) -> Error {
 impl Chf {
     /// Checks `plan` against the mesh; nothing is written.
     pub(crate) fn verify(&self, plan: Plan) -> Result<Verified> {
-        self.verify_inputs(&plan)?;
+        let (new_o, stars) = self.verify_ref(&plan)?;
+        Ok(Verified { plan, new_o, stars })
+    }
+
+    /// [`Chf::verify`] of a plan the caller keeps: the twins of the new half-faces and the
+    /// stars after the edit.
+    fn verify_ref(&self, plan: &Plan) -> Result<(Vec<u32>, Stars)> {
+        self.verify_inputs(plan)?;
         let after = After {
             chf: self,
-            plan: &plan,
+            plan,
             bound: self.num_tetrahedra() as u32,
             view: self.try_view(Need::NOTHING)?,
         };
@@ -154,8 +164,7 @@ impl Chf {
                 return Err(refuse(format!("vertex {x} would keep tetrahedra")));
             }
         }
-        drop(after);
-        Ok(Verified { plan, new_o, stars })
+        Ok((new_o, stars))
     }
 
     /// Live ids, distinct vertices, no flagged face removed, positive volumes.
@@ -604,7 +613,7 @@ impl Chf {
     pub(crate) fn check_plan(&self, plan: &Plan) -> Result<()> {
         match self.verify_cavity(plan)? {
             Some(_) => Ok(()),
-            None => self.verify(plan.clone()).map(|_| ()),
+            None => self.verify_ref(plan).map(|_| ()),
         }
     }
 

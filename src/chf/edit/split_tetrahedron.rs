@@ -17,6 +17,12 @@ use crate::chf::ids::{EDGE, edge_index, first, he_face, local, slot_half_edges, 
 use crate::error::Result;
 use glam::DVec3;
 
+/// The id of piece `k` of a split of `t` (the one holding the new vertex in place of
+/// corner `k`), the new tetrahedra starting at `bound`.
+fn piece(t: u32, bound: u32, k: u32) -> u32 {
+    if k == 0 { t } else { bound + k - 1 }
+}
+
 impl Chf {
     pub(super) fn plan_split_tetrahedron(&self, t: u32, position: Option<DVec3>) -> Result<Plan> {
         self.check_tetrahedron(t)?;
@@ -77,8 +83,7 @@ impl Chf {
         let open = [0, 1, 2, 3].map(|i| self.o[(first(t) + i) as usize] == NONE);
         let old_edges = self.old_edge_slots(&[t]);
         let bound = self.num_tetrahedra() as u32;
-        // Piece k holds the new vertex in place of `q[k]`.
-        let piece = |k: u32| if k == 0 { t } else { bound + k - 1 };
+        let piece = |k: u32| piece(t, bound, k);
         for k in 1..4 {
             self.push_new_tetrahedron(replaced(q, q[k], x))?;
         }
@@ -106,7 +111,7 @@ impl Chf {
     fn number_split_edges(
         &mut self, t: u32, bound: u32, q: [u32; 4], old: &[((u32, u32), u32)], open: [bool; 4],
     ) {
-        let piece = |k: u32| if k == 0 { t } else { bound + k - 1 };
+        let piece = |k: u32| piece(t, bound, k);
         let s = self.edit.as_mut().expect("edited");
         let fresh = s.edge_he.len() as u32;
         // Edge `fresh + j` joins `q[j]` to the new vertex. Its fan is closed and made of
@@ -155,7 +160,7 @@ impl Chf {
             let k = local(hf);
             if tet(hf) == t && k != 0 {
                 // Face k of `t` is face k of piece k now (a boundary one stays one).
-                arrays::set_vertex_half_face(self, c, first(bound + k - 1) + k);
+                arrays::set_vertex_half_face(self, c, first(piece(t, bound, k)) + k);
             }
         }
         arrays::set_vertex_half_face(self, x, first(t) + 1);

@@ -8,12 +8,22 @@ use crate::util::rank_directory::RankDirectory;
 /// The starting half-edge of every vertex (`VH`: the boundary one on a boundary vertex,
 /// `NONE` for an isolated vertex), from `V` and `O` in one pass.
 pub(crate) fn vertex_half_edges(n_vertices: usize, v: &[u32], o: &[u32]) -> Result<Vec<u32>> {
-    let mut vh = crate::util::pages::filled(n_vertices, NONE, "the vertex half-edges VH")?;
+    vertex_half_edges_in(Vec::new(), n_vertices, v, o)
+}
+
+/// [`vertex_half_edges`] in `spare`'s memory when it has the room (`pages::reusing`).
+pub(crate) fn vertex_half_edges_in(
+    spare: Vec<u32>, n_vertices: usize, v: &[u32], o: &[u32],
+) -> Result<Vec<u32>> {
+    let what = "the vertex half-edges VH";
+    let mut vh = crate::util::pages::reusing(spare, n_vertices, what)?;
+    vh.resize(n_vertices, NONE);
     for (h, (&x, &g)) in v.iter().zip(o).enumerate() {
+        // Written every time, without a branch: whether a vertex is met for the first
+        // time follows no pattern a branch predictor can learn.
         let slot = &mut vh[x as usize];
-        if *slot == NONE || g == NONE {
-            *slot = h as u32;
-        }
+        let keep = *slot != NONE && g != NONE;
+        *slot = if keep { *slot } else { h as u32 };
     }
     Ok(vh)
 }
@@ -21,8 +31,10 @@ pub(crate) fn vertex_half_edges(n_vertices: usize, v: &[u32], o: &[u32]) -> Resu
 /// Is `h` the canonical half-edge of its edge (`O[h] == NONE || h < O[h]`)?
 #[inline]
 pub(crate) fn is_canonical(o: &[u32], h: usize) -> bool {
-    let g = o[h];
-    g == NONE || (h as u32) < g
+    // `NONE` is above every id, so one comparison answers both cases, without the branch
+    // that an `||` may become (mispredicted half the time: which twin comes first is a
+    // coin toss).
+    (h as u32) < o[h]
 }
 
 /// The edge-id directory of the opposites `o`: the rank over the canonical half-edges.

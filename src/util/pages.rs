@@ -22,6 +22,17 @@ pub(crate) fn with_capacity<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
     Ok(v)
 }
 
+/// [`with_capacity`] in `spare`'s memory when it has the room: a table rebuilt in place of
+/// one at least as large (after garbage collection) reuses its pages, which are already
+/// mapped, instead of faulting in fresh ones.
+pub(crate) fn reusing<T>(mut spare: Vec<T>, capacity: usize, what: &str) -> Result<Vec<T>> {
+    if spare.capacity() >= capacity {
+        spare.clear();
+        return Ok(spare);
+    }
+    with_capacity(capacity, what)
+}
+
 /// `vec![value; len]`, on huge pages where possible.
 pub(crate) fn filled<T: Clone>(len: usize, value: T, what: &str) -> Result<Vec<T>> {
     let mut v = with_capacity(len, what)?;

@@ -60,11 +60,7 @@ impl RankBits {
             try_reserve(out, self.ones, what)?;
         }
         for (w, &word) in self.words.iter().enumerate() {
-            let mut bits = word;
-            while bits != 0 {
-                out.push(f(64 * w + bits.trailing_zeros() as usize));
-                bits &= bits - 1;
-            }
+            for_each_one(word, 64 * w, |i| out.push(f(i)));
         }
         Ok(())
     }
@@ -112,6 +108,32 @@ impl RankBits {
 
 /// Test helper for both rank structures: `get`, `rank` and `ones` (the three `answers`)
 /// agree with `pattern` and its prefix counts on `0..len`.
+/// `f(base + i)` for every set bit `i` of `bits`, in increasing order: a step per set bit,
+/// not per bit, and no branch on each bit.
+#[inline]
+pub(crate) fn for_each_one(bits: u64, base: usize, mut f: impl FnMut(usize)) {
+    let done = try_for_each_one::<std::convert::Infallible>(bits, base, |i| {
+        f(i);
+        Ok(())
+    });
+    match done {
+        Ok(()) => {}
+        Err(never) => match never {},
+    }
+}
+
+/// [`for_each_one`] for an `f` that can fail: stops at the first error.
+#[inline]
+pub(crate) fn try_for_each_one<E>(
+    mut bits: u64, base: usize, mut f: impl FnMut(usize) -> std::result::Result<(), E>,
+) -> std::result::Result<(), E> {
+    while bits != 0 {
+        f(base + bits.trailing_zeros() as usize)?;
+        bits &= bits - 1;
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 pub(crate) fn assert_prefix_counts(
     len: usize, pattern: impl Fn(usize) -> bool,

@@ -90,6 +90,18 @@ impl RankDirectory {
         (d >> 32) as usize + (d as u32 & mask).count_ones() as usize
     }
 
+    /// The positions of the set bits, in increasing order, each mapped by `f`, pushed onto
+    /// `out` (room for them reserved first).
+    pub(crate) fn ones_map<T>(
+        &self, out: &mut Vec<T>, f: impl Fn(usize) -> T, what: &str,
+    ) -> Result<()> {
+        crate::util::alloc::try_reserve(out, self.ones, what)?;
+        for (k, &d) in self.entries.iter().enumerate() {
+            super::rank::for_each_one(d & u64::from(u32::MAX), k * SPAN, |i| out.push(f(i)));
+        }
+        Ok(())
+    }
+
     pub fn memory_bytes(&self) -> usize {
         self.entries.len() * 8
     }

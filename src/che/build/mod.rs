@@ -4,7 +4,7 @@
 //! `Che` is assembled at level 1 and raised or lowered to the level asked for.
 
 mod budget;
-mod level2;
+pub(crate) mod level2;
 mod level3;
 mod matching;
 mod options;

@@ -7,8 +7,9 @@ use super::arrays::{
 };
 use crate::NONE;
 use crate::che::Che;
+use crate::che::build::level2::{self, Spare};
 use crate::error::Result;
-use crate::util::alloc::{try_vec, try_with_capacity};
+use crate::util::alloc::{try_resize, try_vec, try_with_capacity};
 use crate::util::origin::OriginMap;
 use std::borrow::Cow;
 
@@ -20,28 +21,31 @@ pub struct GarbageMaps {
     pub edges: Vec<u32>,
 }
 
-/// `map[i]`: the rank of `i` among the kept, `NONE` if not kept.
-fn ranks(n: usize, kept: impl Fn(usize) -> bool, what: &str) -> Result<(Vec<u32>, usize)> {
-    let mut map = try_vec(n, NONE, what)?;
+/// `map[i]`: the rank of `i` among the kept, `NONE` if not kept, from the flag of each
+/// `i` in turn.
+fn ranks(kept: impl ExactSizeIterator<Item = bool>, what: &str) -> Result<(Vec<u32>, usize)> {
+    let mut map = try_with_capacity(kept.len(), what)?;
     let mut next = 0u32;
-    for (i, m) in map.iter_mut().enumerate() {
-        if kept(i) {
-            *m = next;
-            next += 1;
-        }
-    }
+    map.extend(kept.map(|k| {
+        next += u32::from(k);
+        if k { next - 1 } else { NONE }
+    }));
     Ok((map, next as usize))
 }
 
+/// The ids `i` that `map` keeps, in order: an identity origin map over the kept.
+fn kept_ids(map: &[u32], what: &str) -> Result<Vec<u32>> {
+    let kept = (0..map.len() as u32).filter(|&i| map[i as usize] != NONE);
+    crate::util::alloc::try_collect(kept, what)
+}
+
 /// Half-edge `h` in the new ids (`NONE` when its triangle is removed, or `h` is `NONE`).
+#[inline]
 fn half_edge_map(tmap: &[u32], h: u32) -> u32 {
-    match h {
-        NONE => NONE,
-        h => match tmap[h as usize / 3] {
-            NONE => NONE,
-            t => 3 * t + h % 3,
-        },
-    }
+    let t = tmap.get(h as usize / 3).copied().unwrap_or(NONE);
+    // A select, not a branch: which triangles were removed follows no pattern.
+    let mapped = t.wrapping_mul(3).wrapping_add(h % 3);
+    if t == NONE { NONE } else { mapped }
 }
 
 /// Keeps, in order and in place, the entries `i` of `list` that are `kept(i)`, each as
@@ -55,6 +59,21 @@ fn compact_in_place<T: Copy>(
             list[w] = map(list[i]);
             w += 1;
         }
+    }
+    list.truncate(w);
+}
+
+/// Keeps, in order and in place, the three entries per triangle of `list` of the triangles
+/// `tmap` keeps, each as `map` gives it: `compact_in_place` a triangle at a time.
+fn compact_corners(list: &mut Vec<u32>, tmap: &[u32], map: impl Fn(u32) -> u32) {
+    let mut w = 0;
+    for (t, &kept) in tmap.iter().enumerate() {
+        // Every triangle written, a removed one overwritten by the next: no branch on
+        // which were removed. `w <= 3 * t`, so nothing unread is overwritten.
+        for i in 0..3 {
+            list[w + i] = map(list[3 * t + i]);
+        }
+        w += 3 * usize::from(kept != NONE);
     }
     list.truncate(w);
 }
@@ -88,12 +107,12 @@ impl Che {
                 edges: identity(self.num_edges)?,
             });
         }
-        let (vmap, new_nv) = ranks(nv, |x| !self.is_vertex_removed(x as u32), "the vertex map")?;
-        let (tmap, _) = ranks(
-            nt,
-            |t| !self.is_triangle_removed(t as u32),
-            "the triangle map",
-        )?;
+        let removed = self.edits().map_or(&[][..], |st| &st.removed_vertex[..]);
+        let vkept = (0..nv).map(|x| !removed.get(x).is_some_and(|&r| r));
+        let (vmap, new_nv) = ranks(vkept, "the vertex map")?;
+        let tkept = self.v.chunks_exact(3).map(|c| c[0] != NONE);
+        let (tmap, _) = ranks(tkept, "the triangle map")?;
+        debug_assert_eq!(tmap.len(), nt);
         // Level 0 stores no `O`: the live one is computed for the edge map.
         let level0_o = if level == 0 {
             Some(self.live_opposites()?)
@@ -129,10 +148,12 @@ impl Che {
 
     /// `V` (and `O` when the level stores it) of the live triangles in the new ids.
     fn compact_half_edges(&mut self, vmap: &[u32], tmap: &[u32], with_o: bool) {
-        let live = |h: usize| tmap[h / 3] != NONE;
-        compact_in_place(v_mut(self), live, |x| vmap[x as usize]);
+        // A removed triangle's corners (`NONE`) are mapped too, and then overwritten.
+        compact_corners(v_mut(self), tmap, |x| {
+            vmap.get(x as usize).copied().unwrap_or(NONE)
+        });
         if with_o {
-            compact_in_place(o_mut(self), live, |g| half_edge_map(tmap, g));
+            compact_corners(o_mut(self), tmap, |g| half_edge_map(tmap, g));
         }
     }
 
@@ -142,14 +163,27 @@ impl Che {
     /// before their kept twin) take the new ids in turn.
     fn edge_map(&self, old_o: &[u32], tmap: &[u32]) -> Result<(Vec<u32>, usize)> {
         let old_ids = self.old_edge_ids(old_o)?;
-        let mut emap = try_vec(self.num_edges, NONE, "the edge map")?;
+        // One slot more, written by the half-edges that are not canonical, and dropped.
+        let spare = self.num_edges;
+        let mut emap = try_vec(spare + 1, NONE, "the edge map")?;
         let mut next = 0u32;
-        for (h, &g) in old_o.iter().enumerate() {
-            if self.v[h] != NONE && (half_edge_map(tmap, g) == NONE || (h as u32) < g) {
-                emap[old_ids[h] as usize] = next;
-                next += 1;
+        // Only the kept triangles' half-edges, a triangle at a time: half the work when
+        // half the triangles are removed. Which twin comes first is a coin toss, so the
+        // map is written without a branch on it.
+        for (t, _) in tmap.iter().enumerate().filter(|&(_, &m)| m != NONE) {
+            for h in 3 * t..3 * t + 3 {
+                let g = old_o[h];
+                let canonical = ((h as u32) < g) | (half_edge_map(tmap, g) == NONE);
+                let slot = if canonical {
+                    old_ids[h] as usize
+                } else {
+                    spare
+                };
+                emap[slot] = next;
+                next += u32::from(canonical);
             }
         }
+        emap.truncate(spare);
         Ok((emap, next as usize))
     }
 
@@ -159,22 +193,16 @@ impl Che {
     fn compacted_origins(
         &self, vmap: &[u32], tmap: &[u32], new_nv: usize,
     ) -> Result<(OriginMap, OriginMap)> {
-        let (nv, nt) = (vmap.len(), tmap.len());
+        let nv = vmap.len();
         let vorigin = match self.vertex_origin.explicit() {
             Some(map) => OriginMap::from(compact(map, vmap, "the vertex origins")?),
             None if new_nv == nv => OriginMap::default(),
-            None => {
-                let identity = ranks(nv, |_| true, "the vertex origins")?.0;
-                OriginMap::from(compact(&identity, vmap, "the vertex origins")?)
-            }
+            None => OriginMap::from(kept_ids(vmap, "the vertex origins")?),
         };
         let torigin = match self.triangle_origin.explicit() {
             Some(map) => OriginMap::from(compact(map, tmap, "the triangle origins")?),
             None if !tmap.contains(&NONE) => OriginMap::default(),
-            None => {
-                let identity = ranks(nt, |_| true, "the triangle origins")?.0;
-                OriginMap::from(compact(&identity, tmap, "the triangle origins")?)
-            }
+            None => OriginMap::from(kept_ids(tmap, "the triangle origins")?),
         };
         Ok((vorigin, torigin))
     }
@@ -209,7 +237,13 @@ impl Che {
         st.changed = false;
         st.curves = Default::default();
         st.boundary = Default::default();
-        st.removed_vertex = try_vec(self.n_vertices, false, "the removed-vertex flags")?;
+        st.removed_vertex.clear();
+        try_resize(
+            &mut st.removed_vertex,
+            self.n_vertices,
+            false,
+            "the removed-vertex flags",
+        )?;
         st.live_vertices = self.n_vertices;
         st.live_triangles = self.v.len() / 3;
         st.live_edges = self.num_edges;
@@ -219,12 +253,20 @@ impl Che {
             return Ok(());
         }
         self.level = 1;
-        *vh_mut(self) = Vec::new();
-        *eh_mut(self) = Vec::new();
+        // The rebuilt tables are at most as large as the old ones: they take the old ones'
+        // memory, already mapped, instead of faulting in fresh pages.
+        let spare = Spare {
+            vh: std::mem::take(vh_mut(self)),
+            eh: std::mem::take(eh_mut(self)),
+        };
         *ch_mut(self) = Vec::new();
         *curve_of_mut(self) = Vec::new();
         self.edge_bits = Default::default();
         self.boundary_bits = Default::default();
+        if level >= 2 {
+            level2::build_in(self, spare)?;
+            self.level = 2;
+        }
         crate::che::build::change_level(self, level)
     }
 }

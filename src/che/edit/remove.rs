@@ -52,14 +52,39 @@ impl Che {
 
     /// [`Che::remove_triangle`] after the checks, room made for 3 vertex copies.
     pub(super) fn remove_live_triangle(&mut self, t: u32) {
-        let corners = self.triangle_vertices(t);
-        let outs: Vec<Vec<u32>> = corners.iter().map(|&x| self.outgoing(x)).collect();
+        let corners: [Corner; 3] = std::array::from_fn(|i| self.corner(first(t) + i as u32));
         self.unlink_triangle(t);
-        for (&x, outs) in corners.iter().zip(&outs) {
-            self.settle(x, outs);
+        for c in corners {
+            self.settle_corner(c);
         }
     }
 
+    /// Where the outgoing half-edge `h` lies in its vertex's rotation.
+    fn corner(&self, h: u32) -> Corner {
+        let x = self.v[h as usize];
+        let start = self.vh[x as usize];
+        Corner {
+            x,
+            h,
+            start,
+            after: self.o[prev(h) as usize],
+            on_boundary: self.o[start as usize] == NONE,
+        }
+    }
+
+    /// `VH` of corner `c` once its triangle is gone, from where the triangle lay in the
+    /// rotation, without walking it: the half-edge after the triangle (when there is
+    /// one) now starts a fan, and the old start still starts one when it was on the
+    /// boundary and not the triangle's. Two fans (the triangle lay inside a boundary fan):
+    /// the second moves to a copy of the vertex, as `settle` does.
+    fn settle_corner(&mut self, c: Corner) {
+        let old_start_kept = c.on_boundary && c.start != c.h;
+        match (old_start_kept, c.after) {
+            (false, after) => vh_mut(self)[c.x as usize] = after,
+            (true, NONE) => {}
+            (true, after) => self.move_fan(c.x, after),
+        }
+    }
     /// Marks triangle `t` removed: its edges stay with the opposite half-edges, or go.
     pub(super) fn unlink_triangle(&mut self, t: u32) {
         for h in first(t)..first(t) + 3 {
@@ -83,4 +108,16 @@ impl Che {
         }
         self.st_mut().live_triangles -= 1;
     }
+}
+
+/// An outgoing half-edge of a triangle about to be removed, and its place in the rotation
+/// of its vertex `x`: the rotation's start (`VH[x]`), whether `x` is on the boundary, and
+/// the outgoing half-edge after `h` (`O[prev(h)]`, `NONE` at the end of a boundary fan).
+#[derive(Clone, Copy)]
+struct Corner {
+    x: u32,
+    h: u32,
+    start: u32,
+    after: u32,
+    on_boundary: bool,
 }

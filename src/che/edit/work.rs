@@ -157,18 +157,24 @@ impl Che {
         }
         vh_mut(self)[x as usize] = starts[0];
         for &s in &starts[1..] {
-            let copy = self.push_vertex(self.position_of(x), self.vertex_origin.get(x));
-            let mut h = s;
-            loop {
-                v_mut(self)[h as usize] = copy;
-                let g = self.o[prev(h) as usize];
-                if g == NONE {
-                    break;
-                }
-                h = g;
-            }
-            vh_mut(self)[copy as usize] = s;
+            self.move_fan(x, s);
         }
+    }
+
+    /// Moves the boundary fan of `x` that starts at `s` to a new copy of `x` (room made
+    /// for it), as the build splits a vertex whose triangles form several fans.
+    pub(super) fn move_fan(&mut self, x: u32, s: u32) {
+        let copy = self.push_vertex(self.position_of(x), self.vertex_origin.get(x));
+        let mut h = s;
+        loop {
+            v_mut(self)[h as usize] = copy;
+            let g = self.o[prev(h) as usize];
+            if g == NONE {
+                break;
+            }
+            h = g;
+        }
+        vh_mut(self)[copy as usize] = s;
     }
 
     pub(super) fn position_of(&self, x: u32) -> Option<DVec3> {

@@ -8,6 +8,7 @@ use super::arrays::{
 use crate::NONE;
 use crate::che::Che;
 use crate::che::build::level2::{self, Spare};
+use crate::che::tables::is_canonical;
 use crate::error::Result;
 use crate::util::alloc::{try_resize, try_vec, try_with_capacity};
 use crate::util::origin::OriginMap;
@@ -42,10 +43,16 @@ fn kept_ids(map: &[u32], what: &str) -> Result<Vec<u32>> {
 /// Half-edge `h` in the new ids (`NONE` when its triangle is removed, or `h` is `NONE`).
 #[inline]
 fn half_edge_map(tmap: &[u32], h: u32) -> u32 {
-    let t = tmap.get(h as usize / 3).copied().unwrap_or(NONE);
-    // A select, not a branch: which triangles were removed follows no pattern.
+    // Selects, not branches: half the half-edges may be unpaired (`NONE`) and half the
+    // triangles removed, in no pattern. `NONE` reads a clamped slot and is masked after.
+    let i = h as usize / 3;
+    let t = tmap
+        .get(i.min(tmap.len().saturating_sub(1)))
+        .copied()
+        .unwrap_or(NONE);
+    let kept = (i < tmap.len()) & (t != NONE);
     let mapped = t.wrapping_mul(3).wrapping_add(h % 3);
-    if t == NONE { NONE } else { mapped }
+    if kept { mapped } else { NONE }
 }
 
 /// Keeps, in order and in place, the entries `i` of `list` that are `kept(i)`, each as
@@ -168,12 +175,12 @@ impl Che {
         let mut emap = try_vec(spare + 1, NONE, "the edge map")?;
         let mut next = 0u32;
         // Only the kept triangles' half-edges, a triangle at a time: half the work when
-        // half the triangles are removed. Which twin comes first is a coin toss, so the
-        // map is written without a branch on it.
+        // half the triangles are removed. A live half-edge's twin is live (removing a
+        // triangle unpairs its twins), so the canonical ones stay canonical. Which twin
+        // comes first is a coin toss, so the map is written without a branch on it.
         for (t, _) in tmap.iter().enumerate().filter(|&(_, &m)| m != NONE) {
             for h in 3 * t..3 * t + 3 {
-                let g = old_o[h];
-                let canonical = ((h as u32) < g) | (half_edge_map(tmap, g) == NONE);
+                let canonical = is_canonical(old_o, h);
                 let slot = if canonical {
                     old_ids[h] as usize
                 } else {

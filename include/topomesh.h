@@ -1590,7 +1590,8 @@ topomesh_status che_mesh_is_collapse_ok(struct che_mesh *m, uint32_t h, bool *ou
  * ranks again) and writes the old -> new maps (`UINT32_MAX` for a removed element) into
  * the buffers given (NULL: not wanted), sized by the counts before the call
  * (`che_mesh_num_vertices`, `_num_triangles`, `_num_edges`). A buffer too small is
- * BUFFER_TOO_SMALL before anything changes. Every id and view from before is invalid.
+ * BUFFER_TOO_SMALL, and buffers that overlap INVALID_INPUT, before anything changes.
+ * Every id and view from before is invalid.
  */
 topomesh_status che_mesh_garbage_collect(struct che_mesh *m,
                                          uint32_t *vertex_map,
@@ -2553,7 +2554,8 @@ topomesh_status chf_edge_is_removed(const struct chf_mesh *m, uint32_t e, bool *
  * live tetrahedra gives. Each map (NULL: not wanted) receives old id -> new id
  * (`TOPOMESH_NONE` for removed ones) and needs room for the count before the call
  * (`chf_mesh_num_vertices`, `_tetrahedra`, `_faces`, `_edges`); too little room gives
- * `TOPOMESH_STATUS_BUFFER_TOO_SMALL` before anything changes. O(T log T).
+ * `TOPOMESH_STATUS_BUFFER_TOO_SMALL`, and maps that overlap
+ * `TOPOMESH_STATUS_INVALID_INPUT`, before anything changes. O(T log T).
  */
 topomesh_status chf_mesh_garbage_collect(struct chf_mesh *m,
                                          uint32_t *vertex_map,

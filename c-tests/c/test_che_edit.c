@@ -121,6 +121,10 @@ static void edit_at_level(uint32_t level) {
     if (!vm || !tm || !em) exit(2);
     CHECK_REFUSED(m, che_mesh_garbage_collect(m, vm, nv - 1, tm, nt, em, ne),
                   TOPOMESH_STATUS_BUFFER_TOO_SMALL, "vertex_map");
+    /* One buffer lent for two maps: refused, before anything changes. */
+    CHECK_REFUSED(m, che_mesh_garbage_collect(m, vm, nv, vm, nt, em, ne),
+                  TOPOMESH_STATUS_INVALID_INPUT, "overlap");
+    CHECK(che_mesh_num_live_vertices(m) < che_mesh_num_vertices(m));
     CHECK_OK(che_mesh_garbage_collect(m, vm, nv, tm, nt, em, ne));
     CHECK(vm[6] == NONE && vm[0] == 0);
     CHECK(tm[0] != NONE || nt > 0);

@@ -281,6 +281,8 @@ static void garbage_collect(chf_mesh *m) {
                   TOPOMESH_STATUS_BUFFER_TOO_SMALL, "edge_map");
     CHECK_STATUS(chf_mesh_garbage_collect(NULL, NULL, 0, NULL, 0, NULL, 0, NULL, 0),
                  TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_REFUSED(m, chf_mesh_garbage_collect(m, vm, nv, tm, nt, fm, nf, fm + 1, ne),
+                  TOPOMESH_STATUS_INVALID_INPUT, "overlap");
     CHECK_OK(chf_mesh_garbage_collect(m, vm, nv, tm, nt, fm, nf, em, ne));
     CHECK(chf_mesh_num_vertices(m) == lv && chf_mesh_num_tetrahedra(m) == lt);
     CHECK(chf_mesh_num_faces(m) == lf && chf_mesh_num_edges(m) == le);

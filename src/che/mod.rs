@@ -22,7 +22,7 @@ pub use build::{
     BuildOptions, BuildReport, MAX_TRIANGLES, MAX_UNUSED_VERTICES, SweepLimits, check_counts,
     estimated_build_bytes,
 };
-pub use edit::GarbageMaps;
+pub use edit::{GarbageMaps, GarbageMapsOut};
 pub use export::{
     CornerTable, HalfEdgeArray, HalfEdgeArrays, HalfEdgeOptions, MatrixKind, Strips, WingedEdges,
 };

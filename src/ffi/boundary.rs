@@ -144,11 +144,11 @@ pub(crate) fn ids_arg<const N: usize>(p: *const u32, name: &str) -> Result<[u32;
 
 /// The body of a garbage collection export: the caller's map buffers `(map, cap, name)`,
 /// NULL for a map not wanted, each checked for room for `counts` (the counts before the
-/// call: BUFFER_TOO_SMALL before anything changes), then `collect` and the old -> new
-/// maps copied out.
+/// call: BUFFER_TOO_SMALL before anything changes) and against overlapping another, then
+/// lent to `collect`, which writes the old -> new maps into them.
 pub(crate) unsafe fn collect_garbage<H: Handle, const N: usize>(
     m: *mut H, buffers: [(*mut u32, usize, &str); N], counts: impl FnOnce(&H::Core) -> [usize; N],
-    collect: impl FnOnce(&mut H::Core) -> Result<[Vec<u32>; N]>,
+    collect: impl FnOnce(&mut H::Core, [Option<&mut [u32]>; N]) -> Result<()>,
 ) -> Status {
     guard(|| {
         // SAFETY: forwarded contract: NULL or a live handle, not shared.
@@ -160,17 +160,51 @@ pub(crate) unsafe fn collect_garbage<H: Handle, const N: usize>(
                 return Err(Error::new(ErrorKind::BufferTooSmall, detail));
             }
         }
-        let maps = collect(h.core_mut());
+        check_disjoint(&buffers, &needs)?;
+        let lent = std::array::from_fn(|i| {
+            let (p, _, _) = buffers[i];
+            // SAFETY: forwarded contract: room for `needs[i]` ids (checked above), the
+            // caller's own memory, written by nothing else during the call; no two
+            // buffers overlap (checked above), so the slices alias nothing.
+            (!p.is_null()).then(|| unsafe { std::slice::from_raw_parts_mut(p, needs[i]) })
+        });
+        let done = collect(h.core_mut(), lent);
         h.settle_views();
-        for (((p, _, _), need), map) in buffers.into_iter().zip(needs).zip(maps?) {
-            if !p.is_null() {
-                // SAFETY: forwarded contract: room for `need` ids (checked above). A map of
-                // another length panics in `copy_from_slice`, inside the guard.
-                unsafe { std::slice::from_raw_parts_mut(p, need) }.copy_from_slice(&map);
+        done
+    })
+}
+
+/// INVALID_INPUT when two of the buffers overlap over the entries they will get.
+fn check_disjoint<const N: usize>(
+    buffers: &[(*mut u32, usize, &str); N], needs: &[usize; N],
+) -> Result<()> {
+    let span = |i: usize| {
+        let start = buffers[i].0 as usize;
+        start..start + needs[i] * size_of::<u32>()
+    };
+    for i in (0..N).filter(|&i| !buffers[i].0.is_null() && needs[i] > 0) {
+        for j in (i + 1..N).filter(|&j| !buffers[j].0.is_null() && needs[j] > 0) {
+            let (a, b) = (span(i), span(j));
+            if a.start < b.end && b.start < a.end {
+                let detail = format!("{} and {} overlap", buffers[i].2, buffers[j].2);
+                return Err(Error::invalid(detail));
             }
         }
-        Ok(())
-    })
+    }
+    Ok(())
+}
+
+/// The maps a collection returned, copied into the buffers lent for them (`None`: not
+/// wanted); each buffer is as long as its map (the counts before the collection).
+pub(crate) fn copy_maps<const N: usize>(
+    maps: [Vec<u32>; N], out: [Option<&mut [u32]>; N],
+) -> Result<()> {
+    for (map, buf) in maps.iter().zip(out) {
+        if let Some(buf) = buf {
+            buf.copy_from_slice(map);
+        }
+    }
+    Ok(())
 }
 
 /// A handle (or any input struct) by reference.

@@ -23,15 +23,62 @@ pub struct GarbageMaps {
 }
 
 /// `map[i]`: the rank of `i` among the kept, `NONE` if not kept, from the flag of each
-/// `i` in turn.
-fn ranks(kept: impl ExactSizeIterator<Item = bool>, what: &str) -> Result<(Vec<u32>, usize)> {
-    let mut map = try_with_capacity(kept.len(), what)?;
+/// `i` in turn; the number kept.
+fn ranks(map: &mut [u32], kept: impl Iterator<Item = bool>) -> usize {
     let mut next = 0u32;
-    map.extend(kept.map(|k| {
+    for (m, k) in map.iter_mut().zip(kept) {
         next += u32::from(k);
-        if k { next - 1 } else { NONE }
-    }));
-    Ok((map, next as usize))
+        *m = if k { next - 1 } else { NONE };
+    }
+    next as usize
+}
+
+/// Where a map is written: the caller's buffer, or memory of its own for a map the caller
+/// does not want (the collection needs the vertex and triangle maps itself).
+enum MapMemory<'a> {
+    Lent(&'a mut [u32]),
+    Own(Vec<u32>),
+}
+
+impl MapMemory<'_> {
+    fn of<'a>(lent: Option<&'a mut [u32]>, n: usize, what: &str) -> Result<MapMemory<'a>> {
+        match lent {
+            Some(b) if b.len() == n => Ok(MapMemory::Lent(b)),
+            Some(b) => Err(crate::error::Error::invalid(format!(
+                "{what}: {n} entries needed, {} given",
+                b.len()
+            ))),
+            None => Ok(MapMemory::Own(try_vec(n, NONE, what)?)),
+        }
+    }
+}
+
+impl std::ops::Deref for MapMemory<'_> {
+    type Target = [u32];
+    fn deref(&self) -> &[u32] {
+        match self {
+            MapMemory::Lent(b) => b,
+            MapMemory::Own(v) => v,
+        }
+    }
+}
+
+impl std::ops::DerefMut for MapMemory<'_> {
+    fn deref_mut(&mut self) -> &mut [u32] {
+        match self {
+            MapMemory::Lent(b) => b,
+            MapMemory::Own(v) => v,
+        }
+    }
+}
+
+/// The old -> new maps of [`Che::garbage_collect_into`] written into the caller's buffers,
+/// each exactly as long as its count before the call (`None`: not wanted).
+#[derive(Default)]
+pub struct GarbageMapsOut<'a> {
+    pub vertices: Option<&'a mut [u32]>,
+    pub triangles: Option<&'a mut [u32]>,
+    pub edges: Option<&'a mut [u32]>,
 }
 
 /// The ids `i` that `map` keeps, in order: an identity origin map over the kept.
@@ -40,19 +87,24 @@ fn kept_ids(map: &[u32], what: &str) -> Result<Vec<u32>> {
     crate::util::alloc::try_collect(kept, what)
 }
 
+/// `map[i]`, `NONE` past the end (for `i = NONE` among others), by selects, not branches:
+/// half the ids may be `NONE` (unpaired half-edges, removed triangles' corners) in no
+/// pattern. An index past the end reads a clamped slot, masked after.
+#[inline]
+fn map_id(map: &[u32], i: usize) -> u32 {
+    let x = map
+        .get(i.min(map.len().saturating_sub(1)))
+        .copied()
+        .unwrap_or(NONE);
+    if i < map.len() { x } else { NONE }
+}
+
 /// Half-edge `h` in the new ids (`NONE` when its triangle is removed, or `h` is `NONE`).
 #[inline]
 fn half_edge_map(tmap: &[u32], h: u32) -> u32 {
-    // Selects, not branches: half the half-edges may be unpaired (`NONE`) and half the
-    // triangles removed, in no pattern. `NONE` reads a clamped slot and is masked after.
-    let i = h as usize / 3;
-    let t = tmap
-        .get(i.min(tmap.len().saturating_sub(1)))
-        .copied()
-        .unwrap_or(NONE);
-    let kept = (i < tmap.len()) & (t != NONE);
+    let t = map_id(tmap, h as usize / 3);
     let mapped = t.wrapping_mul(3).wrapping_add(h % 3);
-    if kept { mapped } else { NONE }
+    if t != NONE { mapped } else { NONE }
 }
 
 /// Keeps, in order and in place, the entries `i` of `list` that are `kept(i)`, each as
@@ -103,30 +155,46 @@ impl Che {
     /// identity maps, and nothing touched, on a CHE never edited. Every id, borrowed slice
     /// and C view from before is invalid after it.
     pub fn garbage_collect(&mut self) -> Result<GarbageMaps> {
+        let mut maps = GarbageMaps {
+            vertices: try_vec(self.n_vertices, NONE, "the vertex map")?,
+            triangles: try_vec(self.num_triangles(), NONE, "the triangle map")?,
+            edges: try_vec(self.num_edges, NONE, "the edge map")?,
+        };
+        self.garbage_collect_into(GarbageMapsOut {
+            vertices: Some(&mut maps.vertices),
+            triangles: Some(&mut maps.triangles),
+            edges: Some(&mut maps.edges),
+        })?;
+        Ok(maps)
+    }
+
+    /// [`Che::garbage_collect`], the maps written into the caller's buffers (the C API's):
+    /// no map of its own to allocate and copy out. A buffer of another length than its
+    /// count is an invalid-input error before anything changes.
+    pub fn garbage_collect_into(&mut self, out: GarbageMapsOut<'_>) -> Result<()> {
         self.flip_checked = NONE;
         let level = self.level;
-        let (nv, nt) = (self.n_vertices, self.num_triangles());
+        let nv = self.n_vertices;
+        let mut vmap = MapMemory::of(out.vertices, nv, "the vertex map")?;
+        let mut tmap = MapMemory::of(out.triangles, self.num_triangles(), "the triangle map")?;
+        let mut emap = MapMemory::of(out.edges, self.num_edges, "the edge map")?;
         if self.edit.is_none() {
-            let identity = |n: usize| crate::util::alloc::try_collect(0..n as u32, "an id map");
-            return Ok(GarbageMaps {
-                vertices: identity(nv)?,
-                triangles: identity(nt)?,
-                edges: identity(self.num_edges)?,
-            });
+            for map in [&mut vmap, &mut tmap, &mut emap] {
+                map.iter_mut().zip(0..).for_each(|(m, i)| *m = i);
+            }
+            return Ok(());
         }
         let removed = self.edits().map_or(&[][..], |st| &st.removed_vertex[..]);
         let vkept = (0..nv).map(|x| !removed.get(x).is_some_and(|&r| r));
-        let (vmap, new_nv) = ranks(vkept, "the vertex map")?;
-        let tkept = self.v.chunks_exact(3).map(|c| c[0] != NONE);
-        let (tmap, _) = ranks(tkept, "the triangle map")?;
-        debug_assert_eq!(tmap.len(), nt);
+        let new_nv = ranks(&mut vmap, vkept);
+        ranks(&mut tmap, self.v.chunks_exact(3).map(|c| c[0] != NONE));
         // Level 0 stores no `O`: the live one is computed for the edge map.
         let level0_o = if level == 0 {
             Some(self.live_opposites()?)
         } else {
             None
         };
-        let (emap, num_edges) = self.edge_map(level0_o.as_deref().unwrap_or(&self.o), &tmap)?;
+        let num_edges = self.edge_map(level0_o.as_deref().unwrap_or(&self.o), &tmap, &mut emap)?;
         let (vorigin, torigin) = self.compacted_origins(&vmap, &tmap, new_nv)?;
         let flags = |list: &[u32]| -> Result<Vec<u32>> {
             let kept = list.iter().map(|&h| half_edge_map(&tmap, h));
@@ -145,20 +213,13 @@ impl Che {
         *seams_mut(self) = seams;
         self.n_vertices = new_nv;
         self.num_edges = num_edges;
-        self.rebuild_levels(level)?;
-        Ok(GarbageMaps {
-            vertices: vmap,
-            triangles: tmap,
-            edges: emap,
-        })
+        self.rebuild_levels(level)
     }
 
     /// `V` (and `O` when the level stores it) of the live triangles in the new ids.
     fn compact_half_edges(&mut self, vmap: &[u32], tmap: &[u32], with_o: bool) {
         // A removed triangle's corners (`NONE`) are mapped too, and then overwritten.
-        compact_corners(v_mut(self), tmap, |x| {
-            vmap.get(x as usize).copied().unwrap_or(NONE)
-        });
+        compact_corners(v_mut(self), tmap, |x| map_id(vmap, x as usize));
         if with_o {
             compact_corners(o_mut(self), tmap, |g| half_edge_map(tmap, g));
         }
@@ -168,30 +229,24 @@ impl Che {
     /// left. A fresh build numbers the edges by their canonical half-edges in order, and
     /// compaction keeps that order: the live half-edges canonical after it (unpaired, or
     /// before their kept twin) take the new ids in turn.
-    fn edge_map(&self, old_o: &[u32], tmap: &[u32]) -> Result<(Vec<u32>, usize)> {
+    fn edge_map(&self, old_o: &[u32], tmap: &[u32], emap: &mut [u32]) -> Result<usize> {
         let old_ids = self.old_edge_ids(old_o)?;
-        // One slot more, written by the half-edges that are not canonical, and dropped.
-        let spare = self.num_edges;
-        let mut emap = try_vec(spare + 1, NONE, "the edge map")?;
+        emap.fill(NONE);
         let mut next = 0u32;
         // Only the kept triangles' half-edges, a triangle at a time: half the work when
         // half the triangles are removed. A live half-edge's twin is live (removing a
-        // triangle unpairs its twins), so the canonical ones stay canonical. Which twin
-        // comes first is a coin toss, so the map is written without a branch on it.
+        // triangle unpairs its twins), so the canonical ones stay canonical, and a twin's
+        // edge id is the canonical one's. Which twin comes first is a coin toss, so the
+        // map is written without a branch on it (the second twin writes back its entry).
         for (t, _) in tmap.iter().enumerate().filter(|&(_, &m)| m != NONE) {
             for h in 3 * t..3 * t + 3 {
                 let canonical = is_canonical(old_o, h);
-                let slot = if canonical {
-                    old_ids[h] as usize
-                } else {
-                    spare
-                };
-                emap[slot] = next;
+                let slot = &mut emap[old_ids[h] as usize];
+                *slot = if canonical { next } else { *slot };
                 next += u32::from(canonical);
             }
         }
-        emap.truncate(spare);
-        Ok((emap, next as usize))
+        Ok(next as usize)
     }
 
     /// The vertex and triangle origin maps over the new ids. An identity map over the old

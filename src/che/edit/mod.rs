@@ -35,5 +35,5 @@ mod state;
 mod summary;
 mod work;
 
-pub use garbage::GarbageMaps;
+pub use garbage::{GarbageMaps, GarbageMapsOut};
 pub(crate) use state::EditState;

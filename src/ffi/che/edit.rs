@@ -5,7 +5,7 @@
 //! valid until `che_mesh_garbage_collect`.
 
 use super::CheMesh;
-use crate::che::Che;
+use crate::che::{Che, GarbageMapsOut};
 use crate::error::Result;
 use crate::ffi::boundary::{
     Handle, collect_garbage, guard, handle_mut, null_argument, out_arg, position_arg,
@@ -95,7 +95,8 @@ pub unsafe extern "C" fn che_mesh_is_collapse_ok(
 /// ranks again) and writes the old -> new maps (`UINT32_MAX` for a removed element) into
 /// the buffers given (NULL: not wanted), sized by the counts before the call
 /// (`che_mesh_num_vertices`, `_num_triangles`, `_num_edges`). A buffer too small is
-/// BUFFER_TOO_SMALL before anything changes. Every id and view from before is invalid.
+/// BUFFER_TOO_SMALL, and buffers that overlap INVALID_INPUT, before anything changes.
+/// Every id and view from before is invalid.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn che_mesh_garbage_collect(
     m: *mut CheMesh, vertex_map: *mut u32, vertex_cap: usize, triangle_map: *mut u32,
@@ -112,9 +113,12 @@ pub unsafe extern "C" fn che_mesh_garbage_collect(
             m,
             maps,
             |c| [c.num_vertices(), c.num_triangles(), c.num_edges()],
-            |c| {
-                c.garbage_collect()
-                    .map(|g| [g.vertices, g.triangles, g.edges])
+            |c, [vertices, triangles, edges]| {
+                c.garbage_collect_into(GarbageMapsOut {
+                    vertices,
+                    triangles,
+                    edges,
+                })
             },
         )
     }

@@ -11,7 +11,7 @@
 //! the centroid of what is split); a mesh without positions takes NULL only.
 
 use super::ChfMesh;
-use crate::ffi::boundary::{collect_garbage, ids_arg, position_arg};
+use crate::ffi::boundary::{collect_garbage, copy_maps, ids_arg, position_arg};
 use crate::ffi::declare::exports;
 use crate::ffi::shapes::edit;
 use crate::ffi::status::Status;
@@ -124,7 +124,8 @@ exports! { ChfMesh;
 /// live tetrahedra gives. Each map (NULL: not wanted) receives old id -> new id
 /// (`TOPOMESH_NONE` for removed ones) and needs room for the count before the call
 /// (`chf_mesh_num_vertices`, `_tetrahedra`, `_faces`, `_edges`); too little room gives
-/// `TOPOMESH_STATUS_BUFFER_TOO_SMALL` before anything changes. O(T log T).
+/// `TOPOMESH_STATUS_BUFFER_TOO_SMALL`, and maps that overlap
+/// `TOPOMESH_STATUS_INVALID_INPUT`, before anything changes. O(T log T).
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn chf_mesh_garbage_collect(
@@ -148,9 +149,9 @@ pub unsafe extern "C" fn chf_mesh_garbage_collect(
     };
     // SAFETY: forwarded caller contract.
     unsafe {
-        collect_garbage(m, maps, counts, |c| {
-            c.garbage_collect()
-                .map(|g| [g.vertices, g.tetrahedra, g.faces, g.edges])
+        collect_garbage(m, maps, counts, |c, out| {
+            let g = c.garbage_collect()?;
+            copy_maps([g.vertices, g.tetrahedra, g.faces, g.edges], out)
         })
     }
 }

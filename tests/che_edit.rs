@@ -667,3 +667,57 @@ fn a_flip_checks_again_after_any_other_call() {
         che.validate().unwrap();
     }
 }
+
+/// At level 3 an edit notes the half-edges it unpairs, for the next curve computation: the
+/// notes stay within the boundary plus a constant however many edits run without a curve
+/// query, so level 3 costs no more memory while editing than level 2.
+#[test]
+fn level3_edits_keep_their_boundary_notes_short() {
+    let s = grid(40, 40);
+    let (mut two, mut three) = (built(&s, 2), built(&s, 3));
+    for e in 0..3000 {
+        assert_eq!(
+            two.split_edge(e, None).is_ok(),
+            three.split_edge(e, None).is_ok()
+        );
+    }
+    let boundary = three.memory_bytes().curves;
+    let extra = three.memory_bytes().edges - two.memory_bytes().edges;
+    assert!(
+        extra <= 3 * boundary + 8 * 1100,
+        "{extra} bytes over level 2"
+    );
+    three.validate().unwrap();
+    assert_eq!(three.summary(), two.summary());
+}
+
+/// Curves after a level change of an edited CHE, with curve queries (`validate`) between
+/// the edits, and after a garbage collection: each time those of a fresh build.
+#[test]
+fn curves_follow_edits_across_level_changes() {
+    for s in [grid(12, 9), sphere(8, 6)] {
+        let mut che = built(&s, 2);
+        let mut rng = Rng(5);
+        for round in 0..4 {
+            for _ in 0..150 {
+                random_op(&mut che, &mut rng);
+            }
+            che.build_level(if round % 2 == 0 { 3 } else { 2 }).unwrap();
+            // Curves computed right after the change (by a scan), then an edit that
+            // unpairs half-edges: the next computation must see them.
+            che.validate().unwrap();
+            let t = (0..che.num_triangles() as u32).find(|&t| !che.is_triangle_removed(t));
+            che.remove_triangle(t.unwrap()).unwrap();
+            for i in 0..150 {
+                random_op(&mut che, &mut rng);
+                if i % 50 == 0 {
+                    che.validate().unwrap();
+                }
+            }
+            check_against_fresh(&che);
+            if round == 2 {
+                che.garbage_collect().unwrap();
+            }
+        }
+    }
+}

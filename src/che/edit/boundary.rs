@@ -7,9 +7,14 @@ use crate::NONE;
 use crate::che::Che;
 
 /// What the next curve computation starts from.
+///
+/// Unscanned (after a level change of an edited CHE, or when the log could not grow), the
+/// next computation scans the mesh, so nothing is noted until then: a log that waited for
+/// that scan would hold every half-edge an edit unpairs, as much as the edit state again.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct BoundaryLog {
-    /// `known` and `touched` hold every boundary half-edge (else the next computation scans).
+    /// `known` and `touched` hold every boundary half-edge (else the next computation scans
+    /// and `touched` is empty).
     scanned: bool,
     /// The boundary when the curves were last computed, increasing (some may be paired or
     /// removed since).
@@ -30,13 +35,38 @@ impl Che {
         if self.level < 3 {
             return;
         }
-        let log = &mut self.st_mut().boundary;
+        let st = self.st_mut();
+        // Curves computed by a scan become the known boundary when this operation ends
+        // (`settle_boundary_log`), so what it unpairs after them is noted.
+        if !st.boundary.scanned && st.curves.get().is_none() {
+            return;
+        }
+        let log = &mut st.boundary;
         // Without room the log gives up, and the next computation scans: never a panic.
         if log.touched.try_reserve(1).is_ok() {
             log.touched.push(h);
         } else {
-            log.scanned = false;
+            *log = BoundaryLog::default();
         }
+    }
+
+    /// At level 3, on a CHE whose level-3 tables describe it (its first edit, or right
+    /// after garbage collection): the boundary of those tables becomes the known one, so
+    /// that no curve computation has to scan the mesh.
+    pub(super) fn seed_boundary_log(&mut self) -> crate::error::Result<()> {
+        if self.level < 3 {
+            return Ok(());
+        }
+        let mut known = Vec::new();
+        let what = "the boundary half-edges of the edit state";
+        self.boundary_bits
+            .ones_map(&mut known, |h| h as u32, what)?;
+        self.st_mut().boundary = BoundaryLog {
+            scanned: true,
+            known,
+            touched: Vec::new(),
+        };
+        Ok(())
     }
 
     /// The boundary half-edges, increasing, and how many half-edges had been noted then: O(B + k log k) for B boundary half-edges and k
@@ -67,7 +97,6 @@ impl Che {
         if self.level < 3 {
             return;
         }
-        let half_edges = self.v.len();
         let st = self.st_mut();
         if let Some(c) = st.curves.take() {
             // What was noted after the computation (by this operation) stays noted.
@@ -78,14 +107,9 @@ impl Che {
             return;
         }
         let log = &st.boundary;
-        // Folding costs a merge (or, before any computation, a scan): past these lengths
-        // its cost is spread over at least as many edits.
-        let limit = if log.scanned {
-            log.known.len() + 1024
-        } else {
-            half_edges + 1024
-        };
-        if log.touched.len() > limit {
+        // Folding costs a merge: past this length its cost is spread over at least as many
+        // edits. An unscanned log notes nothing.
+        if log.scanned && log.touched.len() > log.known.len() + 1024 {
             let (known, _) = self.boundary_half_edges();
             let log = &mut self.st_mut().boundary;
             log.known = known;

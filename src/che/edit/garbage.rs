@@ -329,6 +329,7 @@ impl Che {
             level2::build_in(self, spare)?;
             self.level = 2;
         }
-        crate::che::build::change_level(self, level)
+        crate::che::build::change_level(self, level)?;
+        self.seed_boundary_log()
     }
 }

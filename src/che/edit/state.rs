@@ -87,6 +87,7 @@ impl Che {
                 ..Default::default()
             };
             self.edit = Some(Box::new(st));
+            self.seed_boundary_log()?;
         }
         if self.level >= 2 && self.st().edge_of.is_empty() && !self.v.is_empty() {
             let ids = edge_ids(&self.o)?;

@@ -1384,7 +1384,7 @@ topomesh_status che_mesh_write(const struct che_mesh *m, const char *path, uint3
 /* ---- CHE: exports (half-edge, winged-edge, corner table, lists, matrices, Betti, strips) ---- */
 
 /**
- * Half-edge (DCEL) array `which` (a `CheHalfEdgeArray`) with `options` (NULL: marked
+ * Half-edge (DCEL) array `which` (a `che_half_edge_array`) with `options` (NULL: marked
  * boundary). Half-edges 0..3T are CHE's own: 3t, 3t+1, 3t+2 go round triangle t
  * counter-clockwise, half-edge h from vertex[h] (its tail) to vertex[next[h]]. O(T) at
  * every level. Without explicit boundary, `vertex` and `twin` are the structure's own
@@ -1399,7 +1399,7 @@ topomesh_status che_mesh_export_half_edges(const struct che_mesh *m,
                                            size_t *out_len);
 
 /**
- * Winged-edge array `which` (a `CheWingedArray`) over the edge ids of `che_half_edge_edge`.
+ * Winged-edge array `which` (a `che_winged_array`) over the edge ids of `che_half_edge_edge`.
  * O(T) at every level.
  */
 topomesh_status che_mesh_export_winged_edges(const struct che_mesh *m,
@@ -1439,7 +1439,7 @@ topomesh_status che_mesh_export_triangle_edges(const struct che_mesh *m,
 
 /**
  * Triangle strips covering every triangle once in its orientation (greedy, from the
- * dual graph), as list `which` (a `CheStripList`). A strip s stands for the triangles
+ * dual graph), as list `which` (a `che_strip_list`). A strip s stands for the triangles
  * (s[i], s[i+1], s[i+2]) for even i and (s[i+1], s[i], s[i+2]) for odd i. O(T) at every
  * level.
  */
@@ -1457,7 +1457,7 @@ topomesh_status che_mesh_export_strips(const struct che_mesh *m,
 topomesh_status che_mesh_betti_numbers(const struct che_mesh *m, struct che_betti *out);
 
 /**
- * Sparse matrix `kind` (a `CheMatrixKind`) in CSR, ready for Eigen (`Map<SparseMatrix<
+ * Sparse matrix `kind` (a `che_matrix_kind`) in CSR, ready for Eigen (`Map<SparseMatrix<
  * double, RowMajor, int64_t>>` after a cast of the columns) or SciPy (`csr_matrix((values,
  * columns, offsets))`): row r holds `columns[offsets[r] .. offsets[r + 1]]` (sorted) with
  * `values` at the same places; `*n_offsets` is rows + 1, `*n_entries` the entries. All
@@ -2348,7 +2348,7 @@ topomesh_status chf_mesh_write_boundary(const struct chf_mesh *m, const char *pa
 /* ---- CHF: exports (half-face arrays, dual graph, matrices, Betti) ---- */
 
 /**
- * Half-face array `which` (a `ChfHalfFaceArray`). O(T) at every level.
+ * Half-face array `which` (a `chf_half_face_array`). O(T) at every level.
  */
 topomesh_status chf_mesh_export_half_faces(const struct chf_mesh *m,
                                            uint32_t which,
@@ -2372,7 +2372,7 @@ topomesh_status chf_mesh_export_dual_graph(const struct chf_mesh *m,
 topomesh_status chf_mesh_betti_numbers(const struct chf_mesh *m, struct chf_betti *out);
 
 /**
- * Sparse matrix `kind` (a `ChfMatrixKind`) in CSR, with the layout and buffer rules of
+ * Sparse matrix `kind` (a `chf_matrix_kind`) in CSR, with the layout and buffer rules of
  * `che_mesh_export_matrix`.
  */
 topomesh_status chf_mesh_export_matrix(const struct chf_mesh *m,

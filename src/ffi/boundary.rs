@@ -123,21 +123,26 @@ pub(crate) unsafe fn optional_out<T>(p: *mut T) -> Option<Out<T>> {
     NonNull::new(p).map(Out)
 }
 
-/// An optional position: NULL, or three doubles x, y, z. Safe to call from an export's
-/// body: the export's contract is what makes `p` readable.
-pub(crate) fn position_arg(p: *const f64) -> Result<Option<glam::DVec3>> {
+/// An optional position: NULL, or three doubles x, y, z.
+///
+/// # Safety
+/// `p` is NULL or points to three readable doubles (an export's contract for its position
+/// argument).
+pub(crate) unsafe fn position_arg(p: *const f64) -> Result<Option<glam::DVec3>> {
     if p.is_null() {
         return Ok(None);
     }
-    // SAFETY: the export's contract: NULL (handled) or three readable doubles.
+    // SAFETY: forwarded contract: NULL (handled) or three readable doubles.
     let xyz = unsafe { slice_arg(p, 3, "position")? };
     Ok(Some(glam::DVec3::new(xyz[0], xyz[1], xyz[2])))
 }
 
-/// `N` ids read from the caller's array, or a NULL_ARGUMENT error naming it (safe to call
-/// from an export's body, as `position_arg`).
-pub(crate) fn ids_arg<const N: usize>(p: *const u32, name: &str) -> Result<[u32; N]> {
-    // SAFETY: the export's contract: NULL (refused) or `N` readable ids.
+/// `N` ids read from the caller's array, or a NULL_ARGUMENT error naming it.
+///
+/// # Safety
+/// `p` is NULL or points to `N` readable ids (an export's contract for that argument).
+pub(crate) unsafe fn ids_arg<const N: usize>(p: *const u32, name: &str) -> Result<[u32; N]> {
+    // SAFETY: forwarded contract: NULL (refused) or `N` readable ids.
     let ids = unsafe { slice_arg(p, N, name)? };
     Ok(std::array::from_fn(|i| ids[i]))
 }

@@ -39,7 +39,8 @@ exports! { CheMesh;
     /// are the id bounds, `che_mesh_num_live_*` the counts, the edge-rank view is NULL (edge
     /// ids are not ranks), and exports and writers expect a collected mesh.
     edit fn che_mesh_add_vertex(position_xyz: *const f64) -> out: u32 {
-        |c| c.add_vertex(position_arg(position_xyz)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.add_vertex(unsafe { position_arg(position_xyz) }?)
     }
     /// Adds triangle (a, b, c) into `out`, paired with the boundary half-edges it meets.
     /// Refused (INVALID_INPUT) for a degenerate triangle, OUT_OF_RANGE for a bad vertex id.
@@ -64,14 +65,16 @@ exports! { CheMesh;
     /// Splits edge `e` at a new vertex (into `out`; position: `position_xyz`, or NULL for the
     /// midpoint when the mesh has positions).
     edit fn che_mesh_split_edge(e, position_xyz: *const f64) -> out: u32 {
-        |c| c.split_edge(e, position_arg(position_xyz)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.split_edge(e, unsafe { position_arg(position_xyz) }?)
     }
     /// Collapses half-edge `h`: its target merges into its origin (the kept vertex goes to
     /// `out`). Refused, with the reason, when the link condition fails.
     edit fn che_mesh_collapse_edge(h) -> out: u32 { |c| c.collapse_edge(h) }
     /// Splits triangle `t` into 3 at a new vertex (into `out`; NULL position: the centroid).
     edit fn che_mesh_split_triangle(t, position_xyz: *const f64) -> out: u32 {
-        |c| c.split_triangle(t, position_arg(position_xyz)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.split_triangle(t, unsafe { position_arg(position_xyz) }?)
     }
 }
 
@@ -147,7 +150,9 @@ pub unsafe extern "C" fn che_mesh_set_position(
     m: *mut CheMesh, v: u32, position_xyz: *const f64,
 ) -> Status {
     crate::ffi::shapes::edit!(m, std::ptr::null_mut::<()>(), |c| {
-        let p = position_arg(position_xyz)?.ok_or_else(|| null_argument("position_xyz"))?;
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        let p =
+            unsafe { position_arg(position_xyz) }?.ok_or_else(|| null_argument("position_xyz"))?;
         c.set_position(v, p)
     })
 }

@@ -101,7 +101,7 @@ fn half_edge_options(p: *const CheHalfEdgeOptions) -> HalfEdgeOptions {
 }
 
 exports! { CheMesh;
-    /// Half-edge (DCEL) array `which` (a `CheHalfEdgeArray`) with `options` (NULL: marked
+    /// Half-edge (DCEL) array `which` (a `che_half_edge_array`) with `options` (NULL: marked
     /// boundary). Half-edges 0..3T are CHE's own: 3t, 3t+1, 3t+2 go round triangle t
     /// counter-clockwise, half-edge h from vertex[h] (its tail) to vertex[next[h]]. O(T) at
     /// every level. Without explicit boundary, `vertex` and `twin` are the structure's own
@@ -113,7 +113,7 @@ exports! { CheMesh;
             c.half_edge_array_into(half_edge_options(options), which, s)?
         }
     }
-    /// Winged-edge array `which` (a `CheWingedArray`) over the edge ids of `che_half_edge_edge`.
+    /// Winged-edge array `which` (a `che_winged_array`) over the edge ids of `che_half_edge_edge`.
     /// O(T) at every level.
     ids fn che_mesh_export_winged_edges(which) {
         try |c| c.winged_edges().and_then(|w| winged_array(w, which))
@@ -130,7 +130,7 @@ exports! { CheMesh;
     /// (from corner i to corner i + 1 of triangle t). O(T) at every level.
     ids fn che_mesh_export_triangle_edges() { try |c| c.all_triangle_edges() }
     /// Triangle strips covering every triangle once in its orientation (greedy, from the
-    /// dual graph), as list `which` (a `CheStripList`). A strip s stands for the triangles
+    /// dual graph), as list `which` (a `che_strip_list`). A strip s stands for the triangles
     /// (s[i], s[i+1], s[i+2]) for even i and (s[i+1], s[i], s[i+2]) for odd i. O(T) at every
     /// level.
     ids fn che_mesh_export_strips(which) {
@@ -148,7 +148,7 @@ exports! { CheMesh;
 }
 
 exports! { CheMesh;
-    /// Sparse matrix `kind` (a `CheMatrixKind`) in CSR, ready for Eigen (`Map<SparseMatrix<
+    /// Sparse matrix `kind` (a `che_matrix_kind`) in CSR, ready for Eigen (`Map<SparseMatrix<
     /// double, RowMajor, int64_t>>` after a cast of the columns) or SciPy (`csr_matrix((values,
     /// columns, offsets))`): row r holds `columns[offsets[r] .. offsets[r + 1]]` (sorted) with
     /// `values` at the same places; `*n_offsets` is rows + 1, `*n_entries` the entries. All

@@ -21,16 +21,19 @@ exports! { ChfMesh;
     /// Adds an isolated vertex at `position` (required when the mesh has positions, NULL when
     /// it has none); its id into `*out_v` (may be NULL).
     edit fn chf_mesh_add_vertex(position: *const f64) -> out_v: u32 {
-        |c| c.add_vertex(position_arg(position)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.add_vertex(unsafe { position_arg(position) }?)
     }
     /// Adds the tetrahedron of the four vertices `vertices[4]` (any order: oriented by the
     /// determinant with positions, else by the faces it pairs with); its id into `*out_t`.
     edit fn chf_mesh_add_tetrahedron(vertices: *const u32) -> out_t: u32 {
-        |c| c.add_tetrahedron(ids_arg(vertices, "vertices")?)
+        // SAFETY: the export's contract: NULL or four readable ids.
+        |c| c.add_tetrahedron(unsafe { ids_arg(vertices, "vertices") }?)
     }
     /// Would `chf_mesh_add_tetrahedron` succeed? Changes nothing.
     check fn chf_mesh_check_add_tetrahedron(vertices: *const u32) {
-        |c| c.check_add_tetrahedron(ids_arg(vertices, "vertices")?)
+        // SAFETY: the export's contract: NULL or four readable ids.
+        |c| c.check_add_tetrahedron(unsafe { ids_arg(vertices, "vertices") }?)
     }
     /// Removes tetrahedron `t` (refused when that pinches a vertex or an edge).
     edit fn chf_mesh_remove_tetrahedron(t) { |c| c.remove_tetrahedron(t) }
@@ -45,27 +48,33 @@ exports! { ChfMesh;
     /// its vertex 0 replaced by the new one; the pieces with vertex 1, 2 and 3 replaced
     /// are appended, in that order.
     edit fn chf_mesh_split_tetrahedron(t, position: *const f64) -> out_v: u32 {
-        |c| c.split_tetrahedron(t, position_arg(position)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.split_tetrahedron(t, unsafe { position_arg(position) }?)
     }
     /// Would `chf_mesh_split_tetrahedron` succeed? Changes nothing.
     check fn chf_mesh_check_split_tetrahedron(t, position: *const f64) {
-        |c| c.check_split_tetrahedron(t, position_arg(position)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.check_split_tetrahedron(t, unsafe { position_arg(position) }?)
     }
     /// Splits face `f` (2-6, or 1-3 on the boundary) at a new vertex (id into `*out_v`).
     edit fn chf_mesh_split_face(f, position: *const f64) -> out_v: u32 {
-        |c| c.split_face(f, position_arg(position)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.split_face(f, unsafe { position_arg(position) }?)
     }
     /// Would `chf_mesh_split_face` succeed? Changes nothing.
     check fn chf_mesh_check_split_face(f, position: *const f64) {
-        |c| c.check_split_face(f, position_arg(position)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.check_split_face(f, unsafe { position_arg(position) }?)
     }
     /// Splits edge `e` at a new vertex (id into `*out_v`): each tetrahedron around it in two.
     edit fn chf_mesh_split_edge(e, position: *const f64) -> out_v: u32 {
-        |c| c.split_edge(e, position_arg(position)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.split_edge(e, unsafe { position_arg(position) }?)
     }
     /// Would `chf_mesh_split_edge` succeed? Changes nothing.
     check fn chf_mesh_check_split_edge(e, position: *const f64) {
-        |c| c.check_split_edge(e, position_arg(position)?)
+        // SAFETY: the export's contract: NULL or three readable doubles.
+        |c| c.check_split_edge(e, unsafe { position_arg(position) }?)
     }
 }
 

@@ -37,7 +37,7 @@ fn half_face_array(a: HalfFaceArrays, which: u32) -> Result<Vec<u32>> {
 }
 
 exports! { ChfMesh;
-    /// Half-face array `which` (a `ChfHalfFaceArray`). O(T) at every level.
+    /// Half-face array `which` (a `chf_half_face_array`). O(T) at every level.
     ids fn chf_mesh_export_half_faces(which) {
         try |c| c.half_face_arrays().and_then(|a| half_face_array(a, which))
     }
@@ -52,7 +52,7 @@ exports! { ChfMesh;
 }
 
 exports! { ChfMesh;
-    /// Sparse matrix `kind` (a `ChfMatrixKind`) in CSR, with the layout and buffer rules of
+    /// Sparse matrix `kind` (a `chf_matrix_kind`) in CSR, with the layout and buffer rules of
     /// `che_mesh_export_matrix`.
     matrix fn chf_mesh_export_matrix(kind) {
         |c, offer| {

@@ -37,6 +37,13 @@ pub(crate) fn is_canonical(o: &[u32], h: usize) -> bool {
     (h as u32) < o[h]
 }
 
+/// The canonical half-edge of `h`'s edge: `h` itself when unpaired or smaller (`NONE` is
+/// above every id).
+#[inline]
+pub(crate) fn canonical_half_edge(o: &[u32], h: u32) -> u32 {
+    o[h as usize].min(h)
+}
+
 /// The edge-id directory of the opposites `o`: the rank over the canonical half-edges.
 pub(crate) fn edge_directory(o: &[u32]) -> Result<RankDirectory> {
     RankDirectory::from_fn(o.len(), |h| is_canonical(o, h))
@@ -48,7 +55,7 @@ pub(crate) fn edge_ids(o: &[u32]) -> Result<Vec<u32>> {
     let mut next_id = 0u32;
     for h in 0..o.len() {
         let g = o[h];
-        if g == NONE || (h as u32) < g {
+        if is_canonical(o, h) {
             ids[h] = next_id;
             if g != NONE {
                 ids[g as usize] = next_id;

@@ -191,11 +191,9 @@ fn assemble(
 ) -> Result<Che> {
     let vertex_origin = OriginMap::with_copies(n_vertices, copies)?;
     let positions = positions_with_copies(positions, copies)?;
-    let num_edges =
-        c.o.iter()
-            .enumerate()
-            .filter(|&(h, &g)| g == NONE || (h as u32) < g)
-            .count();
+    let num_edges = (0..c.o.len())
+        .filter(|&h| crate::che::tables::is_canonical(&c.o, h))
+        .count();
     Ok(Che {
         level: 1,
         n_input_vertices: n_vertices,

@@ -63,7 +63,7 @@ impl Che {
         } else {
             e
         };
-        let canonical = if g != NONE && g < h { g } else { h };
+        let canonical = crate::che::tables::canonical_half_edge(&self.o, h);
         let st = self.st_mut();
         st.edge_of[h as usize] = e;
         if g != NONE {

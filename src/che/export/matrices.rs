@@ -183,8 +183,8 @@ impl Entries for Incidence<'_> {
                 }
             }
             MatrixKind::D2 => {
-                for (h, &g) in t.o.iter().enumerate() {
-                    let along = g == NONE || (h as u32) < g;
+                for h in 0..t.o.len() {
+                    let along = crate::che::tables::is_canonical(&t.o, h);
                     p.put(t.edge[h], tri(h as u32), if along { 1.0 } else { -1.0 });
                 }
             }

@@ -3,6 +3,7 @@
 
 use super::star::{Rotation, vf_item, vv_item};
 use crate::che::ids::{first, next, prev, tri};
+use crate::che::tables::canonical_half_edge;
 use crate::che::{Che, edge_directory, pairs};
 use crate::error::Result;
 use crate::util::alloc::or_panic;
@@ -162,13 +163,6 @@ impl Che {
         self.vertex_star(v).filter_map(vf_item)
     }
 
-    /// The canonical half-edge of `h`'s edge: `h` itself when unpaired or smaller.
-    #[inline]
-    fn canonical(o: &[u32], h: u32) -> u32 {
-        let g = o[h as usize];
-        if g != NONE && g < h { g } else { h }
-    }
-
     /// The edge id of half-edge `h`. O(1) at level 2; O(1) at level 1 once the level-1
     /// edge-id directory is there (the first request computes it, O(T), and keeps it: see
     /// [`Che::edge_ranks`]); O(T) time and memory at level 0.
@@ -177,7 +171,9 @@ impl Che {
             if let Some(ids) = self.edited_edge_ids() {
                 return ids[h as usize];
             }
-            return self.edge_bits.rank(Self::canonical(&self.o, h) as usize) as u32;
+            return self
+                .edge_bits
+                .rank(canonical_half_edge(&self.o, h) as usize) as u32;
         }
         self.edge_names().of(h)
     }
@@ -210,7 +206,7 @@ impl Che {
         }
         let o = self.opposites_or_computed();
         (0..self.v.len() as u32)
-            .filter(|&g| self.v[g as usize] != NONE && Self::canonical(&o, g) == g)
+            .filter(|&g| self.v[g as usize] != NONE && canonical_half_edge(&o, g) == g)
             .nth(e as usize)
             .unwrap_or(NONE)
     }
@@ -290,6 +286,6 @@ impl EdgeNames<'_> {
         if let Some(ids) = self.ids {
             return ids[h as usize];
         }
-        self.ranks.rank(Che::canonical(&self.o, h) as usize) as u32
+        self.ranks.rank(canonical_half_edge(&self.o, h) as usize) as u32
     }
 }

@@ -41,12 +41,14 @@ impl Che {
         if !st.boundary.scanned && st.curves.get().is_none() {
             return;
         }
-        let log = &mut st.boundary;
         // Without room the log gives up, and the next computation scans: never a panic.
-        if log.touched.try_reserve(1).is_ok() {
-            log.touched.push(h);
+        // Curves computed before it go too, or `settle_boundary_log` would take them as
+        // the known boundary without this half-edge.
+        if st.boundary.touched.try_reserve(1).is_ok() {
+            st.boundary.touched.push(h);
         } else {
-            *log = BoundaryLog::default();
+            st.curves.take();
+            st.boundary = BoundaryLog::default();
         }
     }
 

@@ -1026,17 +1026,17 @@ topomesh_status che_mesh_build_level(struct che_mesh *m, uint32_t level);
 uint32_t che_mesh_level(const struct che_mesh *m);
 
 /**
- * How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
- * from arrays, and for NULL). O(1).
+ * How many warnings the reader gave for the file `m` was loaded from (0 for a mesh
+ * built from arrays, and for NULL). O(1).
  */
 size_t che_mesh_num_warnings(const struct che_mesh *m);
 
 /**
- * Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
- * `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
- * `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
- * and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
- * `TOPOMESH_STATUS_OUT_OF_RANGE`.
+ * Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer
+ * rules of `topomesh_last_error`: `*out_len` receives the capacity needed, NUL
+ * included; `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a
+ * truncated text and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of
+ * range gives `TOPOMESH_STATUS_OUT_OF_RANGE`.
  */
 topomesh_status che_mesh_warning(const struct che_mesh *m,
                                  size_t i,
@@ -1574,6 +1574,11 @@ topomesh_status che_mesh_split_triangle(struct che_mesh *m,
                                         uint32_t *out);
 
 /**
+ * Moves vertex `v` to `position_xyz` (3 doubles); refused on a mesh without positions.
+ */
+topomesh_status che_mesh_set_position(struct che_mesh *m, uint32_t v, const double *position_xyz);
+
+/**
  * Would `che_mesh_flip_edge(m, e)` succeed? Never modifies the mesh: every view stays
  * valid.
  */
@@ -1615,11 +1620,6 @@ topomesh_status che_triangle_is_removed(const struct che_mesh *m, uint32_t t, bo
  * Is edge `e` removed? (Below level 2 edge ids are the ranks of the live edges: never.)
  */
 topomesh_status che_edge_is_removed(const struct che_mesh *m, uint32_t e, bool *out);
-
-/**
- * Moves vertex `v` to `position_xyz` (3 doubles); refused on a mesh without positions.
- */
-topomesh_status che_mesh_set_position(struct che_mesh *m, uint32_t v, const double *position_xyz);
 
 /* ---- CHE: zero-copy views of the structure's arrays ---- */
 
@@ -1767,17 +1767,17 @@ topomesh_status chf_mesh_build_level(struct chf_mesh *m, uint32_t level);
 uint32_t chf_mesh_level(const struct chf_mesh *m);
 
 /**
- * How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
- * from arrays, and for NULL). O(1).
+ * How many warnings the reader gave for the file `m` was loaded from (0 for a mesh
+ * built from arrays, and for NULL). O(1).
  */
 size_t chf_mesh_num_warnings(const struct chf_mesh *m);
 
 /**
- * Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
- * `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
- * `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
- * and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
- * `TOPOMESH_STATUS_OUT_OF_RANGE`.
+ * Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer
+ * rules of `topomesh_last_error`: `*out_len` receives the capacity needed, NUL
+ * included; `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a
+ * truncated text and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of
+ * range gives `TOPOMESH_STATUS_OUT_OF_RANGE`.
  */
 topomesh_status chf_mesh_warning(const struct chf_mesh *m,
                                  size_t i,

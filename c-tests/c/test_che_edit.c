@@ -223,6 +223,10 @@ static void checks_at_level(uint32_t level) {
         passed += ok;
     }
     CHECK(passed > 0);
+    /* A check needs its answer's place and the mesh. */
+    CHECK_STATUS(che_mesh_is_flip_ok(m, 0, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(che_mesh_is_collapse_ok(NULL, 0, &ok), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(che_mesh_is_flip_ok(m, TOPOMESH_NONE, &ok), TOPOMESH_STATUS_OUT_OF_RANGE);
     CHECK(che_mesh_half_edge_vertices(m, NULL) == v && memcmp(v, before, n_v * sizeof *v) == 0);
     CHECK(che_mesh_vertex_origins(m, NULL) == origins && origins[5] == 5);
     CHECK_OK(che_mesh_save(m, "checks.che"));

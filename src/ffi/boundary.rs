@@ -415,6 +415,17 @@ pub(crate) unsafe fn text_out(
     Err(Error::new(ErrorKind::BufferTooSmall, detail))
 }
 
+/// The body of an export that writes the mesh behind `m` to the file `path`.
+pub(crate) unsafe fn to_path<H: Handle>(
+    m: *const H, path: *const c_char, write: impl FnOnce(&H::Core, &std::path::Path) -> Result<()>,
+) -> Status {
+    guard(|| {
+        // SAFETY: forwarded contract.
+        let (c, path) = unsafe { (core(m)?, path_arg(path, "path")?) };
+        write(c, path)
+    })
+}
+
 /// Warning `i` of handle `m` into `buf` (the buffer rules of `topomesh_last_error`).
 pub(crate) unsafe fn warning_out<H: Handle>(
     m: *const H, i: usize, buf: *mut c_char, cap: usize, out_len: *mut usize,

@@ -19,11 +19,15 @@
 //! | `ids` | `uint32_t *buf, size_t cap, size_t *out_len` -> status | `shapes::ids!` |
 //! | `value` | `T *out` -> status | `shapes::value!` |
 //! | `check` | -> status | `\|c\| result` |
-//! | `edit` | (`m` exclusive) an out-parameter named in the entry, or none | `shapes::edit!` |
+//! | `edit` | (`m` exclusive) an out-parameter named in the entry (`as [u32; N]`: N ids), or none | `shapes::edit!` |
+//! | `ask` | (`m` exclusive, for the core's scratch; nothing changes) `bool *out` -> status | `\|c\| result` |
 //! | `csr` | the offsets and indices buffers, their capacities and lengths | `\|c, s\| rows` |
 //! | `matrix` | `kind`, the offsets, columns and values buffers and lengths | `\|c, offer\| …` |
 //! | `count` | -> `T` (0 for a NULL handle) | `\|c\| value` |
 //! | `view` | `size_t *len` -> `const T *` (NULL for a NULL handle) | `\|h\| slice` |
+//! | `save` | `const char *path` (and `uint32_t flags`, as write options) -> status | `\|c, path\| result` (`\|c, path, options\|`) |
+//! | `free` | (`m` exclusive) -> nothing; NULL is a no-op; doc: the macro's | the handle dropped |
+//! | `warnings` | two exports: the count; warning `i` into `char *buf, size_t cap, size_t *out_len`; docs: the macro's | the handle's |
 
 /// The exports of one mesh type (see the module docs): each entry, shape by shape, to
 /// `export!`.
@@ -77,14 +81,14 @@ macro_rules! export {
         $crate::ffi::declare::export!(@ $mesh; $($rest)*);
     };
     (@ $mesh:ty; $(#[$doc:meta])*
-        edit fn $name:ident($($a:ident $(: $t:ty)?),*) -> $out:ident: $ot:ty
+        edit fn $name:ident($($a:ident $(: $t:ty)?),*) -> $out:ident: $ot:ty $(as $array:ty)?
         { $($body:tt)* } $($rest:tt)*) => {
         $(#[$doc])*
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $name(
             m: *mut $mesh, $($a: $crate::ffi::declare::arg!($($t)?),)* $out: *mut $ot,
         ) -> $crate::ffi::status::Status {
-            $crate::ffi::shapes::edit!(m, $out, $($body)*)
+            $crate::ffi::shapes::edit!(m, $out$(.cast::<$array>())?, $($body)*)
         }
         $crate::ffi::declare::export!(@ $mesh; $($rest)*);
     };
@@ -96,6 +100,26 @@ macro_rules! export {
             m: *mut $mesh, $($a: $crate::ffi::declare::arg!($($t)?)),*
         ) -> $crate::ffi::status::Status {
             $crate::ffi::shapes::edit!(m, std::ptr::null_mut::<()>(), $($body)*)
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        ask fn $name:ident($($a:ident),*) -> bool { |$c:ident| $answer:expr } $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *mut $mesh, $($a: u32,)* out: *mut bool,
+        ) -> $crate::ffi::status::Status {
+            $crate::ffi::boundary::guard(|| {
+                // SAFETY: caller contract (see `ffi`): NULL or a live handle, not shared, and
+                // NULL or one writable bool.
+                let (h, out) = unsafe {
+                    use $crate::ffi::boundary::{handle_mut, out_arg};
+                    (handle_mut(m, "m")?, out_arg(out, "out")?)
+                };
+                let $c = $crate::ffi::boundary::Handle::core_mut(h);
+                Ok(out.set($answer?))
+            })
         }
         $crate::ffi::declare::export!(@ $mesh; $($rest)*);
     };
@@ -170,6 +194,61 @@ macro_rules! export {
                 *len = n;
             }
             p
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; $(#[$doc:meta])*
+        save fn $name:ident($($flags:ident)?) { |$c:ident, $p:ident $(, $o:ident)?| $call:expr }
+        $($rest:tt)*) => {
+        $(#[$doc])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            m: *const $mesh, path: *const std::ffi::c_char, $($flags: u32)?
+        ) -> $crate::ffi::status::Status {
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
+            unsafe {
+                $crate::ffi::boundary::to_path(m, path, |$c, $p| {
+                    $(let $o = $crate::ffi::boundary::write_flags_arg($flags)?;)?
+                    $call
+                })
+            }
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; free fn $name:ident(); $($rest:tt)*) => {
+        /// Frees a mesh; NULL is a no-op. Needs exclusive access.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(m: *mut $mesh) {
+            // SAFETY: caller contract: NULL or a live handle, freed once.
+            unsafe { $crate::ffi::boundary::free_handle(m) }
+        }
+        $crate::ffi::declare::export!(@ $mesh; $($rest)*);
+    };
+    (@ $mesh:ty; warnings fn $count:ident(), $one:ident(); $($rest:tt)*) => {
+        /// How many warnings the reader gave for the file `m` was loaded from (0 for a mesh
+        /// built from arrays, and for NULL). O(1).
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $count(m: *const $mesh) -> usize {
+            $crate::ffi::boundary::guard_or(0, || {
+                // SAFETY: caller contract (see `ffi`): NULL or a live handle.
+                let h = unsafe { $crate::ffi::boundary::handle(m, "m")? };
+                Ok($crate::ffi::boundary::Handle::warnings(h).len())
+            })
+        }
+        /// Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer
+        /// rules of `topomesh_last_error`: `*out_len` receives the capacity needed, NUL
+        /// included; `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a
+        /// truncated text and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of
+        /// range gives `TOPOMESH_STATUS_OUT_OF_RANGE`.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $one(
+            m: *const $mesh, i: usize, buf: *mut std::ffi::c_char, cap: usize,
+            out_len: *mut usize,
+        ) -> $crate::ffi::status::Status {
+            // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
+            $crate::ffi::boundary::guard(|| unsafe {
+                $crate::ffi::boundary::warning_out(m, i, buf, cap, out_len)
+            })
         }
         $crate::ffi::declare::export!(@ $mesh; $($rest)*);
     };

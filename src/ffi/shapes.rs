@@ -110,29 +110,6 @@ macro_rules! load {
     };
 }
 
-/// A file written from a handle: `save!(m, path => |c, path| c.save(path))`, or with
-/// `TOPOMESH_WRITE_*` flags: `save!(m, path, flags => |c, path, options| c.write_with(path,
-/// &options))`.
-macro_rules! save {
-    ($m:ident, $path:ident => |$c:ident, $p:ident| $call:expr) => {
-        $crate::ffi::boundary::guard(|| {
-            // SAFETY: caller contract (see `ffi`): NULL or a live handle and a NUL-terminated
-            // path.
-            let ($c, $p) = unsafe {
-                use $crate::ffi::boundary::{core, path_arg};
-                (core($m)?, path_arg($path, "path")?)
-            };
-            $call
-        })
-    };
-    ($m:ident, $path:ident, $flags:ident => |$c:ident, $p:ident, $o:ident| $call:expr) => {
-        $crate::ffi::shapes::save!($m, $path => |$c, $p| {
-            let $o = $crate::ffi::boundary::write_flags_arg($flags)?;
-            $call
-        })
-    };
-}
-
 /// A new handle from a level file, with `TOPOMESH_OPEN_*` flags:
 /// `open!(out, path, flags => Che::open)`.
 macro_rules! open {
@@ -140,24 +117,6 @@ macro_rules! open {
         $crate::ffi::shapes::make!($out, {
             let options = $crate::ffi::boundary::open_flags_arg($flags)?;
             $open($crate::ffi::boundary::path_arg($path, "path")?, options)
-        })
-    };
-}
-
-/// The reader's warnings of a handle: `warnings!(m)` counts them (0 for NULL),
-/// `warnings!(m, i, buf, cap, out_len)` copies warning `i` (see `boundary::warning_out`).
-macro_rules! warnings {
-    ($m:ident) => {
-        $crate::ffi::boundary::guard_or(0, || {
-            // SAFETY: caller contract (see `ffi`): NULL or a live handle.
-            let h = unsafe { $crate::ffi::boundary::handle($m, "m")? };
-            Ok($crate::ffi::boundary::Handle::warnings(h).len())
-        })
-    };
-    ($m:ident, $i:ident, $buf:ident, $cap:ident, $len:ident) => {
-        // SAFETY: caller contract (see `ffi`): NULL or valid pointers.
-        $crate::ffi::boundary::guard(|| unsafe {
-            $crate::ffi::boundary::warning_out($m, $i, $buf, $cap, $len)
         })
     };
 }
@@ -271,6 +230,4 @@ macro_rules! options {
     };
 }
 
-pub(crate) use {
-    build, build_options, edit, handle, ids, load, make, open, options, save, value, warnings,
-};
+pub(crate) use {build, build_options, edit, handle, ids, load, make, open, options, value};

@@ -5,10 +5,9 @@
 
 use super::{CheBuildOptions, CheMesh};
 use crate::che::Che;
-use crate::ffi::boundary::{free_handle, level_arg};
+use crate::ffi::boundary::level_arg;
 use crate::ffi::declare::exports;
 use crate::ffi::mesh_arrays::TRIANGLES;
-use crate::ffi::shapes::warnings;
 use crate::ffi::shapes::{build, load};
 use crate::ffi::status::Status;
 use std::ffi::c_char;
@@ -65,14 +64,8 @@ pub unsafe extern "C" fn che_mesh_load_ex(
     load!(out, path, options => crate::io::load::che_loaded)
 }
 
-/// Frees a mesh; NULL is a no-op. Needs exclusive access.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_free(m: *mut CheMesh) {
-    // SAFETY: caller contract: NULL or a live handle, freed once.
-    unsafe { free_handle(m) }
-}
-
 exports! { CheMesh;
+    free fn che_mesh_free();
     /// Raises or lowers the level (0..3) in place. Ids never change with the level; views
     /// obtained before are invalid afterwards. Needs exclusive access.
     edit fn che_mesh_build_level(level) { |c| c.build_level(level_arg(level)?) }
@@ -92,23 +85,5 @@ exports! { CheMesh;
     /// Boundary curves of the structure: O(1) at level 3, O(T) at levels 1-2, O(T) time and
     /// memory at level 0.
     count fn che_mesh_num_boundary_curves() -> usize { |c| c.num_boundary_curves() }
-}
-
-/// How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
-/// from arrays, and for NULL). O(1).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_num_warnings(m: *const CheMesh) -> usize {
-    warnings!(m)
-}
-
-/// Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
-/// `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
-/// `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
-/// and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
-/// `TOPOMESH_STATUS_OUT_OF_RANGE`.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_warning(
-    m: *const CheMesh, i: usize, buf: *mut c_char, cap: usize, out_len: *mut usize,
-) -> Status {
-    warnings!(m, i, buf, cap, out_len)
+    warnings fn che_mesh_num_warnings(), che_mesh_warning();
 }

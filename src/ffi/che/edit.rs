@@ -5,25 +5,10 @@
 //! valid until `che_mesh_garbage_collect`.
 
 use super::CheMesh;
-use crate::che::{Che, GarbageMapsOut};
-use crate::error::Result;
-use crate::ffi::boundary::{
-    Handle, collect_garbage, guard, handle_mut, null_argument, out_arg, position_arg,
-};
+use crate::che::GarbageMapsOut;
+use crate::ffi::boundary::{collect_garbage, null_argument, position_arg};
 use crate::ffi::declare::exports;
 use crate::ffi::status::Status;
-
-/// A check through the exclusive handle, its answer into `out`; it keeps every view valid
-/// (the core borrows the mesh mutably for its scratch only).
-fn check(m: *mut CheMesh, out: *mut bool, f: impl FnOnce(&mut Che) -> Result<bool>) -> Status {
-    guard(|| {
-        // SAFETY: caller contract (see `ffi`): NULL or a live handle, not shared, and NULL
-        // or one writable bool.
-        let (h, out) = unsafe { (handle_mut(m, "m")?, out_arg(out, "out")?) };
-        out.set(f(Handle::core_mut(h))?);
-        Ok(())
-    })
-}
 
 exports! { CheMesh;
     /// Adds an isolated vertex. `position` (3 doubles) is required when the mesh has
@@ -76,22 +61,20 @@ exports! { CheMesh;
         // SAFETY: the export's contract: NULL or three readable doubles.
         |c| c.split_triangle(t, unsafe { position_arg(position_xyz) }?)
     }
-}
-
-/// Would `che_mesh_flip_edge(m, e)` succeed? Never modifies the mesh: every view stays
-/// valid.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_is_flip_ok(m: *mut CheMesh, e: u32, out: *mut bool) -> Status {
-    check(m, out, |c| c.is_flip_ok(e))
-}
-
-/// Would `che_mesh_collapse_edge(m, h)` succeed? Never modifies the mesh: every view
-/// stays valid.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_is_collapse_ok(
-    m: *mut CheMesh, h: u32, out: *mut bool,
-) -> Status {
-    check(m, out, |c| c.is_collapse_ok(h))
+    /// Moves vertex `v` to `position_xyz` (3 doubles); refused on a mesh without positions.
+    edit fn che_mesh_set_position(v, position_xyz: *const f64) {
+        |c| {
+            // SAFETY: the export's contract: NULL or three readable doubles.
+            let p = unsafe { position_arg(position_xyz) }?;
+            c.set_position(v, p.ok_or_else(|| null_argument("position_xyz"))?)
+        }
+    }
+    /// Would `che_mesh_flip_edge(m, e)` succeed? Never modifies the mesh: every view stays
+    /// valid.
+    ask fn che_mesh_is_flip_ok(e) -> bool { |c| c.is_flip_ok(e) }
+    /// Would `che_mesh_collapse_edge(m, h)` succeed? Never modifies the mesh: every view
+    /// stays valid.
+    ask fn che_mesh_is_collapse_ok(h) -> bool { |c| c.is_collapse_ok(h) }
 }
 
 /// Compacts the removed elements away (ids become `h = 3t + i` without holes, edge ids
@@ -142,17 +125,4 @@ exports! { CheMesh;
     count fn che_mesh_num_live_triangles() -> usize { |c| c.num_live_triangles() }
     /// Live edges.
     count fn che_mesh_num_live_edges() -> usize { |c| c.num_live_edges() }
-}
-
-/// Moves vertex `v` to `position_xyz` (3 doubles); refused on a mesh without positions.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn che_mesh_set_position(
-    m: *mut CheMesh, v: u32, position_xyz: *const f64,
-) -> Status {
-    crate::ffi::shapes::edit!(m, std::ptr::null_mut::<()>(), |c| {
-        // SAFETY: the export's contract: NULL or three readable doubles.
-        let p =
-            unsafe { position_arg(position_xyz) }?.ok_or_else(|| null_argument("position_xyz"))?;
-        c.set_position(v, p)
-    })
 }

@@ -5,10 +5,9 @@
 
 use super::{ChfBuildOptions, ChfMesh};
 use crate::chf::Chf;
-use crate::ffi::boundary::{free_handle, level_arg};
+use crate::ffi::boundary::level_arg;
 use crate::ffi::declare::exports;
 use crate::ffi::mesh_arrays::TETRAHEDRA;
-use crate::ffi::shapes::warnings;
 use crate::ffi::shapes::{build, load};
 use crate::ffi::status::Status;
 use std::ffi::c_char;
@@ -69,14 +68,8 @@ pub unsafe extern "C" fn chf_mesh_load_ex(
     load!(out, path, options => crate::io::load::chf_loaded)
 }
 
-/// Frees a mesh; NULL is a no-op. Needs exclusive access.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_free(m: *mut ChfMesh) {
-    // SAFETY: caller contract: NULL or a live handle, freed once.
-    unsafe { free_handle(m) }
-}
-
 exports! { ChfMesh;
+    free fn chf_mesh_free();
     /// Raises or lowers the level (0..3) in place. Ids never change with the level; views
     /// obtained before are invalid afterwards. Needs exclusive access. Runs on every thread of
     /// the machine (large meshes).
@@ -98,23 +91,5 @@ exports! { ChfMesh;
     count fn chf_mesh_num_edges() -> usize { |c| c.num_edges() }
     /// Half-faces: 4 per tetrahedron (half-face `4t + i` is the face opposite local vertex `i`).
     count fn chf_mesh_num_half_faces() -> usize { |c| c.num_half_faces() }
-}
-
-/// How many warnings the reader gave for the file `m` was loaded from (0 for a mesh built
-/// from arrays, and for NULL). O(1).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_num_warnings(m: *const ChfMesh) -> usize {
-    warnings!(m)
-}
-
-/// Warning `i` ("file:line: message"), NUL-terminated, into `buf`, with the buffer rules of
-/// `topomesh_last_error`: `*out_len` receives the capacity needed, NUL included;
-/// `buf == NULL` with `cap == 0` is a size query; a short `buf` receives a truncated text
-/// and the call returns `TOPOMESH_STATUS_BUFFER_TOO_SMALL`. `i` out of range gives
-/// `TOPOMESH_STATUS_OUT_OF_RANGE`.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_warning(
-    m: *const ChfMesh, i: usize, buf: *mut c_char, cap: usize, out_len: *mut usize,
-) -> Status {
-    warnings!(m, i, buf, cap, out_len)
+    warnings fn chf_mesh_num_warnings(), chf_mesh_warning();
 }

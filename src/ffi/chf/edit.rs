@@ -13,7 +13,6 @@
 use super::ChfMesh;
 use crate::ffi::boundary::{collect_garbage, copy_maps, ids_arg, position_arg};
 use crate::ffi::declare::exports;
-use crate::ffi::shapes::edit;
 use crate::ffi::status::Status;
 use crate::util::structure::check_id;
 
@@ -76,29 +75,15 @@ exports! { ChfMesh;
         // SAFETY: the export's contract: NULL or three readable doubles.
         |c| c.check_split_edge(e, unsafe { position_arg(position) }?)
     }
-}
-
-/// Flips interior face `f` (2-3); the three new tetrahedra into `out_tets[3]` (may be
-/// NULL). Refused on the boundary, when the apexes share an edge already, or (with
-/// positions) when the union is not strictly convex.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_flip_23(m: *mut ChfMesh, f: u32, out_tets: *mut u32) -> Status {
-    edit!(m, out_tets.cast::<[u32; 3]>(), |c| c.flip_23(f))
-}
-
-exports! { ChfMesh;
+    /// Flips interior face `f` (2-3); the three new tetrahedra into `out_tets[3]` (may be
+    /// NULL). Refused on the boundary, when the apexes share an edge already, or (with
+    /// positions) when the union is not strictly convex.
+    edit fn chf_mesh_flip_23(f) -> out_tets: u32 as [u32; 3] { |c| c.flip_23(f) }
     /// Would `chf_mesh_flip_23` succeed? Changes nothing.
     check fn chf_mesh_check_flip_23(f) { |c| c.check_flip_23(f) }
-}
-
-/// Flips interior edge `e` with three tetrahedra around it (3-2); the two new tetrahedra
-/// into `out_tets[2]` (may be NULL).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn chf_mesh_flip_32(m: *mut ChfMesh, e: u32, out_tets: *mut u32) -> Status {
-    edit!(m, out_tets.cast::<[u32; 2]>(), |c| c.flip_32(e))
-}
-
-exports! { ChfMesh;
+    /// Flips interior edge `e` with three tetrahedra around it (3-2); the two new tetrahedra
+    /// into `out_tets[2]` (may be NULL).
+    edit fn chf_mesh_flip_32(e) -> out_tets: u32 as [u32; 2] { |c| c.flip_32(e) }
     /// Would `chf_mesh_flip_32` succeed? Changes nothing.
     check fn chf_mesh_check_flip_32(e) { |c| c.check_flip_32(e) }
     /// Collapses half-edge `he` (`3 * hf + j`): its origin merges into its target (id into

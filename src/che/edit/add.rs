@@ -99,29 +99,31 @@ impl Che {
 
     /// A live triangle on the vertices `a`, `b`, `c` (either orientation), if any.
     pub(super) fn triangle_on(&self, a: u32, b: u32, c: u32) -> Option<u32> {
-        self.outgoing(a)
-            .into_iter()
-            .map(crate::che::ids::tri)
-            .find(|&t| {
-                let [x, y, z] = self.triangle_vertices(t);
-                [x, y, z].contains(&b) && [x, y, z].contains(&c)
-            })
+        let mut found = None;
+        self.any_outgoing(a, |h| {
+            let t = crate::che::ids::tri(h);
+            let corners = self.triangle_vertices(t);
+            let on = corners.contains(&b) && corners.contains(&c);
+            found = found.or(on.then_some(t));
+            on
+        });
+        found
     }
 
     /// The boundary half-edge `b -> a` a new half-edge `a -> b` pairs with (`NONE`: none),
     /// or the refusal.
     fn partner(&self, a: u32, b: u32) -> Result<u32> {
         let mut found = NONE;
-        for h in self.outgoing(a) {
-            if self.v[next(h) as usize] == b {
-                return refuse(format!(
-                    "edge {a}-{b} already has a triangle on this side (orientation)"
-                ));
+        let same_side = self.any_outgoing(a, |h| {
+            if self.v[prev(h) as usize] == b {
+                found = prev(h);
             }
-            let p = prev(h);
-            if self.v[p as usize] == b {
-                found = p;
-            }
+            self.v[next(h) as usize] == b
+        });
+        if same_side {
+            return refuse(format!(
+                "edge {a}-{b} already has a triangle on this side (orientation)"
+            ));
         }
         if found != NONE && (self.o[found as usize] != NONE || self.is_flagged(found)) {
             return refuse(format!("edge {a}-{b} would become non-manifold"));

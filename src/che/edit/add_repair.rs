@@ -54,7 +54,7 @@ impl Che {
         let duplicate = self.triangle_on(a, b, c);
         let meets = [0, 1, 2].map(|i| self.meets(corners[i], corners[(i + 1) % 3]));
         let orientation = self.orientation(corners, &meets);
-        let outs = corners.map(|x| self.outgoing(x));
+        let outs = [self.outgoing(a)?, self.outgoing(b)?, self.outgoing(c)?];
         // Each corner's fan may break at its two edges, and the new triangle may be a
         // fan of its own: at most three copies a corner. A non-manifold edge adds an id.
         self.make_room(1, 9, 6)?;
@@ -96,18 +96,21 @@ impl Che {
     fn meets(&self, x: u32, y: u32) -> Meets {
         // Every live vertex has one fan, so its rotation reaches all its triangles, each
         // with one outgoing half-edge of `x`.
-        let mut found = self.outgoing(x).into_iter().filter_map(|h| {
-            if self.v[next(h) as usize] == y {
-                Some(h)
-            } else {
-                let p = prev(h);
-                (self.v[p as usize] == y).then_some(p)
-            }
+        let (mut found, mut n) = ([NONE; 3], 0);
+        self.any_outgoing(x, |h| {
+            let g = match (self.v[next(h) as usize] == y, self.v[prev(h) as usize] == y) {
+                (true, _) => h,
+                (false, true) => prev(h),
+                (false, false) => return false,
+            };
+            found[n] = g;
+            n += 1;
+            n == 3
         });
-        match (found.next(), found.next(), found.next()) {
-            (None, _, _) => Meets::Nothing,
-            (Some(g), None, _) => Meets::One(g),
-            (Some(h), Some(g), None) => Meets::Two(h, g),
+        match n {
+            0 => Meets::Nothing,
+            1 => Meets::One(found[0]),
+            2 => Meets::Two(found[0], found[1]),
             _ => Meets::Many,
         }
     }

@@ -5,6 +5,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{first, next, prev};
 use crate::error::Result;
+use crate::util::alloc::try_with_capacity;
 
 impl Che {
     /// Removes triangle `t`: its half-edges get `V = O = NONE`, its edges that no other
@@ -25,22 +26,25 @@ impl Che {
     pub fn remove_vertex(&mut self, x: u32) -> Result<()> {
         self.edit_with(|c| {
             c.live_vertex(x)?;
-            let outs = c.outgoing(x);
+            let outs = c.outgoing(x)?;
             c.make_room(0, outs.len() + 1, 0)?;
             // All the star goes first, then each neighbour settles once: removing the
             // triangles one at a time could split a neighbour into a copy left isolated.
-            let mut ring: Vec<u32> = outs.iter().map(|&h| c.v[next(h) as usize]).collect();
-            if let Some(&last) = outs.last() {
-                ring.push(c.v[prev(last) as usize]);
+            let ring = c.ring(&outs)?;
+            // The neighbours' outgoing half-edges before, one list after another.
+            let (mut ring_outs, mut ends) =
+                (Vec::new(), try_with_capacity(ring.len(), "the ring")?);
+            for &y in &ring {
+                c.outgoing_into(y, &mut ring_outs)?;
+                ends.push(ring_outs.len());
             }
-            ring.sort_unstable();
-            ring.dedup();
-            let ring_outs: Vec<Vec<u32>> = ring.iter().map(|&y| c.outgoing(y)).collect();
             for &h in &outs {
                 c.unlink_triangle(crate::che::ids::tri(h));
             }
-            for (&y, outs) in ring.iter().zip(&ring_outs) {
-                c.settle(y, outs);
+            let mut from = 0;
+            for (&y, &end) in ring.iter().zip(&ends) {
+                c.settle(y, &ring_outs[from..end]);
+                from = end;
             }
             vh_mut(c)[x as usize] = NONE;
             let st = c.st_mut();
@@ -48,6 +52,17 @@ impl Che {
             st.live_vertices -= 1;
             Ok(())
         })
+    }
+
+    /// The other vertices of the triangles of the outgoing half-edges `outs` of a vertex,
+    /// increasing.
+    fn ring(&self, outs: &[u32]) -> Result<Vec<u32>> {
+        let mut ring = try_with_capacity(outs.len() + 1, "the ring")?;
+        ring.extend(outs.iter().map(|&h| self.v[next(h) as usize]));
+        ring.extend(outs.last().map(|&last| self.v[prev(last) as usize]));
+        ring.sort_unstable();
+        ring.dedup();
+        Ok(ring)
     }
 
     /// [`Che::remove_triangle`] after the checks, room made for 3 vertex copies.

@@ -10,7 +10,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{next, prev};
 use crate::error::Result;
-use crate::util::alloc::try_grow;
+use crate::util::alloc::{try_grow, try_push};
 use glam::DVec3;
 
 impl Che {
@@ -80,14 +80,21 @@ impl Che {
         }
     }
 
-    /// The outgoing half-edges of `x` in rotation order (from `VH`).
-    pub(super) fn outgoing(&self, x: u32) -> Vec<u32> {
-        let mut out = Vec::new();
+    /// The outgoing half-edges of `x` in rotation order (from `VH`), appended to `out`.
+    pub(super) fn outgoing_into(&self, x: u32, out: &mut Vec<u32>) -> Result<()> {
+        let mut grown = Ok(());
         self.any_outgoing(x, |h| {
-            out.push(h);
-            false
+            grown = try_push(out, h, "the star of a vertex");
+            grown.is_err()
         });
-        out
+        grown
+    }
+
+    /// The outgoing half-edges of `x` in rotation order (from `VH`).
+    pub(super) fn outgoing(&self, x: u32) -> Result<Vec<u32>> {
+        let mut out = Vec::new();
+        self.outgoing_into(x, &mut out)?;
+        Ok(out)
     }
 
     /// The outgoing half-edge after `h` in the rotation that starts at `start` (`VH`), or
@@ -141,23 +148,25 @@ impl Che {
     /// Each fan but the first moves to a new copy of `x` (the build splits a vertex whose
     /// triangles form several fans the same way), so every vertex keeps one rotation.
     pub(super) fn settle(&mut self, x: u32, outs: &[u32]) {
-        let live: Vec<u32> = outs
-            .iter()
-            .copied()
-            .filter(|&h| self.v[h as usize] == x)
-            .collect();
-        let starts: Vec<u32> = live
-            .iter()
-            .copied()
-            .filter(|&h| self.o[h as usize] == NONE)
-            .collect();
-        if starts.len() <= 1 {
-            self.fix_vh(x, live.first().copied().unwrap_or(NONE));
+        // A fan starts at an unpaired outgoing half-edge (the rotation's first). Moving
+        // one fan rewrites the vertex of its own half-edges only, none of them a start.
+        let is_start = |c: &Che, h: u32| c.v[h as usize] == x && c.o[h as usize] == NONE;
+        if outs.iter().filter(|&&h| is_start(self, h)).count() <= 1 {
+            let live = outs.iter().copied().find(|&h| self.v[h as usize] == x);
+            self.fix_vh(x, live.unwrap_or(NONE));
             return;
         }
-        vh_mut(self)[x as usize] = starts[0];
-        for &s in &starts[1..] {
-            self.move_fan(x, s);
+        let mut first = true;
+        for &h in outs {
+            if !is_start(self, h) {
+                continue;
+            }
+            if first {
+                vh_mut(self)[x as usize] = h;
+                first = false;
+            } else {
+                self.move_fan(x, h);
+            }
         }
     }
 

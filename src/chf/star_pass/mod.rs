@@ -652,24 +652,14 @@ impl Sorter {
 impl Tally {
     /// What a worker's sums of one round add up to (the face census aside).
     fn from_sums(sums: Sums) -> Tally {
-        let Sums {
-            split_needed,
-            first_split,
-            num_edges,
-            input_edges,
-            non_manifold_edges,
-            non_manifold_edge_examples,
-            multi_fan,
-            ..
-        } = sums;
         Tally {
-            split_needed,
-            first_split,
-            num_edges,
-            input_edges,
-            non_manifold_edges,
-            non_manifold_edge_examples,
-            multi_fan,
+            split_needed: sums.split_needed,
+            first_split: sums.first_split,
+            num_edges: sums.num_edges,
+            input_edges: sums.input_edges,
+            non_manifold_edges: sums.non_manifold_edges,
+            non_manifold_edge_examples: sums.non_manifold_edge_examples,
+            multi_fan: sums.multi_fan,
             census: FaceCensus::default(),
         }
     }

@@ -652,11 +652,14 @@ typedef struct che_memory {
      */
     uint64_t vertex_half_edges;
     /**
-     * `EH` and the canonical-half-edge rank bits, level 2.
+     * `EH` and the canonical-half-edge rank bits, level 2; once edited, also the edge
+     * id of each half-edge and the removed-vertex flags.
      */
     uint64_t edges;
     /**
-     * `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3.
+     * `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3;
+     * once edited, also the boundary half-edges the edits noted and the curves
+     * computed from them.
      */
     uint64_t curves;
     /**

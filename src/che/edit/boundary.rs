@@ -25,7 +25,7 @@ pub(crate) struct BoundaryLog {
 
 impl BoundaryLog {
     pub(crate) fn memory_bytes(&self) -> usize {
-        4 * (self.known.capacity() + self.touched.capacity())
+        4 * (self.known.len() + self.touched.len())
     }
 }
 

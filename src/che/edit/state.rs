@@ -43,8 +43,15 @@ pub(crate) struct Curves {
 }
 
 impl EditState {
-    pub(crate) fn memory_bytes(&self) -> usize {
-        4 * self.edge_of.len() + self.removed_vertex.len() + self.boundary.memory_bytes()
+    /// Bytes of the edge ids and the removed-vertex flags (lengths, as [`crate::che::Memory`]).
+    pub(crate) fn edge_bytes(&self) -> usize {
+        4 * self.edge_of.len() + self.removed_vertex.len()
+    }
+    /// Bytes of the level-3 boundary log and of the curves computed from it.
+    pub(crate) fn curve_bytes(&self) -> usize {
+        let curves = self.curves.get();
+        let computed = curves.map_or(0, |c| c.ch.len() + c.boundary.len() + c.curve.len());
+        self.boundary.memory_bytes() + 4 * computed
     }
 }
 

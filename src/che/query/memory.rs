@@ -13,9 +13,12 @@ macro_rules! memory_fields {
             opposites: $int,
             /// `VH`, level 2.
             vertex_half_edges: $int,
-            /// `EH` and the canonical-half-edge rank bits, level 2.
+            /// `EH` and the canonical-half-edge rank bits, level 2; once edited, also the edge
+            /// id of each half-edge and the removed-vertex flags.
             edges: $int,
-            /// `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3.
+            /// `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3;
+            /// once edited, also the boundary half-edges the edits noted and the curves
+            /// computed from them.
             curves: $int,
             /// The sum of the above: the topology.
             topology: $int,
@@ -55,10 +58,11 @@ impl Che {
             vertex_half_edges: ints(self.vh.len()),
             edges: ints(self.eh.len())
                 + self.edge_bits.memory_bytes()
-                + self.edits().map_or(0, |s| s.memory_bytes()),
+                + self.edits().map_or(0, |s| s.edge_bytes()),
             curves: ints(self.ch.len())
                 + ints(self.curve_of.len())
-                + self.boundary_bits.memory_bytes(),
+                + self.boundary_bits.memory_bytes()
+                + self.edits().map_or(0, |s| s.curve_bytes()),
             positions: std::mem::size_of_val(&self.positions[..]),
             maps: ints(
                 self.vertex_origin.len()

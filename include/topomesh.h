@@ -1669,7 +1669,8 @@ const double *che_mesh_positions(const struct che_mesh *m, size_t *len);
 /**
  * Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
  * vertices, then the origin of each split copy). Materialised on first use when it is the
- * identity; then kept with the mesh.
+ * identity, then kept with the mesh; NULL when that runs out of memory
+ * (`TOPOMESH_STATUS_OUT_OF_MEMORY` in `topomesh_last_error`), as for the next one.
  */
 const uint32_t *che_mesh_vertex_origins(const struct che_mesh *m, size_t *len);
 
@@ -2605,7 +2606,8 @@ const double *chf_mesh_positions(const struct chf_mesh *m, size_t *len);
 /**
  * Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
  * vertices, then the origin of each split copy). Materialised on first use when it is the
- * identity; then kept with the mesh.
+ * identity, then kept with the mesh; NULL when that runs out of memory
+ * (`TOPOMESH_STATUS_OUT_OF_MEMORY` in `topomesh_last_error`), as for the next one.
  */
 const uint32_t *chf_mesh_vertex_origins(const struct chf_mesh *m, size_t *len);
 

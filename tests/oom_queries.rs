@@ -209,6 +209,63 @@ fn che_queries_out_of_memory_give_the_status() {
     }
 }
 
+/// An edited CHE at level 3 computes its curves at the first curve query after an edit:
+/// out of memory there, the status, and the curves once memory is back.
+#[test]
+fn edited_curves_out_of_memory_give_the_status() {
+    let m = che_at(3);
+    // SAFETY: a live handle and local buffers throughout.
+    unsafe {
+        // Every other triangle removed: a boundary of tens of thousands of half-edges.
+        for t in (0..che_mesh_num_triangles(m) as u32).step_by(2) {
+            assert_eq!(che_mesh_remove_triangle(m, t), Status::Ok);
+        }
+        let mut buf = vec![0u32; 1 << 16];
+        let (ptr, cap, mut len) = (buf.as_mut_ptr(), buf.len(), 0);
+        let status = limited(LIMIT_BYTES, || {
+            che_boundary_curve_vertices(m, 0, ptr, cap, &mut len)
+        });
+        assert_out_of_memory(status, "che_boundary_curve_vertices after edits");
+        assert_eq!(
+            che_boundary_curve_vertices(m, 0, ptr, cap, &mut len),
+            Status::Ok
+        );
+        assert!(len >= 3 && che_mesh_num_boundary_curves(m) > 100);
+        assert_eq!(che_mesh_validate(m), Status::Ok);
+        che_mesh_free(m);
+    }
+}
+
+/// The identity origin maps a view materialises: out of memory, NULL with the status; once
+/// memory is back, the identity.
+#[test]
+fn identity_origin_views_out_of_memory_give_the_status() {
+    let (che, chf) = (che_at(2), chf_at(2));
+    // SAFETY: live handles and local out-parameters throughout.
+    unsafe {
+        let mut len = 0;
+        let p = limited(LIMIT_BYTES, || che_mesh_vertex_origins(che, &mut len));
+        assert!(
+            p.is_null() && last_error().starts_with("out of memory: "),
+            "{}",
+            last_error()
+        );
+        let p = limited(LIMIT_BYTES, || chf_mesh_tetrahedron_origins(chf, &mut len));
+        assert!(
+            p.is_null() && last_error().starts_with("out of memory: "),
+            "{}",
+            last_error()
+        );
+        let p = che_mesh_vertex_origins(che, &mut len);
+        let map = std::slice::from_raw_parts(p, len);
+        assert!(len == che_mesh_num_vertices(che) && map.iter().zip(0..).all(|(&a, b)| a == b));
+        let p = chf_mesh_tetrahedron_origins(chf, &mut len);
+        assert!(!p.is_null() && len == chf_mesh_num_tetrahedra(chf));
+        che_mesh_free(che);
+        chf_mesh_free(chf);
+    }
+}
+
 #[test]
 fn chf_queries_out_of_memory_give_the_status() {
     let (low, full) = (chf_at(0), chf_at(3));
@@ -371,4 +428,36 @@ fn every_build_allocation_can_fail() {
         });
     }
     assert!(refused > 40, "only {refused} large requests");
+}
+
+/// The queries of an edited CHE that compute arrays for the call (the summary, the
+/// curves below level 3 and a curve's vertices), every large request refused in turn: each
+/// refusal an out-of-memory error, never a panic nor an abort. (A small grid: the pairing's
+/// coarse buckets, one per vertex up to 2048 whatever the input, stay below the limit.)
+#[test]
+fn edited_che_queries_can_fail() {
+    use topomesh::{BuildOptions, che::Che};
+    let s = topomesh::generate::grid(16, 16);
+    for level in 0..=3 {
+        let mut che = Che::from_triangles(
+            &s.triangles,
+            s.positions.len(),
+            &[],
+            BuildOptions::level(level),
+        )
+        .unwrap();
+        for t in (0..che.num_triangles() as u32).step_by(2) {
+            che.remove_triangle(t).unwrap();
+        }
+        let at = format!("level {level}");
+        let refused = refuse_each(&format!("summary, {at}"), || che.try_summary());
+        assert!(refused > 0, "{at}");
+        refuse_each(&format!("curve starts, {at}"), || {
+            che.try_boundary_curve_starts().map(|s| s.len())
+        });
+        refuse_each(&format!("curve vertices, {at}"), || {
+            che.boundary_curve_vertices(0)
+        });
+        assert!(che.try_boundary_curve_starts().unwrap().len() > 10, "{at}");
+    }
 }

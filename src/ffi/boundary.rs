@@ -370,8 +370,12 @@ pub(crate) fn open_flags_arg(flags: u32) -> Result<crate::levelfile::OpenOptions
 /// The core's origin map, or the identity on `0..n` materialised once in `cell`.
 pub(crate) fn origins<'a>(
     map: Option<&'a [u32]>, cell: &'a OnceLock<Box<[u32]>>, n: usize,
-) -> &'a [u32] {
-    map.unwrap_or_else(|| cell.get_or_init(|| (0..n as u32).collect()))
+) -> Result<&'a [u32]> {
+    if let Some(map) = map.or(cell.get().map(|b| &b[..])) {
+        return Ok(map);
+    }
+    let identity = crate::util::alloc::try_collect(0..n as u32, "the identity origin map")?;
+    Ok(cell.get_or_init(|| identity.into_boxed_slice()))
 }
 
 /// The core structure behind a handle, or a NULL_ARGUMENT error naming `m`.

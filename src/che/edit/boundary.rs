@@ -5,6 +5,8 @@
 
 use crate::NONE;
 use crate::che::Che;
+use crate::error::Result;
+use crate::util::alloc::{try_collect, try_with_capacity};
 
 /// What the next curve computation starts from.
 ///
@@ -73,23 +75,22 @@ impl Che {
 
     /// The boundary half-edges, increasing, and how many half-edges had been noted then: O(B + k log k) for B boundary half-edges and k
     /// noted since the last computation, one O(T) scan when there is none.
-    pub(super) fn boundary_half_edges(&self) -> (Vec<u32>, usize) {
+    pub(super) fn boundary_half_edges(&self) -> Result<(Vec<u32>, usize)> {
         let is_boundary = |h: u32| self.v[h as usize] != NONE && self.o[h as usize] == NONE;
         let log = &self.st().boundary;
         let noted = log.touched.len();
+        let what = "the boundary half-edges";
         if !log.scanned {
-            let all = (0..self.v.len() as u32)
-                .filter(|&h| is_boundary(h))
-                .collect();
-            return (all, noted);
+            let all = (0..self.v.len() as u32).filter(|&h| is_boundary(h));
+            return Ok((try_collect(all, what)?, noted));
         }
-        let mut all = Vec::with_capacity(log.known.len() + log.touched.len());
+        let mut all = try_with_capacity(log.known.len() + log.touched.len(), what)?;
         all.extend_from_slice(&log.known);
         all.extend_from_slice(&log.touched);
         all.sort_unstable();
         all.dedup();
         all.retain(|&h| is_boundary(h));
-        (all, noted)
+        Ok((all, noted))
     }
 
     /// At the end of an operation at level 3: the boundary of computed curves becomes the
@@ -111,8 +112,11 @@ impl Che {
         let log = &st.boundary;
         // Folding costs a merge: past this length its cost is spread over at least as many
         // edits. An unscanned log notes nothing.
-        if log.scanned && log.touched.len() > log.known.len() + 1024 {
-            let (known, _) = self.boundary_half_edges();
+        // Without the memory to fold, the log stays as it is: longer, as correct.
+        if log.scanned
+            && log.touched.len() > log.known.len() + 1024
+            && let Ok((known, _)) = self.boundary_half_edges()
+        {
             let log = &mut self.st_mut().boundary;
             log.known = known;
             log.touched.clear();

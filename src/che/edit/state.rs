@@ -7,7 +7,7 @@ use crate::che::Che;
 use crate::che::ids::next;
 use crate::che::tables::edge_ids;
 use crate::error::Result;
-use crate::util::alloc::try_vec;
+use crate::util::alloc::{or_panic, try_push, try_vec};
 use std::sync::OnceLock;
 
 /// What an edited CHE keeps beside its arrays.
@@ -213,34 +213,46 @@ impl Che {
 
     /// The curves of an edited CHE at level 3, computed on the first request after an edit
     /// in O(B log B + k log k) for B boundary half-edges and k edits since the last one.
+    /// Out of memory, a panic whose payload is the error (see `or_panic`).
     pub(crate) fn edited_curves(&self) -> &Curves {
+        or_panic(self.try_edited_curves())
+    }
+
+    /// [`Che::edited_curves`], out of memory an error.
+    pub(crate) fn try_edited_curves(&self) -> Result<&Curves> {
         let st = self.edits().expect("an edited CHE");
-        st.curves.get_or_init(|| {
-            let (boundary, noted) = self.boundary_half_edges();
-            let mut curve = vec![NONE; boundary.len()];
-            let mut ch = Vec::new();
-            for (i, &h) in boundary.iter().enumerate() {
-                if curve[i] != NONE {
-                    continue;
-                }
-                let c = ch.len() as u32;
-                ch.push(h);
-                let mut g = h;
-                loop {
-                    let r = boundary.binary_search(&g).expect("a boundary half-edge");
-                    curve[r] = c;
-                    g = self.vh[self.v[next(g) as usize] as usize];
-                    if g == h {
-                        break;
-                    }
+        if let Some(curves) = st.curves.get() {
+            return Ok(curves);
+        }
+        let curves = self.computed_curves()?;
+        Ok(st.curves.get_or_init(|| curves))
+    }
+
+    fn computed_curves(&self) -> Result<Curves> {
+        let (boundary, noted) = self.boundary_half_edges()?;
+        let mut curve = try_vec(boundary.len(), NONE, "the curve of each boundary half-edge")?;
+        let mut ch = Vec::new();
+        for (i, &h) in boundary.iter().enumerate() {
+            if curve[i] != NONE {
+                continue;
+            }
+            let c = ch.len() as u32;
+            try_push(&mut ch, h, "the boundary curves")?;
+            let mut g = h;
+            loop {
+                let r = boundary.binary_search(&g).expect("a boundary half-edge");
+                curve[r] = c;
+                g = self.vh[self.v[next(g) as usize] as usize];
+                if g == h {
+                    break;
                 }
             }
-            Curves {
-                ch,
-                boundary,
-                curve,
-                noted,
-            }
+        }
+        Ok(Curves {
+            ch,
+            boundary,
+            curve,
+            noted,
         })
     }
 

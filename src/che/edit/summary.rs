@@ -6,17 +6,17 @@ use crate::che::Che;
 use crate::che::Summary;
 use crate::che::ids::{next, tri};
 use crate::error::{Error, Result};
-use crate::util::alloc::{or_panic, try_vec};
+use crate::util::alloc::{try_collect, try_vec};
 use crate::util::dsu::{BoundaryMarks, Dsu};
 
 impl Che {
-    /// [`Che::summary`] of an edited CHE.
-    pub(crate) fn edited_summary(&self) -> Summary {
+    /// [`Che::try_summary`] of an edited CHE.
+    pub(crate) fn edited_summary(&self) -> Result<Summary> {
         let st = self.edits().expect("an edited CHE");
-        let o = self.opposites_or_computed();
+        let o = self.try_opposites_or_computed()?;
         let n = self.n_vertices;
-        let mut used = or_panic(try_vec(n, false, "the summary's vertex marks"));
-        let mut dsu = or_panic(Dsu::new(n));
+        let mut used = try_vec(n, false, "the summary's vertex marks")?;
+        let mut dsu = Dsu::new(n)?;
         for c in self.v.chunks_exact(3).filter(|c| c[0] != NONE) {
             c.iter().for_each(|&x| used[x as usize] = true);
             dsu.union(c[0], c[1]);
@@ -26,19 +26,19 @@ impl Che {
         let isolated = (st.live_vertices - used.iter().filter(|&&u| u).count()) as u64;
         // Unpaired half-edges by vertex pair: one of a pair is on the boundary, two a seam,
         // more a non-manifold edge.
-        let mut unpaired: Vec<(u32, u32)> = (0..self.v.len())
+        let unpaired = (0..self.v.len())
             .filter(|&h| self.v[h] != NONE && o[h] == NONE)
             .map(|h| {
                 let (a, b) = (self.v[h], self.v[next(h as u32) as usize]);
                 (a.min(b), a.max(b))
-            })
-            .collect();
+            });
+        let mut unpaired = try_collect(unpaired, "the unpaired half-edges")?;
         unpaired.sort_unstable();
         let paired = (0..o.len())
             .filter(|&h| o[h] != NONE && (h as u32) < o[h])
             .count();
         let (mut edges, mut boundary_edges, mut non_manifold_edges) = (paired as u64, 0u64, 0u64);
-        let mut boundary = or_panic(BoundaryMarks::new(n));
+        let mut boundary = BoundaryMarks::new(n)?;
         for group in unpaired.chunk_by(|x, y| x == y) {
             edges += 1;
             match group.len() {
@@ -52,14 +52,11 @@ impl Che {
             }
         }
         let boundary_curves = boundary.components();
-        let mut seam_roots: Vec<u32> = self
-            .seams
-            .iter()
-            .map(|&h| dsu.find(self.v[h as usize]))
-            .collect();
+        let seam_roots = self.seams.iter().map(|&h| dsu.find(self.v[h as usize]));
+        let mut seam_roots = try_collect(seam_roots, "the seams' components")?;
         seam_roots.sort_unstable();
         seam_roots.dedup();
-        Summary {
+        Ok(Summary {
             vertices: st.live_vertices as u64,
             edges,
             triangles: st.live_triangles as u64,
@@ -73,7 +70,7 @@ impl Che {
             non_orientable_components: seam_roots.len() as u64,
             ..Summary::default()
         }
-        .with_genus()
+        .with_genus())
     }
 
     /// [`Che::validate`] of an edited CHE: the invariants over the live elements, plus the
@@ -182,7 +179,7 @@ impl Che {
     }
 
     fn validate_edited_curves(&self) -> Result<()> {
-        let curves = self.edited_curves();
+        let curves = self.try_edited_curves()?;
         let boundary = (0..self.v.len())
             .filter(|&h| self.v[h] != NONE && self.o[h] == NONE)
             .count();

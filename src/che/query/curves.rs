@@ -5,6 +5,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::next;
 use crate::error::{Error, Result};
+use crate::util::alloc::{or_panic, try_collect, try_push, try_vec};
 use std::borrow::Cow;
 
 /// The half-edges of one boundary curve, in order (the interior on the left).
@@ -35,20 +36,26 @@ impl Che {
     /// The first half-edge of every boundary curve, in increasing order. Borrowed at
     /// level 3; O(T) below.
     pub fn boundary_curve_starts(&self) -> Cow<'_, [u32]> {
+        or_panic(self.try_boundary_curve_starts())
+    }
+
+    /// [`Che::boundary_curve_starts`], or an [`ErrorKind::OutOfMemory`](crate::ErrorKind)
+    /// error when the arrays the scan below level 3 needs do not fit.
+    pub fn try_boundary_curve_starts(&self) -> Result<Cow<'_, [u32]>> {
         if self.level >= 3 {
             if self.edits().is_some() {
-                return Cow::Borrowed(&self.edited_curves().ch);
+                return Ok(Cow::Borrowed(&self.try_edited_curves()?.ch));
             }
-            return Cow::Borrowed(&self.ch);
+            return Ok(Cow::Borrowed(&self.ch));
         }
-        let o = self.opposites_or_computed();
-        let mut seen = vec![false; self.v.len()];
+        let o = self.try_opposites_or_computed()?;
+        let mut seen = try_vec(self.v.len(), false, "the boundary half-edges seen")?;
         let mut starts = Vec::new();
         for h in 0..self.v.len() as u32 {
             if o[h as usize] != NONE || seen[h as usize] || self.v[h as usize] == NONE {
                 continue;
             }
-            starts.push(h);
+            try_push(&mut starts, h, "the boundary curves")?;
             let mut g = h;
             loop {
                 seen[g as usize] = true;
@@ -58,7 +65,7 @@ impl Che {
                 }
             }
         }
-        Cow::Owned(starts)
+        Ok(Cow::Owned(starts))
     }
 
     /// The boundary half-edge after `h`, with opposites at hand (any level).
@@ -124,13 +131,14 @@ impl Che {
     /// The vertices of curve `c` (an index into [`Che::boundary_curve_starts`]), in order;
     /// an out-of-range error when there is no curve `c`.
     pub fn boundary_curve_vertices(&self, c: u32) -> Result<Vec<u32>> {
-        let starts = self.boundary_curve_starts();
+        let starts = self.try_boundary_curve_starts()?;
         let &s = starts.get(c as usize).ok_or_else(|| {
             Error::out_of_range(format!(
                 "boundary curve {c} out of range (the mesh has {} curves)",
                 starts.len()
             ))
         })?;
-        Ok(self.boundary_curve(s).map(|h| self.v[h as usize]).collect())
+        let walk = self.walk(self.try_opposites_or_computed()?, s);
+        try_collect(walk.map(|h| self.v[h as usize]), "the curve's vertices")
     }
 }

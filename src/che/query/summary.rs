@@ -55,7 +55,7 @@ impl Che {
     /// arrays it needs (the opposites below level 1, the marks) do not fit.
     pub fn try_summary(&self) -> Result<Summary> {
         if self.edits().is_some() {
-            return Ok(self.edited_summary());
+            return self.edited_summary();
         }
         let r = &self.report;
         let n = self.n_input_vertices;

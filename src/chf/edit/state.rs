@@ -133,11 +133,11 @@ impl Chf {
                 self.vh = vertex_half_faces(self)?.into();
             }
             if self.tet_origin.is_empty() {
-                let ids = (0..self.num_tetrahedra() as u32).collect::<Vec<_>>();
+                let ids = try_collect(0..self.num_tetrahedra() as u32, "the tetrahedron origins")?;
                 self.tet_origin = ids.into();
             }
             if self.vertex_origin.is_empty() {
-                let ids = (0..self.n_vertices as u32).collect::<Vec<_>>();
+                let ids = try_collect(0..self.n_vertices as u32, "the vertex origins")?;
                 self.vertex_origin = ids.into();
             }
             // The explicit ids replace the rank directories of the faces and edges:

@@ -74,14 +74,15 @@ exports! { CheMesh;
     }
     /// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
     /// vertices, then the origin of each split copy). Materialised on first use when it is the
-    /// identity; then kept with the mesh.
+    /// identity, then kept with the mesh; NULL when that runs out of memory
+    /// (`TOPOMESH_STATUS_OUT_OF_MEMORY` in `topomesh_last_error`), as for the next one.
     view fn che_mesh_vertex_origins() -> u32 {
-        |m| Some(origins(m.che.vertex_origins(), &m.vertex_origins, m.che.num_vertices()))
+        |m| Some(origins(m.che.vertex_origins(), &m.vertex_origins, m.che.num_vertices())?)
     }
     /// Structure triangle -> input triangle (`num_triangles` entries; increasing, with gaps
     /// where degenerate triangles were dropped).
     view fn che_mesh_triangle_origins() -> u32 {
-        |m| Some(origins(m.che.triangle_origins(), &m.triangle_origins, m.che.num_triangles()))
+        |m| Some(origins(m.che.triangle_origins(), &m.triangle_origins, m.che.num_triangles())?)
     }
     /// The edge-id directory: one entry per 32 half-edges (`*len` entries, `ceil(3T / 32)`);
     /// the low 32 bits of entry k flag the canonical half-edges among `32k .. 32k + 31`

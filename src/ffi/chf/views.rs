@@ -47,14 +47,15 @@ exports! { ChfMesh;
     }
     /// Structure vertex -> input vertex (`num_vertices` entries; the identity on the input
     /// vertices, then the origin of each split copy). Materialised on first use when it is the
-    /// identity; then kept with the mesh.
+    /// identity, then kept with the mesh; NULL when that runs out of memory
+    /// (`TOPOMESH_STATUS_OUT_OF_MEMORY` in `topomesh_last_error`), as for the next one.
     view fn chf_mesh_vertex_origins() -> u32 {
-        |m| Some(origins(m.chf.vertex_origins(), &m.vertex_origins, m.chf.num_vertices()))
+        |m| Some(origins(m.chf.vertex_origins(), &m.vertex_origins, m.chf.num_vertices())?)
     }
     /// Structure tetrahedron -> input tetrahedron (`num_tetrahedra` entries; increasing, with
     /// gaps where degenerate tetrahedra were dropped). Materialised on first use when it is
     /// the identity.
     view fn chf_mesh_tetrahedron_origins() -> u32 {
-        |m| Some(origins(m.chf.tetrahedron_origins(), &m.tetrahedron_origins, m.chf.num_tetrahedra()))
+        |m| Some(origins(m.chf.tetrahedron_origins(), &m.tetrahedron_origins, m.chf.num_tetrahedra())?)
     }
 }

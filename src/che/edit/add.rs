@@ -104,7 +104,9 @@ impl Che {
             let t = crate::che::ids::tri(h);
             let corners = self.triangle_vertices(t);
             let on = corners.contains(&b) && corners.contains(&c);
-            found = found.or(on.then_some(t));
+            if on {
+                found = Some(t);
+            }
             on
         });
         found

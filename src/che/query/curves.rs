@@ -115,7 +115,12 @@ impl Che {
     /// a curve of L half-edges at level 2, O(T) in all below (a rotation around each
     /// vertex at level 1; `O` computed first at level 0, O(T) time and memory).
     pub fn boundary_curve(&self, start: u32) -> BoundaryWalk<'_> {
-        self.walk(self.opposites_or_computed(), start)
+        or_panic(self.try_boundary_curve(start))
+    }
+
+    /// [`Che::boundary_curve`], out of memory (`O` computed at level 0) an error.
+    pub(crate) fn try_boundary_curve(&self, start: u32) -> Result<BoundaryWalk<'_>> {
+        Ok(self.walk(self.try_opposites_or_computed()?, start))
     }
 
     /// The walk from `start` over the opposites `o`.
@@ -138,7 +143,7 @@ impl Che {
                 starts.len()
             ))
         })?;
-        let walk = self.walk(self.try_opposites_or_computed()?, s);
+        let walk = self.try_boundary_curve(s)?;
         try_collect(walk.map(|h| self.v[h as usize]), "the curve's vertices")
     }
 }

@@ -652,8 +652,9 @@ typedef struct che_memory {
      */
     uint64_t vertex_half_edges;
     /**
-     * `EH` and the canonical-half-edge rank bits, level 2; once edited, also the edge
-     * id of each half-edge and the removed-vertex flags.
+     * `EH` and the canonical-half-edge rank bits, level 2; once edited, `EH`, the
+     * edge id of each half-edge and the removed-vertex flags (the ids replace the
+     * bits until `garbage_collect`).
      */
     uint64_t edges;
     /**

@@ -558,6 +558,34 @@ fn a_never_edited_mesh_keeps_its_memory_and_identity_maps() {
     assert!(maps.edges.iter().enumerate().all(|(i, &x)| x == i as u32));
 }
 
+/// From the first edit the edge ids are explicit, and the edge directory whose ranks
+/// they replace is let go: an edited mesh holds `EH`, an id per half-edge and a flag per
+/// vertex for its edges, and `garbage_collect` brings the directory back (the ranks are
+/// the ids again).
+#[test]
+fn edit_ids_replace_the_edge_directory() {
+    for level in [2, 3] {
+        let mut che = built(&sphere(8, 6), level);
+        let built_edges = che.memory_bytes().edges;
+        let e = (0..che.num_edges() as u32)
+            .find(|&e| che.is_flip_ok(e).unwrap())
+            .unwrap();
+        che.flip_edge(e).unwrap();
+        let explicit = 4 * (che.num_edges() + 3 * che.num_triangles()) + che.num_vertices();
+        assert_eq!(che.memory_bytes().edges, explicit, "level {level}");
+        che.garbage_collect().unwrap();
+        // The directory again, beside the flags the edit state keeps.
+        let flags = che.num_vertices();
+        assert_eq!(
+            che.memory_bytes().edges,
+            built_edges + flags,
+            "level {level}"
+        );
+        assert!(che.edge_rank_directory().is_some());
+        che.validate().unwrap();
+    }
+}
+
 /// Exports, writers and level files lay ids out without holes: while removed elements
 /// wait for garbage collection they are refused with an error saying so (never a panic or
 /// an answer with holes), and they work again after it.

@@ -99,6 +99,9 @@ impl Che {
         if self.level >= 2 && self.st().edge_of.is_empty() && !self.v.is_empty() {
             let ids = edge_ids(&self.o)?;
             self.st_mut().edge_of = ids;
+            // The ids replace the ranks of the edge directory: nothing reads it while
+            // `edge_of` is there, and `garbage_collect` builds it anew.
+            self.edge_bits = Default::default();
         }
         self.add_working_tables()
     }

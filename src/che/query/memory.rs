@@ -13,8 +13,9 @@ macro_rules! memory_fields {
             opposites: $int,
             /// `VH`, level 2.
             vertex_half_edges: $int,
-            /// `EH` and the canonical-half-edge rank bits, level 2; once edited, also the edge
-            /// id of each half-edge and the removed-vertex flags.
+            /// `EH` and the canonical-half-edge rank bits, level 2; once edited, `EH`, the
+            /// edge id of each half-edge and the removed-vertex flags (the ids replace the
+            /// bits until `garbage_collect`).
             edges: $int,
             /// `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3;
             /// once edited, also the boundary half-edges the edits noted and the curves

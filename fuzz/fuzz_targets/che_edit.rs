@@ -1,7 +1,10 @@
-//! Random edit sequences on small built surfaces (damaged ones included): every
-//! operation succeeds or is refused without changing the arrays; the mesh stays valid
-//! after each, and after garbage collection.
+//! Random edit sequences on small built surfaces (damaged ones included, with or without
+//! positions on a coarse grid, level changes between edits): every operation succeeds or
+//! is refused without changing the arrays; the mesh stays valid after each, and after
+//! garbage collection.
 #![no_main]
+
+mod common;
 
 use libfuzzer_sys::fuzz_target;
 use topomesh::{BuildOptions, Che};
@@ -16,13 +19,16 @@ fuzz_target!(|data: &[u8]| {
     if rest.len() < n_ids {
         return;
     }
-    let (ids, ops) = rest.split_at(n_ids);
+    let (ids, rest) = rest.split_at(n_ids);
+    let Some((positions, ops)) = common::grid_points(*head, n_vertices, rest) else {
+        return;
+    };
     let ids: Vec<u32> = ids
         .iter()
         .map(|&b| u32::from(b) % n_vertices as u32)
         .collect();
     let options = BuildOptions::level(level);
-    let Ok(mut che) = Che::from_flat(&ids, n_vertices, &[], options) else {
+    let Ok(mut che) = Che::from_flat(&ids, n_vertices, &positions, options) else {
         return;
     };
     for op in ops.chunks_exact(2) {
@@ -40,8 +46,9 @@ fuzz_target!(|data: &[u8]| {
             che.num_edges(),
             che.num_half_edges(),
         );
-        let r = match op[0] % 10 {
-            0 => che.add_vertex(None).map(drop),
+        let point = (!positions.is_empty()).then(|| common::grid_point([op[1], op[0], op[1] / 5]));
+        let r = match op[0] % 11 {
+            0 => che.add_vertex(point).map(drop),
             1 => {
                 let (a, b) = (id(nv), id(nv) / 2);
                 che.add_triangle(a, b, (a + 1) % (nv as u32).max(1))
@@ -50,11 +57,17 @@ fuzz_target!(|data: &[u8]| {
             2 => che.remove_triangle(id(nt)),
             3 => che.remove_vertex(id(nv)),
             4 => che.flip_edge(id(ne)),
-            5 => che.split_edge(id(ne), None).map(drop),
+            5 => che
+                .split_edge(id(ne), point.filter(|_| op[1] & 1 == 1))
+                .map(drop),
             6 => che.collapse_edge(id(nh)).map(drop),
-            7 => che.split_triangle(id(nt), None).map(drop),
+            7 => che
+                .split_triangle(id(nt), point.filter(|_| op[1] & 1 == 1))
+                .map(drop),
             8 => che.is_flip_ok(id(ne)).map(drop),
-            _ => che.garbage_collect().map(drop),
+            9 => che.garbage_collect().map(drop),
+            // A level change is no edit: it keeps the mesh, or fails without a change.
+            _ => che.build_level(op[1] % 4),
         };
         if r.is_err() {
             let after = (

@@ -3,6 +3,7 @@
 //! aborts and out-of-range ids are not.
 #![allow(dead_code, reason = "each target uses the part it needs")]
 
+use glam::DVec3;
 use topomesh::io::{Format, MeshData, parse};
 use topomesh::{BuildOptions, Che, Chf, chf};
 
@@ -46,4 +47,31 @@ pub fn check_mesh(mesh: &MeshData) {
             chf.validate().expect("a built CHF validates");
         }
     }
+}
+
+/// A point of a coarse grid from three bytes: many coincident, collinear and coplanar
+/// points, the cases geometric checks get wrong; the byte 255 gives a NaN coordinate.
+pub fn grid_point(b: [u8; 3]) -> DVec3 {
+    let c = |x: u8| {
+        if x == 255 {
+            f64::NAN
+        } else {
+            f64::from(x % 5) / 2.0
+        }
+    };
+    DVec3::new(c(b[0]), c(b[1]), c(b[2]))
+}
+
+/// With the top bit of `head` set, `n` grid points taken from the front of `bytes`
+/// (`None`: too few bytes); else no positions. The rest of `bytes` follows.
+pub fn grid_points(head: u8, n: usize, bytes: &[u8]) -> Option<(Vec<DVec3>, &[u8])> {
+    let len = if head & 0x80 != 0 { 3 * n } else { 0 };
+    if bytes.len() < len {
+        return None;
+    }
+    let (coords, rest) = bytes.split_at(len);
+    let points = coords
+        .chunks_exact(3)
+        .map(|c| grid_point([c[0], c[1], c[2]]));
+    Some((points.collect(), rest))
 }

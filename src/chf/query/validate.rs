@@ -155,9 +155,12 @@ impl Chf {
         ensure(p.is_empty() || p.len() == n, || {
             format!("{} positions for {n} vertices", p.len())
         })?;
+        // A copy holds its origin's coordinates bit for bit: a NaN one (the input may
+        // have them; the build warns) equals itself here, as `==` would not have it.
+        let bits = |q: glam::DVec3| q.to_array().map(f64::to_bits);
         for v in n_input..p.len() {
             let x = self.vertex_origin(v as u32) as usize;
-            ensure(p[v] == p[x], || {
+            ensure(bits(p[v]) == bits(p[x]), || {
                 format!("copy {v} is not at its origin {x}'s position")
             })?;
         }
@@ -499,5 +502,23 @@ mod tests {
         let mut c = chf.clone();
         c.boundary = None;
         fails(&c, "level 3");
+    }
+
+    /// A copy's position is its origin's, bit for bit: NaN coordinates (which an input may
+    /// have) included, as the fuzz target of edits found; any other coordinate is caught.
+    #[test]
+    fn a_copy_holds_its_origins_coordinates_bit_for_bit() {
+        let mut c = mesh();
+        let n = c.num_vertices();
+        let at = |v: usize| {
+            let x = c.vertex_origin(v as u32);
+            glam::DVec3::new(f64::NAN, f64::from(x), 0.5)
+        };
+        let mut p: Vec<glam::DVec3> = (0..n).map(at).collect();
+        c.positions = p.clone().into();
+        c.validate().unwrap();
+        p[n - 1].y += 1.0;
+        c.positions = p.into();
+        fails(&c, &format!("copy {} is not at its origin", n - 1));
     }
 }

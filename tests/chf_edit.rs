@@ -691,3 +691,59 @@ fn the_first_edit_frees_the_rank_directories() {
     assert_eq!(chf.tetrahedron_faces(5), faces);
     chf.validate().unwrap();
 }
+
+/// A fold: tetrahedron 0 has a negative determinant, 1 none (flat), 2 a positive one, and
+/// the build keeps the input's side on the tie. Once 2 is removed, a build from scratch
+/// would turn the rest over (its determinants say so); validation and garbage collection
+/// keep the edited side, and the face and edge maps still name the same vertex sets.
+#[test]
+fn garbage_collection_keeps_a_folded_components_side() {
+    let p = DVec3::new;
+    let positions = [
+        p(0.5, 0.0, 1.0),
+        p(0.5, 0.0, 0.0),
+        p(1.5, 1.5, 0.5),
+        p(1.0, 1.0, 1.0),
+        p(1.5, 0.5, 1.5),
+        p(0.0, 1.0, 1.0),
+        p(f64::NAN, 0.0, 0.0),
+    ];
+    let tets = [[5, 1, 3, 2], [5, 4, 3, 2], [5, 1, 2, 0]];
+    for level in 0..=3 {
+        let options = chf::BuildOptions::level(level);
+        let mut chf = Chf::from_tetrahedra(&tets, 7, &positions, options).unwrap();
+        assert_eq!(chf.report().inverted_tetrahedra, 1, "level {level}");
+        chf.remove_tetrahedron(2).unwrap();
+        chf.validate().unwrap();
+        let kept = [0, 1].map(|t| chf.tetrahedron_vertices(t));
+        let faces: Vec<_> = (0..chf.num_faces() as u32)
+            .map(|f| (!chf.is_face_removed(f)).then(|| sorted(chf.face_vertices(f).to_vec())))
+            .collect();
+        let edges: Vec<_> = (0..chf.num_edges() as u32)
+            .map(|e| (!chf.is_edge_removed(e)).then(|| sorted(chf.edge_vertices(e).to_vec())))
+            .collect();
+        let m = chf.garbage_collect().unwrap();
+        chf.validate().unwrap();
+        let new = |x: u32| m.vertices[x as usize];
+        assert_eq!(
+            [0, 1].map(|t| chf.tetrahedron_vertices(t)),
+            kept.map(|q| q.map(new))
+        );
+        assert_eq!(chf.report().inverted_tetrahedra, 1, "level {level}");
+        assert_eq!(chf.report().zero_volume, 1, "level {level}");
+        for (f, old) in faces.into_iter().enumerate() {
+            assert_eq!(old.is_some(), m.faces[f] != NONE, "face {f}");
+            if let Some(old) = old {
+                let now = sorted(chf.face_vertices(m.faces[f]).to_vec());
+                assert_eq!(now, sorted(map_all(&m.vertices, old)), "face {f}");
+            }
+        }
+        for (e, old) in edges.into_iter().enumerate() {
+            assert_eq!(old.is_some(), m.edges[e] != NONE, "edge {e}");
+            if let Some(old) = old {
+                let now = sorted(chf.edge_vertices(m.edges[e]).to_vec());
+                assert_eq!(now, sorted(map_all(&m.vertices, old)), "edge {e}");
+            }
+        }
+    }
+}

@@ -47,6 +47,7 @@ fuzz_target!(|data: &[u8]| {
             che.num_half_edges(),
         );
         let point = (!positions.is_empty()).then(|| common::grid_point([op[1], op[0], op[1] / 5]));
+        let at = point.filter(|_| op[1] & 1 == 1);
         let r = match op[0] % 11 {
             0 => che.add_vertex(point).map(drop),
             1 => {
@@ -57,13 +58,9 @@ fuzz_target!(|data: &[u8]| {
             2 => che.remove_triangle(id(nt)),
             3 => che.remove_vertex(id(nv)),
             4 => che.flip_edge(id(ne)),
-            5 => che
-                .split_edge(id(ne), point.filter(|_| op[1] & 1 == 1))
-                .map(drop),
+            5 => che.split_edge(id(ne), at).map(drop),
             6 => che.collapse_edge(id(nh)).map(drop),
-            7 => che
-                .split_triangle(id(nt), point.filter(|_| op[1] & 1 == 1))
-                .map(drop),
+            7 => che.split_triangle(id(nt), at).map(drop),
             8 => che.is_flip_ok(id(ne)).map(drop),
             9 => che.garbage_collect().map(drop),
             // A level change is no edit: it keeps the mesh, or fails without a change.

@@ -12,7 +12,7 @@ mod split;
 pub(crate) mod stream;
 mod strict;
 
-use self::orient::flipped_id;
+pub(crate) use self::orient::flipped_id;
 pub use self::report::BuildReport;
 use self::soup::Soup;
 use self::strict::Strict;
@@ -38,18 +38,34 @@ pub use stream::SweepLimits;
 /// Largest tetrahedron count whose half-face ids (`4T`) fit below `NONE`.
 pub const MAX_TETRAHEDRA: usize = (u32::MAX as usize) / 4;
 
-/// The pipeline: each step is a function below, in this order.
+/// How the build orients each face-connected component.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Orientation {
+    /// The way most of its determinants agree with (positive volumes on a valid mesh): a
+    /// build from the user's input.
+    ByDeterminants,
+    /// As given where it is consistent, else flipping the fewest tetrahedra; determinants
+    /// only count zero volumes and inversions. A rebuild of an edited CHF's live
+    /// tetrahedra: garbage collection renumbers, it does not turn a component over.
+    AsGiven,
+}
+
+/// A build from the user's input, oriented by the determinants.
 pub(crate) fn build(
     input: Input<'_, 4>, options: BuildOptions, progress: BuildProgress,
 ) -> Result<Chf> {
+    build_oriented(input, options, progress, Orientation::ByDeterminants)
+}
+
+/// The pipeline: each step is a function below, in this order.
+pub(crate) fn build_oriented(
+    input: Input<'_, 4>, options: BuildOptions, progress: BuildProgress, orientation: Orientation,
+) -> Result<Chf> {
     let (mut report, welded) = prepared(input, &options)?;
-    let Input {
-        elements: tets,
-        n_vertices,
-        positions,
-    } = welded;
+    let (tets, n_vertices, positions) = (welded.elements, welded.n_vertices, welded.positions);
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
-    // Steps 1 to 3.
+    // Steps 1 to 3, each component turned the way `orientation` says.
+    let how = (options, orientation);
     progress.at(0.0, "stars and orientation");
     let Oriented {
         mut v,
@@ -61,7 +77,7 @@ pub(crate) fn build(
         tet_origin,
         pairs,
         pass,
-    } = oriented(tets, n_vertices, &positions, options, &mut report)?;
+    } = oriented(tets, n_vertices, &positions, how, &mut report)?;
     let origin_of = |t: u32| tet_origin.get(t);
     non_manifold.sort_unstable();
     // 4. Vertex split, when some star is in several pieces.
@@ -185,12 +201,15 @@ struct Oriented {
 
 /// Steps 1 to 3: the soup, the star pass, and the orientation when some pair needs it.
 fn oriented(
-    tets: Cow<'_, [[u32; 4]]>, n_vertices: usize, positions: &[DVec3], options: BuildOptions,
-    report: &mut BuildReport,
+    tets: Cow<'_, [[u32; 4]]>, n_vertices: usize, positions: &[DVec3],
+    (options, orientation): (BuildOptions, Orientation), report: &mut BuildReport,
 ) -> Result<Oriented> {
     let n_threads = crate::util::par::build_threads(options.threads, tets.len());
     // 1. Soup: range check, degenerate tetrahedra dropped, flips by the determinant.
     let mut soup = soup::soup(tets, n_vertices, positions, report, n_threads)?;
+    if orientation == Orientation::AsGiven {
+        soup.unflip();
+    }
     let tet_origin = OriginMap::from(std::mem::take(&mut soup.tet_origin));
     let origin_of = |t: u32| tet_origin.get(t);
     // 2. The star pass: faces and their pairs, pieces, edges, `VH` and the edge bits.
@@ -215,9 +234,19 @@ fn oriented(
     // otherwise the pairs are the opposites (see `soup.rs`) and the stars are right as found.
     let (o, seams, links) = if !same_direction {
         report.flipped_tetrahedra = soup.flipped;
+        if orientation == Orientation::AsGiven {
+            (report.inverted_tetrahedra, report.inverted_examples) = soup.negative(origin_of);
+        }
         (partner, Vec::new(), Vec::new())
     } else {
-        let oriented = orient_soup(&mut soup, partner, &mut non_manifold, report, origin_of)?;
+        let oriented = orient_soup(
+            &mut soup,
+            partner,
+            &mut non_manifold,
+            orientation,
+            report,
+            origin_of,
+        )?;
         stars = stars::stars(&soup.v, n_vertices, &oriented.seams, pass)?;
         (oriented.o, oriented.seams, oriented.links)
     };
@@ -278,10 +307,11 @@ fn record_faces(
     faces.non_manifold
 }
 
-/// Back to the input's numbering, then orients as given: `non_manifold` follows the flips.
+/// Back to the input's numbering, then orients as given (`orientation` chooses each
+/// component's side): `non_manifold` follows the flips.
 fn orient_soup(
-    soup: &mut Soup, partner: Vec<u32>, non_manifold: &mut [u32], report: &mut BuildReport,
-    origin_of: impl Fn(u32) -> u32,
+    soup: &mut Soup, partner: Vec<u32>, non_manifold: &mut [u32], orientation: Orientation,
+    report: &mut BuildReport, origin_of: impl Fn(u32) -> u32,
 ) -> Result<orient::Oriented> {
     let unflip = |hf: u32| {
         if soup.is_flipped(tet(hf)) {
@@ -301,7 +331,7 @@ fn orient_soup(
         *hf = unflip(*hf);
     }
     soup.unflip();
-    let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign)?;
+    let oriented = orient::orient(&mut soup.v, &input_partner, &soup.sign, orientation)?;
     drop(input_partner);
     let origins = |ts: &[u32]| ts.iter().map(|&t| origin_of(t)).collect();
     let flips = &oriented.flips;
@@ -489,5 +519,44 @@ mod tests {
         let clean = Chf::from_tetrahedra(&tets, 5, &finite, BuildOptions::level(1)).unwrap();
         assert_eq!(clean.report().non_finite_vertices, 0);
         assert!(clean.report().non_finite_vertex_examples.is_empty());
+    }
+
+    /// Two tetrahedra on a shared face, both given with negative determinants: the build
+    /// for users turns the component over, the rebuild of an edited CHF keeps it and counts
+    /// the inversions. On the shortcut (the pairs run opposite as given), and through the
+    /// propagation (a third tetrahedron given the wrong way round: as given, only that
+    /// one turns over).
+    #[test]
+    fn as_given_keeps_each_components_side_and_counts_inversions() {
+        let corners = [
+            [0, 0, 0],
+            [0, 1, 0],
+            [1, 0, 0],
+            [0, 0, 1],
+            [1, 1, 1],
+            [1, -1, 1],
+        ];
+        let positions = corners.map(|c| DVec3::from_array(c.map(f64::from)));
+        let build = |tets: &[[u32; 4]], orientation| {
+            let input = Input::borrowed(tets, 6, &positions);
+            let progress = BuildProgress::default();
+            build_oriented(input, BuildOptions::level(2), progress, orientation).unwrap()
+        };
+        let counts = |chf: &Chf| {
+            let r = chf.report();
+            (r.flipped_tetrahedra, r.inverted_tetrahedra)
+        };
+        let two = [[0, 1, 2, 3], [2, 1, 4, 3]];
+        let three = [[0, 1, 2, 3], [2, 1, 4, 3], [1, 0, 3, 5]];
+        assert_eq!(counts(&build(&two, Orientation::ByDeterminants)), (2, 0));
+        assert_eq!(counts(&build(&three, Orientation::ByDeterminants)), (2, 1));
+        let kept = [two.as_flattened(), &[0, 1, 2, 3, 2, 1, 4, 3, 1, 3, 0, 5]];
+        for (tets, kept) in [&two[..], &three[..]].into_iter().zip(kept) {
+            let chf = build(tets, Orientation::AsGiven);
+            chf.validate().unwrap();
+            assert_eq!(chf.half_face_vertices(), kept);
+            assert_eq!(counts(&chf), (tets.len() - 2, 2));
+            assert_eq!(chf.report().inverted_examples, [0, 1]);
+        }
     }
 }

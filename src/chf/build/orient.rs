@@ -2,7 +2,8 @@
 //! whose shared half-face runs the same way round is flipped (local vertices 1 and 2
 //! swapped). Each component then takes the orientation most of its determinants agree
 //! with (all of them on a valid mesh, so every tetrahedron ends with `det > 0`), or, without
-//! positions, the one that flips fewest tetrahedra.
+//! positions or for a rebuild that keeps each side (`Orientation::AsGiven`), the one that
+//! flips fewest tetrahedra.
 //!
 //! Why not orient each tetrahedron by its own determinant: on a folded or tangled mesh
 //! that leaves neighbours disagreeing, and the faces between them could not be paired. Here
@@ -11,6 +12,7 @@
 //! all (a solid Klein bottle) the conflicting pairs become seams, left unpaired.
 
 use crate::NONE;
+use crate::chf::build::Orientation;
 use crate::chf::build::report::push_example;
 use crate::chf::ids::{same_direction, tet};
 use crate::error::Result;
@@ -46,9 +48,16 @@ pub(crate) fn flipped_id(hf: u32) -> u32 {
 
 /// `partner[hf]` is the other half-face on `hf`'s vertex triple when there are exactly two
 /// (either orientation), else `NONE`. `sign` is empty or holds the sign of each
-/// tetrahedron's determinant. Flips `v` in place.
-pub(crate) fn orient(v: &mut [u32], partner: &[u32], sign: &[i8]) -> Result<Oriented> {
-    let flips = choose_flips::<4>(partner, |h, g| same_direction(v, h, g), sign)?;
+/// tetrahedron's determinant, which chooses each component's side when `orientation` says
+/// so. Flips `v` in place.
+pub(crate) fn orient(
+    v: &mut [u32], partner: &[u32], sign: &[i8], orientation: Orientation,
+) -> Result<Oriented> {
+    let side = match orientation {
+        Orientation::ByDeterminants => sign,
+        Orientation::AsGiven => &[],
+    };
+    let flips = choose_flips::<4>(partner, |h, g| same_direction(v, h, g), side)?;
     let (mut inverted, mut inverted_examples) = (0, Vec::new());
     if !sign.is_empty() {
         for (t, &f) in flips.flipped.iter().enumerate() {

@@ -161,7 +161,20 @@ impl Soup {
     /// Is structure tetrahedron `t` flipped here?
     #[inline]
     pub(crate) fn is_flipped(&self, t: u32) -> bool {
-        !self.sign.is_empty() && self.sign[t as usize] < 0
+        self.flipped != 0 && self.sign[t as usize] < 0
+    }
+
+    /// The tetrahedra of negative determinant as they stand (none once the soup's flips
+    /// are applied): their count and first examples, named by `origin_of`.
+    pub(crate) fn negative(&self, origin_of: impl Fn(u32) -> u32) -> (usize, Vec<u32>) {
+        let (mut count, mut examples) = (0, Vec::new());
+        for (t, &s) in self.sign.iter().enumerate() {
+            if s < 0 && !self.is_flipped(t as u32) {
+                count += 1;
+                push_example(&mut examples, origin_of(t as u32));
+            }
+        }
+        (count, examples)
     }
 
     /// Back to the input's orientation.

@@ -1,13 +1,17 @@
 //! Compaction: the live tetrahedra rebuilt into a CHF of the same level (so `hf = 4t + i`
 //! again, ids are ranks again and the edit state is gone), with old-to-new maps. A fresh
 //! build costs O(T log T), more than moving the arrays down would, and gives the exact
-//! structure a build of the same tetrahedra gives: the same ids, the same answers.
+//! structure a build of the same tetrahedra gives: the same ids, the same answers. That
+//! build keeps each component's side, as the edits left it.
 
 use crate::NONE;
-use crate::chf::ids::{HalfEdge, first, he_face, he_index, local, tet};
+use crate::chf::build::{Orientation, build_oriented, flipped_id};
+use crate::chf::ids::{EDGE, edge_index, first, local, slot_half_edges, slot_of, tet};
 use crate::chf::{BuildOptions, Chf, NO_HALF_EDGE};
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_collect, try_vec};
+use crate::util::input::Input;
+use crate::util::progress::BuildProgress;
 
 /// Old id -> new id after [`Chf::garbage_collect`], `NONE` for a removed element.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -34,42 +38,105 @@ fn compaction(removed: &[bool], what: &str) -> Result<Vec<u32>> {
     )
 }
 
+/// An edited CHF's live tetrahedra and vertices built afresh, with the old-to-new maps.
+pub(crate) struct Compacted {
+    pub chf: Chf,
+    pub vertices: Vec<u32>,
+    pub tetrahedra: Vec<u32>,
+}
+
+impl Compacted {
+    /// Where local vertex `i` of live tetrahedron `t` of `old` went: the same place, or
+    /// swapped with its neighbour where the build turned a component of a non-orientable
+    /// mesh over (`compacted` checks there is nothing else).
+    fn new_local(&self, old: &Chf, t: u32, i: u32) -> u32 {
+        let n = self.tetrahedra[t as usize];
+        let x = self.vertices[old.v[(first(t) + i) as usize] as usize];
+        if self.chf.v[(first(n) + i) as usize] == x {
+            i
+        } else {
+            flipped_id(i)
+        }
+    }
+
+    /// Every live tetrahedron of `old` kept its place and its vertices, turned over at
+    /// most, and no vertex was split.
+    fn one_to_one(&self, old: &Chf) -> bool {
+        let live = |map: &[u32]| map.iter().filter(|&&n| n != NONE).count();
+        if self.chf.num_tetrahedra() != live(&self.tetrahedra)
+            || self.chf.num_vertices() != live(&self.vertices)
+        {
+            return false;
+        }
+        self.tetrahedra.iter().enumerate().all(|(t, &n)| {
+            let t = t as u32;
+            n == NONE
+                || (0..4).all(|i| {
+                    let x = old.v[(first(t) + i) as usize];
+                    self.chf.v[(first(n) + self.new_local(old, t, i)) as usize]
+                        == self.vertices[x as usize]
+                })
+        })
+    }
+
+    /// The new id of half-face `h` of a live tetrahedron of `old`.
+    pub(crate) fn half_face(&self, old: &Chf, h: u32) -> u32 {
+        4 * self.tetrahedra[tet(h) as usize] + self.new_local(old, tet(h), local(h))
+    }
+
+    /// The new id of edge slot `slot` of a live tetrahedron of `old`.
+    fn slot(&self, old: &Chf, slot: u64) -> u64 {
+        let t = (slot / 6) as u32;
+        let [p, q] = EDGE[(slot % 6) as usize].map(|i| self.new_local(old, t, i));
+        6 * u64::from(self.tetrahedra[t as usize]) + u64::from(edge_index(p, q))
+    }
+}
+
 impl Chf {
-    /// The live tetrahedra and vertices built afresh, with the vertex and tetrahedron maps.
-    pub(crate) fn compacted(&self) -> Result<(Chf, Vec<u32>, Vec<u32>)> {
+    /// The live tetrahedra and vertices built afresh, each component oriented as it is
+    /// here, with the vertex and tetrahedron maps.
+    pub(crate) fn compacted(&self) -> Result<Compacted> {
         let s = self.edit.as_ref().expect("an edited CHF");
-        let vmap = compaction(&s.vertex_removed, "the vertex map")?;
-        let tmap = compaction(&s.tet_removed, "the tetrahedron map")?;
+        let vertices = compaction(&s.vertex_removed, "the vertex map")?;
+        let tetrahedra = compaction(&s.tet_removed, "the tetrahedron map")?;
         let mut tets = try_vec(s.live_tetrahedra, [0u32; 4], "the live tetrahedra")?;
-        for (t, &n) in tmap.iter().enumerate() {
+        for (t, &n) in tetrahedra.iter().enumerate() {
             if n != NONE {
                 tets[n as usize] = self
                     .tetrahedron_vertices(t as u32)
-                    .map(|x| vmap[x as usize]);
+                    .map(|x| vertices[x as usize]);
             }
         }
         let positions = if self.positions.is_empty() {
             Vec::new()
         } else {
-            let live = (0..self.n_vertices).filter(|&x| vmap[x] != NONE);
+            let live = (0..self.n_vertices).filter(|&x| vertices[x] != NONE);
             try_collect(live.map(|x| self.positions[x]), "the live positions")?
         };
         let options = BuildOptions {
             threads: 1,
             ..BuildOptions::level(self.level)
         };
-        let fresh = Chf::from_tetrahedra(&tets, s.live_vertices, &positions, options)?;
-        if fresh.num_tetrahedra() != tets.len() || fresh.num_vertices() != s.live_vertices {
+        let input = Input::owned(tets, s.live_vertices, positions);
+        let progress = BuildProgress::default();
+        let chf = build_oriented(input, options, progress, Orientation::AsGiven)?;
+        let out = Compacted {
+            chf,
+            vertices,
+            tetrahedra,
+        };
+        if !out.one_to_one(self) {
             return Err(Error::invalid(
                 "the live tetrahedra did not rebuild one to one (an edit broke an invariant)",
             ));
         }
-        Ok((fresh, vmap, tmap))
+        Ok(out)
     }
 
     /// Compacts an edited CHF: removed elements go, the ids of the rest become those a
-    /// fresh build of the live tetrahedra gives (their order kept), and the maps say where
-    /// each old id went. The origin maps then name the compacted ids. On a CHF never
+    /// fresh build of the live tetrahedra gives (their order kept, and each component on
+    /// the side it is on, where a build from scratch may turn a folded one over to agree
+    /// with most of its determinants), and the maps say where each old id went. The origin maps then name the compacted ids. On a CHF never
     /// edited, identity maps and no change. O(T log T).
     pub fn garbage_collect(&mut self) -> Result<GarbageMaps> {
         if self.edit.is_none() {
@@ -81,18 +148,21 @@ impl Chf {
                 edges: ids(self.num_edges)?,
             });
         }
-        let (fresh, vertices, tetrahedra) = self.compacted()?;
+        let fresh = self.compacted()?;
         let s = self.edit.as_ref().expect("edited");
-        let new_hf = |h: u32| 4 * tetrahedra[tet(h) as usize] + local(h);
         let faces = remap(&s.face_hf, NONE, "the face map", |h| {
-            fresh.face_of(new_hf(h))
+            fresh.chf.face_of(fresh.half_face(self, h))
         })?;
-        let new_he = |he: HalfEdge| 3 * new_hf(he_face(he)) as u64 + he_index(he) as u64;
         let edges = remap(&s.edge_he, NO_HALF_EDGE, "the edge map", |he| {
-            fresh.edge_of(new_he(he))
+            let slot = fresh.slot(self, slot_of(he));
+            fresh.chf.edge_of(slot_half_edges(slot)[0])
         })?;
-        let _ = first;
-        *self = fresh;
+        let Compacted {
+            chf,
+            vertices,
+            tetrahedra,
+        } = fresh;
+        *self = chf;
         Ok(GarbageMaps {
             vertices,
             tetrahedra,

@@ -34,7 +34,8 @@ impl Chf {
             self.validate_edited_tetrahedron(t)?;
         }
         self.validate_edited_ids()?;
-        let (fresh, vmap, tmap) = self.compacted()?;
+        let compacted = self.compacted()?;
+        let fresh = &compacted.chf;
         fresh.validate()?;
         if !(self.non_manifold.is_empty() && self.seams.is_empty() && self.multi_fan.is_empty()) {
             // The build kept half-faces of a non-manifold face or a seam unpaired, or an
@@ -56,26 +57,24 @@ impl Chf {
                 fresh.num_edges()
             )
         })?;
-        for (t, &n) in tmap.iter().enumerate() {
+        for (t, &n) in compacted.tetrahedra.iter().enumerate() {
             if n == NONE {
                 continue;
             }
-            for i in 0..4 {
-                let g = self.o[4 * t + i];
+            for hf in first(t as u32)..first(t as u32) + 4 {
+                let g = self.o[hf as usize];
                 let mapped = if g == NONE {
                     NONE
                 } else {
-                    4 * tmap[tet(g) as usize] + (g & 3)
+                    compacted.half_face(self, g)
                 };
-                ensure(fresh.opposite(4 * n + i as u32) == mapped, || {
-                    format!(
-                        "O[{}] = {g}, a build of the live tetrahedra differs",
-                        4 * t + i
-                    )
-                })?;
+                ensure(
+                    fresh.opposite(compacted.half_face(self, hf)) == mapped,
+                    || format!("O[{hf}] = {g}, a build of the live tetrahedra differs"),
+                )?;
             }
         }
-        for (x, &n) in vmap.iter().enumerate() {
+        for (x, &n) in compacted.vertices.iter().enumerate() {
             ensure(
                 n == NONE || fresh.is_boundary_vertex(n) == self.is_boundary_vertex(x as u32),
                 || format!("VH[{x}] does not say whether vertex {x} is on the boundary"),

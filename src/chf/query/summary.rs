@@ -67,7 +67,7 @@ impl Chf {
     pub fn try_summary(&self) -> Result<Summary> {
         if self.edit.is_some() {
             // The live tetrahedra as a build sees them (O(T log T), like the rest).
-            return self.compacted()?.0.try_summary();
+            return self.compacted()?.chf.try_summary();
         }
         let r = &self.report;
         let n = self.n_input_vertices;

@@ -115,7 +115,8 @@ exports! { ChfMesh;
 }
 
 /// Compacts the mesh: removed elements go, the others take the ids a fresh build of the
-/// live tetrahedra gives. Each map (NULL: not wanted) receives old id -> new id
+/// live tetrahedra gives, each component kept on its side (a build from scratch may turn a
+/// folded one over to agree with most of its determinants). Each map (NULL: not wanted) receives old id -> new id
 /// (`TOPOMESH_NONE` for removed ones) and needs room for the count before the call
 /// (`chf_mesh_num_vertices`, `_tetrahedra`, `_faces`, `_edges`); too little room gives
 /// `TOPOMESH_STATUS_BUFFER_TOO_SMALL`, and maps that overlap

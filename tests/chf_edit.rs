@@ -692,6 +692,62 @@ fn the_first_edit_frees_the_rank_directories() {
     chf.validate().unwrap();
 }
 
+/// Garbage collection, checking that each map takes a live face or edge to one on the same
+/// vertices (mapped) and a removed one to `NONE`, and that the result validates.
+fn collect_checking_maps(chf: &mut Chf) -> GarbageMaps {
+    let sets = |n: usize, removed: &dyn Fn(u32) -> bool, ends: &dyn Fn(u32) -> Vec<u32>| {
+        (0..n as u32)
+            .map(|x| (!removed(x)).then(|| sorted(ends(x))))
+            .collect::<Vec<_>>()
+    };
+    let faces = sets(chf.num_faces(), &|f| chf.is_face_removed(f), &|f| {
+        chf.face_vertices(f).to_vec()
+    });
+    let edges = sets(chf.num_edges(), &|e| chf.is_edge_removed(e), &|e| {
+        chf.edge_vertices(e).to_vec()
+    });
+    let m = chf.garbage_collect().unwrap();
+    chf.validate().unwrap();
+    let check =
+        |what: &str, old: Vec<Option<Vec<u32>>>, map: &[u32], ends: &dyn Fn(u32) -> Vec<u32>| {
+            for (x, old) in old.into_iter().enumerate() {
+                assert_eq!(old.is_some(), map[x] != NONE, "{what} {x}");
+                if let Some(old) = old {
+                    assert_eq!(
+                        sorted(ends(map[x])),
+                        sorted(map_all(&m.vertices, old)),
+                        "{what} {x}"
+                    );
+                }
+            }
+        };
+    check("face", faces, &m.faces, &|f| chf.face_vertices(f).to_vec());
+    check("edge", edges, &m.edges, &|e| chf.edge_vertices(e).to_vec());
+    m
+}
+
+/// Soups of random tetrahedra, non-orientable ones among them (their seams unpaired), with
+/// some tetrahedra removed: the maps of the garbage collection name the same faces and
+/// edges.
+#[test]
+fn garbage_collection_maps_of_damaged_soups() {
+    let (mut seams, mut removed) = (0, 0);
+    for seed in 0..60 {
+        let mut rng = Rng(seed);
+        let tets: Vec<[u32; 4]> = (0..40)
+            .map(|_| [0; 4].map(|_| rng.below(9) as u32))
+            .collect();
+        let mut chf = Chf::from_tetrahedra(&tets, 9, &[], chf::BuildOptions::level(2)).unwrap();
+        seams += chf.report().seam_faces;
+        for _ in 0..10 {
+            let t = rng.below(chf.num_tetrahedra()) as u32;
+            removed += usize::from(chf.remove_tetrahedron(t).is_ok());
+        }
+        collect_checking_maps(&mut chf);
+    }
+    assert!(seams > 0 && removed > 0, "{seams} seams, {removed} removed");
+}
+
 /// A fold: tetrahedron 0 has a negative determinant, 1 none (flat), 2 a positive one, and
 /// the build keeps the input's side on the tie. Once 2 is removed, a build from scratch
 /// would turn the rest over (its determinants say so); validation and garbage collection
@@ -716,14 +772,7 @@ fn garbage_collection_keeps_a_folded_components_side() {
         chf.remove_tetrahedron(2).unwrap();
         chf.validate().unwrap();
         let kept = [0, 1].map(|t| chf.tetrahedron_vertices(t));
-        let faces: Vec<_> = (0..chf.num_faces() as u32)
-            .map(|f| (!chf.is_face_removed(f)).then(|| sorted(chf.face_vertices(f).to_vec())))
-            .collect();
-        let edges: Vec<_> = (0..chf.num_edges() as u32)
-            .map(|e| (!chf.is_edge_removed(e)).then(|| sorted(chf.edge_vertices(e).to_vec())))
-            .collect();
-        let m = chf.garbage_collect().unwrap();
-        chf.validate().unwrap();
+        let m = collect_checking_maps(&mut chf);
         let new = |x: u32| m.vertices[x as usize];
         assert_eq!(
             [0, 1].map(|t| chf.tetrahedron_vertices(t)),
@@ -731,19 +780,5 @@ fn garbage_collection_keeps_a_folded_components_side() {
         );
         assert_eq!(chf.report().inverted_tetrahedra, 1, "level {level}");
         assert_eq!(chf.report().zero_volume, 1, "level {level}");
-        for (f, old) in faces.into_iter().enumerate() {
-            assert_eq!(old.is_some(), m.faces[f] != NONE, "face {f}");
-            if let Some(old) = old {
-                let now = sorted(chf.face_vertices(m.faces[f]).to_vec());
-                assert_eq!(now, sorted(map_all(&m.vertices, old)), "face {f}");
-            }
-        }
-        for (e, old) in edges.into_iter().enumerate() {
-            assert_eq!(old.is_some(), m.edges[e] != NONE, "edge {e}");
-            if let Some(old) = old {
-                let now = sorted(chf.edge_vertices(m.edges[e]).to_vec());
-                assert_eq!(now, sorted(map_all(&m.vertices, old)), "edge {e}");
-            }
-        }
     }
 }

@@ -43,6 +43,9 @@ pub(crate) struct Compacted {
     pub chf: Chf,
     pub vertices: Vec<u32>,
     pub tetrahedra: Vec<u32>,
+    /// Some tetrahedron was turned over (a component that cannot be oriented): the local
+    /// numbering must be looked up.
+    turned: bool,
 }
 
 impl Compacted {
@@ -50,6 +53,9 @@ impl Compacted {
     /// swapped with its neighbour where the build turned a component of a non-orientable
     /// mesh over (`compacted` checks there is nothing else).
     fn new_local(&self, old: &Chf, t: u32, i: u32) -> u32 {
+        if !self.turned {
+            return i;
+        }
         let n = self.tetrahedra[t as usize];
         let x = self.vertices[old.v[(first(t) + i) as usize] as usize];
         if self.chf.v[(first(n) + i) as usize] == x {
@@ -59,24 +65,31 @@ impl Compacted {
         }
     }
 
-    /// Every live tetrahedron of `old` kept its place and its vertices, turned over at
-    /// most, and no vertex was split.
-    fn one_to_one(&self, old: &Chf) -> bool {
+    /// Whether every live tetrahedron of `old` kept its place and its vertices (turned
+    /// over at most, which sets `turned`) and no vertex was split.
+    fn one_to_one(&mut self, old: &Chf) -> bool {
         let live = |map: &[u32]| map.iter().filter(|&&n| n != NONE).count();
         if self.chf.num_tetrahedra() != live(&self.tetrahedra)
             || self.chf.num_vertices() != live(&self.vertices)
         {
             return false;
         }
-        self.tetrahedra.iter().enumerate().all(|(t, &n)| {
-            let t = t as u32;
-            n == NONE
-                || (0..4).all(|i| {
-                    let x = old.v[(first(t) + i) as usize];
-                    self.chf.v[(first(n) + self.new_local(old, t, i)) as usize]
-                        == self.vertices[x as usize]
-                })
-        })
+        for (t, &n) in self.tetrahedra.iter().enumerate() {
+            if n == NONE {
+                continue;
+            }
+            let q = old
+                .tetrahedron_vertices(t as u32)
+                .map(|x| self.vertices[x as usize]);
+            let now = &self.chf.v[first(n) as usize..][..4];
+            if now != q {
+                if now != [q[0], q[2], q[1], q[3]] {
+                    return false;
+                }
+                self.turned = true;
+            }
+        }
+        true
     }
 
     /// The new id of half-face `h` of a live tetrahedron of `old`.
@@ -120,10 +133,11 @@ impl Chf {
         let input = Input::owned(tets, s.live_vertices, positions);
         let progress = BuildProgress::default();
         let chf = build_oriented(input, options, progress, Orientation::AsGiven)?;
-        let out = Compacted {
+        let mut out = Compacted {
             chf,
             vertices,
             tetrahedra,
+            turned: false,
         };
         if !out.one_to_one(self) {
             return Err(Error::invalid(
@@ -161,6 +175,7 @@ impl Chf {
             chf,
             vertices,
             tetrahedra,
+            ..
         } = fresh;
         *self = chf;
         Ok(GarbageMaps {
@@ -181,4 +196,39 @@ fn remap<T: Copy + PartialEq>(
         old.iter().map(|&x| if x == gone { NONE } else { new(x) }),
         what,
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A rebuild that turned tetrahedra over (local vertices 1 and 2 swapped): each
+    /// half-face maps to the one opposite the same vertex, each edge slot to the one on
+    /// the same two vertices; anything else than a swap is refused.
+    #[test]
+    fn maps_follow_a_turned_tetrahedron() {
+        let options = BuildOptions::level(2);
+        let build = |tets: &[[u32; 4]]| Chf::from_tetrahedra(tets, 5, &[], options).unwrap();
+        let old = build(&[[0, 1, 2, 3], [4, 1, 2, 3]]);
+        let turned = build(&[[0, 2, 1, 3], [4, 2, 1, 3]]);
+        let mut c = Compacted {
+            chf: turned,
+            vertices: (0..5).collect(),
+            tetrahedra: vec![0, 1],
+            turned: false,
+        };
+        assert!(c.one_to_one(&old) && c.turned);
+        for h in 0..8 {
+            assert_eq!(c.chf.v[c.half_face(&old, h) as usize], old.v[h as usize]);
+        }
+        let ends = |chf: &Chf, s: u64| {
+            let [p, q] = EDGE[(s % 6) as usize].map(|i| chf.v[(4 * (s / 6) as u32 + i) as usize]);
+            [p.min(q), p.max(q)]
+        };
+        for s in 0..12 {
+            assert_eq!(ends(&c.chf, c.slot(&old, s)), ends(&old, s));
+        }
+        c.chf = build(&[[0, 1, 3, 2], [4, 1, 2, 3]]);
+        assert!(!c.one_to_one(&old));
+    }
 }

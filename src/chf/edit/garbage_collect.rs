@@ -150,8 +150,9 @@ impl Chf {
     /// Compacts an edited CHF: removed elements go, the ids of the rest become those a
     /// fresh build of the live tetrahedra gives (their order kept, and each component on
     /// the side it is on, where a build from scratch may turn a folded one over to agree
-    /// with most of its determinants), and the maps say where each old id went. The origin maps then name the compacted ids. On a CHF never
-    /// edited, identity maps and no change. O(T log T).
+    /// with most of its determinants), and the maps say where each old id went. The origin
+    /// maps then name the compacted ids. On a CHF never edited, identity maps and no
+    /// change. O(T log T).
     pub fn garbage_collect(&mut self) -> Result<GarbageMaps> {
         if self.edit.is_none() {
             let ids = |n: usize| try_collect(0..n as u32, "the identity map");

@@ -9,6 +9,7 @@
 use super::format::{self, Elem, Entry, HEADER_BYTES, Header, Kind};
 use super::{Mode, OpenOptions, Verify};
 use crate::error::{Error, Result};
+use crate::util::pages;
 use crate::util::store::Store;
 use bytemuck::Pod;
 use memmap2::Mmap;
@@ -261,14 +262,14 @@ impl LevelFile {
     /// The elements of section `e` in a vector of their own, as `T`s of `width` file
     /// elements each, reserved fallibly (the file's length bounds their number).
     fn elements<T: Pod>(&self, e: &Entry, width: usize) -> Result<Vec<T>> {
-        let mut out = Vec::new();
-        out.try_reserve_exact(e.count as usize / width)
-            .map_err(|_| {
-                Error::too_large(format!(
-                    "section {}: {} elements do not fit in memory",
-                    e.name, e.count
-                ))
-            })?;
+        // On huge pages where the kernel has them: a loaded file is written fresh, and
+        // with small pages a page fault every 4 KiB is a large share of reading it.
+        let mut out = pages::with_capacity(e.count as usize / width, &e.name).map_err(|_| {
+            Error::too_large(format!(
+                "section {}: {} elements do not fit in memory",
+                e.name, e.count
+            ))
+        })?;
         let word = e.elem.size() as usize;
         let mut take = |b: &[u8]| match bytemuck::try_cast_slice::<u8, T>(b) {
             Ok(xs) if cfg!(target_endian = "little") => out.extend_from_slice(xs),

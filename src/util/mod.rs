@@ -1,5 +1,5 @@
 //! Helpers below both structures: build options and size checks, orientation, origin
-//! maps, the accessors both structures share, CSR arrays, threads, huge pages, rank
+//! maps, the accessors both structures share, CSR arrays, threads, huge pages, prefetches, rank
 //! directories, union-find, small id lists, closing the holes of dropped elements, the
 //! build input (borrowed or handed over), the weld
 //! of nearly equal vertices, and the build reports' example lists.
@@ -19,6 +19,7 @@ pub(crate) mod origin;
 pub(crate) mod pages;
 pub(crate) mod panics;
 pub(crate) mod par;
+pub(crate) mod prefetch;
 pub mod progress;
 pub(crate) mod rank;
 pub(crate) mod rank_directory;

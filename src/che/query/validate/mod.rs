@@ -174,8 +174,7 @@ impl Che {
                 self.num_edges
             ));
         }
-        let bits = &self.edge_bits;
-        if sweep::edge_directory_holds(o, &self.eh, |h| bits.get(h), |h| bits.rank(h)) {
+        if sweep::edge_directory_holds(o, &self.eh, self.edge_bits.entries()) {
             return Ok(());
         }
         broken(

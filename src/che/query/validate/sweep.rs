@@ -1,22 +1,29 @@
 //! Whole-mesh passes that answer only "valid or not" for the pairs of `O`, the rotations
 //! from `VH` and the edge directory. They are what a full open of a level file pays on a
 //! valid file, so they are written for the memory system: arrays read in order where the
-//! invariant allows it, each pair checked once, and several rotations walked at once so
-//! that their cache misses overlap instead of waiting one after another. They name no
-//! element: on a failure the per-element checks of `validate` run and name the first.
+//! invariant allows it, each pair checked once, several rotations walked at once so that
+//! their cache misses overlap instead of waiting one after another, and the far reads
+//! (a partner, a rotation's next triangle) prefetched: a prefetch retires at once, where a
+//! load that misses holds up every instruction behind it. They name no element: on a
+//! failure the per-element checks of `validate` run and name the first.
 
 use crate::NONE;
 use crate::che::ids::{next, prev};
-use crate::che::tables::is_canonical;
 use crate::util::par::{planned_threads, run_all};
+use crate::util::prefetch::prefetch;
+use crate::util::rank_directory::SPAN;
 use std::ops::Range;
 
-/// `f` on contiguous parts of `0..n`, one per thread the machine runs; the sum of the
-/// answers, or `None` when one part has none.
-fn sum_over_parts(n: usize, f: impl Fn(Range<usize>) -> Option<usize> + Sync) -> Option<usize> {
+/// Contiguous parts of `0..n`, one per thread the machine runs.
+fn parts(n: usize) -> Vec<Range<usize>> {
     let part = n.div_ceil(planned_threads(0, n).max(1)).max(1);
-    let parts: Vec<_> = (0..n).step_by(part).map(|a| a..(a + part).min(n)).collect();
-    run_all(parts, f).into_iter().sum()
+    (0..n).step_by(part).map(|a| a..(a + part).min(n)).collect()
+}
+
+/// `f` on the [`parts`] of `0..n`, each on a thread; the sum of the answers, or `None`
+/// when one part has none.
+fn sum_over_parts(n: usize, f: impl Fn(Range<usize>) -> Option<usize> + Sync) -> Option<usize> {
+    run_all(parts(n), f).into_iter().sum()
 }
 
 /// The live canonical half-edges (the edges), when every `O[h]` pairs `h` with a live
@@ -30,7 +37,13 @@ fn sum_over_parts(n: usize, f: impl Fn(Range<usize>) -> Option<usize> + Sync) ->
 pub(super) fn pairs_hold(v: &[u32], o: &[u32]) -> Option<usize> {
     sum_over_parts(o.len(), |hs| {
         let mut edges = 0;
+        let end = hs.end;
         for h in hs {
+            if h + PAIRS_AHEAD < end {
+                let g = o[h + PAIRS_AHEAD] as usize;
+                prefetch(o, g);
+                prefetch(v, g);
+            }
             let (g, live) = (o[h], v[h] != NONE);
             if g == NONE {
                 edges += usize::from(live);
@@ -52,9 +65,13 @@ pub(super) fn pairs_hold(v: &[u32], o: &[u32]) -> Option<usize> {
     })
 }
 
+/// How far ahead of its check a pair's partner is prefetched, in half-edges: far enough
+/// for the line to arrive first, near enough to stay in cache until then.
+const PAIRS_AHEAD: usize = 96;
+
 /// Rotations walked at once by one thread: enough independent misses to keep the memory
-/// system busy, few enough to stay in registers.
-const LANES: usize = 16;
+/// system busy while each lane's next triangle is fetched.
+const LANES: usize = 32;
 
 /// Whether the rotations from `VH` meet `live` outgoing half-edges in all, each `VH[x]`
 /// starting at `x`. With `O` an involution on matching edges (checked before), a rotation
@@ -96,6 +113,8 @@ fn rotation_steps(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<
                 return None;
             }
             let around = o[prev(cur[lane]) as usize];
+            // The lane's next step reads `around`'s triangle, after the other lanes' steps.
+            prefetch(o, around as usize);
             cur[lane] = if around == start[lane] { NONE } else { around };
         }
         if !busy {
@@ -119,31 +138,53 @@ pub(super) fn triangles_hold(v: &[u32], n: usize) -> bool {
     .is_some()
 }
 
-/// Whether the edge directory (`flagged`, `rank`) flags exactly the canonical half-edges
-/// and `EH` lists them in increasing order (edge `e` is the `e`-th), for an `EH` as long as
-/// the directory has flags (checked before): passes in order over parts of `O`, each
-/// starting at the rank of its first half-edge.
-pub(super) fn edge_directory_holds(
-    o: &[u32], eh: &[u32], flagged: impl Fn(usize) -> bool + Sync,
-    rank: impl Fn(usize) -> usize + Sync,
-) -> bool {
-    sum_over_parts(o.len(), |hs| {
-        let mut e = rank(hs.start);
-        for h in hs {
-            let canonical = is_canonical(o, h);
-            if flagged(h) != canonical {
-                return None;
-            }
-            if canonical {
-                if eh.get(e) != Some(&(h as u32)) {
-                    return None;
-                }
-                e += 1;
-            }
+/// Whether the edge directory (its `entries`: flags in the low half, the rank before them
+/// in the high half) flags exactly the canonical half-edges of `o`, each rank counts the
+/// flags before it, and `EH` (as many entries as the directory has flags, checked before)
+/// lists them in increasing order: edge `e` is the `e`-th. An entry at a time: the
+/// canonical half-edges of its span as a mask, compared with its flags, then its set bits
+/// with `EH` from its rank on, with no branch on whether a half-edge is canonical (a coin
+/// toss, which a branch predictor loses half the time). Each part of the entries checks
+/// its ranks from its first; the parts' ranks then chain from 0 to the length of `EH`.
+pub(super) fn edge_directory_holds(o: &[u32], eh: &[u32], entries: &[u64]) -> bool {
+    if entries.len() != o.len().div_ceil(SPAN) {
+        return false;
+    }
+    let ranks = run_all(parts(entries.len()), |ks| {
+        let first = entries.get(ks.start).map_or(0, |&d| (d >> 32) as usize);
+        ks.into_iter()
+            .try_fold(first, |e, k| entry_holds(o, eh, entries[k], k * SPAN, e))
+            .map(|end| (first, end))
+    });
+    let mut e = 0;
+    for part in ranks {
+        match part {
+            Some((first, end)) if first == e => e = end,
+            _ => return false,
         }
-        Some(0)
-    })
-    .is_some()
+    }
+    e == eh.len()
+}
+
+/// The rank after directory entry `d`, whose span of `O` starts at `base`, when its rank is
+/// `e`, its flags are the canonical half-edges of the span and `EH` lists them from `e` on.
+fn entry_holds(o: &[u32], eh: &[u32], d: u64, base: usize, e: usize) -> Option<usize> {
+    let span = &o[base..(base + SPAN).min(o.len())];
+    let mask = span.iter().enumerate().fold(0u32, |m, (i, &g)| {
+        m | u32::from(((base + i) as u32) < g) << i
+    });
+    if mask != d as u32 || (d >> 32) as usize != e {
+        return None;
+    }
+    let mut left = mask;
+    let n = mask.count_ones() as usize;
+    for &h in eh.get(e..e + n)? {
+        if h as usize != base + left.trailing_zeros() as usize {
+            return None;
+        }
+        left &= left - 1;
+    }
+    Some(e + n)
 }
 
 #[cfg(test)]
@@ -218,11 +259,26 @@ mod tests {
             let (nh, nv) = (base.v.len(), base.n_vertices);
             for _ in 0..500 {
                 let mut c = base.clone();
-                match rng.below(5) {
+                match rng.below(6) {
                     0 => rng.corrupt(c.v.to_mut("test").unwrap(), nv),
                     1 => rng.corrupt(c.o.to_mut("test").unwrap(), nh),
                     2 => rng.corrupt(c.vh.to_mut("test").unwrap(), nh),
                     3 => rng.corrupt(c.eh.to_mut("test").unwrap(), nh),
+                    4 => {
+                        // One rank of the directory off by one, as a file opened trusted
+                        // can hold: the flags and `EH` are right.
+                        let mut entries = c.edge_bits.entries().to_vec();
+                        let k = rng.below(entries.len());
+                        let up = rng.below(2) == 0 || entries[k] >> 32 == 0;
+                        entries[k] = if up {
+                            entries[k] + (1 << 32)
+                        } else {
+                            entries[k] - (1 << 32)
+                        };
+                        let (n, ones) = (nh, c.edge_bits.ones());
+                        c.edge_bits =
+                            RankDirectory::from_entries_trusted(entries.into(), n, ones).unwrap();
+                    }
                     _ => {
                         // Two flags of the directory moved: its count stays EH's.
                         let (a, b) = (rng.below(nh), rng.below(nh));
@@ -248,7 +304,7 @@ mod tests {
                 let covered = rotations_cover(&c.v, &c.o, &c.vh, nh);
                 assert_eq!(covered, c.first_vh_violation().unwrap().is_none());
                 let bits = &c.edge_bits;
-                let listed = edge_directory_holds(&c.o, &c.eh, |h| bits.get(h), |h| bits.rank(h));
+                let listed = edge_directory_holds(&c.o, &c.eh, bits.entries());
                 assert_eq!(listed, c.first_edge_violation().is_none());
                 assert_eq!(
                     c.validate().is_ok(),

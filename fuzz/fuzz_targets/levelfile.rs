@@ -44,7 +44,8 @@ fn reseal(b: &mut [u8]) {
     b[40..44].copy_from_slice(&crc.to_le_bytes());
 }
 
-/// A file of this process's own (libFuzzer may run several processes).
+/// A file of this process's own (libFuzzer may run several processes), removed at the end
+/// of each input: libFuzzer ends a process without unwinding, so nothing later would.
 fn scratch(ext: &str) -> PathBuf {
     std::env::temp_dir().join(format!("topomesh-fuzz-{}.{ext}", std::process::id()))
 }
@@ -116,6 +117,7 @@ fuzz_target!(|data: &[u8]| {
         {
             che_queries(&che);
         }
+        let _ = std::fs::remove_file(&path);
     } else {
         let path = scratch("chf");
         std::fs::write(&path, &bytes).unwrap();
@@ -129,5 +131,6 @@ fuzz_target!(|data: &[u8]| {
         {
             chf_queries(&chf);
         }
+        let _ = std::fs::remove_file(&path);
     }
 });

@@ -1,5 +1,5 @@
 //! The TetGen reader (a `.node` and an `.ele` file) on arbitrary bytes: the input is split
-//! at its first NUL byte into the two files, written to a temporary folder, and read by
+//! at its first NUL byte into the two files, written beside each other, and read by
 //! path, as TetGen meshes are only read from paths.
 #![no_main]
 
@@ -7,15 +7,12 @@ mod common;
 
 use libfuzzer_sys::fuzz_target;
 use std::path::PathBuf;
-use std::sync::OnceLock;
 
-fn dir() -> &'static PathBuf {
-    static DIR: OnceLock<PathBuf> = OnceLock::new();
-    DIR.get_or_init(|| {
-        let dir = std::env::temp_dir().join(format!("topomesh-fuzz-tetgen-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).expect("a temporary folder");
-        dir
-    })
+/// The stem of this process's own two files (libFuzzer may run several processes), removed
+/// at the end of each input: libFuzzer ends a process without unwinding, so nothing later
+/// would.
+fn stem() -> PathBuf {
+    std::env::temp_dir().join(format!("topomesh-fuzz-tetgen-{}", std::process::id()))
 }
 
 fuzz_target!(|data: &[u8]| {
@@ -23,10 +20,12 @@ fuzz_target!(|data: &[u8]| {
         Some(i) => (&data[..i], &data[i + 1..]),
         None => (data, &[][..]),
     };
-    let stem = dir().join("fuzz");
-    std::fs::write(stem.with_extension("node"), node).expect("write .node");
-    std::fs::write(stem.with_extension("ele"), ele).expect("write .ele");
-    if let Ok(mesh) = topomesh::io::read(&stem.with_extension("node")) {
+    let (node_path, ele_path) = (stem().with_extension("node"), stem().with_extension("ele"));
+    std::fs::write(&node_path, node).expect("write .node");
+    std::fs::write(&ele_path, ele).expect("write .ele");
+    if let Ok(mesh) = topomesh::io::read(&node_path) {
         common::check_mesh(&mesh);
     }
+    let _ = std::fs::remove_file(&node_path);
+    let _ = std::fs::remove_file(&ele_path);
 });

@@ -9,8 +9,10 @@
 
 use crate::NONE;
 use crate::che::ids::{next, prev};
+use crate::che::tables::is_canonical;
 use crate::util::par::{planned_threads, run_all};
 use crate::util::prefetch::prefetch;
+use crate::util::rank::try_for_each_one;
 use crate::util::rank_directory::SPAN;
 use std::ops::Range;
 
@@ -169,21 +171,18 @@ pub(super) fn edge_directory_holds(o: &[u32], eh: &[u32], entries: &[u64]) -> bo
 /// The rank after directory entry `d`, whose span of `O` starts at `base`, when its rank is
 /// `e`, its flags are the canonical half-edges of the span and `EH` lists them from `e` on.
 fn entry_holds(o: &[u32], eh: &[u32], d: u64, base: usize, e: usize) -> Option<usize> {
-    let span = &o[base..(base + SPAN).min(o.len())];
-    let mask = span.iter().enumerate().fold(0u32, |m, (i, &g)| {
-        m | u32::from(((base + i) as u32) < g) << i
-    });
+    let mask = (base..(base + SPAN).min(o.len()))
+        .fold(0u32, |m, h| m | u32::from(is_canonical(o, h)) << (h - base));
     if mask != d as u32 || (d >> 32) as usize != e {
         return None;
     }
-    let mut left = mask;
     let n = mask.count_ones() as usize;
-    for &h in eh.get(e..e + n)? {
-        if h as usize != base + left.trailing_zeros() as usize {
-            return None;
-        }
-        left &= left - 1;
-    }
+    let mut listed = eh.get(e..e + n)?.iter();
+    try_for_each_one(u64::from(mask), base, |h| match listed.next() {
+        Some(&x) if x as usize == h => Ok(()),
+        _ => Err(()),
+    })
+    .ok()?;
     Some(e + n)
 }
 

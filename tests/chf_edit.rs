@@ -686,7 +686,9 @@ fn the_first_edit_frees_the_rank_directories() {
     let after = chf.memory_bytes();
     let (t, v) = (chf.num_tetrahedra(), chf.num_vertices());
     let face_ids = 4 * (4 * t + chf.num_faces());
-    let edge_ids = 4 * 6 * t + 8 * chf.num_edges() + t + v;
+    // The removed marks: a bit per tetrahedron and per vertex, in 64-bit words.
+    let marks = 8 * (t.div_ceil(64) + v.div_ceil(64));
+    let edge_ids = 4 * 6 * t + 8 * chf.num_edges() + marks;
     assert_eq!((after.faces, after.edges), (face_ids, edge_ids));
     assert_eq!(chf.tetrahedron_faces(5), faces);
     chf.validate().unwrap();

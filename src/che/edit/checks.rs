@@ -42,7 +42,7 @@ impl Che {
     /// Is vertex `x` removed (until [`Che::garbage_collect`])? `false` out of range.
     pub fn is_vertex_removed(&self, x: u32) -> bool {
         self.edits()
-            .and_then(|s| s.removed_vertex.get(x as usize).copied())
+            .and_then(|s| s.removed_vertex.get(x as usize))
             .unwrap_or(false)
     }
     /// Is triangle `t` removed? `false` out of range.

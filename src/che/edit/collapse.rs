@@ -80,7 +80,7 @@ impl Che {
         self.set_vh(a, out_a, ends_interior);
         vh_mut(self)[b as usize] = NONE;
         let st = self.st_mut();
-        st.removed_vertex[b as usize] = true;
+        st.removed_vertex.set(b as usize);
         st.live_vertices -= 1;
         a
     }

@@ -10,7 +10,7 @@ use crate::che::Che;
 use crate::che::build::level2::{self, Spare};
 use crate::che::tables::is_canonical;
 use crate::error::Result;
-use crate::util::alloc::{try_resize, try_vec, try_with_capacity};
+use crate::util::alloc::{try_vec, try_with_capacity};
 use crate::util::origin::OriginMap;
 use std::borrow::Cow;
 
@@ -184,8 +184,8 @@ impl Che {
             }
             return Ok(());
         }
-        let removed = self.edits().map_or(&[][..], |st| &st.removed_vertex[..]);
-        let vkept = (0..nv).map(|x| !removed.get(x).is_some_and(|&r| r));
+        let removed = self.edits().map(|st| &st.removed_vertex);
+        let vkept = (0..nv).map(|x| removed.is_none_or(|r| r.get(x) != Some(true)));
         let new_nv = ranks(&mut vmap, vkept);
         ranks(&mut tmap, self.v.chunks_exact(3).map(|c| c[0] != NONE));
         // Level 0 stores no `O`: the live one is computed for the edge map.
@@ -299,13 +299,8 @@ impl Che {
         st.changed = false;
         st.curves = Default::default();
         st.boundary = Default::default();
-        st.removed_vertex.clear();
-        try_resize(
-            &mut st.removed_vertex,
-            self.n_vertices,
-            false,
-            "the removed-vertex flags",
-        )?;
+        st.removed_vertex
+            .reset(self.n_vertices, "the removed-vertex flags")?;
         st.live_vertices = self.n_vertices;
         st.live_triangles = self.v.len() / 3;
         st.live_edges = self.num_edges;

@@ -48,7 +48,7 @@ impl Che {
             }
             vh_mut(c)[x as usize] = NONE;
             let st = c.st_mut();
-            st.removed_vertex[x as usize] = true;
+            st.removed_vertex.set(x as usize);
             st.live_vertices -= 1;
             Ok(())
         })

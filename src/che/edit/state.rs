@@ -8,6 +8,7 @@ use crate::che::ids::next;
 use crate::che::tables::edge_ids;
 use crate::error::Result;
 use crate::util::alloc::{or_panic, try_push, try_vec};
+use crate::util::marks::Marks;
 use std::sync::OnceLock;
 
 /// What an edited CHE keeps beside its arrays.
@@ -17,7 +18,7 @@ pub(crate) struct EditState {
     /// the ranks of the edge directory are the ids (right after garbage collection).
     pub(crate) edge_of: Vec<u32>,
     /// The removed vertices (an isolated vertex is not removed).
-    pub(crate) removed_vertex: Vec<bool>,
+    pub(crate) removed_vertex: Marks,
     pub(crate) live_vertices: usize,
     pub(crate) live_triangles: usize,
     pub(crate) live_edges: usize,
@@ -45,7 +46,7 @@ pub(crate) struct Curves {
 impl EditState {
     /// Bytes of the edge ids and the removed-vertex flags (lengths, as [`crate::che::Memory`]).
     pub(crate) fn edge_bytes(&self) -> usize {
-        4 * self.edge_of.len() + self.removed_vertex.len()
+        4 * self.edge_of.len() + self.removed_vertex.memory_bytes()
     }
     /// Bytes of the level-3 boundary log and of the curves computed from it.
     pub(crate) fn curve_bytes(&self) -> usize {
@@ -87,7 +88,7 @@ impl Che {
         super::arrays::promote(self)?;
         if self.edit.is_none() {
             let st = EditState {
-                removed_vertex: try_vec(self.n_vertices, false, "the removed-vertex flags")?,
+                removed_vertex: Marks::clear_of(self.n_vertices, "the removed-vertex flags")?,
                 live_vertices: self.n_vertices,
                 live_triangles: self.num_triangles(),
                 live_edges: self.num_edges,

@@ -99,7 +99,7 @@ impl Che {
                 return broken(format!("triangle {t} is degenerate ({c:?})"));
             }
         }
-        let live_v = st.removed_vertex.iter().filter(|&&r| !r).count();
+        let live_v = st.removed_vertex.count_clear();
         if live_t != st.live_triangles || live_v != st.live_vertices || nt * 3 != self.v.len() {
             return broken(format!(
                 "{live_t} live triangles and {live_v} live vertices, {} and {} counted",

@@ -200,7 +200,7 @@ impl Che {
         try_grow(o_mut(self), h, "the opposites O")?;
         try_grow(vh_mut(self), n, "the vertex half-edges VH")?;
         let st = self.st_mut();
-        try_grow(&mut st.removed_vertex, n, "the removed-vertex flags")?;
+        st.removed_vertex.try_grow(n, "the removed-vertex flags")?;
         if self.level >= 2 {
             try_grow(&mut self.st_mut().edge_of, h, "the edge ids")?;
             try_grow(eh_mut(self), e, "the edge half-edges EH")?;

@@ -364,7 +364,7 @@ impl Chf {
                 arrays::set_opposite(self, hf, hf);
             }
             let s = self.edit.as_mut().expect("edited");
-            s.tet_removed[t as usize] = true;
+            s.tet_removed.set(t as usize);
             s.live_tetrahedra -= 1;
             s.slot_edge[6 * t as usize..6 * t as usize + 6].fill(NONE);
         }

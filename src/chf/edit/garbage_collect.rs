@@ -11,6 +11,7 @@ use crate::chf::{BuildOptions, Chf, NO_HALF_EDGE};
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_collect, try_vec};
 use crate::util::input::Input;
+use crate::util::marks::Marks;
 use crate::util::progress::BuildProgress;
 
 /// Old id -> new id after [`Chf::garbage_collect`], `NONE` for a removed element.
@@ -23,10 +24,10 @@ pub struct GarbageMaps {
 }
 
 /// `0, 1, ...` over the live ids, `NONE` over the removed ones.
-fn compaction(removed: &[bool], what: &str) -> Result<Vec<u32>> {
+fn compaction(removed: &Marks, what: &str) -> Result<Vec<u32>> {
     let mut next = 0u32;
     try_collect(
-        removed.iter().map(|&r| {
+        removed.iter().map(|r| {
             if r {
                 NONE
             } else {

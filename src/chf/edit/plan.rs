@@ -405,7 +405,7 @@ impl Chf {
         for &x in &plan.retire {
             let s = self.edit.as_mut().expect("edited");
             if !s.vertex_removed[x as usize] {
-                s.vertex_removed[x as usize] = true;
+                s.vertex_removed.set(x as usize);
                 s.live_vertices -= 1;
             }
             arrays::set_vertex_half_face(self, x, NONE);
@@ -446,12 +446,12 @@ impl Chf {
         )?;
         try_grow(self.o.to_mut("the opposites O")?, 4 * n, "the opposites O")?;
         let s = self.edit_state()?;
-        try_grow(&mut s.tet_removed, n, "the tetrahedron marks")?;
+        s.tet_removed.try_grow(n, "the tetrahedron marks")?;
         try_grow(&mut s.hf_face, 4 * n, "the face ids")?;
         try_grow(&mut s.slot_edge, 6 * n, "the edge ids")?;
         try_grow(&mut s.face_hf, 4 * n, "the face half-faces")?;
         try_grow(&mut s.edge_he, 6 * n, "the edge half-edges")?;
-        try_grow(&mut s.vertex_removed, 1, "the vertex marks")?;
+        s.vertex_removed.try_grow(1, "the vertex marks")?;
         if self.level >= 3 {
             let s = self.edit.as_mut().expect("edited");
             s.boundary.settle(&self.o)?;
@@ -472,7 +472,11 @@ impl Chf {
     fn detach(&mut self, remove: &[u32]) -> Vec<(u32, u32)> {
         let mut reps = Vec::new();
         for &t in remove {
-            self.edit.as_mut().expect("edited").tet_removed[t as usize] = true;
+            self.edit
+                .as_mut()
+                .expect("edited")
+                .tet_removed
+                .set(t as usize);
         }
         for &t in remove {
             for hf in first(t)..first(t) + 4 {

@@ -62,7 +62,7 @@ impl Chf {
             return;
         };
         // The check refuses a removed tetrahedron, whose ids are gone.
-        if s.tet_removed.get(t as usize).is_none_or(|&removed| removed) {
+        if s.tet_removed.get(t as usize).is_none_or(|removed| removed) {
             return;
         }
         let mut sum = 0;

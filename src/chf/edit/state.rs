@@ -8,12 +8,13 @@ use crate::chf::ids::{HalfEdge, NO_HALF_EDGE, face_cycle, he_face, slot_of};
 use crate::chf::query::view::Need;
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_collect, try_vec};
+use crate::util::marks::Marks;
 
 /// Marks and explicit ids of an edited CHF.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct EditState {
-    pub tet_removed: Vec<bool>,
-    pub vertex_removed: Vec<bool>,
+    pub tet_removed: Marks,
+    pub vertex_removed: Marks,
     /// Face id of each half-face (`NONE` on removed tetrahedra).
     pub hf_face: Vec<u32>,
     /// Canonical half-face of each face id, `NONE` once removed.
@@ -52,8 +53,8 @@ impl EditState {
             for_each_fan_slot(&chf.v, &view.o, he, |s| slot_edge[s as usize] = e as u32);
         }
         Ok(EditState {
-            tet_removed: try_vec(n_hf / 4, false, "the tetrahedron marks")?,
-            vertex_removed: try_vec(chf.n_vertices, false, "the vertex marks")?,
+            tet_removed: Marks::clear_of(n_hf / 4, "the tetrahedron marks")?,
+            vertex_removed: Marks::clear_of(chf.n_vertices, "the vertex marks")?,
             hf_face,
             face_hf,
             slot_edge,
@@ -76,8 +77,8 @@ impl EditState {
     pub(crate) fn edge_bytes(&self) -> usize {
         4 * self.slot_edge.len()
             + std::mem::size_of_val(&self.edge_he[..])
-            + self.tet_removed.len()
-            + self.vertex_removed.len()
+            + self.tet_removed.memory_bytes()
+            + self.vertex_removed.memory_bytes()
     }
 }
 
@@ -160,13 +161,13 @@ impl Chf {
     pub fn is_tetrahedron_removed(&self, t: u32) -> bool {
         self.edit
             .as_ref()
-            .is_some_and(|s| s.tet_removed.get(t as usize).copied().unwrap_or(false))
+            .is_some_and(|s| s.tet_removed.get(t as usize).unwrap_or(false))
     }
     /// Is vertex `v` removed?
     pub fn is_vertex_removed(&self, v: u32) -> bool {
         self.edit
             .as_ref()
-            .is_some_and(|s| s.vertex_removed.get(v as usize).copied().unwrap_or(false))
+            .is_some_and(|s| s.vertex_removed.get(v as usize).unwrap_or(false))
     }
     /// Is face `f` removed?
     pub fn is_face_removed(&self, f: u32) -> bool {

@@ -120,7 +120,7 @@ pub(super) fn sorted3(mut t: [u32; 3]) -> [u32; 3] {
     t
 }
 
-fn refuse(what: String) -> Error {
+fn refuse(what: std::fmt::Arguments) -> Error {
     Error::invalid(format!("refused: {what}"))
 }
 
@@ -161,7 +161,7 @@ impl Chf {
         self.check_fans(&after, &new_o, &stars)?;
         for &x in &plan.retire {
             if stars.iter().any(|(y, s)| *y == x && !s.is_empty()) {
-                return Err(refuse(format!("vertex {x} would keep tetrahedra")));
+                return Err(refuse(format_args!("vertex {x} would keep tetrahedra")));
             }
         }
         Ok((new_o, stars))
@@ -176,7 +176,7 @@ impl Chf {
                 if self.non_manifold.binary_search(&hf).is_ok()
                     || self.seams.binary_search(&hf).is_ok()
                 {
-                    return Err(refuse(format!(
+                    return Err(refuse(format_args!(
                         "tetrahedron {t} has a non-manifold or seam face"
                     )));
                 }
@@ -194,11 +194,11 @@ impl Chf {
                     self.check_live_vertex(x)?;
                 }
                 if q[..i].contains(&x) {
-                    return Err(refuse(format!("tetrahedron {q:?} repeats vertex {x}")));
+                    return Err(refuse(format_args!("tetrahedron {q:?} repeats vertex {x}")));
                 }
             }
             if positions && orient_of(*q, at) <= 0.0 {
-                return Err(refuse(format!(
+                return Err(refuse(format_args!(
                     "tetrahedron {q:?} would be inverted or flat"
                 )));
             }
@@ -224,7 +224,7 @@ impl Chf {
                 let Some(&s) = holders.first() else { continue };
                 let sv = after.verts(s);
                 if key.iter().chain([&q[i as usize]]).all(|x| sv.contains(x)) {
-                    return Err(refuse(format!("tetrahedron {q:?} already exists")));
+                    return Err(refuse(format_args!("tetrahedron {q:?} already exists")));
                 }
                 let j = fourth(sv, key);
                 let g = 4 * s + j;
@@ -232,10 +232,12 @@ impl Chf {
                     && (self.non_manifold.binary_search(&g).is_ok()
                         || self.seams.binary_search(&g).is_ok())
                 {
-                    return Err(refuse(format!("face {key:?} is non-manifold or a seam")));
+                    return Err(refuse(format_args!(
+                        "face {key:?} is non-manifold or a seam"
+                    )));
                 }
                 if same_way(c, cycle(sv, j)) {
-                    return Err(refuse(format!(
+                    return Err(refuse(format_args!(
                         "face {key:?} would be held by two tetrahedra running the same way"
                     )));
                 }
@@ -330,7 +332,7 @@ impl Chf {
     fn check_fans(&self, after: &After, new_o: &[u32], stars: &[(u32, Vec<u32>)]) -> Result<()> {
         for (a, b) in touched_pairs(self, after.plan) {
             if self.multi_fan.iter().any(|m| (m.a, m.b) == (a, b)) {
-                return Err(refuse(format!("edge ({a}, {b}) carries several fans")));
+                return Err(refuse(format_args!("edge ({a}, {b}) carries several fans")));
             }
             let fan = fan_of(stars, a, b, |t| after.verts(t));
             self.one_piece(after, new_o, &fan, &[a, b], || {
@@ -712,5 +714,12 @@ pub(crate) fn replaced(mut q: [u32; 4], from: u32, to: u32) -> [u32; 4] {
 pub(crate) fn context(
     op: &'static str, what: impl FnOnce() -> String,
 ) -> impl FnOnce(Error) -> Error {
-    move |e| Error::new(e.kind, format!("{op} of {}: {}", what(), e.message))
+    move |e| {
+        let what = what();
+        let mut m = String::with_capacity(op.len() + what.len() + e.message.len() + 6);
+        for part in [op, " of ", &what, ": ", &e.message] {
+            m.push_str(part);
+        }
+        Error::new(e.kind, m)
+    }
 }

@@ -173,14 +173,22 @@ impl Chf {
     }
 
     /// Refuses a new interior edge or face that exists already outside the cavity (it
-    /// would be held twice). One that holds the new vertex cannot exist.
+    /// would be held twice). One that holds the new vertex cannot exist. Each is looked
+    /// for once, though several new tetrahedra hold it (the apexes' edge of a 2-3 flip is
+    /// in all three): the search walks a star or a fan, the cost of the whole check.
     fn check_new_interior(&self, plan: &Plan, old: &[[u32; 4]], view: &View) -> Result<()> {
         let fresh = plan.new_vertex.map(|_| self.n_vertices as u32);
         let old_pair = |a: u32, b: u32| old.iter().any(|q| q.contains(&a) && q.contains(&b));
+        let mut edges = Small::<(u32, u32), { 6 * MAX_ADD }>::new();
+        let mut faces = Small::<[u32; 3], { 4 * MAX_ADD }>::new();
         for q in &plan.add {
             for (a, b) in pairs(*q) {
                 let new_edge = Some(a) != fresh && Some(b) != fresh && !old_pair(a, b);
-                if new_edge && self.star_holds(view, plan, a, &[b]) {
+                if !new_edge || edges.as_slice().contains(&(a, b)) {
+                    continue;
+                }
+                edges.push((a, b));
+                if self.star_holds(view, plan, a, &[b]) {
                     return Err(Error::non_manifold(format!(
                         "refused: edge ({a}, {b}) exists already"
                     )));
@@ -195,9 +203,11 @@ impl Chf {
                     || new_pair(key[0], key[1])
                     || new_pair(key[0], key[2])
                     || new_pair(key[1], key[2])
+                    || faces.as_slice().contains(&key)
                 {
                     continue;
                 }
+                faces.push(key);
                 if self.fan_holds(view, plan, old, key) {
                     return Err(Error::non_manifold(format!(
                         "refused: face {key:?} would have three tetrahedra"

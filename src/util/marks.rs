@@ -64,7 +64,7 @@ impl Marks {
 
     /// The marks in order.
     pub(crate) fn iter(&self) -> impl Iterator<Item = bool> + '_ {
-        (0..self.len).map(|i| self.words[i / 64] >> (i % 64) & 1 == 1)
+        (0..self.len).map(|i| self[i])
     }
 
     /// How many marks are clear.

@@ -1,8 +1,8 @@
 //! Helpers below both structures: build options and size checks, orientation, origin
 //! maps, the accessors both structures share, CSR arrays, threads, huge pages, prefetches,
-//! rank directories, marks (one bit per element), union-find, small id lists, closing the holes of dropped elements,
-//! the build input (borrowed or handed over), the weld of nearly equal vertices, and the
-//! build reports' example lists.
+//! rank directories, marks (one bit per element), union-find, small id lists, closing the
+//! holes of dropped elements, the build input (borrowed or handed over), the weld of
+//! nearly equal vertices, and the build reports' example lists.
 
 #[allow(dead_code)]
 pub(crate) mod alloc;

@@ -184,8 +184,7 @@ impl Che {
             }
             return Ok(());
         }
-        let removed = self.edits().map(|st| &st.removed_vertex);
-        let vkept = (0..nv).map(|x| removed.is_none_or(|r| r.get(x) != Some(true)));
+        let vkept = (0..nv as u32).map(|x| !self.is_vertex_removed(x));
         let new_nv = ranks(&mut vmap, vkept);
         ranks(&mut tmap, self.v.chunks_exact(3).map(|c| c[0] != NONE));
         // Level 0 stores no `O`: the live one is computed for the edge map.

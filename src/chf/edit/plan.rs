@@ -473,12 +473,9 @@ impl Chf {
     /// through a surviving twin, with that twin.
     fn detach(&mut self, remove: &[u32]) -> Vec<(u32, u32)> {
         let mut reps = Vec::new();
+        let s = self.edit.as_mut().expect("edited");
         for &t in remove {
-            self.edit
-                .as_mut()
-                .expect("edited")
-                .tet_removed
-                .set(t as usize);
+            s.tet_removed.set(t as usize);
         }
         for &t in remove {
             for hf in first(t)..first(t) + 4 {

@@ -1,7 +1,7 @@
 //! A new tetrahedron over existing vertices, paired with the boundary half-faces it
 //! matches.
 
-use super::plan::{Plan, context};
+use super::plan::{Corners, Plan, context};
 use crate::chf::Chf;
 use crate::chf::geometry::orient_of;
 use crate::error::Result;
@@ -31,11 +31,7 @@ impl Chf {
     /// reason) when a face would have three tetrahedra or two running the same way, a
     /// vertex star or an edge fan would fall apart, or it is flat. O(the stars of `q`).
     pub fn add_tetrahedron(&mut self, q: [u32; 4]) -> Result<u32> {
-        let ids = self.run_op(
-            "add_tetrahedron",
-            || format!("{q:?}"),
-            |c| c.plan_add_tetrahedron(q),
-        )?;
+        let ids = self.run_op("add_tetrahedron", Corners(q), |c| c.plan_add_tetrahedron(q))?;
         Ok(ids[0])
     }
 
@@ -43,7 +39,7 @@ impl Chf {
     pub fn check_add_tetrahedron(&self, q: [u32; 4]) -> Result<()> {
         let plan = self.plan_add_tetrahedron(q)?;
         self.check_plan(&plan)
-            .map_err(context("add_tetrahedron", || format!("{q:?}")))
+            .map_err(context("add_tetrahedron", Corners(q)))
     }
 }
 

@@ -1,7 +1,7 @@
 //! Edge collapse: the origin of a half-edge merges into its target, under the link
 //! condition (with the boundary closed by a virtual vertex, so that it also holds there).
 
-use super::plan::{Plan, context, replaced};
+use super::plan::{Named, Plan, context, replaced};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::HalfEdge;
@@ -106,7 +106,7 @@ impl Chf {
     /// condition fails (with the simplex that breaks it), or, with positions, when a
     /// tetrahedron would invert. O(the stars of both ends).
     pub fn collapse_edge(&mut self, he: HalfEdge) -> Result<u32> {
-        let what = || format!("half-edge {he}");
+        let what = Named("half-edge", he);
         let plan = self
             .plan_collapse_edge(he)
             .map_err(context("collapse_edge", what))?;
@@ -117,10 +117,8 @@ impl Chf {
 
     /// Would [`Chf::collapse_edge`] succeed? Changes nothing.
     pub fn check_collapse_edge(&self, he: HalfEdge) -> Result<()> {
-        self.check_op(
-            "collapse_edge",
-            || format!("half-edge {he}"),
-            |c| c.plan_collapse_edge(he),
-        )
+        self.check_op("collapse_edge", Named("half-edge", he), |c| {
+            c.plan_collapse_edge(he)
+        })
     }
 }

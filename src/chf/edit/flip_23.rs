@@ -1,11 +1,11 @@
 //! The 2-3 flip: the two tetrahedra of an interior face become three around the edge
 //! joining their apexes.
 
-use super::plan::{Plan, replaced};
+use super::plan::{Named, Plan, refuse, replaced};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::{local, tet};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 impl Chf {
     pub(super) fn plan_flip_23(&self, f: u32) -> Result<Plan> {
@@ -13,9 +13,7 @@ impl Chf {
         let hf = self.face_half_face(f);
         let g = self.opposite(hf);
         if g == NONE {
-            return Err(Error::invalid(format!(
-                "refused: face {f} is on the boundary"
-            )));
+            return Err(refuse(format_args!("face {f} is on the boundary")));
         }
         let q = self.tetrahedron_vertices(tet(hf));
         let apex = self.tetrahedron_vertices(tet(g))[local(g) as usize];
@@ -34,12 +32,16 @@ impl Chf {
     /// positions, when the union of the two tetrahedra is not strictly convex there (a
     /// new tetrahedron would be flat or inverted). O(1) stars.
     pub fn flip_23(&mut self, f: u32) -> Result<[u32; 3]> {
-        let ids = self.run_op("flip_23", || format!("face {f}"), |c| c.plan_flip_23(f))?;
+        let ids = self.run_op("flip_23", Named("face", u64::from(f)), |c| {
+            c.plan_flip_23(f)
+        })?;
         Ok([ids[0], ids[1], ids[2]])
     }
 
     /// Would [`Chf::flip_23`] succeed? Changes nothing.
     pub fn check_flip_23(&self, f: u32) -> Result<()> {
-        self.check_op("flip_23", || format!("face {f}"), |c| c.plan_flip_23(f))
+        self.check_op("flip_23", Named("face", u64::from(f)), |c| {
+            c.plan_flip_23(f)
+        })
     }
 }

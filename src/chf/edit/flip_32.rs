@@ -1,25 +1,23 @@
 //! The 3-2 flip: the three tetrahedra around an interior edge become two sharing the
 //! triangle of their ring.
 
-use super::plan::{Plan, replaced};
+use super::plan::{Named, Plan, refuse, replaced};
 use crate::chf::Chf;
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 impl Chf {
     pub(super) fn plan_flip_32(&self, e: u32) -> Result<Plan> {
         self.check_live_edge(e)?;
         if self.is_boundary_edge(e) {
-            return Err(Error::invalid(format!(
-                "refused: edge {e} is on the boundary"
-            )));
+            return Err(refuse(format_args!("edge {e} is on the boundary")));
         }
         // Most edges have more than three: the walk stops at the fourth.
         let mut around = self.edge_tetrahedra(e);
         let ring: Vec<u32> = around.by_ref().take(3).collect();
         if ring.len() != 3 || around.next().is_some() {
             let more = if ring.len() == 3 { "more than " } else { "" };
-            return Err(Error::invalid(format!(
-                "refused: edge {e} has {more}{} tetrahedra around it, not 3",
+            return Err(refuse(format_args!(
+                "edge {e} has {more}{} tetrahedra around it, not 3",
                 ring.len()
             )));
         }
@@ -43,12 +41,16 @@ impl Chf {
     /// tetrahedra. Refused on a boundary edge, another number of tetrahedra, an existing
     /// ring triangle, or, with positions, a union not strictly convex. O(1) stars.
     pub fn flip_32(&mut self, e: u32) -> Result<[u32; 2]> {
-        let ids = self.run_op("flip_32", || format!("edge {e}"), |c| c.plan_flip_32(e))?;
+        let ids = self.run_op("flip_32", Named("edge", u64::from(e)), |c| {
+            c.plan_flip_32(e)
+        })?;
         Ok([ids[0], ids[1]])
     }
 
     /// Would [`Chf::flip_32`] succeed? Changes nothing.
     pub fn check_flip_32(&self, e: u32) -> Result<()> {
-        self.check_op("flip_32", || format!("edge {e}"), |c| c.plan_flip_32(e))
+        self.check_op("flip_32", Named("edge", u64::from(e)), |c| {
+            c.plan_flip_32(e)
+        })
     }
 }

@@ -13,6 +13,7 @@ use crate::chf::query::star::Star;
 use crate::chf::query::view::{Need, View};
 use crate::error::{Error, Result};
 use glam::DVec3;
+use std::fmt::Write;
 
 /// What an operation does, before it is checked.
 #[derive(Clone, Debug, Default)]
@@ -120,8 +121,39 @@ pub(super) fn sorted3(mut t: [u32; 3]) -> [u32; 3] {
     t
 }
 
-fn refuse(what: std::fmt::Arguments) -> Error {
-    Error::invalid(format!("refused: {what}"))
+/// Room for the words of most refusals, so that writing them grows no string: a storm of
+/// checks is mostly refusals.
+const REFUSAL_WORDS: usize = 96;
+
+/// A refusal of kind `InvalidInput`: `refused: ` and `what`.
+pub(super) fn refuse(what: std::fmt::Arguments) -> Error {
+    let mut m = String::with_capacity(REFUSAL_WORDS);
+    m.push_str("refused: ");
+    let _ = m.write_fmt(what);
+    Error::invalid(m)
+}
+
+/// What an operation works on, as its refusal names it (`face 12`); a pair of words and
+/// a number until a refusal writes them.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Named(pub &'static str, pub u64);
+
+impl std::fmt::Display for Named {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(f, "{} {}", self.0, self.1)
+    }
+}
+
+/// The corners of a tetrahedron as a refusal names them, `[a, b, c, d]` (the words of
+/// `{:?}`, without the list formatter's machinery).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Corners(pub [u32; 4]);
+
+impl std::fmt::Display for Corners {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        let [a, b, c, d] = self.0;
+        write!(f, "[{a}, {b}, {c}, {d}]")
+    }
 }
 
 impl Chf {
@@ -194,12 +226,16 @@ impl Chf {
                     self.check_live_vertex(x)?;
                 }
                 if q[..i].contains(&x) {
-                    return Err(refuse(format_args!("tetrahedron {q:?} repeats vertex {x}")));
+                    return Err(refuse(format_args!(
+                        "tetrahedron {} repeats vertex {x}",
+                        Corners(*q)
+                    )));
                 }
             }
             if positions && orient_of(*q, at) <= 0.0 {
                 return Err(refuse(format_args!(
-                    "tetrahedron {q:?} would be inverted or flat"
+                    "tetrahedron {} would be inverted or flat",
+                    Corners(*q)
                 )));
             }
         }
@@ -224,7 +260,10 @@ impl Chf {
                 let Some(&s) = holders.first() else { continue };
                 let sv = after.verts(s);
                 if key.iter().chain([&q[i as usize]]).all(|x| sv.contains(x)) {
-                    return Err(refuse(format_args!("tetrahedron {q:?} already exists")));
+                    return Err(refuse(format_args!(
+                        "tetrahedron {} already exists",
+                        Corners(q)
+                    )));
                 }
                 let j = fourth(sv, key);
                 let g = 4 * s + j;
@@ -633,18 +672,19 @@ impl Chf {
     /// Runs the operation `op` on the element `what` names, whose plan `plan` makes: the
     /// new tetrahedra's ids; a refusal, in the plan or in the run, names both.
     pub(crate) fn run_op(
-        &mut self, op: &'static str, what: impl Fn() -> String,
+        &mut self, op: &'static str, what: impl std::fmt::Display + Copy,
         plan: impl FnOnce(&Chf) -> Result<Plan>,
     ) -> Result<Vec<u32>> {
-        let plan = plan(self).map_err(context(op, &what))?;
+        let plan = plan(self).map_err(context(op, what))?;
         self.run(plan).map_err(context(op, what))
     }
 
     /// Would [`Chf::run_op`] succeed? Changes nothing.
     pub(crate) fn check_op(
-        &self, op: &'static str, what: impl Fn() -> String, plan: impl FnOnce(&Chf) -> Result<Plan>,
+        &self, op: &'static str, what: impl std::fmt::Display + Copy,
+        plan: impl FnOnce(&Chf) -> Result<Plan>,
     ) -> Result<()> {
-        let plan = plan(self).map_err(context(op, &what))?;
+        let plan = plan(self).map_err(context(op, what))?;
         self.check_plan(&plan).map_err(context(op, what))
     }
 
@@ -663,7 +703,7 @@ impl Chf {
 
     /// Runs `plan`, a split's: the vertex it adds; a refusal names `op` on `what`.
     pub(crate) fn run_split(
-        &mut self, plan: Plan, op: &'static str, what: impl FnOnce() -> String,
+        &mut self, plan: Plan, op: &'static str, what: impl std::fmt::Display,
     ) -> Result<u32> {
         let x = self.n_vertices as u32;
         self.run(plan).map_err(context(op, what))?;
@@ -707,16 +747,14 @@ pub(crate) fn replaced(mut q: [u32; 4], from: u32, to: u32) -> [u32; 4] {
 }
 
 /// An error saying why `op` on `what` was refused, keeping the kind of `e`; `what` is
-/// worded only on a refusal.
+/// worded only on a refusal, into one string sized for the whole.
 pub(crate) fn context(
-    op: &'static str, what: impl FnOnce() -> String,
+    op: &'static str, what: impl std::fmt::Display,
 ) -> impl FnOnce(Error) -> Error {
     move |e| {
-        let what = what();
-        let mut m = String::with_capacity(op.len() + what.len() + e.message.len() + 6);
-        for part in [op, " of ", &what, ": ", &e.message] {
-            m.push_str(part);
-        }
+        let mut m = String::with_capacity(op.len() + e.message.len() + 32);
+        let _ = write!(m, "{op} of {what}: ");
+        m.push_str(&e.message);
         Error::new(e.kind, m)
     }
 }

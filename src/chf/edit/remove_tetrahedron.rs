@@ -1,6 +1,6 @@
 //! Removing one tetrahedron (its vertices stay, isolated if it was their last).
 
-use super::plan::{Plan, context};
+use super::plan::{Named, Plan, context};
 use crate::chf::Chf;
 use crate::error::Result;
 
@@ -13,7 +13,10 @@ impl Chf {
             remove: vec![t],
             ..Plan::default()
         })
-        .map_err(context("remove_tetrahedron", || format!("tetrahedron {t}")))?;
+        .map_err(context(
+            "remove_tetrahedron",
+            Named("tetrahedron", u64::from(t)),
+        ))?;
         Ok(())
     }
 
@@ -25,6 +28,9 @@ impl Chf {
             ..Plan::default()
         })
         .map(|_| ())
-        .map_err(context("remove_tetrahedron", || format!("tetrahedron {t}")))
+        .map_err(context(
+            "remove_tetrahedron",
+            Named("tetrahedron", u64::from(t)),
+        ))
     }
 }

@@ -1,6 +1,6 @@
 //! Removing a vertex with its star.
 
-use super::plan::{Plan, context};
+use super::plan::{Named, Plan, context};
 use crate::chf::Chf;
 use crate::error::Result;
 
@@ -19,7 +19,7 @@ impl Chf {
     pub fn remove_vertex(&mut self, v: u32) -> Result<()> {
         let plan = self.plan_remove_vertex(v)?;
         self.run(plan)
-            .map_err(context("remove_vertex", || format!("vertex {v}")))?;
+            .map_err(context("remove_vertex", Named("vertex", u64::from(v))))?;
         Ok(())
     }
 
@@ -27,6 +27,6 @@ impl Chf {
     pub fn check_remove_vertex(&self, v: u32) -> Result<()> {
         let plan = self.plan_remove_vertex(v)?;
         self.check_plan(&plan)
-            .map_err(context("remove_vertex", || format!("vertex {v}")))
+            .map_err(context("remove_vertex", Named("vertex", u64::from(v))))
     }
 }

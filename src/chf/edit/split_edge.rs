@@ -1,6 +1,6 @@
 //! The ring split: a new vertex on an edge, each tetrahedron around it cut in two.
 
-use super::plan::{Plan, context, replaced};
+use super::plan::{Named, Plan, context, replaced};
 use crate::chf::Chf;
 use crate::error::Result;
 use glam::DVec3;
@@ -23,13 +23,13 @@ impl Chf {
     /// the k tetrahedra around it becomes two. O(k) stars.
     pub fn split_edge(&mut self, e: u32, position: Option<DVec3>) -> Result<u32> {
         let plan = self.plan_split_edge(e, position)?;
-        self.run_split(plan, "split_edge", || format!("edge {e}"))
+        self.run_split(plan, "split_edge", Named("edge", u64::from(e)))
     }
 
     /// Would [`Chf::split_edge`] succeed? Changes nothing.
     pub fn check_split_edge(&self, e: u32, position: Option<DVec3>) -> Result<()> {
         let plan = self.plan_split_edge(e, position)?;
         self.check_plan(&plan)
-            .map_err(context("split_edge", || format!("edge {e}")))
+            .map_err(context("split_edge", Named("edge", u64::from(e))))
     }
 }

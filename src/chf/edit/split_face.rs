@@ -1,7 +1,7 @@
 //! The 2-6 split (1-3 on the boundary): a new vertex on a face, each tetrahedron of the
 //! face cut in three.
 
-use super::plan::{Plan, context, replaced};
+use super::plan::{Named, Plan, context, replaced};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::tet;
@@ -30,13 +30,13 @@ impl Chf {
     /// the position is not strictly inside the face's tetrahedra union. O(1) stars.
     pub fn split_face(&mut self, f: u32, position: Option<DVec3>) -> Result<u32> {
         let plan = self.plan_split_face(f, position)?;
-        self.run_split(plan, "split_face", || format!("face {f}"))
+        self.run_split(plan, "split_face", Named("face", u64::from(f)))
     }
 
     /// Would [`Chf::split_face`] succeed? Changes nothing.
     pub fn check_split_face(&self, f: u32, position: Option<DVec3>) -> Result<()> {
         let plan = self.plan_split_face(f, position)?;
         self.check_plan(&plan)
-            .map_err(context("split_face", || format!("face {f}")))
+            .map_err(context("split_face", Named("face", u64::from(f))))
     }
 }

@@ -10,7 +10,7 @@
 
 use super::arrays;
 use super::cavity::pairs;
-use super::plan::{Plan, Shape, context, replaced};
+use super::plan::{Named, Plan, Shape, context, replaced};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::{EDGE, edge_index, first, he_face, local, slot_half_edges, tet};
@@ -41,16 +41,20 @@ impl Chf {
     pub fn split_tetrahedron(&mut self, t: u32, position: Option<DVec3>) -> Result<u32> {
         self.touch_split(t);
         let plan = self.plan_split_tetrahedron(t, position)?;
-        self.check_plan(&plan)
-            .map_err(context("split_tetrahedron", || format!("tetrahedron {t}")))?;
+        self.check_plan(&plan).map_err(context(
+            "split_tetrahedron",
+            Named("tetrahedron", u64::from(t)),
+        ))?;
         self.split_in_place(t, &plan)
     }
 
     /// Would [`Chf::split_tetrahedron`] succeed? Changes nothing.
     pub fn check_split_tetrahedron(&self, t: u32, position: Option<DVec3>) -> Result<()> {
         let plan = self.plan_split_tetrahedron(t, position)?;
-        self.check_plan(&plan)
-            .map_err(context("split_tetrahedron", || format!("tetrahedron {t}")))
+        self.check_plan(&plan).map_err(context(
+            "split_tetrahedron",
+            Named("tetrahedron", u64::from(t)),
+        ))
     }
 
     /// Reads at once, before the check, what the check and the writes will read one

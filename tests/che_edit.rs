@@ -87,11 +87,50 @@ fn relations(c: &Che) -> Relations {
     }
 }
 
+/// Every relation of a removed element answers `NONE` or nothing (no panic, no stale
+/// id), at every level.
+fn check_removed(che: &Che) {
+    let nothing = |what: &str, id: u32, ids: &[u32]| {
+        assert!(
+            ids.iter().all(|&x| x == NONE),
+            "removed {what} {id} answers {ids:?}"
+        );
+    };
+    for v in (0..che.num_vertices() as u32).filter(|&v| che.is_vertex_removed(v)) {
+        nothing(
+            "vertex (VV)",
+            v,
+            &che.vertex_vertices(v).collect::<Vec<_>>(),
+        );
+        nothing("vertex (VE)", v, &che.vertex_edges(v).collect::<Vec<_>>());
+        nothing(
+            "vertex (VF)",
+            v,
+            &che.vertex_triangles(v).collect::<Vec<_>>(),
+        );
+    }
+    for e in (0..che.num_edges() as u32).filter(|&e| che.is_edge_removed(e)) {
+        nothing("edge (EH)", e, &[che.edge_half_edge(e)]);
+        nothing("edge (EV)", e, &che.edge_vertices(e));
+        nothing("edge (EE)", e, &che.edge_edges(e));
+        nothing("edge (EF)", e, &che.edge_triangles(e));
+        assert!(!che.is_boundary_edge(e), "removed edge {e}");
+    }
+    for t in (0..che.num_triangles() as u32).filter(|&t| che.is_triangle_removed(t)) {
+        nothing("triangle (FV)", t, &che.triangle_vertices(t));
+        nothing("triangle (FE)", t, &che.triangle_edges(t));
+        nothing("triangle (FF)", t, &che.triangle_triangles(t));
+        let half_edges = [0, 1, 2].map(|i| che.edge_of(3 * t + i));
+        nothing("triangle (half-edge edges)", t, &half_edges);
+    }
+}
+
 /// The live triangles through the collection's maps equal the collected mesh's, which
 /// equals a fresh build of them in every relation; the summary before the collection is
 /// already the fresh build's.
 fn check_against_fresh(che: &Che) {
     che.validate().unwrap();
+    check_removed(che);
     let mut done = che.clone();
     let maps = done.garbage_collect().unwrap();
     done.validate().unwrap();

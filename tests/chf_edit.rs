@@ -9,7 +9,7 @@ mod chf_common;
 use chf_common::{Answers, Mesh, Rng, answers, cube, scramble};
 use glam::DVec3;
 use topomesh::NONE;
-use topomesh::chf::{self, Chf, GarbageMaps};
+use topomesh::chf::{self, Chf, GarbageMaps, NO_HALF_EDGE};
 
 /// The boundary of the 4-simplex: a closed 3-sphere of five tetrahedra, no positions.
 fn four_simplex() -> Mesh {
@@ -161,6 +161,57 @@ fn normalise(mut a: Answers) -> Answers {
     a
 }
 
+/// Every relation of a removed element answers `NONE` or nothing (no panic, no stale
+/// id), at every level.
+fn check_removed(chf: &Chf, at: &str) {
+    let nothing = |what: &str, id: u32, ids: &[u32]| {
+        assert!(
+            ids.iter().all(|&x| x == NONE),
+            "{at}: removed {what} {id} answers {ids:?}"
+        );
+    };
+    for v in (0..chf.num_vertices() as u32).filter(|&v| chf.is_vertex_removed(v)) {
+        nothing(
+            "vertex (VV)",
+            v,
+            &chf.vertex_vertices(v).collect::<Vec<_>>(),
+        );
+        nothing("vertex (VE)", v, &chf.vertex_edges(v).collect::<Vec<_>>());
+        nothing("vertex (VF)", v, &chf.vertex_faces(v).collect::<Vec<_>>());
+        nothing(
+            "vertex (VT)",
+            v,
+            &chf.vertex_tetrahedra(v).collect::<Vec<_>>(),
+        );
+        assert!(!chf.is_boundary_vertex(v), "{at}: removed vertex {v}");
+    }
+    for e in (0..chf.num_edges() as u32).filter(|&e| chf.is_edge_removed(e)) {
+        assert_eq!(
+            chf.edge_half_edge(e),
+            NO_HALF_EDGE,
+            "{at}: removed edge {e}"
+        );
+        nothing("edge (EV)", e, &chf.edge_vertices(e));
+        nothing("edge (EE)", e, &chf.edge_edges(e).collect::<Vec<_>>());
+        nothing("edge (EF)", e, &chf.edge_faces(e).collect::<Vec<_>>());
+        nothing("edge (ET)", e, &chf.edge_tetrahedra(e).collect::<Vec<_>>());
+        assert!(!chf.is_boundary_edge(e), "{at}: removed edge {e}");
+    }
+    for f in (0..chf.num_faces() as u32).filter(|&f| chf.is_face_removed(f)) {
+        nothing("face (FH)", f, &[chf.face_half_face(f)]);
+        nothing("face (FV)", f, &chf.face_vertices(f));
+        nothing("face (FE)", f, &chf.face_edges(f));
+        nothing("face (FF)", f, &chf.face_faces(f));
+        nothing("face (FT)", f, &chf.face_tetrahedra(f));
+        assert!(!chf.is_boundary_face(f), "{at}: removed face {f}");
+    }
+    for t in (0..chf.num_tetrahedra() as u32).filter(|&t| chf.is_tetrahedron_removed(t)) {
+        nothing("tetrahedron (TE)", t, &chf.tetrahedron_edges(t));
+        nothing("tetrahedron (TF)", t, &chf.tetrahedron_faces(t));
+        nothing("tetrahedron (TT)", t, &chf.tetrahedron_tetrahedra(t));
+    }
+}
+
 /// Every relation, flag and the summary of `chf` equal a fresh build's.
 fn check(chf: &Chf, at: &str, full: bool) {
     if std::env::var_os("TOPOMESH_EDIT_TRACE").is_some() {
@@ -173,6 +224,7 @@ fn check(chf: &Chf, at: &str, full: bool) {
     };
     chf.validate().unwrap_or_else(|e| panic!("{at}: {e}"));
     trace("validated");
+    check_removed(chf, at);
     let (f, maps) = fresh(chf, full);
     trace("fresh");
     let mine = normalise(mapped_answers(chf, &f, &maps));

@@ -165,7 +165,8 @@ impl Che {
 
     /// The edge id of half-edge `h`. O(1) at level 2; O(1) at level 1 once the level-1
     /// edge-id directory is there (the first request computes it, O(T), and keeps it: see
-    /// [`Che::edge_ranks`]); O(T) time and memory at level 0.
+    /// [`Che::edge_ranks`]); O(T) time and memory at level 0. `NONE` for a removed
+    /// half-edge.
     pub fn edge_of(&self, h: u32) -> u32 {
         if self.level >= 2 {
             if let Some(ids) = self.edited_edge_ids() {
@@ -174,6 +175,11 @@ impl Che {
             return self
                 .edge_bits
                 .rank(canonical_half_edge(&self.o, h) as usize) as u32;
+        }
+        // Below level 2 an id is a rank among the live half-edges, which a removed one
+        // (no vertex) is not.
+        if self.v[h as usize] == NONE {
+            return NONE;
         }
         self.edge_names().of(h)
     }
@@ -197,8 +203,8 @@ impl Che {
         EdgeNames { o, ranks, ids }
     }
 
-    /// The canonical half-edge of edge `e` (the boundary one on a boundary edge).
-    /// O(1) at level 2; O(T) at level 1 (a count of the canonical half-edges), and O(T)
+    /// The canonical half-edge of edge `e` (the boundary one on a boundary edge), `NONE`
+    /// for a removed edge. O(1) at level 2; O(T) at level 1 (a count of the canonical half-edges), and O(T)
     /// memory at level 0.
     pub fn edge_half_edge(&self, e: u32) -> u32 {
         if self.level >= 2 {
@@ -213,27 +219,35 @@ impl Che {
 
     /// EV: the two ends of edge `e`, in the direction of its canonical half-edge.
     pub fn edge_vertices(&self, e: u32) -> [u32; 2] {
-        let h = self.edge_half_edge(e);
-        [self.v[h as usize], self.v[next(h) as usize]]
+        match self.edge_half_edge(e) {
+            NONE => [NONE; 2],
+            h => [self.v[h as usize], self.v[next(h) as usize]],
+        }
     }
 
     /// Is edge `e` on the boundary (one triangle)?
     pub fn is_boundary_edge(&self, e: u32) -> bool {
-        self.opposite(self.edge_half_edge(e)) == NONE
+        let h = self.edge_half_edge(e);
+        h != NONE && self.opposite(h) == NONE
     }
 
     /// EF: the one or two triangles of edge `e`, the canonical half-edge's first.
     pub fn edge_triangles(&self, e: u32) -> Ids<2> {
-        let h = self.edge_half_edge(e);
-        Ids::both_sides(h, self.opposite(h), tri)
+        match self.edge_half_edge(e) {
+            NONE => Ids::new(),
+            h => Ids::both_sides(h, self.opposite(h), tri),
+        }
     }
 
     /// EE: the wings of edge `e`, the other edges of its triangles: next and previous in the
     /// canonical half-edge's triangle, then in the opposite one.
     pub fn edge_edges(&self, e: u32) -> Ids<4> {
         let h = self.edge_half_edge(e);
-        let names = self.edge_names();
         let mut out = Ids::new();
+        if h == NONE {
+            return out;
+        }
+        let names = self.edge_names();
         out.push(names.of(next(h)));
         out.push(names.of(prev(h)));
         let o = names.o[h as usize];
@@ -252,7 +266,7 @@ impl Che {
 
     /// FE: the edges of triangle `t`; edge `i` runs from corner `i` to corner `i + 1`.
     pub fn triangle_edges(&self, t: u32) -> [u32; 3] {
-        if self.level >= 2 {
+        if self.level >= 2 || self.v[first(t) as usize] == NONE {
             return [0, 1, 2].map(|i| self.edge_of(first(t) + i));
         }
         let names = self.edge_names();

@@ -47,7 +47,8 @@ impl<'a> EdgeIds<'a> {
             kind,
             start,
             cur: start,
-            first_pending: kind != Kind::Tetrahedra,
+            // A removed edge (no canonical half-edge) has nothing around it.
+            first_pending: kind != Kind::Tetrahedra && start != NO_HALF_EDGE,
             first_edges: [NONE; 2],
             pending: [NONE; 2],
             len: 0,

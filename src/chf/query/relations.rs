@@ -1,10 +1,13 @@
 //! The bounded relations (EV, FV, FE, FF, FT, TV, TE, TF, TT), boundary tests and the
 //! half-face and half-edge accessors. Vertex-centred relations are in `star.rs`, the
-//! rotation around an edge in `fan.rs`. Ids out of range panic; `check_*` first.
+//! rotation around an edge in `fan.rs`. Ids out of range panic; `check_*` first. A
+//! removed face or edge (of an edited mesh) answers `NONE` or nothing, as its id does in
+//! every relation of the live elements around it.
 
 use crate::chf::Chf;
 use crate::chf::ids::{
-    self, HalfEdge, first, half_edge, he_face, he_origin, he_target, slot_half_edges, tet,
+    self, HalfEdge, NO_HALF_EDGE, first, half_edge, he_face, he_origin, he_target, slot_half_edges,
+    tet,
 };
 use crate::chf::query::view::Need;
 use crate::{Ids, NONE};
@@ -35,8 +38,8 @@ impl Chf {
         self.view(Need::FACES).face_of(hf)
     }
 
-    /// The canonical half-face of face `f` (the boundary one on a boundary face). O(1) at
-    /// level 2, O(T) below.
+    /// The canonical half-face of face `f` (the boundary one on a boundary face), `NONE`
+    /// for a removed face. O(1) at level 2, O(T) below.
     pub fn face_half_face(&self, f: u32) -> u32 {
         self.view(Need::FACES).face_half_face(f)
     }
@@ -68,7 +71,8 @@ impl Chf {
     }
 
     /// The canonical half-edge of edge `e`, where its rotation starts (on a boundary
-    /// half-face for a boundary edge). O(1) at level 2, O(T) below.
+    /// half-face for a boundary edge), [`crate::chf::NO_HALF_EDGE`] for a removed edge.
+    /// O(1) at level 2, O(T) below.
     pub fn edge_half_edge(&self, e: u32) -> HalfEdge {
         self.view(Need::EDGES).edge_half_edge(e)
     }
@@ -97,25 +101,33 @@ impl Chf {
     /// Is edge `e` on the boundary (on a boundary face)? O(1) at level 2.
     pub fn is_boundary_edge(&self, e: u32) -> bool {
         let view = self.view(Need::EDGES);
-        view.is_boundary_half_edge(view.edge_half_edge(e))
+        let he = view.edge_half_edge(e);
+        he != NO_HALF_EDGE && view.is_boundary_half_edge(he)
     }
 
     /// Is face `f` on the boundary (one tetrahedron)? O(1) at level 2; O(1) from level 1
     /// on half-faces ([`Chf::is_boundary_half_face`]).
     pub fn is_boundary_face(&self, f: u32) -> bool {
         let view = self.view(Need::FACES);
-        view.opposite(view.face_half_face(f)) == NONE
+        let hf = view.face_half_face(f);
+        hf != NONE && view.opposite(hf) == NONE
     }
 
     /// EV: the ends of edge `e`, in the direction of its canonical half-edge.
     pub fn edge_vertices(&self, e: u32) -> [u32; 2] {
-        self.half_edge_vertices(self.edge_half_edge(e))
+        match self.edge_half_edge(e) {
+            NO_HALF_EDGE => [NONE; 2],
+            he => self.half_edge_vertices(he),
+        }
     }
 
     /// FV: the vertices of face `f` in the order of its canonical half-face (outward for
     /// the tetrahedron that half-face belongs to).
     pub fn face_vertices(&self, f: u32) -> [u32; 3] {
-        ids::face_cycle(&self.v, self.face_half_face(f))
+        match self.face_half_face(f) {
+            NONE => [NONE; 3],
+            hf => ids::face_cycle(&self.v, hf),
+        }
     }
 
     /// FE: the edges of face `f`; edge `j` runs from vertex `j` to vertex `j + 1` of FV.
@@ -125,6 +137,9 @@ impl Chf {
             edges: true,
         });
         let hf = view.face_half_face(f);
+        if hf == NONE {
+            return [NONE; 3];
+        }
         [0, 1, 2].map(|j| view.edge_of(half_edge(hf, j)))
     }
 
@@ -134,6 +149,9 @@ impl Chf {
         let view = self.view(Need::FACES);
         let hf = view.face_half_face(f);
         let mut out = Ids::new();
+        if hf == NONE {
+            return out;
+        }
         for side in [hf, view.opposite(hf)] {
             if side == NONE {
                 continue;
@@ -152,11 +170,14 @@ impl Chf {
     /// FT: the one or two tetrahedra of face `f`, the canonical half-face's first.
     pub fn face_tetrahedra(&self, f: u32) -> Ids<2> {
         let view = self.view(Need::FACES);
-        let hf = view.face_half_face(f);
-        Ids::both_sides(hf, view.opposite(hf), tet)
+        match view.face_half_face(f) {
+            NONE => Ids::new(),
+            hf => Ids::both_sides(hf, view.opposite(hf), tet),
+        }
     }
 
-    /// TV: the four vertices of tetrahedron `t`.
+    /// TV: the four vertices of tetrahedron `t` (a removed one keeps its corners until
+    /// `garbage_collect`; `check_tetrahedron` tells it is removed).
     pub fn tetrahedron_vertices(&self, t: u32) -> [u32; 4] {
         let b = first(t) as usize;
         [self.v[b], self.v[b + 1], self.v[b + 2], self.v[b + 3]]
@@ -174,12 +195,16 @@ impl Chf {
         [0, 1, 2, 3].map(|i| view.face_of(first(t) + i))
     }
 
-    /// TT: the tetrahedron across each face of `t` (`NONE` on the boundary). O(1) from
-    /// level 1.
+    /// TT: the tetrahedron across each face of `t` (`NONE` on the boundary, and for a
+    /// removed `t`). O(1) from level 1.
     pub fn tetrahedron_tetrahedra(&self, t: u32) -> [u32; 4] {
         [0, 1, 2, 3].map(|i| {
-            let o = self.opposite(first(t) + i);
-            if o == NONE { NONE } else { tet(o) }
+            let hf = first(t) + i;
+            // A removed tetrahedron's half-faces are their own twins.
+            match self.opposite(hf) {
+                o if o == NONE || o == hf => NONE,
+                o => tet(o),
+            }
         })
     }
 

@@ -13,7 +13,8 @@ use crate::chf::query::view::Need;
 use crate::{Ids, NONE};
 
 impl Chf {
-    /// The twin of half-face `hf`, `NONE` on the boundary. O(1) from level 1, a scan at
+    /// The twin of half-face `hf`, `NONE` on the boundary; a half-face of a removed
+    /// tetrahedron is its own twin until `garbage_collect`. O(1) from level 1, a scan at
     /// level 0.
     #[inline]
     pub fn opposite(&self, hf: u32) -> u32 {

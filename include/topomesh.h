@@ -252,7 +252,7 @@ enum che_half_edge_array
      */
     CHE_HALF_EDGE_ARRAY_TWIN = 2,
     /**
-     * The tail (origin) of the half-edge, CHE's V; the head is vertex[next[h]].
+     * The tail (origin) of the half-edge, CHE's V; the head is `vertex[next[h]]`.
      */
     CHE_HALF_EDGE_ARRAY_VERTEX = 3,
     /**

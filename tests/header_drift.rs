@@ -19,6 +19,7 @@ use std::process::Command;
 /// (`repr(u32)` there).
 const MODULES: &[&[&str]] = &[
     &["ffi"],
+    &["che", "export", "halfedge"],
     &["che", "export", "matrices"],
     &["chf", "export", "matrices"],
 ];

@@ -139,6 +139,23 @@ fn errors_map_one_to_one() {
     }
 }
 
+/// A C enum value picks its entry of the core's list by index: the lists are in the
+/// order of the values.
+#[test]
+fn c_enum_lists_are_in_order() {
+    use crate::che::{HalfEdgeArray, MatrixKind};
+    use crate::chf::VolumeMatrixKind;
+    for (i, k) in HalfEdgeArray::ALL.into_iter().enumerate() {
+        assert_eq!(k as usize, i);
+    }
+    for (i, k) in MatrixKind::ALL.into_iter().enumerate() {
+        assert_eq!(k as usize, i);
+    }
+    for (i, k) in VolumeMatrixKind::ALL.into_iter().enumerate() {
+        assert_eq!(k as usize, i);
+    }
+}
+
 #[test]
 fn statuses_are_in_order() {
     for (i, (s, _)) in super::status::STATUSES.into_iter().enumerate() {

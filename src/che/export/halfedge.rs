@@ -44,20 +44,32 @@ pub struct HalfEdgeArrays {
     pub face_half_edge: Vec<u32>,
 }
 
-/// One array of [`HalfEdgeArrays`], for a caller that takes them one at a time
-/// ([`Che::half_edge_array`] computes that array alone).
+/// Which array `che_mesh_export_half_edges` writes (one entry per half-edge unless
+/// stated).
+#[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum HalfEdgeArray {
-    Next,
-    Prev,
-    Twin,
-    Vertex,
-    Face,
-    Edge,
-    VertexHalfEdge,
-    FaceHalfEdge,
+    /// The next half-edge round the same triangle (or hole).
+    Next = 0,
+    /// The previous half-edge round the same triangle (or hole).
+    Prev = 1,
+    /// The opposite half-edge (TOPOMESH_NONE on a marked boundary).
+    Twin = 2,
+    /// The tail (origin) of the half-edge, CHE's V; the head is `vertex[next[h]]`.
+    Vertex = 3,
+    /// The triangle (TOPOMESH_NONE for an explicit boundary half-edge).
+    Face = 4,
+    /// The edge id.
+    Edge = 5,
+    /// One entry per vertex: an outgoing half-edge, the boundary one on the boundary (the
+    /// hole's when explicit), TOPOMESH_NONE when isolated.
+    VertexHalfEdge = 6,
+    /// One entry per triangle t: 3t.
+    FaceHalfEdge = 7,
 }
 
+// cbindgen reads this file for the C enum (`tests/header_drift.rs`); the list is Rust's.
+/// cbindgen:ignore
 impl HalfEdgeArray {
     pub const ALL: [HalfEdgeArray; 8] = [
         HalfEdgeArray::Next,

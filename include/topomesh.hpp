@@ -22,9 +22,11 @@
 // - Views are Span<T> (pointer + size) into the structure, valid until the mesh is
 //   destroyed or its level changes. Bulk relations come as a Csr.
 // - vertices(), edges(), triangles(), boundary_curves() (faces(), tetrahedra() on a Volume)
-//   are ranges of strong ids; position(v) is a Vec3; VertexData<T>, EdgeData<T>,
-//   TriangleData<T>, FaceData<T>, TetData<T> hold the user's data per element, indexed by
-//   the strong ids and sized from a mesh: `VertexData<double> area(mesh, 0.0); area[v] = 1;`.
+//   are ranges of strong ids (every id); live_vertices(), live_edges(), ... skip the ids
+//   edits removed, as OpenMesh's and CGAL's element ranges do; position(v) is a Vec3;
+//   VertexData<T>, EdgeData<T>, TriangleData<T>, FaceData<T>, TetData<T> hold the user's
+//   data per element, indexed by the strong ids and sized from a mesh:
+//   `VertexData<double> area(mesh, 0.0); area[v] = 1;`.
 // - Thread safety is the C API's: const member functions may run concurrently;
 //   build_level() and destruction need exclusive access.
 //
@@ -233,6 +235,17 @@ public:
     IdRange<EdgeId> edges() const noexcept { return IdRange<EdgeId>(num_edges()); }
     IdRange<HalfEdgeId> half_edges() const noexcept {
         return IdRange<HalfEdgeId>(num_half_edges());
+    }
+    /// The ranges above hold every id, removed ones included; after edits these skip the
+    /// removed ones (OpenMesh's and CGAL's vertices(), faces(), ...), until the mesh changes.
+    LiveRange<VertexId, Surface> live_vertices() const noexcept {
+        return {*this, num_vertices(), num_live_vertices()};
+    }
+    LiveRange<TriangleId, Surface> live_triangles() const noexcept {
+        return {*this, num_triangles(), num_live_triangles()};
+    }
+    LiveRange<EdgeId, Surface> live_edges() const noexcept {
+        return {*this, num_edges(), num_live_edges()};
     }
     /// The boundary curves (each a closed loop of boundary edges; see
     /// boundary_curve_vertices()).
@@ -456,6 +469,20 @@ public:
     }
     IdRange<HalfFaceId> half_faces() const noexcept {
         return IdRange<HalfFaceId>(num_half_faces());
+    }
+    /// The ranges above hold every id, removed ones included; after edits these skip the
+    /// removed ones (as CGAL's cell and vertex iterators do), until the volume changes.
+    LiveRange<VertexId, Volume> live_vertices() const noexcept {
+        return {*this, num_vertices(), num_live_vertices()};
+    }
+    LiveRange<EdgeId, Volume> live_edges() const noexcept {
+        return {*this, num_edges(), num_live_edges()};
+    }
+    LiveRange<FaceId, Volume> live_faces() const noexcept {
+        return {*this, num_faces(), num_live_faces()};
+    }
+    LiveRange<TetrahedronId, Volume> live_tetrahedra() const noexcept {
+        return {*this, num_tetrahedra(), num_live_tetrahedra()};
     }
     /// Whether the volume was built with positions.
     bool has_positions() const { return !positions().empty(); }

@@ -123,6 +123,11 @@ fn check_removed(che: &Che) {
         let half_edges = [0, 1, 2].map(|i| che.edge_of(3 * t + i));
         nothing("triangle (half-edge edges)", t, &half_edges);
     }
+    // The live ids are the ids not removed, as many as the live counts say.
+    assert_eq!(che.live_vertices().count(), che.num_live_vertices());
+    assert_eq!(che.live_triangles().count(), che.num_live_triangles());
+    assert_eq!(che.live_edges().count(), che.num_live_edges());
+    assert!(che.live_triangles().all(|t| !che.is_triangle_removed(t)));
 }
 
 /// The live triangles through the collection's maps equal the collected mesh's, which

@@ -210,6 +210,16 @@ fn check_removed(chf: &Chf, at: &str) {
         nothing("tetrahedron (TF)", t, &chf.tetrahedron_faces(t));
         nothing("tetrahedron (TT)", t, &chf.tetrahedron_tetrahedra(t));
     }
+    // The live ids are the ids not removed, as many as the live counts say.
+    assert_eq!(
+        chf.live_tetrahedra().count(),
+        chf.num_live_tetrahedra(),
+        "{at}"
+    );
+    assert_eq!(chf.live_vertices().count(), chf.num_live_vertices(), "{at}");
+    assert_eq!(chf.live_faces().count(), chf.num_live_faces(), "{at}");
+    assert_eq!(chf.live_edges().count(), chf.num_live_edges(), "{at}");
+    assert!(chf.live_faces().all(|f| !chf.is_face_removed(f)), "{at}");
 }
 
 /// Every relation, flag and the summary of `chf` equal a fresh build's.

@@ -57,6 +57,18 @@ template <class T> static std::vector<std::uint32_t> raw(const T &range) {
     return out;
 }
 
+// A live range (`live`) of mesh `m` lists the ids of `all` that are not removed, in order,
+// as many as its size(); an iterator taken from a range that is gone still reads.
+template <class Mesh, class All, class Live>
+static void check_live(const Mesh &m, const All &all, Live (Mesh::*live)() const) {
+    std::vector<std::uint32_t> want;
+    for (auto id : all)
+        if (!m.is_removed(id)) want.push_back(id.value());
+    CHECK(raw((m.*live)()) == want && (m.*live)().size() == want.size());
+    auto first = (m.*live)().begin();
+    CHECK(want.empty() || (*first).value() == want[0]);
+}
+
 // The ownership rules of a wrapper mesh type (Surface, Volume), on two built meshes `a` and
 // `other`: a move hands the handle over and leaves an empty mesh whose calls throw, a move
 // assignment frees the target's own mesh, release() hands the handle out and the

@@ -186,6 +186,9 @@ static void check_edit_views(const Surface &s) {
         CHECK(che_edge_is_removed(m, e, &c) == TOPOMESH_STATUS_OK);
         CHECK(s.is_removed(EdgeId{e}) == c);
     }
+    check_live(s, s.vertices(), &Surface::live_vertices);
+    check_live(s, s.triangles(), &Surface::live_triangles);
+    check_live(s, s.edges(), &Surface::live_edges);
     CHECK_THROWS(s.position(VertexId{static_cast<std::uint32_t>(s.num_vertices())}),
                  TOPOMESH_STATUS_OUT_OF_RANGE, "vertex");
     CHECK_THROWS(s.is_removed(EdgeId{static_cast<std::uint32_t>(s.num_edges())}),

@@ -12,6 +12,14 @@ using namespace topomesh;
 static const std::vector<std::uint32_t> PAIR = {0, 1, 2, 3, 4, 1, 3, 2};
 static const std::vector<double> PAIR_POS = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
 
+// The live ranges skip exactly the removed elements.
+static void check_live_ranges(const Volume &m) {
+    check_live(m, m.vertices(), &Volume::live_vertices);
+    check_live(m, m.edges(), &Volume::live_edges);
+    check_live(m, m.faces(), &Volume::live_faces);
+    check_live(m, m.tetrahedra(), &Volume::live_tetrahedra);
+}
+
 template <class F> static topomesh_status refused(Volume &m, F &&edit) {
     const std::size_t t0 = m.num_live_tetrahedra(), v0 = m.num_live_vertices();
     topomesh_status s = TOPOMESH_STATUS_OK;
@@ -74,6 +82,7 @@ static void at_level(std::uint32_t level) {
     m.remove(VertexId{5});
     CHECK(m.is_removed(VertexId{5}));
     CHECK(m.num_live_faces() < m.num_faces() && m.num_live_edges() < m.num_edges());
+    check_live_ranges(m);
 
     const std::size_t lv = m.num_live_vertices(), lt = m.num_live_tetrahedra();
     const auto maps = m.garbage_collect();
@@ -81,6 +90,7 @@ static void at_level(std::uint32_t level) {
     CHECK(maps.faces.size() > m.num_faces() && maps.edges.size() > m.num_edges());
     CHECK(m.num_vertices() == lv && m.num_tetrahedra() == lt);
     CHECK(m.summary().tetrahedra == lt);
+    check_live_ranges(m);
     m.validate();
 }
 

@@ -5,6 +5,8 @@
 //   IdRange<Id>       the ids 0 .. n-1 of one kind of element as strong ids, without
 //                     storage: Surface::vertices(), triangles(), edges(), boundary_curves(),
 //                     and Volume::vertices(), edges(), faces(), tetrahedra().
+//   LiveRange<Id, M>  the ids of one kind not removed by edits, skipping the removed ones:
+//                     Surface::live_vertices(), ..., Volume::live_tetrahedra(), ...
 //   ElementData<Id,T> a dense vector of the user's data indexed by a strong id and sized
 //                     from a mesh: VertexData<T>, EdgeData<T>, TriangleData<T>, ...
 //
@@ -96,6 +98,73 @@ public:
 
 private:
     std::uint32_t n_ = 0;
+};
+
+/// The ids of one kind of element that are not removed, in increasing order, as the strong
+/// id type I: what OpenMesh's and CGAL's vertices(), faces(), ... iterate after deletions.
+/// A forward range over a mesh (Surface or Volume) that asks the mesh's is_removed(I) of
+/// each id, and nothing at all when the mesh has no removed element of the kind. It
+/// borrows the mesh: valid until the mesh is edited, collected or destroyed.
+template <class I, class Mesh> class LiveRange {
+public:
+    /// Holds what it needs by value (the mesh pointer, the bound): an iterator outlives
+    /// the range it came from.
+    class iterator {
+    public:
+        using iterator_category = std::forward_iterator_tag;
+        using value_type = I;
+        using difference_type = std::ptrdiff_t;
+        using pointer = void;
+        using reference = I;
+        iterator() noexcept = default;
+        iterator(const Mesh *mesh, std::uint32_t i, std::uint32_t n, bool holes)
+            : mesh_(mesh), i_(i), n_(n), holes_(holes) {
+            skip();
+        }
+        I operator*() const noexcept { return I{i_}; }
+        iterator &operator++() {
+            ++i_;
+            skip();
+            return *this;
+        }
+        iterator operator++(int) {
+            iterator it = *this;
+            ++*this;
+            return it;
+        }
+        friend bool operator==(const iterator &a, const iterator &b) noexcept {
+            return a.i_ == b.i_;
+        }
+        friend bool operator!=(const iterator &a, const iterator &b) noexcept {
+            return a.i_ != b.i_;
+        }
+
+    private:
+        // Past removed ids, when the mesh has any.
+        void skip() {
+            if (holes_)
+                while (i_ < n_ && mesh_->is_removed(I{i_})) ++i_;
+        }
+        const Mesh *mesh_ = nullptr;
+        std::uint32_t i_ = 0, n_ = 0;
+        bool holes_ = false;
+    };
+    using value_type = I;
+    using const_iterator = iterator;
+
+    /// The ids below `n` of `mesh` not removed, `live` of them.
+    LiveRange(const Mesh &mesh, std::size_t n, std::size_t live) noexcept
+        : mesh_(&mesh), n_(static_cast<std::uint32_t>(n)), live_(live) {}
+    iterator begin() const { return iterator(mesh_, 0, n_, live_ != n_); }
+    iterator end() const noexcept { return iterator(mesh_, n_, n_, false); }
+    /// The live count (the mesh's num_live_*).
+    std::size_t size() const noexcept { return live_; }
+    bool empty() const noexcept { return live_ == 0; }
+
+private:
+    const Mesh *mesh_;
+    std::uint32_t n_;
+    std::size_t live_;
 };
 
 namespace detail {

@@ -59,6 +59,19 @@ impl Che {
         self.level >= 2 && self.eh.get(e as usize).is_some_and(|&h| h == NONE)
     }
 
+    /// The vertices not removed, in increasing id order (every id of a mesh never edited):
+    /// what OpenMesh's and CGAL's `vertices()` iterate. Likewise [`Che::live_triangles`]
+    /// and [`Che::live_edges`].
+    pub fn live_vertices(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..self.n_vertices as u32).filter(|&x| !self.is_vertex_removed(x))
+    }
+    pub fn live_triangles(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..self.num_triangles() as u32).filter(|&t| !self.is_triangle_removed(t))
+    }
+    pub fn live_edges(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..self.num_edges as u32).filter(|&e| !self.is_edge_removed(e))
+    }
+
     /// Live counts: the `num_*` counts are the id bounds until garbage collection.
     pub fn num_live_vertices(&self) -> usize {
         self.edits().map_or(self.n_vertices, |s| s.live_vertices)

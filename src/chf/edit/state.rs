@@ -184,6 +184,22 @@ impl Chf {
         })
     }
 
+    /// The tetrahedra not removed, in increasing id order (every id of a CHF never
+    /// edited): what CGAL's cell iterators visit. Likewise [`Chf::live_vertices`],
+    /// [`Chf::live_faces`] and [`Chf::live_edges`].
+    pub fn live_tetrahedra(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..self.num_tetrahedra() as u32).filter(|&t| !self.is_tetrahedron_removed(t))
+    }
+    pub fn live_vertices(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..self.n_vertices as u32).filter(|&v| !self.is_vertex_removed(v))
+    }
+    pub fn live_faces(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..self.num_faces as u32).filter(|&f| !self.is_face_removed(f))
+    }
+    pub fn live_edges(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..self.num_edges as u32).filter(|&e| !self.is_edge_removed(e))
+    }
+
     /// Live counts (the `num_*` calls are id bounds, removed ids included).
     pub fn num_live_tetrahedra(&self) -> usize {
         self.edit

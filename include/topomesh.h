@@ -2513,6 +2513,13 @@ topomesh_status chf_mesh_flip_23(struct chf_mesh *m, uint32_t f, uint32_t *out_t
 topomesh_status chf_mesh_check_flip_23(const struct chf_mesh *m, uint32_t f);
 
 /**
+ * Can face `f` be flipped (2-3)? `*out` true or false, as `che_mesh_is_flip_ok`: a
+ * refusal is `false` with `TOPOMESH_STATUS_OK` (and no detail to word, so cheaper than
+ * `chf_mesh_check_flip_23`); a bad or removed id is an error. Changes nothing.
+ */
+topomesh_status chf_mesh_is_flip_23_ok(const struct chf_mesh *m, uint32_t f, bool *out);
+
+/**
  * Flips interior edge `e` with three tetrahedra around it (3-2); the two new tetrahedra
  * into `out_tets[2]` (may be NULL).
  */
@@ -2524,6 +2531,11 @@ topomesh_status chf_mesh_flip_32(struct chf_mesh *m, uint32_t e, uint32_t *out_t
 topomesh_status chf_mesh_check_flip_32(const struct chf_mesh *m, uint32_t e);
 
 /**
+ * Can edge `e` be flipped (3-2)? As `chf_mesh_is_flip_23_ok`.
+ */
+topomesh_status chf_mesh_is_flip_32_ok(const struct chf_mesh *m, uint32_t e, bool *out);
+
+/**
  * Collapses half-edge `he` (`3 * hf + j`): its origin merges into its target (id into
  * `*out_v`). Refused when the link condition fails or a tetrahedron would invert.
  */
@@ -2533,6 +2545,11 @@ topomesh_status chf_mesh_collapse_edge(struct chf_mesh *m, uint64_t he, uint32_t
  * Would `chf_mesh_collapse_edge` succeed? Changes nothing.
  */
 topomesh_status chf_mesh_check_collapse_edge(const struct chf_mesh *m, uint64_t he);
+
+/**
+ * Can half-edge `he` be collapsed? As `chf_mesh_is_flip_23_ok`.
+ */
+topomesh_status chf_mesh_is_collapse_ok(const struct chf_mesh *m, uint64_t he, bool *out);
 
 /**
  * Is tetrahedron `t` removed (by an edit, until `chf_mesh_garbage_collect`)?

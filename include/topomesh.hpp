@@ -597,6 +597,11 @@ public:
     bool can_flip_23(FaceId f) const;
     bool can_flip_32(EdgeId e) const;
     bool can_collapse(std::uint64_t he) const;
+    /// The same questions as Surface::is_flip_ok: false for a refusal, Error for a bad or
+    /// removed id.
+    bool is_flip_23_ok(FaceId f) const;
+    bool is_flip_32_ok(EdgeId e) const;
+    bool is_collapse_ok(std::uint64_t he) const;
     bool is_removed(VertexId v) const;
     bool is_removed(TetrahedronId t) const;
     bool is_removed(FaceId f) const;

@@ -8,8 +8,8 @@ mod chf_common;
 
 use chf_common::{Answers, Mesh, Rng, answers, cube, scramble};
 use glam::DVec3;
-use topomesh::NONE;
 use topomesh::chf::{self, Chf, GarbageMaps, NO_HALF_EDGE};
+use topomesh::{ErrorKind, NONE};
 
 /// The boundary of the 4-simplex: a closed 3-sphere of five tetrahedra, no positions.
 fn four_simplex() -> Mesh {
@@ -361,6 +361,18 @@ fn pick(rng: &mut Rng, n: usize, live: impl Fn(u32) -> bool) -> u32 {
 }
 
 /// One random operation; whether it was accepted.
+/// The yes-or-no question agrees with the check: true when it passes, false for a refusal,
+/// the check's own error otherwise.
+fn agrees(question: topomesh::error::Result<bool>, check: topomesh::error::Result<()>) {
+    match check {
+        Ok(()) => assert_eq!(question, Ok(true)),
+        Err(e) if matches!(e.kind, ErrorKind::InvalidInput | ErrorKind::NonManifold) => {
+            assert_eq!(question, Ok(false), "{e}")
+        }
+        Err(e) => assert_eq!(question, Err(e)),
+    }
+}
+
 fn step(chf: &mut Chf, rng: &mut Rng, removed: &mut Vec<[u32; 4]>) -> bool {
     let nt = chf.num_tetrahedra();
     let t = pick(rng, nt, |t| !chf.is_tetrahedron_removed(t));
@@ -377,14 +389,17 @@ fn step(chf: &mut Chf, rng: &mut Rng, removed: &mut Vec<[u32; 4]>) -> bool {
         }
         4 | 5 => {
             let f = pick(rng, chf.num_faces(), |f| !chf.is_face_removed(f));
+            agrees(chf.is_flip_23_ok(f), chf.check_flip_23(f));
             chf.flip_23(f).map(|_| ())
         }
         6 => {
             let e = pick(rng, chf.num_edges(), |e| !chf.is_edge_removed(e));
+            agrees(chf.is_flip_32_ok(e), chf.check_flip_32(e));
             chf.flip_32(e).map(|_| ())
         }
         7 => {
             let he = 12 * t as u64 + rng.below(12) as u64;
+            agrees(chf.is_collapse_ok(he), chf.check_collapse_edge(he));
             chf.collapse_edge(he).map(|_| ())
         }
         8 => {

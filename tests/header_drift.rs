@@ -164,7 +164,8 @@ const SECTIONS: &[(&str, &[&str])] = &[
     ]),
     ("CHF: editing in place (add, remove, split, flip, collapse, garbage collection)", &[
         "chf_mesh_add_*", "chf_mesh_remove_*", "chf_mesh_split_*", "chf_mesh_flip_*",
-        "chf_mesh_collapse_edge", "chf_mesh_check_*", "chf_mesh_garbage_collect",
+        "chf_mesh_collapse_edge", "chf_mesh_check_*", "chf_mesh_is_*_ok",
+        "chf_mesh_garbage_collect",
         "chf_*_is_removed",
     ]),
     ("CHF: zero-copy views of the structure's arrays", &["chf_mesh_*"]),

@@ -121,6 +121,16 @@ static void flips(chf_mesh *m) {
     CHECK_REFUSED(m, chf_mesh_flip_23(m, NONE_, news), TOPOMESH_STATUS_OUT_OF_RANGE, "face");
     CHECK_STATUS(chf_mesh_flip_23(NULL, f, news), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_OK(chf_mesh_check_flip_23(m, f));
+    /* The yes-or-no question: true, false for a refusal, an error for a bad id. */
+    bool ok = false;
+    CHECK_OK(chf_mesh_is_flip_23_ok(m, f, &ok));
+    CHECK(ok);
+    CHECK_OK(chf_mesh_is_flip_23_ok(m, fb, &ok));
+    CHECK(!ok);
+    CHECK_STATUS(chf_mesh_is_flip_23_ok(m, NONE_, &ok), TOPOMESH_STATUS_OUT_OF_RANGE);
+    CHECK_DETAIL("face");
+    CHECK_STATUS(chf_mesh_is_flip_23_ok(m, f, NULL), TOPOMESH_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(chf_mesh_is_flip_23_ok(NULL, f, &ok), TOPOMESH_STATUS_NULL_ARGUMENT);
     CHECK_OK(chf_mesh_flip_23(m, f, news));
     CHECK(chf_mesh_num_live_tetrahedra(m) == 3);
     CHECK(news[0] != NONE_ && news[1] != NONE_ && news[2] != NONE_);
@@ -142,6 +152,11 @@ static void flips(chf_mesh *m) {
     CHECK(e != NONE_ && eb != NONE_);
     CHECK_REFUSED(m, chf_mesh_flip_32(m, eb, back), TOPOMESH_STATUS_INVALID_INPUT, "boundary");
     CHECK_REFUSED(m, chf_mesh_check_flip_32(m, eb), TOPOMESH_STATUS_INVALID_INPUT, "boundary");
+    CHECK_OK(chf_mesh_is_flip_32_ok(m, e, &ok));
+    CHECK(ok);
+    CHECK_OK(chf_mesh_is_flip_32_ok(m, eb, &ok));
+    CHECK(!ok);
+    CHECK_STATUS(chf_mesh_is_flip_32_ok(m, NONE_, &ok), TOPOMESH_STATUS_OUT_OF_RANGE);
     CHECK_REFUSED(m, chf_mesh_flip_32(m, NONE_, back), TOPOMESH_STATUS_OUT_OF_RANGE, "edge");
     CHECK_OK(chf_mesh_flip_32(m, e, back));
     CHECK(back[0] != NONE_ && back[1] != NONE_ && chf_mesh_num_live_tetrahedra(m) == 2);
@@ -188,6 +203,9 @@ static void splits_and_collapse(chf_mesh *m, bool positions) {
         CHECK_OK(chf_tetrahedron_is_removed(m, s, &removed));
         for (uint64_t he = 12ull * s; !removed && he < 12ull * s + 12; he++) {
             const topomesh_status c = chf_mesh_check_collapse_edge(m, he);
+            bool ok = false;
+            CHECK_OK(chf_mesh_is_collapse_ok(m, he, &ok));
+            CHECK(ok == (c == TOPOMESH_STATUS_OK));
             if (c == TOPOMESH_STATUS_OK && good == UINT64_MAX) good = he;
             if (c != TOPOMESH_STATUS_OK && bad == UINT64_MAX) {
                 bad = he;
@@ -200,6 +218,8 @@ static void splits_and_collapse(chf_mesh *m, bool positions) {
     CHECK_REFUSED(m, chf_mesh_collapse_edge(m, bad, &x), why, "collapse_edge");
     CHECK_REFUSED(m, chf_mesh_collapse_edge(m, UINT64_MAX, &x), TOPOMESH_STATUS_OUT_OF_RANGE,
                   "half-edge");
+    bool asked = true;
+    CHECK_STATUS(chf_mesh_is_collapse_ok(m, UINT64_MAX, &asked), TOPOMESH_STATUS_OUT_OF_RANGE);
     const size_t live = chf_mesh_num_live_vertices(m);
     CHECK_OK(chf_mesh_collapse_edge(m, good, &x));
     CHECK(chf_mesh_num_live_vertices(m) == live - 1);

@@ -51,6 +51,9 @@ static void at_level(std::uint32_t level) {
 
     const FaceId shared = m.face(HalfFaceId{0}), outer = m.face(HalfFaceId{1});
     CHECK(m.can_flip_23(shared) && !m.can_flip_23(outer));
+    CHECK(m.is_flip_23_ok(shared) && !m.is_flip_23_ok(outer));
+    CHECK_THROWS(m.is_flip_23_ok(FaceId{none}), TOPOMESH_STATUS_OUT_OF_RANGE, "face");
+    CHECK(!m.can_flip_23(FaceId{none}));
     CHECK(refused(m, [&] { m.flip_23(outer); }) == TOPOMESH_STATUS_INVALID_INPUT);
     const auto three = m.flip_23(shared);
     CHECK(m.num_live_tetrahedra() == 3 && m.is_removed(shared));

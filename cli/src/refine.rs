@@ -186,7 +186,7 @@ fn improve(chf: &mut Chf, first_new: u32) -> Result<usize, Error> {
         let Some((old, new)) = flip_gain(chf, f) else {
             continue;
         };
-        if new > old && chf.check_flip_23(f).is_ok() {
+        if new > old && chf.is_flip_23_ok(f)? {
             chf.flip_23(f)?;
             flips += 1;
         }

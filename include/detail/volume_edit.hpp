@@ -59,14 +59,33 @@ inline bool Volume::can_split(TetrahedronId t, const Vec3 *position) const {
     return chf_mesh_check_split_tetrahedron(m_, t.value(), detail::xyz(position, buf)) ==
            TOPOMESH_STATUS_OK;
 }
+// The yes-or-no calls word no refusal: cheaper than the checks, which write the detail.
 inline bool Volume::can_flip_23(FaceId f) const {
-    return chf_mesh_check_flip_23(m_, f.value()) == TOPOMESH_STATUS_OK;
+    bool ok = false;
+    return chf_mesh_is_flip_23_ok(m_, f.value(), &ok) == TOPOMESH_STATUS_OK && ok;
 }
 inline bool Volume::can_flip_32(EdgeId e) const {
-    return chf_mesh_check_flip_32(m_, e.value()) == TOPOMESH_STATUS_OK;
+    bool ok = false;
+    return chf_mesh_is_flip_32_ok(m_, e.value(), &ok) == TOPOMESH_STATUS_OK && ok;
 }
 inline bool Volume::can_collapse(std::uint64_t he) const {
-    return chf_mesh_check_collapse_edge(m_, he) == TOPOMESH_STATUS_OK;
+    bool ok = false;
+    return chf_mesh_is_collapse_ok(m_, he, &ok) == TOPOMESH_STATUS_OK && ok;
+}
+inline bool Volume::is_flip_23_ok(FaceId f) const {
+    bool ok = false;
+    detail::check(chf_mesh_is_flip_23_ok(m_, f.value(), &ok));
+    return ok;
+}
+inline bool Volume::is_flip_32_ok(EdgeId e) const {
+    bool ok = false;
+    detail::check(chf_mesh_is_flip_32_ok(m_, e.value(), &ok));
+    return ok;
+}
+inline bool Volume::is_collapse_ok(std::uint64_t he) const {
+    bool ok = false;
+    detail::check(chf_mesh_is_collapse_ok(m_, he, &ok));
+    return ok;
 }
 inline bool Volume::is_removed(VertexId v) const {
     return detail::flag(chf_vertex_is_removed, m_, v.value());

@@ -1,7 +1,8 @@
 //! A new tetrahedron over existing vertices, paired with the boundary half-faces it
 //! matches.
 
-use super::plan::{Corners, Plan, context};
+use super::plan::Plan;
+use super::refusal::{Corners, context};
 use crate::chf::Chf;
 use crate::chf::geometry::orient_of;
 use crate::error::Result;

@@ -15,6 +15,7 @@
 
 use super::arrays;
 use super::plan::{Plan, Shape, cycle, same_way, sorted3};
+use super::refusal::refuse_as;
 use super::state::{canonical_half_edge, for_each_fan_slot};
 use crate::NONE;
 use crate::chf::Chf;
@@ -23,7 +24,7 @@ use crate::chf::ids::{
 };
 use crate::chf::query::star::Star;
 use crate::chf::query::view::{Need, View};
-use crate::error::{Error, Result};
+use crate::error::{ErrorKind, Result};
 
 /// The largest cavity taken here (larger ones go to the generic check): every list of
 /// the check and the writes then fits in a fixed array on the stack, so that an operation
@@ -189,9 +190,10 @@ impl Chf {
                 }
                 edges.push((a, b));
                 if self.star_holds(view, plan, a, &[b]) {
-                    return Err(Error::non_manifold(format!(
-                        "refused: edge ({a}, {b}) exists already"
-                    )));
+                    return Err(refuse_as(
+                        ErrorKind::NonManifold,
+                        format_args!("edge ({a}, {b}) exists already"),
+                    ));
                 }
             }
             for i in 0..4 {
@@ -209,9 +211,10 @@ impl Chf {
                 }
                 faces.push(key);
                 if self.fan_holds(view, plan, old, key) {
-                    return Err(Error::non_manifold(format!(
-                        "refused: face {key:?} would have three tetrahedra"
-                    )));
+                    return Err(refuse_as(
+                        ErrorKind::NonManifold,
+                        format_args!("face {key:?} would have three tetrahedra"),
+                    ));
                 }
             }
         }

@@ -1,7 +1,8 @@
 //! Edge collapse: the origin of a half-edge merges into its target, under the link
 //! condition (with the boundary closed by a virtual vertex, so that it also holds there).
 
-use super::plan::{Named, Plan, context, replaced};
+use super::plan::{Plan, replaced};
+use super::refusal::{Named, context, yes_or_no};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::HalfEdge;
@@ -113,6 +114,13 @@ impl Chf {
         let b = self.half_edge_vertices(he)[1];
         self.run(plan).map_err(context("collapse_edge", what))?;
         Ok(b)
+    }
+
+    /// Can half-edge `he` be collapsed? [`Chf::check_collapse_edge`] without the reason,
+    /// as [`crate::Che::is_collapse_ok`]: `Ok(false)` for a refusal, `Err` for a bad or
+    /// removed id. Changes nothing.
+    pub fn is_collapse_ok(&self, he: HalfEdge) -> Result<bool> {
+        yes_or_no(|| self.check_collapse_edge(he))
     }
 
     /// Would [`Chf::collapse_edge`] succeed? Changes nothing.

@@ -1,7 +1,8 @@
 //! The 2-3 flip: the two tetrahedra of an interior face become three around the edge
 //! joining their apexes.
 
-use super::plan::{Named, Plan, refuse, replaced};
+use super::plan::{Plan, replaced};
+use super::refusal::{Named, refuse, yes_or_no};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::{local, tet};
@@ -36,6 +37,13 @@ impl Chf {
             c.plan_flip_23(f)
         })?;
         Ok([ids[0], ids[1], ids[2]])
+    }
+
+    /// Can face `f` be flipped (2-3)? [`Chf::check_flip_23`] without the reason, as
+    /// [`crate::Che::is_flip_ok`]: `Ok(false)` for a refusal (worded by nothing, so cheaper
+    /// to ask), `Err` for a bad or removed id. Changes nothing.
+    pub fn is_flip_23_ok(&self, f: u32) -> Result<bool> {
+        yes_or_no(|| self.check_flip_23(f))
     }
 
     /// Would [`Chf::flip_23`] succeed? Changes nothing.

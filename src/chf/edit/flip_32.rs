@@ -1,7 +1,8 @@
 //! The 3-2 flip: the three tetrahedra around an interior edge become two sharing the
 //! triangle of their ring.
 
-use super::plan::{Named, Plan, refuse, replaced};
+use super::plan::{Plan, replaced};
+use super::refusal::{Named, refuse, yes_or_no};
 use crate::chf::Chf;
 use crate::error::Result;
 
@@ -45,6 +46,12 @@ impl Chf {
             c.plan_flip_32(e)
         })?;
         Ok([ids[0], ids[1]])
+    }
+
+    /// Can edge `e` be flipped (3-2)? [`Chf::check_flip_32`] without the reason:
+    /// `Ok(false)` for a refusal, `Err` for a bad or removed id. Changes nothing.
+    pub fn is_flip_32_ok(&self, e: u32) -> Result<bool> {
+        yes_or_no(|| self.check_flip_32(e))
     }
 
     /// Would [`Chf::flip_32`] succeed? Changes nothing.

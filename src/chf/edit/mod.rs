@@ -42,6 +42,7 @@ mod flip_23;
 mod flip_32;
 mod garbage_collect;
 mod plan;
+mod refusal;
 mod remove_tetrahedron;
 mod remove_vertex;
 mod split_edge;

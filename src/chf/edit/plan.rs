@@ -4,6 +4,7 @@
 //! plan by local updates.
 
 use super::arrays;
+use super::refusal::{Corners, context, refuse, refuse_as};
 use super::state::canonical_half_edge;
 use crate::NONE;
 use crate::chf::Chf;
@@ -11,9 +12,8 @@ use crate::chf::geometry::orient_of;
 use crate::chf::ids::{EDGE, FACE, edge_index, first, slot_half_edges, tet};
 use crate::chf::query::star::Star;
 use crate::chf::query::view::{Need, View};
-use crate::error::{Error, Result};
+use crate::error::{Error, ErrorKind, Result};
 use glam::DVec3;
-use std::fmt::Write;
 
 /// What an operation does, before it is checked.
 #[derive(Clone, Debug, Default)]
@@ -121,41 +121,6 @@ pub(super) fn sorted3(mut t: [u32; 3]) -> [u32; 3] {
     t
 }
 
-/// Room for the words of most refusals, so that writing them grows no string: a storm of
-/// checks is mostly refusals.
-const REFUSAL_WORDS: usize = 96;
-
-/// A refusal of kind `InvalidInput`: `refused: ` and `what`.
-pub(super) fn refuse(what: std::fmt::Arguments) -> Error {
-    let mut m = String::with_capacity(REFUSAL_WORDS);
-    m.push_str("refused: ");
-    let _ = m.write_fmt(what);
-    Error::invalid(m)
-}
-
-/// What an operation works on, as its refusal names it (`face 12`); a pair of words and
-/// a number until a refusal writes them.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Named(pub &'static str, pub u64);
-
-impl std::fmt::Display for Named {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        write!(f, "{} {}", self.0, self.1)
-    }
-}
-
-/// The corners of a tetrahedron as a refusal names them, `[a, b, c, d]` (the words of
-/// `{:?}`, without the list formatter's machinery).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Corners(pub [u32; 4]);
-
-impl std::fmt::Display for Corners {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        let [a, b, c, d] = self.0;
-        write!(f, "[{a}, {b}, {c}, {d}]")
-    }
-}
-
 impl Chf {
     /// Checks `plan` against the mesh; nothing is written.
     pub(crate) fn verify(&self, plan: Plan) -> Result<Verified> {
@@ -253,9 +218,10 @@ impl Chf {
                 let key = sorted3(c);
                 let holders = after.holders(t, key);
                 if holders.len() > 1 {
-                    return Err(Error::non_manifold(format!(
-                        "refused: face {key:?} would have three tetrahedra"
-                    )));
+                    return Err(refuse_as(
+                        ErrorKind::NonManifold,
+                        format_args!("face {key:?} would have three tetrahedra"),
+                    ));
                 }
                 let Some(&s) = holders.first() else { continue };
                 let sv = after.verts(s);
@@ -744,17 +710,4 @@ pub(crate) fn replaced(mut q: [u32; 4], from: u32, to: u32) -> [u32; 4] {
         }
     }
     q
-}
-
-/// An error saying why `op` on `what` was refused, keeping the kind of `e`; `what` is
-/// worded only on a refusal, into one string sized for the whole.
-pub(crate) fn context(
-    op: &'static str, what: impl std::fmt::Display,
-) -> impl FnOnce(Error) -> Error {
-    move |e| {
-        let mut m = String::with_capacity(op.len() + e.message.len() + 32);
-        let _ = write!(m, "{op} of {what}: ");
-        m.push_str(&e.message);
-        Error::new(e.kind, m)
-    }
 }

@@ -1,6 +1,7 @@
 //! Removing one tetrahedron (its vertices stay, isolated if it was their last).
 
-use super::plan::{Named, Plan, context};
+use super::plan::Plan;
+use super::refusal::{Named, context};
 use crate::chf::Chf;
 use crate::error::Result;
 

@@ -1,6 +1,7 @@
 //! Removing a vertex with its star.
 
-use super::plan::{Named, Plan, context};
+use super::plan::Plan;
+use super::refusal::{Named, context};
 use crate::chf::Chf;
 use crate::error::Result;
 

@@ -1,6 +1,7 @@
 //! The ring split: a new vertex on an edge, each tetrahedron around it cut in two.
 
-use super::plan::{Named, Plan, context, replaced};
+use super::plan::{Plan, replaced};
+use super::refusal::{Named, context};
 use crate::chf::Chf;
 use crate::error::Result;
 use glam::DVec3;

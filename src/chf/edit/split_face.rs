@@ -1,7 +1,8 @@
 //! The 2-6 split (1-3 on the boundary): a new vertex on a face, each tetrahedron of the
 //! face cut in three.
 
-use super::plan::{Named, Plan, context, replaced};
+use super::plan::{Plan, replaced};
+use super::refusal::{Named, context};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::tet;

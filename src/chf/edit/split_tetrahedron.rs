@@ -10,7 +10,8 @@
 
 use super::arrays;
 use super::cavity::pairs;
-use super::plan::{Named, Plan, Shape, context, replaced};
+use super::plan::{Plan, Shape, replaced};
+use super::refusal::{Named, context};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::{EDGE, edge_index, first, he_face, local, slot_half_edges, tet};

@@ -81,16 +81,24 @@ exports! { ChfMesh;
     edit fn chf_mesh_flip_23(f) -> out_tets: u32 as [u32; 3] { |c| c.flip_23(f) }
     /// Would `chf_mesh_flip_23` succeed? Changes nothing.
     check fn chf_mesh_check_flip_23(f) { |c| c.check_flip_23(f) }
+    /// Can face `f` be flipped (2-3)? `*out` true or false, as `che_mesh_is_flip_ok`: a
+    /// refusal is `false` with `TOPOMESH_STATUS_OK` (and no detail to word, so cheaper than
+    /// `chf_mesh_check_flip_23`); a bad or removed id is an error. Changes nothing.
+    value fn chf_mesh_is_flip_23_ok(f) -> bool { |c| c.is_flip_23_ok(f) }
     /// Flips interior edge `e` with three tetrahedra around it (3-2); the two new tetrahedra
     /// into `out_tets[2]` (may be NULL).
     edit fn chf_mesh_flip_32(e) -> out_tets: u32 as [u32; 2] { |c| c.flip_32(e) }
     /// Would `chf_mesh_flip_32` succeed? Changes nothing.
     check fn chf_mesh_check_flip_32(e) { |c| c.check_flip_32(e) }
+    /// Can edge `e` be flipped (3-2)? As `chf_mesh_is_flip_23_ok`.
+    value fn chf_mesh_is_flip_32_ok(e) -> bool { |c| c.is_flip_32_ok(e) }
     /// Collapses half-edge `he` (`3 * hf + j`): its origin merges into its target (id into
     /// `*out_v`). Refused when the link condition fails or a tetrahedron would invert.
     edit fn chf_mesh_collapse_edge(he: u64) -> out_v: u32 { |c| c.collapse_edge(he) }
     /// Would `chf_mesh_collapse_edge` succeed? Changes nothing.
     check fn chf_mesh_check_collapse_edge(he: u64) { |c| c.check_collapse_edge(he) }
+    /// Can half-edge `he` be collapsed? As `chf_mesh_is_flip_23_ok`.
+    value fn chf_mesh_is_collapse_ok(he: u64) -> bool { |c| c.is_collapse_ok(he) }
     /// Is tetrahedron `t` removed (by an edit, until `chf_mesh_garbage_collect`)?
     value fn chf_tetrahedron_is_removed(t) -> bool {
         |c| check_id(t, c.num_tetrahedra(), "tetrahedron", "tetrahedra")

@@ -67,14 +67,15 @@ pub(crate) fn try_to_vec<T: Clone>(slice: &[T], what: &str) -> Result<Vec<T>> {
 
 /// `v.extend(items)`: room for the iterator's lower bound is asked for at once; when the
 /// upper bound is unknown or more than the room, the rest grows by amortised steps, each
-/// one fallible.
+/// one fallible. The room too grows by amortised steps (exactly the bound on an empty
+/// vector): extending a vector row after row must not move it at every row.
 pub(crate) fn try_extend<T>(
     v: &mut Vec<T>, items: impl IntoIterator<Item = T>, what: &str,
 ) -> Result<()> {
     let items = items.into_iter();
     let (low, high) = items.size_hint();
     if v.capacity() - v.len() < low {
-        try_reserve(v, low, what)?;
+        try_grow(v, low, what)?;
     }
     if high.is_some_and(|high| high <= v.capacity() - v.len()) {
         // Cannot outgrow the room: `extend` does not allocate.

@@ -6,8 +6,11 @@
 
 use crate::NONE;
 use crate::chf::Chf;
-use crate::chf::ids::{first, slot_half_edges, tet};
+use crate::chf::edit::garbage_collect::Compacted;
+use crate::chf::ids::{face_cycle, first, slot_half_edges, tet};
+use crate::chf::query::view::Need;
 use crate::error::{Error, Result};
+use crate::util::alloc::try_vec;
 
 fn ensure(ok: bool, what: impl FnOnce() -> String) -> Result<()> {
     if ok {
@@ -15,6 +18,18 @@ fn ensure(ok: bool, what: impl FnOnce() -> String) -> Result<()> {
     } else {
         Err(Error::invalid(format!("invalid edited CHF: {}", what())))
     }
+}
+
+/// Which vertices of `chf`, whose `O` is `o`, lie on an unpaired half-face (below level
+/// 2, asking `is_boundary_vertex` of each vertex would compute `O` for every one).
+fn boundary_marks(chf: &Chf, o: &[u32]) -> Result<Vec<bool>> {
+    let mut on = try_vec(chf.num_vertices(), false, "the boundary vertices")?;
+    for (hf, _) in o.iter().enumerate().filter(|&(_, &g)| g == NONE) {
+        for x in face_cycle(&chf.v, hf as u32) {
+            on[x as usize] = true;
+        }
+    }
+    Ok(on)
 }
 
 impl Chf {
@@ -57,6 +72,14 @@ impl Chf {
                 fresh.num_edges()
             )
         })?;
+        self.validate_as_built(&compacted)
+    }
+
+    /// The twins and the boundary vertices are those of `compacted`, a build of the live
+    /// tetrahedra. Its `O` is taken once (computed below level 1), not asked per half-face.
+    fn validate_as_built(&self, compacted: &Compacted) -> Result<()> {
+        let fresh = &compacted.chf;
+        let fresh_o = fresh.try_view(Need::NOTHING)?.o;
         for (t, &n) in compacted.tetrahedra.iter().enumerate() {
             if n == NONE {
                 continue;
@@ -69,14 +92,15 @@ impl Chf {
                     compacted.half_face(self, g)
                 };
                 ensure(
-                    fresh.opposite(compacted.half_face(self, hf)) == mapped,
+                    fresh_o[compacted.half_face(self, hf) as usize] == mapped,
                     || format!("O[{hf}] = {g}, a build of the live tetrahedra differs"),
                 )?;
             }
         }
+        let on_boundary = boundary_marks(fresh, &fresh_o)?;
         for (x, &n) in compacted.vertices.iter().enumerate() {
             ensure(
-                n == NONE || fresh.is_boundary_vertex(n) == self.is_boundary_vertex(x as u32),
+                n == NONE || on_boundary[n as usize] == self.is_boundary_vertex(x as u32),
                 || format!("VH[{x}] does not say whether vertex {x} is on the boundary"),
             )?;
         }

@@ -751,14 +751,14 @@ fn strips_cover_every_triangle_once_with_its_orientation() {
             assert_eq!(inner, got.len(), "{name}");
             got.sort_unstable();
             assert_eq!(got, want, "{name} level {}", che.level());
-            let restarts = s.with_restarts();
+            let restarts = s.with_restarts().unwrap();
             let mut again: Vec<[u32; 3]> = restarts
                 .split(|&x| x == u32::MAX)
                 .flat_map(decode)
                 .collect();
             again.sort_unstable();
             assert_eq!(again, want, "{name}: with restarts");
-            let mut joined = decode(&s.joined());
+            let mut joined = decode(&s.joined().unwrap());
             joined.sort_unstable();
             assert_eq!(joined, want, "{name}: joined by degenerate triangles");
         }

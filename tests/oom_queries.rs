@@ -80,6 +80,16 @@ static ALLOCATOR: Limited = Limited;
 
 /// Runs `f` with every request above `bytes` refused on this thread.
 fn limited<R>(bytes: usize, f: impl FnOnce() -> R) -> R {
+    // A panic under the limit lifts it before the message and backtrace are written:
+    // writing them allocates, and a refusal there would hang the report.
+    static HOOK: std::sync::Once = std::sync::Once::new();
+    HOOK.call_once(|| {
+        let report = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            LIMIT.set(usize::MAX);
+            report(info)
+        }));
+    });
     LIMIT.set(bytes);
     let r = f();
     LIMIT.set(usize::MAX);
@@ -100,9 +110,16 @@ fn refused_after<R>(bytes: usize, grants: usize, f: impl FnOnce() -> R) -> (R, b
 /// runs without a refusal: each refusal must come back as an out-of-memory error (an
 /// allocation that cannot fail would abort the binary). Returns how many were refused.
 fn refuse_each<T>(what: &str, f: impl Fn() -> Result<T, topomesh::Error>) -> usize {
-    const LARGE: usize = 4 << 10;
+    refuse_each_above(4 << 10, what, f)
+}
+
+/// [`refuse_each`] for the requests above `large` bytes: the writers' buffers, of a fixed
+/// size that no input changes, are below it.
+fn refuse_each_above<T>(
+    large: usize, what: &str, f: impl Fn() -> Result<T, topomesh::Error>,
+) -> usize {
     for n in 0.. {
-        let (r, refused) = refused_after(LARGE, n, &f);
+        let (r, refused) = refused_after(large, n, &f);
         if !refused {
             assert!(r.is_ok(), "{what}: {:?}", r.err());
             return n;
@@ -460,4 +477,172 @@ fn edited_che_queries_can_fail() {
         });
         assert!(che.try_boundary_curve_starts().unwrap().len() > 10, "{at}");
     }
+}
+
+/// A surface that takes every path of the exports: a grid with a fan of three triangles on
+/// one edge (a non-manifold edge, whose rows the Betti numbers reduce apart) and positions.
+fn damaged_surface(level: u8) -> topomesh::Che {
+    let s = topomesh::generate::grid(30, 30);
+    let mut triangles = s.triangles.clone();
+    let mut positions = s.positions.clone();
+    let n = positions.len() as u32;
+    triangles.extend([[0, 1, n], [1, 0, n + 1]]);
+    positions.extend([
+        glam::DVec3::new(0.5, -1.0, 1.0),
+        glam::DVec3::new(0.5, -1.0, -1.0),
+    ]);
+    let options = topomesh::BuildOptions::level(level);
+    topomesh::Che::from_triangles(&triangles, positions.len(), &positions, options).unwrap()
+}
+
+/// Every export and check of a built surface, at every level, every large request refused
+/// in turn: each refusal an out-of-memory error, never an abort.
+#[test]
+fn every_surface_export_allocation_can_fail() {
+    use topomesh::che::{HalfEdgeOptions, MatrixKind};
+    for level in 0..=3 {
+        let che = damaged_surface(level);
+        let at = |what: &str| format!("{what}, level {level}");
+        let mut refused = refuse_each(&at("betti_numbers"), || che.betti_numbers());
+        for kind in MatrixKind::ALL {
+            refused += refuse_each(&at(&format!("{kind:?}")), || che.matrix(kind));
+        }
+        for explicit_boundary in [false, true] {
+            let options = HalfEdgeOptions { explicit_boundary };
+            refused += refuse_each(&at("half_edge_arrays"), || che.half_edge_arrays(options));
+        }
+        refused += refuse_each(&at("corner_table"), || che.corner_table().map(|_| ()));
+        refused += refuse_each(&at("winged_edges"), || che.winged_edges());
+        refused += refuse_each(&at("edge_list"), || che.edge_list());
+        refused += refuse_each(&at("triangle_strips"), || {
+            let strips = che.triangle_strips()?;
+            Ok((strips.with_restarts()?, strips.joined()?))
+        });
+        refused += refuse_each(&at("validate"), || che.validate());
+        refused += surface_bulk_queries(&che, &at("bulk"));
+        let exports = at("exports");
+        assert!(refused > 20, "{exports}: only {refused} large requests");
+        let mut edited = che;
+        for t in (0..edited.num_triangles() as u32).step_by(5) {
+            edited.remove_triangle(t).unwrap();
+        }
+        refused = surface_bulk_queries(&edited, &at("edited, bulk"));
+        refused += refuse_each(&at("edited, validate"), || edited.validate());
+        assert!(
+            refused > 5,
+            "{}: only {refused} large requests",
+            at("edited")
+        );
+    }
+}
+
+/// The bulk relations of a surface, every large request refused in turn; the refusals.
+fn surface_bulk_queries(che: &topomesh::Che, at: &str) -> usize {
+    refuse_each(&format!("VV, {at}"), || che.all_vertex_vertices())
+        + refuse_each(&format!("VE, {at}"), || che.all_vertex_edges())
+        + refuse_each(&format!("VT, {at}"), || che.all_vertex_triangles())
+        + refuse_each(&format!("TT, {at}"), || che.all_triangle_triangles())
+        + refuse_each(&format!("TE, {at}"), || che.all_triangle_edges())
+        + refuse_each(&format!("summary, {at}"), || che.try_summary())
+}
+
+/// The bulk relations of a volume, as [`surface_bulk_queries`].
+fn volume_bulk_queries(chf: &topomesh::Chf, at: &str) -> usize {
+    refuse_each(&format!("O, {at}"), || chf.all_opposites())
+        + refuse_each(&format!("VT, {at}"), || chf.all_vertex_tetrahedra())
+        + refuse_each(&format!("VF, {at}"), || chf.all_vertex_faces())
+        + refuse_each(&format!("VE, {at}"), || chf.all_vertex_edges())
+        + refuse_each(&format!("VV, {at}"), || chf.all_vertex_vertices())
+        + refuse_each(&format!("summary, {at}"), || chf.try_summary())
+}
+
+/// The same for a volume: a cube with a pinched star (a vertex shared by many pieces).
+#[test]
+fn every_volume_export_allocation_can_fail() {
+    use topomesh::chf::VolumeMatrixKind;
+    // Large enough that the boundary's lists pass the limit too.
+    let mut volume = chf_common::cube(10, 10, 10, false);
+    let apex = volume.positions.len() as u32;
+    volume.positions.push(glam::DVec3::new(-1.0, -1.0, -1.0));
+    for i in 0..20u32 {
+        let base = volume.positions.len() as u32;
+        for k in 0..3 {
+            volume
+                .positions
+                .push(glam::DVec3::new(-2.0 - i as f64, k as f64, 1.0));
+        }
+        volume.tets.push([apex, base, base + 1, base + 2]);
+    }
+    for level in 0..=3 {
+        let options = topomesh::BuildOptions::level(level);
+        let chf =
+            topomesh::Chf::from_tetrahedra(&volume.tets, volume.n(), &volume.positions, options)
+                .unwrap();
+        let at = |what: &str| format!("{what}, level {level}");
+        let mut refused = refuse_each(&at("betti_numbers"), || chf.betti_numbers());
+        for kind in VolumeMatrixKind::ALL {
+            refused += refuse_each(&at(&format!("{kind:?}")), || chf.volume_matrix(kind));
+        }
+        refused += refuse_each(&at("half_face_arrays"), || chf.half_face_arrays());
+        refused += refuse_each(&at("dual graph"), || chf.tetrahedron_dual_graph());
+        refused += refuse_each(&at("validate"), || chf.validate());
+        refused += volume_bulk_queries(&chf, &at("bulk"));
+        let exports = at("exports");
+        assert!(refused > 10, "{exports}: only {refused} large requests");
+        let mut edited = chf;
+        for t in (0..edited.num_tetrahedra() as u32).step_by(7) {
+            // Some removals would pinch a vertex or an edge and are refused: kept.
+            let _ = edited.remove_tetrahedron(t);
+        }
+        refused = volume_bulk_queries(&edited, &at("edited, bulk"));
+        refused += refuse_each(&at("edited, validate"), || edited.validate());
+        assert!(
+            refused > 5,
+            "{}: only {refused} large requests",
+            at("edited")
+        );
+    }
+}
+
+/// Saving and opening level files, and writing mesh files, of a surface and a volume at
+/// level 3, every request above the writers' fixed buffers refused in turn.
+#[test]
+fn every_file_write_and_open_allocation_can_fail() {
+    use topomesh::levelfile::{OpenOptions, Verify};
+    const LARGE: usize = 128 << 10;
+    let dir = std::env::temp_dir().join(format!("topomesh-oom-files-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let s = topomesh::generate::grid(150, 150);
+    let options = topomesh::BuildOptions::level(3);
+    let che = topomesh::Che::from_triangles(&s.triangles, s.positions.len(), &s.positions, options)
+        .unwrap();
+    let volume = chf_common::cube(20, 20, 20, false);
+    let chf = topomesh::Chf::from_tetrahedra(&volume.tets, volume.n(), &volume.positions, options)
+        .unwrap();
+    let (surface, solid) = (dir.join("s.che"), dir.join("v.chf"));
+    let refuse =
+        |what: &str, f: &dyn Fn() -> topomesh::error::Result<()>| refuse_each_above(LARGE, what, f);
+    let mut refused = refuse("che save", &|| che.save(&surface));
+    refused += refuse("chf save", &|| chf.save(&solid));
+    for verify in [Verify::Full, Verify::Trusted] {
+        let open = OpenOptions::loaded(verify);
+        refused += refuse("che open", &|| {
+            topomesh::Che::open(&surface, open).map(|_| ())
+        });
+        refused += refuse("chf open", &|| {
+            topomesh::Chf::open(&solid, open).map(|_| ())
+        });
+    }
+    for ext in ["off", "obj", "ply", "stl"] {
+        let path = dir.join(format!("s.{ext}"));
+        refused += refuse(&format!("che write {ext}"), &|| che.write(&path));
+    }
+    for ext in ["vtk", "msh", "mesh", "node"] {
+        let path = dir.join(format!("v.{ext}"));
+        refused += refuse(&format!("chf write {ext}"), &|| chf.write(&path));
+    }
+    let boundary = dir.join("b.off");
+    refused += refuse("chf write_boundary", &|| chf.write_boundary(&boundary));
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert!(refused > 20, "only {refused} large requests");
 }

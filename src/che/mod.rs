@@ -163,13 +163,20 @@ impl Che {
     }
     /// The level-1 edge-id directory, computed on the first request (over the live
     /// half-edges on an edited CHE).
+    pub(crate) fn try_level1_edge_bits(&self) -> Result<&RankDirectory> {
+        if let Some(bits) = self.lazy_edge_bits.get() {
+            return Ok(bits);
+        }
+        let bits = match self.edits() {
+            Some(_) => self.live_edge_directory(&self.o)?,
+            None => edge_directory(&self.o)?,
+        };
+        Ok(self.lazy_edge_bits.get_or_init(|| bits))
+    }
+
+    /// [`Che::try_level1_edge_bits`] for the queries without an error to return.
     pub(crate) fn level1_edge_bits(&self) -> &RankDirectory {
-        self.lazy_edge_bits.get_or_init(|| {
-            crate::util::alloc::or_panic(match self.edits() {
-                Some(_) => self.live_edge_directory(&self.o),
-                None => edge_directory(&self.o),
-            })
-        })
+        crate::util::alloc::or_panic(self.try_level1_edge_bits())
     }
     /// `CH`: one boundary half-edge per curve, at level 3 (on an edited CHE, computed at
     /// the first request after an edit).

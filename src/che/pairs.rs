@@ -6,7 +6,7 @@
 use super::ids::next;
 use crate::NONE;
 use crate::error::Result;
-use crate::util::alloc::{try_resize, try_vec};
+use crate::util::alloc::{try_resize, try_to_vec, try_vec};
 
 /// Calls `f(min, max, group)` for every unordered vertex pair of `v`, in increasing
 /// (min, max) order; `group` holds packed keys `(max << 32) | h` whose low 32 bits are the
@@ -138,6 +138,9 @@ impl Scattered {
     }
 }
 
+/// What the per-thread cursors of the coarse buckets are called when they do not fit.
+const COARSE: &str = "the coarse buckets";
+
 /// First pass: each thread scatters a contiguous part of the half-edges to a region of its
 /// own of the keys, bucket after bucket; a coarse bucket is then its piece of every region
 /// in turn (in half-edge order).
@@ -148,16 +151,17 @@ fn scatter(v: &[u32], layout: &Layout, threads: usize) -> Result<Scattered> {
         .step_by(part_len)
         .map(|a| (a as u32, (a + part_len).min(v.len()) as u32))
         .collect();
-    let starts: Vec<Vec<u32>> = crate::util::par::run_all(parts.clone(), |(a, b)| {
-        let mut start = vec![0u32; layout.n_coarse + 1];
+    let starts = crate::util::par::run_all(parts.clone(), |(a, b)| {
+        let mut start = try_vec(layout.n_coarse + 1, 0u32, COARSE)?;
         for h in a..b {
             start[(ends(v, h).0 >> shift) as usize + 1] += 1;
         }
         for c in 0..layout.n_coarse {
             start[c + 1] += start[c];
         }
-        start
+        Ok(start)
     });
+    let starts: Vec<Vec<u32>> = starts.into_iter().collect::<Result<_>>()?;
     let mut keys: Vec<u64> = crate::util::pages::zeroed(v.len(), "the half-edge pair keys")?;
     let mut mins: Vec<u32> = if layout.packed {
         Vec::new()
@@ -175,8 +179,8 @@ fn scatter(v: &[u32], layout: &Layout, threads: usize) -> Result<Scattered> {
             .zip(min_parts.drain(..))
             .zip(parts.iter().zip(&starts))
             .collect();
-        crate::util::par::run_all(jobs, |((keys, mins), (&(a, b), start))| {
-            let mut fill = start.clone(); // one entry per coarse bucket: bounded
+        let filled = crate::util::par::run_all(jobs, |((keys, mins), (&(a, b), start))| {
+            let mut fill = try_to_vec(start, COARSE)?;
             for h in a..b {
                 let (min, max) = ends(v, h);
                 let slot = &mut fill[(min >> shift) as usize];
@@ -189,7 +193,9 @@ fn scatter(v: &[u32], layout: &Layout, threads: usize) -> Result<Scattered> {
                 keys[*slot as usize] = fine | ((max as u64) << layout.max_at) | h as u64;
                 *slot += 1;
             }
+            Ok(())
         });
+        filled.into_iter().collect::<Result<()>>()?;
     }
     Ok(Scattered {
         parts,

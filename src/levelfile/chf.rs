@@ -8,6 +8,7 @@ use super::write::{Contents, Section, save};
 use super::{OpenOptions, Verify};
 use crate::chf::{Boundary, BuildReport, Chf, MultiFan};
 use crate::error::{Error, Result};
+use crate::util::alloc::try_collect;
 use crate::util::rank::RankBits;
 use std::path::Path;
 
@@ -152,15 +153,13 @@ fn read_chf(file: &LevelFile) -> Result<Chf> {
             "section multi_fan: not two words per vertex pair",
         ));
     }
-    chf.multi_fan = file
-        .u64s("multi_fan", fans)?
-        .chunks_exact(2)
-        .map(|w| MultiFan {
-            a: w[0] as u32,
-            b: (w[0] >> 32) as u32,
-            first_slot: w[1],
-        })
-        .collect();
+    let words = file.u64s("multi_fan", fans)?;
+    let multi_fan = words.chunks_exact(2).map(|w| MultiFan {
+        a: w[0] as u32,
+        b: (w[0] >> 32) as u32,
+        first_slot: w[1],
+    });
+    chf.multi_fan = try_collect(multi_fan, "the multi-fan pairs")?;
     if file.header.flags & FLAG_POSITIONS != 0 {
         chf.positions = read_positions(file, "positions", chf.n_vertices)?;
     }

@@ -81,7 +81,7 @@ impl OpenOptions {
 pub(crate) trait Example: Sized + Copy {
     const WIDTH: usize;
     fn flat(xs: &[Self]) -> &[u32];
-    fn from_flat(xs: &[u32]) -> Vec<Self>;
+    fn from_flat(xs: &[u32]) -> crate::error::Result<Vec<Self>>;
 }
 
 impl Example for u32 {
@@ -89,8 +89,8 @@ impl Example for u32 {
     fn flat(xs: &[u32]) -> &[u32] {
         xs
     }
-    fn from_flat(xs: &[u32]) -> Vec<u32> {
-        xs.to_vec()
+    fn from_flat(xs: &[u32]) -> crate::error::Result<Vec<u32>> {
+        crate::util::alloc::try_to_vec(xs, "a report's examples")
     }
 }
 
@@ -99,10 +99,9 @@ impl<const N: usize> Example for [u32; N] {
     fn flat(xs: &[[u32; N]]) -> &[u32] {
         xs.as_flattened()
     }
-    fn from_flat(xs: &[u32]) -> Vec<[u32; N]> {
-        xs.chunks_exact(N)
-            .map(|c| std::array::from_fn(|i| c[i]))
-            .collect()
+    fn from_flat(xs: &[u32]) -> crate::error::Result<Vec<[u32; N]>> {
+        let examples = xs.chunks_exact(N).map(|c| std::array::from_fn(|i| c[i]));
+        crate::util::alloc::try_collect(examples, "a report's examples")
     }
 }
 
@@ -142,7 +141,7 @@ macro_rules! report_sections {
                         "section {name}: {} ids, not {width} per example", flat.len()
                     )));
                 }
-                r.$list = Example::from_flat(&flat);
+                r.$list = Example::from_flat(&flat)?;
             })*
             Ok(r)
         }

@@ -237,7 +237,8 @@ impl LevelFile {
         // A multiple of every element's size (4, 8, and 24 for a point).
         const CHUNK: usize = 3 << 18;
         let io = |err: std::io::Error| format::bad(e.offset, format!("section {}: {err}", e.name));
-        let mut words = vec![0u64; CHUNK / 8];
+        let room = e.byte_len().min(CHUNK as u64).div_ceil(8) as usize;
+        let mut words = crate::util::alloc::try_vec(room, 0u64, "the read buffer")?;
         // Aligned for every element type, so that `take` can cast instead of copying.
         let buf: &mut [u8] = bytemuck::cast_slice_mut(&mut words);
         let mut file = file;
@@ -264,12 +265,8 @@ impl LevelFile {
     fn elements<T: Pod>(&self, e: &Entry, width: usize) -> Result<Vec<T>> {
         // On huge pages where the kernel has them: a loaded file is written fresh, and
         // with small pages a page fault every 4 KiB is a large share of reading it.
-        let mut out = pages::with_capacity(e.count as usize / width, &e.name).map_err(|_| {
-            Error::too_large(format!(
-                "section {}: {} elements do not fit in memory",
-                e.name, e.count
-            ))
-        })?;
+        let what = format!("section {}", e.name);
+        let mut out = pages::with_capacity(e.count as usize / width, &what)?;
         let word = e.elem.size() as usize;
         let mut take = |b: &[u8]| match bytemuck::try_cast_slice::<u8, T>(b) {
             Ok(xs) if cfg!(target_endian = "little") => out.extend_from_slice(xs),

@@ -43,27 +43,30 @@ impl Data<'_> {
         });
     }
 
-    /// Feeds the little-endian bytes to `out`, a chunk at a time.
+    /// Feeds the little-endian bytes to `out`, a chunk at a time, from one buffer on the
+    /// stack: a section of any size costs no allocation.
     pub(crate) fn bytes(
         &self, out: &mut dyn FnMut(&[u8]) -> std::io::Result<()>,
     ) -> std::io::Result<()> {
-        let mut buf = Vec::with_capacity(1 << 14);
+        const CHUNK: usize = 1 << 14;
+        let mut buf = [0u8; CHUNK];
         macro_rules! chunks {
-            ($xs:expr, $per:expr) => {
-                for chunk in $xs.chunks(1 << 11) {
-                    buf.clear();
-                    chunk.iter().for_each(|x| $per(&mut buf, x));
-                    out(&buf)?;
+            ($xs:expr, $width:expr, $put:expr) => {
+                for chunk in $xs.chunks(CHUNK / $width) {
+                    for (x, slot) in chunk.iter().zip(buf.chunks_exact_mut($width)) {
+                        $put(slot, x);
+                    }
+                    out(&buf[..chunk.len() * $width])?;
                 }
             };
         }
-        let le = |buf: &mut Vec<u8>, bytes: &[u8]| buf.extend_from_slice(bytes);
+        let le = |slot: &mut [u8], bytes: &[u8]| slot.copy_from_slice(bytes);
         match self {
-            Data::U32(x) => chunks!(x, |b, x: &u32| le(b, &x.to_le_bytes())),
-            Data::U64(x) => chunks!(x, |b, x: &u64| le(b, &x.to_le_bytes())),
-            Data::Points(x) => chunks!(x, |b: &mut Vec<u8>, p: &DVec3| {
-                for c in p.to_array() {
-                    le(b, &c.to_le_bytes());
+            Data::U32(x) => chunks!(x, 4, |s, x: &u32| le(s, &x.to_le_bytes())),
+            Data::U64(x) => chunks!(x, 8, |s, x: &u64| le(s, &x.to_le_bytes())),
+            Data::Points(x) => chunks!(x, 24, |s: &mut [u8], p: &DVec3| {
+                for (slot, c) in s.chunks_exact_mut(8).zip(p.to_array()) {
+                    le(slot, &c.to_le_bytes());
                 }
             }),
         }

@@ -12,7 +12,7 @@
 
 use crate::NONE;
 use crate::error::Result;
-use crate::util::alloc::{try_collect, try_to_vec, try_vec};
+use crate::util::alloc::{try_collect, try_push, try_to_vec, try_vec, try_with_capacity};
 use crate::util::dsu::Dsu;
 
 /// The components of a graph whose lines join two of `n_nodes` nodes, or one node and the
@@ -25,7 +25,7 @@ pub(crate) struct Grounded {
 impl Grounded {
     pub(crate) fn new(n_nodes: usize, lines: impl Iterator<Item = (u32, u32)>) -> Result<Self> {
         let mut dsu = Dsu::new(n_nodes)?;
-        let mut grounded = vec![false; n_nodes];
+        let mut grounded = try_vec(n_nodes, false, "the grounded components")?;
         for (a, b) in lines {
             if b == NONE {
                 grounded[a as usize] = true;
@@ -91,9 +91,9 @@ pub(crate) fn forest_lines(
 /// alone. What this peeling leaves takes [`column_rank`].
 pub(crate) fn peeled_rank<const K: usize>(n_rows: usize, columns: &[[u32; K]]) -> Result<usize> {
     let mut p = Peel::new(n_rows, columns)?;
-    let peeled = p.run();
+    let peeled = p.run()?;
     let core = p.core()?;
-    Ok(peeled + column_rank(n_rows, core.into_iter()))
+    Ok(peeled + column_rank(n_rows, core.into_iter())?)
 }
 
 /// The state of [`peeled_rank`]: live entries per row and column (`DEAD` once gone), the
@@ -150,29 +150,29 @@ impl<'a, const K: usize> Peel<'a, K> {
     }
 
     /// Peels until no live line has fewer than two entries; the pivots it took.
-    fn run(&mut self) -> usize {
+    fn run(&mut self) -> Result<usize> {
         let mut rank = 0;
         loop {
             if let Some(c) = self.col_stack.pop() {
                 if self.col_live[c as usize] == 1 {
                     let r = self.live_row(c);
-                    self.kill_col(c);
-                    self.kill_row(r);
+                    self.kill_col(c)?;
+                    self.kill_row(r)?;
                     rank += 1;
                 } else if self.col_live[c as usize] == 0 {
-                    self.kill_col(c);
+                    self.kill_col(c)?;
                 }
             } else if let Some(r) = self.row_stack.pop() {
                 if self.row_live[r as usize] == 1 {
                     let c = self.live_col(r);
-                    self.kill_row(r);
-                    self.kill_col(c);
+                    self.kill_row(r)?;
+                    self.kill_col(c)?;
                     rank += 1;
                 } else if self.row_live[r as usize] == 0 {
-                    self.kill_row(r);
+                    self.kill_row(r)?;
                 }
             } else {
-                return rank;
+                return Ok(rank);
             }
         }
     }
@@ -192,30 +192,32 @@ impl<'a, const K: usize> Peel<'a, K> {
             .expect("a row with a live entry")
     }
 
-    fn kill_col(&mut self, c: u32) {
+    fn kill_col(&mut self, c: u32) -> Result<()> {
         self.col_live[c as usize] = DEAD;
         for &r in self.columns[c as usize].iter().filter(|&&r| r != NONE) {
             let n = &mut self.row_live[r as usize];
             if *n != DEAD {
                 *n -= 1;
                 if *n <= 1 {
-                    self.row_stack.push(r);
+                    try_push(&mut self.row_stack, r, "the peeling")?;
                 }
             }
         }
+        Ok(())
     }
 
-    fn kill_row(&mut self, r: u32) {
+    fn kill_row(&mut self, r: u32) -> Result<()> {
         self.row_live[r as usize] = DEAD;
         for &c in &self.row_cols[self.row_start[r as usize]..self.row_start[r as usize + 1]] {
             let n = &mut self.col_live[c as usize];
             if *n != DEAD {
                 *n -= 1;
                 if *n <= 1 {
-                    self.col_stack.push(c);
+                    try_push(&mut self.col_stack, c, "the peeling")?;
                 }
             }
         }
+        Ok(())
     }
 
     /// The live columns with their live rows, sorted.
@@ -240,26 +242,27 @@ impl<'a, const K: usize> Peel<'a, K> {
 /// The rank over Z/2 of the matrix with the given columns (each a sorted list of row
 /// indices): each column is reduced by the earlier column owning its largest row (the
 /// pivot), XOR-merging the sorted lists, until it is empty or owns a new pivot.
-pub(crate) fn column_rank(n_rows: usize, columns: impl Iterator<Item = Vec<u32>>) -> usize {
-    let mut owner = vec![NONE; n_rows];
+pub(crate) fn column_rank(n_rows: usize, columns: impl Iterator<Item = Vec<u32>>) -> Result<usize> {
+    let mut owner = try_vec(n_rows, NONE, "the pivots")?;
     let mut reduced: Vec<Vec<u32>> = Vec::new();
     for mut col in columns {
         while let Some(&low) = col.last() {
             let o = owner[low as usize];
             if o == NONE {
                 owner[low as usize] = reduced.len() as u32;
-                reduced.push(col);
+                try_push(&mut reduced, col, "the reduced columns")?;
                 break;
             }
-            col = xor_sorted(&col, &reduced[o as usize]);
+            col = xor_sorted(&col, &reduced[o as usize])?;
         }
     }
-    reduced.len()
+    Ok(reduced.len())
 }
 
 /// The symmetric difference of two sorted lists.
-fn xor_sorted(a: &[u32], b: &[u32]) -> Vec<u32> {
-    let (mut i, mut j, mut out) = (0, 0, Vec::with_capacity(a.len() + b.len()));
+fn xor_sorted(a: &[u32], b: &[u32]) -> Result<Vec<u32>> {
+    let mut out = try_with_capacity(a.len() + b.len(), "a reduced column")?;
+    let (mut i, mut j) = (0, 0);
     while i < a.len() && j < b.len() {
         match a[i].cmp(&b[j]) {
             std::cmp::Ordering::Less => (out.push(a[i]), i += 1).1,
@@ -269,7 +272,7 @@ fn xor_sorted(a: &[u32], b: &[u32]) -> Vec<u32> {
     }
     out.extend_from_slice(&a[i..]);
     out.extend_from_slice(&b[j..]);
-    out
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -306,7 +309,7 @@ mod tests {
             });
             assert_eq!(
                 peeled_rank(n_rows, &columns).unwrap(),
-                column_rank(n_rows, sorted),
+                column_rank(n_rows, sorted).unwrap(),
                 "round {round}: {columns:?}"
             );
         }
@@ -359,7 +362,7 @@ mod tests {
             });
             assert_eq!(
                 Grounded::new(n, lines.iter().copied()).unwrap().rank(),
-                column_rank(n, cols)
+                column_rank(n, cols).unwrap()
             );
         }
     }

@@ -21,6 +21,7 @@
 
 use crate::NONE;
 use crate::error::{Error, Result};
+use crate::util::alloc::try_with_capacity;
 use crate::util::dsu::Dsu;
 use glam::DVec3;
 use std::borrow::Cow;
@@ -58,9 +59,7 @@ pub(crate) fn weld_elements<'a, const K: usize>(
         .enumerate()
         .filter(|&(v, &r)| v as u32 != r)
         .count();
-    let mut out = Vec::new();
-    out.try_reserve_exact(elements.len())
-        .map_err(|_| Error::too_large(format!("{} welded elements", elements.len())))?;
+    let mut out = try_with_capacity(elements.len(), "the welded elements")?;
     out.extend(
         elements
             .iter()
@@ -108,9 +107,7 @@ pub fn representatives(positions: &[DVec3], tolerance: f64) -> Result<Vec<u32>> 
         }
         start = end;
     }
-    let mut out = Vec::new();
-    out.try_reserve_exact(positions.len())
-        .map_err(|_| Error::too_large(format!("{} vertices to weld", positions.len())))?;
+    let mut out = try_with_capacity(positions.len(), "the weld's representatives")?;
     out.extend((0..positions.len() as u32).map(|v| dsu.find(v)));
     Ok(out)
 }
@@ -209,9 +206,7 @@ fn sorted_cells(positions: &[DVec3], tolerance: f64) -> Result<Vec<(Cell, u32)>>
         reach = reach.max(p.abs().max_element());
     }
     let side = (tolerance * SIDE_MARGIN).max(reach / MAX_CELL);
-    let mut out = Vec::new();
-    out.try_reserve_exact(positions.len())
-        .map_err(|_| Error::too_large(format!("{} vertices to weld", positions.len())))?;
+    let mut out = try_with_capacity(positions.len(), "the weld's grid cells")?;
     out.extend(positions.iter().enumerate().map(|(v, p)| {
         let q = (*p / side).floor();
         ([q.x as i64, q.y as i64, q.z as i64], v as u32)

@@ -183,11 +183,10 @@ impl Che {
         let boundary = (0..self.v.len())
             .filter(|&h| self.v[h] != NONE && self.o[h] == NONE)
             .count();
-        let walked: usize = curves
-            .ch
-            .iter()
-            .map(|&s| self.boundary_curve(s).count())
-            .sum();
+        let mut walked = 0;
+        for &s in curves.ch.iter() {
+            walked += self.try_boundary_curve(s)?.count();
+        }
         if walked != boundary || curves.boundary.len() != boundary {
             return Err(Error::invalid(format!(
                 "invalid CHE: the curves walk {walked} of {boundary} boundary half-edges"

@@ -6,6 +6,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{next, tri};
 use crate::error::Result;
+use crate::util::alloc::{try_collect, try_push, try_with_capacity};
 use crate::util::betti::{Grounded, column_rank};
 use crate::util::dsu::element_components;
 
@@ -24,8 +25,8 @@ impl Che {
         let (used, isolated) = element_components::<3>(&self.v, n_in, |x| self.vertex_origin(x))?;
         let b0 = used + isolated;
         let rank1 = n_in as u64 - b0;
-        let o = self.opposites_or_computed();
-        let special = self.rejoined_edges();
+        let o = self.try_opposites_or_computed()?;
+        let special = self.rejoined_edges()?;
         let n_edges = (self.num_edges - special.len() + distinct_pairs(&special)) as u64;
         let rank2 = self.rank_d2(&o, &special)? as u64;
         let nt = self.num_triangles() as u64;
@@ -34,41 +35,38 @@ impl Che {
 
     /// The unpaired half-edges that share an input edge with others (seams and
     /// non-manifold edges), as `(input vertex pair, half-edge)` sorted by pair.
-    fn rejoined_edges(&self) -> Vec<((u32, u32), u32)> {
-        let mut out: Vec<((u32, u32), u32)> = self
-            .seams
-            .iter()
-            .chain(&self.non_manifold)
-            .map(|&h| {
-                let a = self.vertex_origin(self.v[h as usize]);
-                let b = self.vertex_origin(self.v[next(h) as usize]);
-                ((a.min(b), a.max(b)), h)
-            })
-            .collect();
+    fn rejoined_edges(&self) -> Result<Vec<((u32, u32), u32)>> {
+        let edges = self.seams.iter().chain(&self.non_manifold).map(|&h| {
+            let a = self.vertex_origin(self.v[h as usize]);
+            let b = self.vertex_origin(self.v[next(h) as usize]);
+            ((a.min(b), a.max(b)), h)
+        });
+        let mut out = try_collect(edges, "the rejoined edges")?;
         out.sort_unstable();
-        out
+        Ok(out)
     }
 
     /// The rank of `d2` of the input complex over Z/2.
     fn rank_d2(&self, o: &[u32], special: &[((u32, u32), u32)]) -> Result<usize> {
         let nt = self.num_triangles();
-        let mut by_half_edge: Vec<u32> = special.iter().map(|s| s.1).collect();
+        let mut by_half_edge = try_collect(special.iter().map(|s| s.1), "the rejoined edges")?;
         by_half_edge.sort_unstable();
         let lone = |h: u32| by_half_edge.binary_search(&h).is_ok();
         let mut wide: Vec<Vec<u32>> = Vec::new();
-        let mut lines: Vec<(u32, u32)> = Vec::new();
-        for (h, &g) in o.iter().enumerate() {
+        let lines = o.iter().enumerate().filter_map(|(h, &g)| {
             let h = h as u32;
-            if lone(h) || (g != NONE && g < h) {
-                continue;
-            }
-            lines.push((tri(h), if g == NONE { NONE } else { tri(g) }));
-        }
+            let line = (tri(h), if g == NONE { NONE } else { tri(g) });
+            (!lone(h) && (g == NONE || g > h)).then_some(line)
+        });
+        let mut lines = try_collect(lines, "the dual graph")?;
         for group in special.chunk_by(|a, b| a.0 == b.0) {
             match group {
-                [(_, h)] => lines.push((tri(*h), NONE)),
-                [(_, h), (_, g)] => lines.push((tri(*h), tri(*g))),
-                _ => wide.push(group.iter().map(|s| tri(s.1)).collect()),
+                [(_, h)] => try_push(&mut lines, (tri(*h), NONE), "the dual graph")?,
+                [(_, h), (_, g)] => try_push(&mut lines, (tri(*h), tri(*g)), "the dual graph")?,
+                _ => {
+                    let row = try_collect(group.iter().map(|s| tri(s.1)), "the wide rows")?;
+                    try_push(&mut wide, row, "the wide rows")?;
+                }
             }
         }
         let mut graph = Grounded::new(nt, lines.into_iter())?;
@@ -76,26 +74,23 @@ impl Che {
         if wide.is_empty() {
             return Ok(rank);
         }
-        Ok(rank + wide_rank(&mut graph, nt, &wide))
+        Ok(rank + wide_rank(&mut graph, nt, &wide)?)
     }
 }
 
 /// What the rows with three or more triangles add to the rank: the kernel of the graph
 /// rows is spanned by the components that reach no ground, so the rank grows by the rank
 /// of the wide rows restricted to those components (each row's parity in each).
-fn wide_rank(graph: &mut Grounded, nt: usize, wide: &[Vec<u32>]) -> usize {
-    let columns: Vec<Vec<u32>> = wide
-        .iter()
-        .map(|row| {
-            let mut free: Vec<u32> = row.iter().filter_map(|&t| graph.free_root(t)).collect();
-            free.sort_unstable();
-            // Triangles of one component cancel in pairs over Z/2.
-            free.chunk_by(|a, b| a == b)
-                .filter(|c| c.len() % 2 == 1)
-                .map(|c| c[0])
-                .collect()
-        })
-        .collect();
+fn wide_rank(graph: &mut Grounded, nt: usize, wide: &[Vec<u32>]) -> Result<usize> {
+    let mut columns = try_with_capacity(wide.len(), "the wide rows")?;
+    for row in wide {
+        let free = row.iter().filter_map(|&t| graph.free_root(t));
+        let mut free = try_collect(free, "a wide row")?;
+        free.sort_unstable();
+        // Triangles of one component cancel in pairs over Z/2.
+        let odd = free.chunk_by(|a, b| a == b).filter(|c| c.len() % 2 == 1);
+        columns.push(try_collect(odd.map(|c| c[0]), "a wide row")?);
+    }
     // The rows of the restricted matrix as the columns of its transpose: the same rank.
     column_rank(nt, columns.into_iter())
 }

@@ -27,7 +27,7 @@ impl Che {
     /// The corner table; see the module documentation for the relation to `V` and `O`.
     pub fn corner_table(&self) -> Result<CornerTable<'_>> {
         self.check_collected("the corner table")?;
-        let o = self.opposites_or_computed();
+        let o = self.try_opposites_or_computed()?;
         let mut oc = Vec::new();
         reserve(&mut oc, o.len(), "opposite corners")?;
         oc.extend((0..o.len() as u32).map(|c| match o[next(c) as usize] {

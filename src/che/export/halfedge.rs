@@ -127,7 +127,7 @@ impl Che {
     }
 
     fn half_edge_layout(&self, options: HalfEdgeOptions) -> Result<Layout<'_>> {
-        let o = self.opposites_or_computed();
+        let o = self.try_opposites_or_computed()?;
         // One pass: the boundary is a small part of the half-edges, so growing beats a
         // counting pass over all of them.
         let boundary = match options.explicit_boundary {
@@ -188,7 +188,7 @@ impl Che {
                 out.push_all(b.iter().map(|_| NONE));
             }
             HalfEdgeArray::Edge => {
-                let names = self.edge_names();
+                let names = self.try_edge_names()?;
                 out.push_all((0..base).map(|h| names.of(h)));
                 out.push_all(b.iter().map(|&h| names.of(h)));
             }

@@ -75,7 +75,7 @@ impl Che {
                     },
                     false => pattern(1.0),
                 };
-                let o = self.opposites_or_computed();
+                let o = self.try_opposites_or_computed()?;
                 let diagonal = laplacian.then_some(nv as u32);
                 // A half-edge gives one entry, a boundary one two; an edge has two
                 // half-edges or is a boundary one, so 2E - 3T half-edges are.

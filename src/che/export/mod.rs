@@ -42,7 +42,7 @@ pub(crate) struct ExportTables<'a> {
 
 impl Che {
     pub(crate) fn export_tables(&self) -> Result<ExportTables<'_>> {
-        let o = self.opposites_or_computed();
+        let o = self.try_opposites_or_computed()?;
         let edge = if self.level >= 2 {
             let edges = (0..self.v.len() as u32).map(|h| self.edge_of(h));
             try_collect(edges, "the edge of each half-edge")?

@@ -4,6 +4,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{next, prev, tri};
 use crate::error::Result;
+use crate::util::alloc::try_collect;
 use crate::util::sparse::reserve;
 
 /// A winged-edge table over the structure's edge ids. Edge `e` has the canonical
@@ -49,8 +50,9 @@ impl Che {
             }
         }
         let of = |h: u32| if h == NONE { NONE } else { t.edge[h as usize] };
-        w.vertex_edge = t.vh.iter().map(|&h| of(h)).collect();
-        w.face_edge = (0..self.num_triangles()).map(|f| t.edge[3 * f]).collect();
+        w.vertex_edge = try_collect(t.vh.iter().map(|&h| of(h)), "winged-edge vertex edges")?;
+        let first_edges = (0..self.num_triangles()).map(|f| t.edge[3 * f]);
+        w.face_edge = try_collect(first_edges, "winged-edge face edges")?;
         Ok(w)
     }
 }

@@ -187,12 +187,12 @@ impl Che {
     /// What naming edges takes, borrowed from level 1 (`O` and the edge-id directory, the
     /// level-1 one computed on the first request) and computed at level 0, once for a
     /// query that names several edges.
-    pub(crate) fn edge_names(&self) -> EdgeNames<'_> {
-        let o = self.opposites_or_computed();
+    pub(crate) fn try_edge_names(&self) -> Result<EdgeNames<'_>> {
+        let o = self.try_opposites_or_computed()?;
         let ranks = match self.level {
-            0 if self.edits().is_some() => Cow::Owned(or_panic(self.live_edge_directory(&o))),
-            0 => Cow::Owned(or_panic(edge_directory(&o))),
-            1 => Cow::Borrowed(self.level1_edge_bits()),
+            0 if self.edits().is_some() => Cow::Owned(self.live_edge_directory(&o)?),
+            0 => Cow::Owned(edge_directory(&o)?),
+            1 => Cow::Borrowed(self.try_level1_edge_bits()?),
             _ => Cow::Borrowed(&self.edge_bits),
         };
         let ids = if self.level >= 2 {
@@ -200,7 +200,12 @@ impl Che {
         } else {
             None
         };
-        EdgeNames { o, ranks, ids }
+        Ok(EdgeNames { o, ranks, ids })
+    }
+
+    /// [`Che::try_edge_names`] for the queries without an error to return.
+    pub(crate) fn edge_names(&self) -> EdgeNames<'_> {
+        or_panic(self.try_edge_names())
     }
 
     /// The canonical half-edge of edge `e` (the boundary one on a boundary edge), `NONE`

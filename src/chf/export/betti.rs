@@ -20,8 +20,8 @@ impl Chf {
     /// persistent homology runs on the core only.
     pub fn betti_numbers(&self) -> Result<[u64; 4]> {
         self.check_collected("the Betti numbers")?;
-        let (view, [nv, ne, nf, nt]) = self.complex();
-        let ends = super::matrices::edge_ends(&view, ne);
+        let (view, [nv, ne, nf, nt]) = self.complex()?;
+        let ends = super::matrices::edge_ends(&view, ne)?;
         let edge_forest = forest_lines(nv, ends.iter().map(|&[a, b]| (a, b)))?;
         let face_forest = forest_lines(
             nt,

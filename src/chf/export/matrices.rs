@@ -5,6 +5,7 @@ use crate::chf::Chf;
 use crate::chf::ids::{half_edge, he_origin, he_target, tet};
 use crate::chf::query::view::{Need, View};
 use crate::error::Result;
+use crate::util::alloc::try_collect;
 use crate::util::sparse::{
     Assembled, Entry, Shape, SparseMatrix, Storage, Values, assemble, reserve,
 };
@@ -46,7 +47,7 @@ impl Chf {
     /// [`Storage`]), else in memory of its own.
     pub fn volume_matrix_into(&self, kind: VolumeMatrixKind, offer: Storage) -> Result<Assembled> {
         self.check_collected("the matrix export")?;
-        let (view, [nv, ne, nf, nt]) = self.complex();
+        let (view, [nv, ne, nf, nt]) = self.complex()?;
         let e = |row: u32, col: u32, value: f64| Entry { row, col, value };
         let summed = |n_rows, n_cols| Shape {
             n_rows,
@@ -57,13 +58,13 @@ impl Chf {
         match kind {
             VolumeMatrixKind::D1 => {
                 reserve(&mut out, 2 * ne, "matrix entries")?;
-                for (id, [a, b]) in edge_ends(&view, ne).into_iter().enumerate() {
+                for (id, [a, b]) in edge_ends(&view, ne)?.into_iter().enumerate() {
                     out.extend([e(a, id as u32, -1.0), e(b, id as u32, 1.0)]);
                 }
                 assemble(summed(nv, ne), &out[..], offer)
             }
             VolumeMatrixKind::D2 => {
-                let ends = edge_ends(&view, ne);
+                let ends = edge_ends(&view, ne)?;
                 reserve(&mut out, 3 * nf, "matrix entries")?;
                 for f in 0..nf as u32 {
                     let hf = view.face_half_face(f);
@@ -112,27 +113,26 @@ impl Chf {
 impl Chf {
     /// What the matrices and the Betti numbers read: the view with face and edge ids, and
     /// the counts of vertices, edges, faces and tetrahedra.
-    pub(super) fn complex(&self) -> (View<'_>, [usize; 4]) {
-        let view = self.view(Need {
+    pub(super) fn complex(&self) -> Result<(View<'_>, [usize; 4])> {
+        let view = self.try_view(Need {
             faces: true,
             edges: true,
-        });
+        })?;
         let counts = [
             self.n_vertices,
             self.num_edges(),
             self.num_faces(),
             self.num_tetrahedra(),
         ];
-        (view, counts)
+        Ok((view, counts))
     }
 }
 
 /// The ends of every edge, in the direction of its canonical half-edge.
-pub(super) fn edge_ends(view: &View, ne: usize) -> Vec<[u32; 2]> {
-    (0..ne as u32)
-        .map(|e| {
-            let he = view.edge_half_edge(e);
-            [he_origin(view.v, he), he_target(view.v, he)]
-        })
-        .collect()
+pub(super) fn edge_ends(view: &View, ne: usize) -> Result<Vec<[u32; 2]>> {
+    let ends = (0..ne as u32).map(|e| {
+        let he = view.edge_half_edge(e);
+        [he_origin(view.v, he), he_target(view.v, he)]
+    });
+    try_collect(ends, "the edge ends")
 }

@@ -33,7 +33,7 @@ impl Chf {
     /// The half-face arrays; see [`HalfFaceArrays`].
     pub fn half_face_arrays(&self) -> Result<HalfFaceArrays> {
         self.check_collected("the half-face export")?;
-        let view = self.view(Need::FACES);
+        let view = self.try_view(Need::FACES)?;
         let n = self.v.len();
         let mut a = HalfFaceArrays::default();
         reserve(&mut a.twin, n, "half-face twins")?;
@@ -51,7 +51,7 @@ impl Chf {
     /// (`NONE` on the boundary), as `Chf::tetrahedron_tetrahedra`.
     pub fn tetrahedron_dual_graph(&self) -> Result<Vec<u32>> {
         self.check_collected("the dual graph")?;
-        let view = self.view(Need::NOTHING);
+        let view = self.try_view(Need::NOTHING)?;
         let mut out = Vec::new();
         reserve(&mut out, view.o.len(), "dual graph")?;
         out.extend(

@@ -15,7 +15,7 @@ use crate::chf::ids::{EDGE, face_cycle};
 use crate::chf::query::fan::EdgeIds;
 use crate::chf::query::view::{Need, View};
 use crate::error::Result;
-use crate::util::alloc::{try_to_vec, try_vec};
+use crate::util::alloc::{try_extend, try_to_vec, try_vec, try_with_capacity};
 
 /// Row `i` is `indices[offsets[i] as usize..offsets[i + 1] as usize]`.
 pub type Csr = crate::util::csr::Csr<u32>;
@@ -43,16 +43,20 @@ impl Chf {
     /// rows); `None` on a CHF never edited.
     fn edited_rows<I: Iterator<Item = u32>>(&self, row: impl Fn(u32) -> I) -> Option<Result<Csr>> {
         self.edit.as_ref()?;
-        let mut offsets = Vec::new();
+        Some(self.try_edited_rows(row))
+    }
+
+    fn try_edited_rows<I: Iterator<Item = u32>>(&self, row: impl Fn(u32) -> I) -> Result<Csr> {
+        let mut offsets = try_with_capacity(self.n_vertices + 1, "the CSR offsets")?;
         let mut indices = Vec::new();
         offsets.push(0u32);
         for x in 0..self.n_vertices as u32 {
             if !self.is_vertex_removed(x) {
-                indices.extend(row(x));
+                try_extend(&mut indices, row(x), "the CSR indices")?;
             }
             offsets.push(indices.len() as u32);
         }
-        Some(Ok(Csr { offsets, indices }))
+        Ok(Csr { offsets, indices })
     }
 
     /// `O` at every level: borrowed from level 1, computed below (O(T), the rule level 1

@@ -7,7 +7,7 @@ use crate::chf::Chf;
 use crate::chf::ids::{face_cycle, same_direction, sorted_triple};
 use crate::chf::star_pass::{self, Pairs, StarPass};
 use crate::error::{Error, Result};
-use crate::util::alloc::try_vec;
+use crate::util::alloc::{try_collect, try_vec};
 use crate::util::origin::increasing_below_violation;
 
 /// The first violation, as an error naming the structure.
@@ -300,9 +300,8 @@ impl Chf {
         let Some(b) = &self.boundary else {
             return Ok(());
         };
-        let unpaired: Vec<u32> = (0..o.len() as u32)
-            .filter(|&h| o[h as usize] == NONE)
-            .collect();
+        let unpaired = (0..o.len() as u32).filter(|&h| o[h as usize] == NONE);
+        let unpaired = try_collect(unpaired, "the unpaired half-faces")?;
         ensure_same(&b.half_faces, &unpaired, |t, u| {
             format!("{t} boundary triangles for {u} unpaired half-faces")
         })?;
@@ -336,9 +335,8 @@ impl Chf {
                 on[x as usize] = true;
             }
         }
-        let vertices: Vec<u32> = (0..self.n_vertices as u32)
-            .filter(|&v| on[v as usize])
-            .collect();
+        let vertices = (0..self.n_vertices as u32).filter(|&v| on[v as usize]);
+        let vertices = try_collect(vertices, "the boundary vertices")?;
         ensure_same(&b.vertices, &vertices, |b, v| {
             format!("{b} boundary vertices, {v} vertices on unpaired half-faces")
         })?;

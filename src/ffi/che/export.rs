@@ -8,7 +8,7 @@
 #![allow(rustdoc::broken_intra_doc_links)]
 
 use super::CheMesh;
-use crate::che::{HalfEdgeArray, HalfEdgeOptions, MatrixKind, WingedEdges};
+use crate::che::{HalfEdgeArray, HalfEdgeOptions, MatrixKind, Strips, WingedEdges};
 use crate::error::Result;
 use crate::ffi::boundary::{options_arg, report_kind};
 use crate::ffi::declare::exports;
@@ -111,8 +111,9 @@ exports! { CheMesh;
     /// level.
     ids fn che_mesh_export_strips(which) {
         try |c| {
-            let strips = c.triangle_strips()?;
-            report_kind([strips.with_restarts(), strips.joined()], which, "che_strip_list")
+            let list = [Strips::with_restarts, Strips::joined];
+            let list = report_kind(list, which, "che_strip_list")?;
+            list(&c.triangle_strips()?)
         }
     }
     /// Betti numbers over Z/2 of the surface as given (seams and split vertices joined again,

@@ -193,7 +193,7 @@ impl Che {
             if start as usize >= o.len() || o[start as usize] != NONE {
                 return broken(format!("CH[{c}] = {start} is not a boundary half-edge"));
             }
-            for h in self.boundary_curve(start) {
+            for h in self.try_boundary_curve(start)? {
                 if h < start {
                     return broken(format!(
                         "CH[{c}] = {start} is not the smallest half-edge of its curve ({h} is)"

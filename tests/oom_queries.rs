@@ -406,17 +406,13 @@ fn ascii_stl(data: &topomesh::io::MeshData) -> String {
     text + "endsolid t\n"
 }
 
-/// Every large allocation of both builds, at every level, refused in turn, on input that
-/// takes the rare paths too: a vertex whose star is in many pieces (the vertex split, the
-/// star pass's general link) and non-manifold edges.
-#[test]
-fn every_build_allocation_can_fail() {
-    use topomesh::{che::Che, chf::Chf};
-    let mut volume = chf_common::cube(6, 6, 6, false);
-    // 80 tetrahedra on one new vertex, each with its own other three: a pinched star.
+/// A cube of `n` cells a side, and `pinch` tetrahedra on one new vertex, each with its own
+/// other three: a pinched star (a vertex whose star is in many pieces).
+fn pinched_cube(n: u32, pinch: u32) -> chf_common::Mesh {
+    let mut volume = chf_common::cube(n, n, n, false);
     let apex = volume.positions.len() as u32;
     volume.positions.push(glam::DVec3::new(-1.0, -1.0, -1.0));
-    for i in 0..80u32 {
+    for i in 0..pinch {
         let base = volume.positions.len() as u32;
         for k in 0..3 {
             volume
@@ -425,6 +421,16 @@ fn every_build_allocation_can_fail() {
         }
         volume.tets.push([apex, base, base + 1, base + 2]);
     }
+    volume
+}
+
+/// Every large allocation of both builds, at every level, refused in turn, on input that
+/// takes the rare paths too: a vertex whose star is in many pieces (the vertex split, the
+/// star pass's general link) and non-manifold edges.
+#[test]
+fn every_build_allocation_can_fail() {
+    use topomesh::{che::Che, chf::Chf};
+    let volume = pinched_cube(6, 80);
     let s = topomesh::generate::grid(30, 30);
     let mut triangles = s.triangles.clone();
     // A third triangle on an edge of the grid: a non-manifold edge.
@@ -561,18 +567,7 @@ fn volume_bulk_queries(chf: &topomesh::Chf, at: &str) -> usize {
 fn every_volume_export_allocation_can_fail() {
     use topomesh::chf::VolumeMatrixKind;
     // Large enough that the boundary's lists pass the limit too.
-    let mut volume = chf_common::cube(10, 10, 10, false);
-    let apex = volume.positions.len() as u32;
-    volume.positions.push(glam::DVec3::new(-1.0, -1.0, -1.0));
-    for i in 0..20u32 {
-        let base = volume.positions.len() as u32;
-        for k in 0..3 {
-            volume
-                .positions
-                .push(glam::DVec3::new(-2.0 - i as f64, k as f64, 1.0));
-        }
-        volume.tets.push([apex, base, base + 1, base + 2]);
-    }
+    let volume = pinched_cube(10, 20);
     for level in 0..=3 {
         let options = topomesh::BuildOptions::level(level);
         let chf =

@@ -641,3 +641,140 @@ fn every_file_write_and_open_allocation_can_fail() {
     std::fs::remove_dir_all(&dir).unwrap();
     assert!(refused > 20, "only {refused} large requests");
 }
+
+/// An edit's answer with its refusals (a removed id, the link condition, ...) taken as
+/// `None`: only running out of memory is an error here.
+fn unless_refused<T>(r: Result<T, topomesh::Error>) -> Result<Option<T>, topomesh::Error> {
+    match r {
+        Ok(x) => Ok(Some(x)),
+        Err(e) if e.kind == topomesh::ErrorKind::OutOfMemory => Err(e),
+        Err(_) => Ok(None),
+    }
+}
+
+/// Runs `edits` on a mesh fresh from `make`, with its first large request refused, then
+/// its second, and so on until the edits run without a refusal: each refusal must come
+/// back as an out-of-memory error that leaves the mesh valid (the edit it stopped wrote
+/// nothing). Returns how many were refused.
+fn refuse_each_edit<M>(
+    what: &str, make: impl Fn() -> M, edits: impl Fn(&mut M) -> Result<(), topomesh::Error>,
+    validate: impl Fn(&M) -> Result<(), topomesh::Error>,
+) -> usize {
+    for n in 0.. {
+        let mut mesh = make();
+        let (r, refused) = refused_after(4 << 10, n, || edits(&mut mesh));
+        if let Err(e) = &r {
+            assert!(refused, "{what}: {e:?}");
+            assert_eq!(
+                e.kind,
+                topomesh::ErrorKind::OutOfMemory,
+                "{what}, request {n}: {e:?}"
+            );
+        }
+        if let Err(e) = validate(&mesh) {
+            panic!("{what}, request {n} refused ({r:?}): the mesh left is not valid: {e}");
+        }
+        if !refused {
+            return n;
+        }
+    }
+    unreachable!()
+}
+
+/// Every kind of surface edit and the garbage collection, at every level, every large
+/// request refused in turn (the first edit makes the edit state, later ones grow it).
+#[test]
+fn every_surface_edit_allocation_can_fail() {
+    use topomesh::Che;
+    let s = topomesh::generate::grid(30, 30);
+    for level in 0..=3 {
+        let make = || {
+            let options = topomesh::BuildOptions::level(level);
+            Che::from_triangles(&s.triangles, s.positions.len(), &s.positions, options).unwrap()
+        };
+        // Below level 2 an edit computes `O` or `VH` for itself (O(T), several large
+        // requests each): fewer edits there keep the test short.
+        let sparse = if level < 2 { 8 } else { 1 };
+        let edits = |che: &mut Che| -> Result<(), topomesh::Error> {
+            let (ne, nt) = (che.num_edges() as u32, che.num_triangles() as u32);
+            for e in (0..ne).step_by(7 * sparse) {
+                if che.is_flip_ok(e)? {
+                    che.flip_edge(e)?;
+                }
+            }
+            for t in (0..nt).step_by(11 * sparse) {
+                unless_refused(che.split_triangle(t, None))?;
+            }
+            for e in (3..ne).step_by(13 * sparse) {
+                unless_refused(che.split_edge(e, None))?;
+            }
+            for h in (5..3 * nt).step_by(97 * sparse) {
+                if che.is_collapse_ok(h)? {
+                    che.collapse_edge(h)?;
+                }
+            }
+            for t in (1..nt).step_by(17 * sparse) {
+                unless_refused(che.remove_triangle(t))?;
+            }
+            let x = che.add_vertex(Some(glam::DVec3::new(2.0, 2.0, 0.0)))?;
+            unless_refused(che.add_triangle(0, 1, x))?;
+            unless_refused(che.remove_vertex(200))?;
+            che.garbage_collect()?;
+            Ok(())
+        };
+        let refused = refuse_each_edit(&format!("level {level}"), make, edits, Che::validate);
+        assert!(refused > 10, "level {level}: only {refused} large requests");
+    }
+}
+
+/// The same for a volume.
+#[test]
+fn every_volume_edit_allocation_can_fail() {
+    use topomesh::Chf;
+    let volume = chf_common::cube(6, 6, 6, false);
+    for level in 0..=3 {
+        let make = || {
+            let options = topomesh::BuildOptions::level(level);
+            Chf::from_tetrahedra(&volume.tets, volume.n(), &volume.positions, options).unwrap()
+        };
+        let edits = |chf: &mut Chf| -> Result<(), topomesh::Error> {
+            let (nf, ne, nt) = (
+                chf.num_faces() as u32,
+                chf.num_edges() as u32,
+                chf.num_tetrahedra() as u32,
+            );
+            for t in (0..nt).step_by(9) {
+                unless_refused(chf.split_tetrahedron(t, None))?;
+            }
+            for f in (0..nf).step_by(7) {
+                if chf.is_flip_23_ok(f)? {
+                    chf.flip_23(f)?;
+                }
+            }
+            for e in (0..ne).step_by(5) {
+                if chf.is_flip_32_ok(e)? {
+                    chf.flip_32(e)?;
+                }
+            }
+            for f in (1..nf).step_by(23) {
+                unless_refused(chf.split_face(f, None))?;
+            }
+            for e in (2..ne).step_by(29) {
+                unless_refused(chf.split_edge(e, None))?;
+            }
+            for he in (3..12 * nt as u64).step_by(301) {
+                unless_refused(chf.collapse_edge(he))?;
+            }
+            for t in (1..nt).step_by(13) {
+                unless_refused(chf.remove_tetrahedron(t))?;
+            }
+            let x = chf.add_vertex(Some(glam::DVec3::new(-1.0, -1.0, -1.0)))?;
+            unless_refused(chf.add_tetrahedron([0, 1, 7, x]))?;
+            unless_refused(chf.remove_vertex(100))?;
+            chf.garbage_collect()?;
+            Ok(())
+        };
+        let refused = refuse_each_edit(&format!("level {level}"), make, edits, Chf::validate);
+        assert!(refused > 10, "level {level}: only {refused} large requests");
+    }
+}

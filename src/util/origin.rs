@@ -35,6 +35,11 @@ impl OriginMap {
         crate::util::alloc::try_push(&mut self.0, x, what)
     }
 
+    /// Room for `n` more pushes (by amortised steps), so that they cannot fail.
+    pub(crate) fn reserve(&mut self, n: usize, what: &str) -> crate::error::Result<()> {
+        crate::util::alloc::try_grow(&mut self.0, n, what)
+    }
+
     /// The first violation of a vertex map's rules, in words: `n` vertices over `n_input`
     /// input vertices, the input vertices their own origins, each copy from an input
     /// vertex, and a map written out as soon as there is a copy. A file can state any of

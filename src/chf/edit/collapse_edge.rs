@@ -7,6 +7,7 @@ use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::HalfEdge;
 use crate::error::{Error, Result};
+use crate::util::alloc::{try_push, try_with_capacity};
 
 /// The virtual vertex that cones the boundary off.
 const INF: u32 = NONE - 1;
@@ -14,15 +15,19 @@ const INF: u32 = NONE - 1;
 /// A simplex of a link: up to three sorted vertex ids, `NONE` padding.
 type Simplex = [u32; 3];
 
+/// What the link's simplices are called when they do not fit in memory.
+const LINK: &str = "the link of a collapse";
+
 /// Every face of each simplex of `tops` (the simplices themselves included), sorted, once.
-fn closure(tops: &[Vec<u32>]) -> Vec<Simplex> {
-    let mut out = Vec::new();
+fn closure(tops: &[Simplex]) -> Result<Vec<Simplex>> {
+    // A simplex of at most three vertices has at most seven faces.
+    let mut out = try_with_capacity(7 * tops.len(), "the link of a collapse")?;
     for s in tops {
-        let n = s.len();
+        let n = s.iter().take_while(|&&x| x != NONE).count();
         for mask in 1u32..(1 << n) {
             let mut x = [NONE; 3];
             let mut k = 0;
-            for (i, &v) in s.iter().enumerate() {
+            for (i, &v) in s[..n].iter().enumerate() {
                 if mask & (1 << i) != 0 {
                     x[k] = v;
                     k += 1;
@@ -34,26 +39,33 @@ fn closure(tops: &[Vec<u32>]) -> Vec<Simplex> {
     }
     out.sort_unstable();
     out.dedup();
+    Ok(out)
+}
+
+/// The vertices of `q` not in `keep`, `NONE` padded, and `extra` after them if given.
+fn rest(q: &[u32], keep: &[u32], extra: Option<u32>) -> Simplex {
+    let mut out = [NONE; 3];
+    let kept = q.iter().copied().filter(|x| !keep.contains(x)).chain(extra);
+    for (slot, x) in out.iter_mut().zip(kept) {
+        *slot = x;
+    }
     out
 }
 
 impl Chf {
     /// The link of the simplex `keep` (one or two vertices): the rest of each tetrahedron
     /// holding it, and the rest of each boundary face holding it coned to [`INF`].
-    fn link(&self, keep: &[u32]) -> Vec<Simplex> {
-        let mut tops: Vec<Vec<u32>> = Vec::new();
+    fn link(&self, keep: &[u32]) -> Result<Vec<Simplex>> {
+        let mut tops: Vec<Simplex> = Vec::new();
         for t in self.vertex_tetrahedra(keep[0]) {
             let q = self.tetrahedron_vertices(t);
             if keep.iter().all(|x| q.contains(x)) {
-                tops.push(q.iter().copied().filter(|x| !keep.contains(x)).collect());
+                try_push(&mut tops, rest(&q, keep, None), LINK)?;
                 for i in 0..4 {
                     let hf = 4 * t + i;
                     let tri = self.half_face_vertices_of(hf);
                     if self.opposite(hf) == NONE && keep.iter().all(|x| tri.contains(x)) {
-                        let mut rest: Vec<u32> =
-                            tri.iter().copied().filter(|x| !keep.contains(x)).collect();
-                        rest.push(INF);
-                        tops.push(rest);
+                        try_push(&mut tops, rest(&tri, keep, Some(INF)), LINK)?;
                     }
                 }
             }
@@ -64,14 +76,10 @@ impl Chf {
     fn plan_collapse_edge(&self, he: HalfEdge) -> Result<Plan> {
         self.check_live_half_edge(he)?;
         let [a, b] = self.half_edge_vertices(he);
-        let (la, lb) = (self.link(&[a]), self.link(&[b]));
-        let lab = self.link(&[a, b]);
-        let common: Vec<Simplex> = la
-            .iter()
-            .copied()
-            .filter(|s| lb.binary_search(s).is_ok())
-            .collect();
-        if let Some(s) = common.iter().find(|s| lab.binary_search(s).is_err()) {
+        let (la, lb) = (self.link(&[a])?, self.link(&[b])?);
+        let lab = self.link(&[a, b])?;
+        let common = la.iter().filter(|s| lb.binary_search(s).is_ok());
+        if let Some(s) = common.into_iter().find(|s| lab.binary_search(s).is_err()) {
             let named: Vec<String> = s
                 .iter()
                 .filter(|&&x| x != NONE)
@@ -94,9 +102,9 @@ impl Chf {
         };
         for t in self.vertex_tetrahedra(a) {
             let q = self.tetrahedron_vertices(t);
-            plan.remove.push(t);
+            try_push(&mut plan.remove, t, "a collapse's tetrahedra")?;
             if !q.contains(&b) {
-                plan.add.push(replaced(q, a, b));
+                try_push(&mut plan.add, replaced(q, a, b), "a collapse's tetrahedra")?;
             }
         }
         Ok(plan)

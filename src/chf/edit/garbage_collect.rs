@@ -7,6 +7,7 @@
 use crate::NONE;
 use crate::chf::build::{Orientation, build_oriented, flipped_id};
 use crate::chf::ids::{EDGE, edge_index, first, local, slot_half_edges, slot_of, tet};
+use crate::chf::query::view::Need;
 use crate::chf::{BuildOptions, Chf, NO_HALF_EDGE};
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_collect, try_vec};
@@ -166,13 +167,21 @@ impl Chf {
         }
         let fresh = self.compacted()?;
         let s = self.edit.as_ref().expect("edited");
+        // The ids of the fresh build taken once: below level 2 each one-element query
+        // would compute them again.
+        let need = Need {
+            faces: true,
+            edges: true,
+        };
+        let view = fresh.chf.try_view(need)?;
         let faces = remap(&s.face_hf, NONE, "the face map", |h| {
-            fresh.chf.face_of(fresh.half_face(self, h))
+            view.face_of(fresh.half_face(self, h))
         })?;
         let edges = remap(&s.edge_he, NO_HALF_EDGE, "the edge map", |he| {
             let slot = fresh.slot(self, slot_of(he));
-            fresh.chf.edge_of(slot_half_edges(slot)[0])
+            view.edge_of(slot_half_edges(slot)[0])
         })?;
+        drop(view);
         let Compacted {
             chf,
             vertices,

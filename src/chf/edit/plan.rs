@@ -452,7 +452,10 @@ impl Chf {
             "the tetrahedra V",
         )?;
         try_grow(self.o.to_mut("the opposites O")?, 4 * n, "the opposites O")?;
-        let s = self.edit_state()?;
+        self.edit_state()?;
+        // After the edit state, which writes the identity map of a CHF that has none.
+        self.tet_origin.reserve(n, "the tetrahedron origins")?;
+        let s = self.edit.as_mut().expect("made above");
         s.tet_removed.try_grow(n, "the tetrahedron marks")?;
         try_grow(&mut s.hf_face, 4 * n, "the face ids")?;
         try_grow(&mut s.slot_edge, 6 * n, "the edge ids")?;

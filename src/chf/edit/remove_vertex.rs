@@ -4,12 +4,13 @@ use super::plan::Plan;
 use super::refusal::{Named, context};
 use crate::chf::Chf;
 use crate::error::Result;
+use crate::util::alloc::try_collect;
 
 impl Chf {
     fn plan_remove_vertex(&self, v: u32) -> Result<Plan> {
         self.check_live_vertex(v)?;
         Ok(Plan {
-            remove: self.vertex_tetrahedra(v).collect(),
+            remove: try_collect(self.vertex_tetrahedra(v), "the star of a removed vertex")?,
             retire: vec![v],
             ..Plan::default()
         })

@@ -124,21 +124,34 @@ impl Chf {
     pub(crate) fn edit_state(&mut self) -> Result<&mut EditState> {
         super::arrays::promote(self)?;
         if self.edit.is_none() {
+            // Everything that can fail first: a refusal leaves the CHF as it was.
             let mut state = EditState::of(self)?;
+            let identity = |n: usize, what| try_collect(0..n as u32, what);
+            let o = (self.level < 1)
+                .then(|| self.try_opposites_by_rule())
+                .transpose()?;
+            let o_now = o.as_deref().unwrap_or(&self.o);
+            let vh = (self.level < 2)
+                .then(|| vertex_half_faces(self, o_now))
+                .transpose()?;
+            let tet_origin = (self.tet_origin.is_empty())
+                .then(|| identity(self.num_tetrahedra(), "the tetrahedron origins"))
+                .transpose()?;
+            let vertex_origin = (self.vertex_origin.is_empty())
+                .then(|| identity(self.n_vertices, "the vertex origins"))
+                .transpose()?;
             // The built surface serves until the first edit, which keeps its half-faces.
             state.boundary = LazyBoundary::new(self.boundary.take());
-            if self.level < 1 {
-                self.o = self.try_opposites_by_rule()?.into();
+            if let Some(o) = o {
+                self.o = o.into();
             }
-            if self.level < 2 {
-                self.vh = vertex_half_faces(self)?.into();
+            if let Some(vh) = vh {
+                self.vh = vh.into();
             }
-            if self.tet_origin.is_empty() {
-                let ids = try_collect(0..self.num_tetrahedra() as u32, "the tetrahedron origins")?;
+            if let Some(ids) = tet_origin {
                 self.tet_origin = ids.into();
             }
-            if self.vertex_origin.is_empty() {
-                let ids = try_collect(0..self.n_vertices as u32, "the vertex origins")?;
+            if let Some(ids) = vertex_origin {
                 self.vertex_origin = ids.into();
             }
             // The explicit ids replace the rank directories of the faces and edges:
@@ -269,12 +282,12 @@ pub(crate) fn removed(is: bool, what: &str, id: u32) -> Result<()> {
 }
 
 /// `VH` by one pass over the half-faces: a boundary half-face on boundary vertices.
-fn vertex_half_faces(chf: &Chf) -> Result<Vec<u32>> {
+fn vertex_half_faces(chf: &Chf, o: &[u32]) -> Result<Vec<u32>> {
     let mut vh = try_vec(chf.n_vertices, NONE, "the vertex half-faces VH")?;
     for hf in 0..chf.v.len() as u32 {
         for x in face_cycle(&chf.v, hf) {
             let cur = vh[x as usize];
-            if cur == NONE || (chf.o[cur as usize] != NONE && chf.o[hf as usize] == NONE) {
+            if cur == NONE || (o[cur as usize] != NONE && o[hf as usize] == NONE) {
                 vh[x as usize] = hf;
             }
         }

@@ -1,5 +1,5 @@
-//! CHE build and sweeps: levels 1, 2 and 3 from arrays, full VV, VF, FF and EF sweeps, and
-//! the queries below level 2 that compute what their level lacks,
+//! CHE build and sweeps: levels 1, 2 and 3 from arrays, full VV, VF, FF and EF sweeps,
+//! the queries below level 2 that compute what their level lacks, edits at every level,
 //! on a generated torus of 1.2M triangles and on real meshes found in
 //! $TOPOMESH_MESH_DIR or the default mesh cache (see scripts/fetch-meshes.sh). Prints bytes per triangle per level.
 
@@ -206,5 +206,33 @@ fn below_level_2(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, build, build_small, sweeps, below_level_2);
+/// Edits at every level on a grid of about 200k triangles, after a first edit (which
+/// computes, below level 2, the tables the level does not store): each operation costs
+/// the stars it touches at every level, so the three levels should time alike.
+fn edits(c: &mut Criterion) {
+    let grid = topomesh::generate::grid(300, 330);
+    let n = grid.positions.len();
+    let mut group = c.benchmark_group("edits/grid-198k");
+    for level in [0u8, 1, 2] {
+        let options = BuildOptions::level(level);
+        let mut che = Che::from_triangles(&grid.triangles, n, &grid.positions, options).unwrap();
+        che.split_triangle(0, None).unwrap();
+        let mut i = 0u32;
+        group.bench_function(BenchmarkId::new("split_triangle", level), |b| {
+            b.iter(|| {
+                i = i.wrapping_add(7919);
+                black_box(che.split_triangle(i % 190_000, None).unwrap())
+            })
+        });
+        group.bench_function(BenchmarkId::new("flip_edge", level), |b| {
+            b.iter(|| {
+                i = i.wrapping_add(7919);
+                black_box(che.flip_edge(i % 290_000).is_ok())
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, build, build_small, sweeps, below_level_2, edits);
 criterion_main!(benches);

@@ -644,17 +644,17 @@ typedef struct che_memory {
      */
     uint64_t half_edge_vertices;
     /**
-     * `O`, level 1.
+     * `O`, level 1; at level 0 once edited, the `O` the edits keep.
      */
     uint64_t opposites;
     /**
-     * `VH`, level 2.
+     * `VH`, level 2; below once edited, the `VH` the edits keep.
      */
     uint64_t vertex_half_edges;
     /**
      * `EH` and the canonical-half-edge rank bits, level 2; once edited, `EH`, the
      * edge id of each half-edge and the removed-vertex flags (the ids replace the
-     * bits until `garbage_collect`).
+     * bits until `garbage_collect`), and below level 2 the live edges' counts.
      */
     uint64_t edges;
     /**

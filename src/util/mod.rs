@@ -1,6 +1,6 @@
 //! Helpers below both structures: build options and size checks, orientation, origin
 //! maps, the accessors both structures share, CSR arrays, threads, huge pages, prefetches,
-//! rank directories, marks (one bit per element), union-find, small id lists, closing the
+//! rank directories and select over changing bits, marks (one bit per element), union-find, small id lists, closing the
 //! holes of dropped elements, the build input (borrowed or handed over), the weld of
 //! nearly equal vertices, and the build reports' example lists.
 
@@ -13,6 +13,7 @@ pub(crate) mod dsu;
 pub(crate) mod fields;
 pub(crate) mod holes;
 pub(crate) mod input;
+pub(crate) mod live_ranks;
 pub(crate) mod marks;
 pub(crate) mod options;
 pub(crate) mod orient;

@@ -17,7 +17,7 @@
 //! its seams, which depend on the order its traversal meets the triangles, are never
 //! needed; the seam rule below only keeps a CHE whose invariants were broken valid.
 
-use super::arrays::{non_manifold_mut, seams_mut, v_mut};
+use super::arrays::{non_manifold_mut, seams_mut, set_o, set_v};
 use crate::NONE;
 use crate::che::Che;
 use crate::che::build::walk_fan;
@@ -152,7 +152,7 @@ impl Che {
         if self.o[h as usize] == g {
             let e = self.edge_id(h);
             for k in [h, g] {
-                super::arrays::o_mut(self)[k as usize] = NONE;
+                set_o(self, k, NONE);
                 self.note_unpaired(k);
             }
             self.name_edge(h.min(g), e);
@@ -215,7 +215,7 @@ impl Che {
         for fan in &fans[1..] {
             let copy = self.push_vertex(self.position_of(x), self.vertex_origin.get(x));
             for &h in fan {
-                v_mut(self)[h as usize] = copy;
+                set_v(self, h, copy);
             }
             self.fix_vh(copy, fan[0]);
         }

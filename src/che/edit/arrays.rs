@@ -13,6 +13,28 @@ pub(super) fn v_mut(che: &mut Che) -> &mut Vec<u32> {
 pub(super) fn o_mut(che: &mut Che) -> &mut Vec<u32> {
     che.o.owned_mut()
 }
+/// `O[h] = g`.
+pub(super) fn set_o(che: &mut Che, h: u32, g: u32) {
+    che.o.owned_mut()[h as usize] = g;
+    touch_edge_ranks(che, h);
+}
+/// `V[h] = x` (`NONE`: its triangle is removed).
+pub(super) fn set_v(che: &mut Che, h: u32, x: u32) {
+    che.v.owned_mut()[h as usize] = x;
+    touch_edge_ranks(che, h);
+}
+/// Below level 2, whether `h` is a live canonical half-edge may have changed: its block of
+/// the live edges' counts is recounted at the end of the operation.
+pub(super) fn touch_edge_ranks(che: &mut Che, h: u32) {
+    if che.level < 2
+        && let Some(ranks) = che
+            .edit
+            .as_deref_mut()
+            .and_then(|st| st.edge_ranks.as_mut())
+    {
+        ranks.touch(h as usize);
+    }
+}
 pub(super) fn vh_mut(che: &mut Che) -> &mut Vec<u32> {
     che.vh.owned_mut()
 }

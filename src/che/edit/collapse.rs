@@ -1,6 +1,6 @@
 //! Collapsing an edge: its target merges into its origin, its one or two triangles go.
 
-use super::arrays::{o_mut, positions_mut, v_mut, vh_mut};
+use super::arrays::{positions_mut, set_o, set_v, vh_mut};
 use super::checks::refuse;
 use crate::NONE;
 use crate::che::Che;
@@ -57,7 +57,7 @@ impl Che {
         while x != NONE {
             let following = self.next_outgoing(start, x);
             if !wings.contains(&x) && !wings.contains(&prev(x)) {
-                v_mut(self)[x as usize] = a;
+                set_v(self, x, a);
             }
             x = following;
         }
@@ -97,8 +97,8 @@ impl Che {
             return;
         }
         let (keep, gone) = (self.edge_id(q), self.edge_id(p));
-        o_mut(self)[p as usize] = q;
-        o_mut(self)[q as usize] = p;
+        set_o(self, p, q);
+        set_o(self, q, p);
         self.drop_edge(gone);
         self.name_edge(q, keep);
     }

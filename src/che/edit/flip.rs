@@ -1,6 +1,6 @@
 //! Flipping an interior edge: the diagonal of the quad of its two triangles turns.
 
-use super::arrays::{replace_vh, v_mut};
+use super::arrays::{replace_vh, set_v};
 use super::checks::refuse;
 use crate::che::Che;
 use crate::che::ids::{next, prev};
@@ -36,8 +36,8 @@ impl Che {
         let (e, e_ca, e_db) = (self.edge_id(h), self.edge_id(h2), self.edge_id(g2));
         self.move_flags(h2, g);
         self.move_flags(g2, h);
-        v_mut(self)[h as usize] = d;
-        v_mut(self)[g as usize] = c;
+        set_v(self, h, d);
+        set_v(self, g, c);
         self.link(g, oh2);
         self.link(h, og2);
         self.link(h2, g2);

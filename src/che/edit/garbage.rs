@@ -187,11 +187,13 @@ impl Che {
         let vkept = (0..nv as u32).map(|x| !self.is_vertex_removed(x));
         let new_nv = ranks(&mut vmap, vkept);
         ranks(&mut tmap, self.v.chunks_exact(3).map(|c| c[0] != NONE));
-        // Level 0 stores no `O`: the live one is computed for the edge map.
-        let level0_o = if level == 0 {
-            Some(self.live_opposites()?)
-        } else {
-            None
+        // Level 0 stores no `O`: the edge map takes the one the edits kept, or computes it.
+        let level0_o = match level {
+            0 => Some(match self.kept_opposites() {
+                Some(o) => Cow::Borrowed(o),
+                None => Cow::Owned(self.live_opposites()?),
+            }),
+            _ => None,
         };
         let num_edges = self.edge_map(level0_o.as_deref().unwrap_or(&self.o), &tmap, &mut emap)?;
         let (vorigin, torigin) = self.compacted_origins(&vmap, &tmap, new_nv)?;
@@ -202,7 +204,8 @@ impl Che {
         let (nm, seams) = (flags(&self.non_manifold)?, flags(&self.seams)?);
         // From here on nothing is allocated but the rebuilt levels: the arrays are
         // compacted in place, as the peers' collections do (they keep their capacity).
-        self.compact_half_edges(&vmap, &tmap, level0_o.is_none());
+        drop(level0_o);
+        self.compact_half_edges(&vmap, &tmap, level != 0);
         if !self.positions.is_empty() {
             compact_in_place(positions_mut(self), |x| vmap[x] != NONE, |p| p);
         }
@@ -295,6 +298,8 @@ impl Che {
     fn rebuild_levels(&mut self, level: u8) -> Result<()> {
         let st = self.edit.get_or_insert_with(Default::default);
         st.edge_of = Vec::new();
+        st.working = None;
+        st.edge_ranks = None;
         st.changed = false;
         st.curves = Default::default();
         st.boundary = Default::default();

@@ -17,9 +17,11 @@
 //! last computation and those the edits have unpaired since: O(boundary + edits since),
 //! kept until the next edit.
 //!
-//! Cost of one operation: from level 2, local (the stars it touches). Below level 2 there
-//! is no `VH` (and at level 0 no `O`) to find a star from, so an edit computes what it
-//! needs, O(T), like the queries at those levels.
+//! Cost of one operation: local (the stars it touches) at every level. Below level 2 the
+//! level stores no `VH` (and at level 0 no `O`) to find a star from: the first edit
+//! computes them, O(T) once, and the edit state keeps them up to date between edits
+//! (`state.rs`), with the live edges counted by block so that an edge id, a rank there,
+//! is found in O(log T).
 
 mod add;
 mod add_repair;

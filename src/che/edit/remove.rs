@@ -1,6 +1,6 @@
 //! Removing a triangle, and a vertex with its star. The ids are marked, not reused.
 
-use super::arrays::{o_mut, v_mut, vh_mut};
+use super::arrays::{set_o, set_v, vh_mut};
 use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{first, next, prev};
@@ -108,15 +108,15 @@ impl Che {
             if g == NONE {
                 self.drop_edge(e);
             } else {
-                o_mut(self)[g as usize] = NONE;
+                set_o(self, g, NONE);
                 self.note_unpaired(g);
                 self.name_edge(g, e);
             }
-            o_mut(self)[h as usize] = NONE;
+            set_o(self, h, NONE);
             self.unflag(h);
         }
         for h in first(t)..first(t) + 3 {
-            v_mut(self)[h as usize] = NONE;
+            set_v(self, h, NONE);
             if self.level >= 2 {
                 self.st_mut().edge_of[h as usize] = NONE;
             }

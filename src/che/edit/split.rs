@@ -1,7 +1,7 @@
 //! Splitting an edge (2 triangles into 4, or 1 into 2 on the boundary) and a triangle
 //! (1 into 3) at a new vertex.
 
-use super::arrays::{replace_vh, v_mut, vh_mut};
+use super::arrays::{replace_vh, set_v, vh_mut};
 use super::checks::refuse;
 use crate::NONE;
 use crate::che::Che;
@@ -50,7 +50,7 @@ impl Che {
         let m = self.push_vertex(p, NONE);
         let t3 = first(self.push_triangle([m, b, c], self.triangle_origin.get(tri(h))));
         self.hand_over(h1, t3 + 1);
-        v_mut(self)[h1 as usize] = m;
+        set_v(self, h1, m);
         self.link_new(h1, t3 + 2);
         // No old vertex changes its boundary, so a `VH` changes only where its half-edge
         // changed: `b -> c` and `b -> a` now leave `m`, and `d -> b` now ends at `m`; each
@@ -66,7 +66,7 @@ impl Che {
             let d = self.v[g2 as usize];
             let t4 = first(self.push_triangle([b, m, d], self.triangle_origin.get(tri(g))));
             self.hand_over(g2, t4 + 2);
-            v_mut(self)[g as usize] = m;
+            set_v(self, g, m);
             self.link_new(g2, t4 + 1);
             self.link_new(t3, t4);
             replace_vh(self, b, g, t4);
@@ -100,7 +100,7 @@ impl Che {
         let q0 = first(self.push_triangle([c, a, x], origin));
         self.hand_over(h1, p0);
         self.hand_over(h2, q0);
-        v_mut(self)[h2 as usize] = x;
+        set_v(self, h2, x);
         for (u, w) in [(h1, p0 + 2), (h2, q0 + 1), (p0 + 1, q0 + 2)] {
             self.link_new(u, w);
         }

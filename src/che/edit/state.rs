@@ -1,5 +1,5 @@
 //! The editable form: what the first edit materialises, and the working tables an edit
-//! below level 2 computes for itself (and drops) so that every operation is written once.
+//! below level 2 computes for itself, so that every operation is written once.
 
 use super::arrays::{o_mut, vh_mut};
 use crate::NONE;
@@ -8,6 +8,7 @@ use crate::che::ids::next;
 use crate::che::tables::edge_ids;
 use crate::error::Result;
 use crate::util::alloc::{or_panic, try_push, try_vec};
+use crate::util::live_ranks::LiveRanks;
 use crate::util::marks::Marks;
 use std::sync::OnceLock;
 
@@ -29,6 +30,25 @@ pub(crate) struct EditState {
     /// An operation has changed the mesh since the last garbage collection, so the level
     /// tables the build's rules define (edge ranks, curves) no longer describe it.
     pub(crate) changed: bool,
+    /// Below level 2: the working tables between edits.
+    pub(crate) working: Option<WorkingTables>,
+    /// Below level 2, beside the working tables: the live edges counted by block, so
+    /// that an operation finds edge `e` (the `e`-th live canonical half-edge, since ids are
+    /// ranks there) without counting the edges before it. Kept up to date by the writes
+    /// of `arrays.rs` and recounted at the end of each operation.
+    pub(crate) edge_ranks: Option<LiveRanks>,
+}
+
+/// Below level 2, the `O` (level 0) and `VH` that the operations find stars with and keep
+/// up to date, which the level does not store. The first edit computes them, O(T); they
+/// are kept between edits, so that each later one costs the stars it touches, as from
+/// level 2. Outside an edit they sit here, not in the `Che`'s arrays, so every query
+/// answers as its level does. Dropped by a level change and by `garbage_collect`.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct WorkingTables {
+    /// Level 0 only (level 1 stores `O`): empty at level 1.
+    pub(crate) o: Vec<u32>,
+    pub(crate) vh: Vec<u32>,
 }
 
 /// Boundary curves of an edited CHE.
@@ -46,7 +66,8 @@ pub(crate) struct Curves {
 impl EditState {
     /// Bytes of the edge ids and the removed-vertex flags (lengths, as [`crate::che::Memory`]).
     pub(crate) fn edge_bytes(&self) -> usize {
-        4 * self.edge_of.len() + self.removed_vertex.memory_bytes()
+        let ranks = self.edge_ranks.as_ref().map_or(0, LiveRanks::memory_bytes);
+        4 * self.edge_of.len() + self.removed_vertex.memory_bytes() + ranks
     }
     /// Bytes of the level-3 boundary log and of the curves computed from it.
     pub(crate) fn curve_bytes(&self) -> usize {
@@ -108,31 +129,87 @@ impl Che {
     }
 
     /// Below level 2, the tables an edit or a check reads and the level does not store:
-    /// `O` (level 0) and `VH`, over the live triangles.
+    /// `O` (level 0) and `VH` over the live triangles, the kept ones when an edit left
+    /// them.
     fn add_working_tables(&mut self) -> Result<()> {
+        if self.level >= 2 {
+            return Ok(());
+        }
+        let kept = self.edit.as_deref_mut().and_then(|st| st.working.take());
+        let WorkingTables { o, vh } = match kept {
+            Some(kept) => kept,
+            None => self.computed_working_tables()?,
+        };
         if self.level == 0 {
-            let o = self.live_opposites()?;
             *o_mut(self) = o;
         }
-        if self.level < 2 {
-            let vh = self.live_vertex_half_edges(&self.o)?;
-            *vh_mut(self) = vh;
-        }
+        *vh_mut(self) = vh;
         Ok(())
     }
 
+    /// The working tables from `V` (and `O` at level 1), O(T); on an edited CHE also the
+    /// live edges' counts.
+    fn computed_working_tables(&mut self) -> Result<WorkingTables> {
+        let o = match self.level {
+            0 => self.live_opposites()?,
+            _ => Vec::new(),
+        };
+        let full_o = if o.is_empty() { &self.o[..] } else { &o[..] };
+        let vh = self.live_vertex_half_edges(full_o)?;
+        if self.edit.is_some() {
+            let ranks = LiveRanks::new(full_o.len(), |h| self.is_live_canonical(full_o, h))?;
+            self.st_mut().edge_ranks = Some(ranks);
+        }
+        Ok(WorkingTables { o, vh })
+    }
+
+    /// Recounts the blocks of live edges the operation touched.
+    fn refresh_edge_ranks(&mut self) {
+        let Some(mut ranks) = self.edit.as_deref_mut().and_then(|st| st.edge_ranks.take()) else {
+            return;
+        };
+        ranks.refresh(self.v.len(), |h| self.is_live_canonical(&self.o, h));
+        self.st_mut().edge_ranks = Some(ranks);
+    }
+
+    /// Takes the working tables out of the arrays again: into the edit state, for the next
+    /// edit, or dropped when there is none (a check on a mesh never edited).
     fn drop_working_tables(&mut self) {
-        if self.level == 0 {
-            *o_mut(self) = Vec::new();
+        if self.level >= 2 {
+            return;
         }
-        if self.level < 2 {
-            *vh_mut(self) = Vec::new();
+        let o = match self.level {
+            0 => std::mem::take(o_mut(self)),
+            _ => Vec::new(),
+        };
+        let vh = std::mem::take(vh_mut(self));
+        if let Some(st) = self.edit.as_deref_mut() {
+            st.working = Some(WorkingTables { o, vh });
         }
+    }
+
+    /// The working tables the edits keep below level 2 (empty ones when there are none).
+    pub(crate) fn working_tables(&self) -> &WorkingTables {
+        static NONE_KEPT: WorkingTables = WorkingTables {
+            o: Vec::new(),
+            vh: Vec::new(),
+        };
+        self.edits()
+            .and_then(|st| st.working.as_ref())
+            .unwrap_or(&NONE_KEPT)
+    }
+
+    /// The `O` of an edited CHE below level 2 that its last edit kept, when there is one:
+    /// the live triangles' `O` by the level-0 rule, without computing it.
+    pub(crate) fn kept_opposites(&self) -> Option<&[u32]> {
+        let working = self.edits()?.working.as_ref()?;
+        (self.level == 0).then_some(&working.o[..])
     }
 
     /// Runs a check, which never modifies the mesh: from level 2 on the arrays as they are
     /// (a mapped mesh stays mapped, nothing is marked edited, no cache is dropped); below,
-    /// with the working tables computed for it and dropped after.
+    /// with the working tables: an edited mesh's kept ones, else computed for the check
+    /// and dropped after.
     pub(super) fn check_with<T>(&mut self, op: impl FnOnce(&Che) -> Result<T>) -> Result<T> {
         if self.level >= 2 {
             return op(self);
@@ -144,6 +221,7 @@ impl Che {
     }
 
     fn end_edit(&mut self) {
+        self.refresh_edge_ranks();
         self.drop_working_tables();
         if self.level < 2 {
             self.num_edges = self.st().live_edges;
@@ -273,7 +351,10 @@ impl Che {
     pub(crate) fn change_edited_level(&mut self, level: u8) -> Result<()> {
         crate::util::options::check_level(level)?;
         let o = match self.level {
-            0 if level >= 1 => self.live_opposites()?,
+            0 if level >= 1 => match self.kept_opposites() {
+                Some(o) => crate::util::alloc::try_to_vec(o, "the opposites O")?,
+                None => self.live_opposites()?,
+            },
             _ => std::mem::take(o_mut(self)),
         };
         let vh = if level >= 2 && self.level < 2 {
@@ -309,6 +390,71 @@ impl Che {
         self.lazy_edge_bits = OnceLock::new();
         self.st_mut().curves = OnceLock::new();
         self.st_mut().boundary = Default::default();
+        self.st_mut().working = None;
+        self.st_mut().edge_ranks = None;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::che::{BuildOptions, Che};
+    use crate::generate::{grid, torus};
+
+    /// Below level 2 the first edit computes the working tables and every later one finds
+    /// them kept: after each edit they are those a fresh computation gives (`O`) or follow
+    /// level 2's rules (`VH`), queries read them, and a damaged kept table fails `validate`.
+    #[test]
+    fn working_tables_are_kept_between_edits_below_level_2() {
+        for level in [0u8, 1] {
+            for s in [grid(6, 5), torus(7, 5)] {
+                let n = s.positions.len();
+                let options = BuildOptions::level(level);
+                let mut che = Che::from_triangles(&s.triangles, n, &s.positions, options).unwrap();
+                let before = che.memory_bytes();
+                for t in (0..che.num_triangles() as u32).step_by(7) {
+                    che.split_triangle(t, None).unwrap();
+                    let kept = che.edits().unwrap().working.as_ref().unwrap();
+                    if level == 0 {
+                        assert_eq!(kept.o, che.live_opposites().unwrap(), "level 0, t {t}");
+                    }
+                    assert_eq!(kept.vh.len(), che.num_vertices());
+                    che.validate().unwrap();
+                }
+                che.remove_vertex(0).unwrap();
+                che.validate().unwrap();
+                // The kept tables are counted, and nothing is left in the level's arrays.
+                let after = che.memory_bytes();
+                assert_eq!(after.vertex_half_edges, 4 * che.num_vertices());
+                assert!(che.vertex_half_edges().is_none());
+                if level == 0 {
+                    assert_eq!(before.opposites, 0);
+                    assert_eq!(after.opposites, 4 * che.num_half_edges());
+                    assert!(che.opposites().is_none());
+                }
+                let mut broken = che.clone();
+                let st = broken.edit.as_deref_mut().unwrap();
+                st.working.as_mut().unwrap().vh.swap(1, 2);
+                assert!(broken.validate().is_err(), "level {level}: VH swapped");
+                if level == 0 {
+                    let mut broken = che.clone();
+                    let st = broken.edit.as_deref_mut().unwrap();
+                    let o = &mut st.working.as_mut().unwrap().o;
+                    let h = o.iter().position(|&g| g != crate::NONE).unwrap();
+                    o[h] = crate::NONE;
+                    assert!(broken.validate().is_err(), "level 0: O[{h}] unpaired");
+                }
+                // A collection and a level change drop them; the next edit computes them.
+                let mut collected = che.clone();
+                collected.garbage_collect().unwrap();
+                assert!(collected.edits().unwrap().working.is_none());
+                collected.split_triangle(0, None).unwrap();
+                collected.validate().unwrap();
+                let mut raised = che.clone();
+                raised.build_level(2).unwrap();
+                assert!(raised.edits().unwrap().working.is_none());
+                raised.validate().unwrap();
+            }
+        }
     }
 }

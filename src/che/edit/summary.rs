@@ -8,6 +8,7 @@ use crate::che::ids::{next, tri};
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_collect, try_vec};
 use crate::util::dsu::{BoundaryMarks, Dsu};
+use crate::util::live_ranks::LiveRanks;
 
 impl Che {
     /// [`Che::try_summary`] of an edited CHE.
@@ -119,6 +120,11 @@ impl Che {
             if edges != st.live_edges || edges != self.num_edges {
                 return broken(format!("{edges} edges, {} counted", st.live_edges));
             }
+            self.validate_kept_o(&o)?;
+        }
+        if self.level < 2 {
+            self.validate_kept_vh()?;
+            self.validate_edge_ranks()?;
         }
         if self.level >= 2 {
             self.validate_vh()?;
@@ -128,6 +134,58 @@ impl Che {
             self.validate_edited_curves()?;
         }
         Ok(())
+    }
+
+    /// The `O` the edits keep at level 0 is the level-0 rule's `o` of the live triangles,
+    /// which the queries of a mesh never edited compute.
+    fn validate_kept_o(&self, o: &[u32]) -> Result<()> {
+        let Some(kept) = self.kept_opposites() else {
+            return Ok(());
+        };
+        match (0..o.len()).find(|&h| kept.get(h) != Some(&o[h])) {
+            Some(h) => Err(Error::invalid(format!(
+                "invalid CHE: the kept O[{h}] = {:?}, the rule pairs {}",
+                kept.get(h),
+                o[h]
+            ))),
+            None if kept.len() != o.len() => Err(Error::invalid(format!(
+                "invalid CHE: the kept O has {} entries for {} half-edges",
+                kept.len(),
+                o.len()
+            ))),
+            None => Ok(()),
+        }
+    }
+
+    /// The `VH` the edits keep below level 2 follows the rules of level 2's.
+    fn validate_kept_vh(&self) -> Result<()> {
+        let working = self.working_tables();
+        if self.edits().is_none_or(|st| st.working.is_none()) {
+            return Ok(());
+        }
+        let o = self.try_opposites_or_computed()?;
+        let live = 3 * self.st().live_triangles;
+        if self.rotations_cover(&o, &working.vh, live) {
+            return Ok(());
+        }
+        Err(Error::invalid(
+            "invalid CHE: the rotations from the kept VH do not cover the half-edges",
+        ))
+    }
+
+    /// The live edges' counts kept below level 2 are those of the live edges now.
+    fn validate_edge_ranks(&self) -> Result<()> {
+        let Some(ranks) = self.st().edge_ranks.as_ref() else {
+            return Ok(());
+        };
+        let o = self.try_opposites_or_computed()?;
+        let fresh = LiveRanks::new(o.len(), |h| self.is_live_canonical(&o, h))?;
+        if ranks.same_counts(&fresh) {
+            return Ok(());
+        }
+        Err(Error::invalid(
+            "invalid CHE: the kept counts of live edges are not the live edges'",
+        ))
     }
 
     fn validate_edited_edges(&self) -> Result<()> {

@@ -3,8 +3,8 @@
 //! settling the star of a vertex, making room before the first write.
 
 use super::arrays::{
-    eh_mut, non_manifold_mut, o_mut, positions_mut, seams_mut, triangle_origin_mut, v_mut,
-    vertex_origin_mut, vh_mut,
+    eh_mut, non_manifold_mut, o_mut, positions_mut, seams_mut, set_o, set_v, touch_edge_ranks,
+    triangle_origin_mut, v_mut, vertex_origin_mut, vh_mut,
 };
 use crate::NONE;
 use crate::che::Che;
@@ -16,9 +16,9 @@ use glam::DVec3;
 impl Che {
     /// Pairs `h` with `g` (`g == NONE`: `h` becomes a boundary half-edge).
     pub(super) fn link(&mut self, h: u32, g: u32) {
-        o_mut(self)[h as usize] = g;
+        set_o(self, h, g);
         if g != NONE {
-            o_mut(self)[g as usize] = h;
+            set_o(self, g, h);
         } else {
             self.note_unpaired(h);
         }
@@ -176,7 +176,7 @@ impl Che {
         let copy = self.push_vertex(self.position_of(x), self.vertex_origin.get(x));
         let mut h = s;
         loop {
-            v_mut(self)[h as usize] = copy;
+            set_v(self, h, copy);
             let g = self.o[prev(h) as usize];
             if g == NONE {
                 break;
@@ -199,7 +199,11 @@ impl Che {
         try_grow(v_mut(self), h, "the half-edge vertices V")?;
         try_grow(o_mut(self), h, "the opposites O")?;
         try_grow(vh_mut(self), n, "the vertex half-edges VH")?;
+        let total = self.v.len() + h;
         let st = self.st_mut();
+        if let Some(ranks) = st.edge_ranks.as_mut() {
+            ranks.reserve(total)?;
+        }
         st.removed_vertex.try_grow(n, "the removed-vertex flags")?;
         if self.level >= 2 {
             try_grow(&mut self.st_mut().edge_of, h, "the edge ids")?;
@@ -246,7 +250,10 @@ impl Che {
         let t = self.num_triangles() as u32;
         v_mut(self).extend_from_slice(&corners);
         o_mut(self).extend_from_slice(&[NONE; 3]);
-        (3 * t..3 * t + 3).for_each(|h| self.note_unpaired(h));
+        for h in 3 * t..3 * t + 3 {
+            self.note_unpaired(h);
+            touch_edge_ranks(self, h);
+        }
         if self.level >= 2 {
             self.st_mut().edge_of.extend_from_slice(&[NONE; 3]);
         }

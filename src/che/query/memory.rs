@@ -9,13 +9,13 @@ macro_rules! memory_fields {
         $crate::util::fields::fields_struct! { $($head)* {
             /// `V`, level 0.
             half_edge_vertices: $int,
-            /// `O`, level 1.
+            /// `O`, level 1; at level 0 once edited, the `O` the edits keep.
             opposites: $int,
-            /// `VH`, level 2.
+            /// `VH`, level 2; below once edited, the `VH` the edits keep.
             vertex_half_edges: $int,
             /// `EH` and the canonical-half-edge rank bits, level 2; once edited, `EH`, the
             /// edge id of each half-edge and the removed-vertex flags (the ids replace the
-            /// bits until `garbage_collect`).
+            /// bits until `garbage_collect`), and below level 2 the live edges' counts.
             edges: $int,
             /// `CH`, the boundary rank bits and the curve of each boundary half-edge, level 3;
             /// once edited, also the boundary half-edges the edits noted and the curves
@@ -53,10 +53,11 @@ impl Che {
 
     pub fn memory_bytes(&self) -> Memory {
         let ints = |n: usize| 4 * n;
+        let working = self.working_tables();
         let mut m = Memory {
             half_edge_vertices: ints(self.v.len()),
-            opposites: ints(self.o.len()),
-            vertex_half_edges: ints(self.vh.len()),
+            opposites: ints(self.o.len() + working.o.len()),
+            vertex_half_edges: ints(self.vh.len() + working.vh.len()),
             edges: ints(self.eh.len())
                 + self.edge_bits.memory_bytes()
                 + self.edits().map_or(0, |s| s.edge_bytes()),

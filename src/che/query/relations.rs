@@ -61,10 +61,13 @@ impl Che {
         if others == 1 { found } else { NONE }
     }
 
-    /// Opposites: borrowed from level 1 on, computed (O(T) time and memory) at level 0.
+    /// Opposites: borrowed from level 1 on, and at level 0 from the tables the last edit
+    /// kept; else computed (O(T) time and memory).
     pub(crate) fn try_opposites_or_computed(&self) -> Result<Cow<'_, [u32]>> {
         Ok(if self.level >= 1 {
             Cow::Borrowed(&self.o)
+        } else if let Some(o) = self.kept_opposites() {
+            Cow::Borrowed(o)
         } else if self.edits().is_some() {
             Cow::Owned(self.live_opposites()?)
         } else {
@@ -209,8 +212,8 @@ impl Che {
     }
 
     /// The canonical half-edge of edge `e` (the boundary one on a boundary edge), `NONE`
-    /// for a removed edge. O(1) at level 2; O(T) at level 1 (a count of the canonical half-edges), and O(T)
-    /// memory at level 0.
+    /// for a removed edge. O(1) at level 2; O(T) at level 1 (a count of the canonical
+    /// half-edges), and O(T) memory at level 0.
     pub fn edge_half_edge(&self, e: u32) -> u32 {
         if self.level >= 2 {
             return self.eh[e as usize];

@@ -21,7 +21,7 @@ const LINK: &str = "the link of a collapse";
 /// Every face of each simplex of `tops` (the simplices themselves included), sorted, once.
 fn closure(tops: &[Simplex]) -> Result<Vec<Simplex>> {
     // A simplex of at most three vertices has at most seven faces.
-    let mut out = try_with_capacity(7 * tops.len(), "the link of a collapse")?;
+    let mut out = try_with_capacity(7 * tops.len(), LINK)?;
     for s in tops {
         let n = s.iter().take_while(|&&x| x != NONE).count();
         for mask in 1u32..(1 << n) {
@@ -78,8 +78,8 @@ impl Chf {
         let [a, b] = self.half_edge_vertices(he);
         let (la, lb) = (self.link(&[a])?, self.link(&[b])?);
         let lab = self.link(&[a, b])?;
-        let common = la.iter().filter(|s| lb.binary_search(s).is_ok());
-        if let Some(s) = common.into_iter().find(|s| lab.binary_search(s).is_err()) {
+        let mut common = la.iter().filter(|s| lb.binary_search(s).is_ok());
+        if let Some(s) = common.find(|s| lab.binary_search(s).is_err()) {
             let named: Vec<String> = s
                 .iter()
                 .filter(|&&x| x != NONE)

@@ -7,10 +7,9 @@
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::edit::garbage_collect::Compacted;
-use crate::chf::ids::{face_cycle, first, slot_half_edges, tet};
+use crate::chf::ids::{first, slot_half_edges, tet};
 use crate::chf::query::view::Need;
 use crate::error::{Error, Result};
-use crate::util::alloc::try_vec;
 
 fn ensure(ok: bool, what: impl FnOnce() -> String) -> Result<()> {
     if ok {
@@ -23,13 +22,8 @@ fn ensure(ok: bool, what: impl FnOnce() -> String) -> Result<()> {
 /// Which vertices of `chf`, whose `O` is `o`, lie on an unpaired half-face (below level
 /// 2, asking `is_boundary_vertex` of each vertex would compute `O` for every one).
 fn boundary_marks(chf: &Chf, o: &[u32]) -> Result<Vec<bool>> {
-    let mut on = try_vec(chf.num_vertices(), false, "the boundary vertices")?;
-    for (hf, _) in o.iter().enumerate().filter(|&(_, &g)| g == NONE) {
-        for x in face_cycle(&chf.v, hf as u32) {
-            on[x as usize] = true;
-        }
-    }
-    Ok(on)
+    let unpaired = (0..o.len() as u32).filter(|&hf| o[hf as usize] == NONE);
+    crate::chf::query::vertices_on(chf, unpaired)
 }
 
 impl Chf {

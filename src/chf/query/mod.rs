@@ -17,3 +17,4 @@ pub use fan::EdgeIds;
 pub use memory::Memory;
 pub use star::{STAR_INLINE, VertexIds};
 pub use summary::Summary;
+pub(crate) use validate::vertices_on;

@@ -10,6 +10,18 @@ use crate::error::{Error, Result};
 use crate::util::alloc::{try_collect, try_vec};
 use crate::util::origin::increasing_below_violation;
 
+/// Which vertices of `chf` lie on one of the half-faces `hfs` (the unpaired ones: the
+/// boundary vertices).
+pub(crate) fn vertices_on(chf: &Chf, hfs: impl Iterator<Item = u32>) -> Result<Vec<bool>> {
+    let mut on = try_vec(chf.n_vertices, false, "the boundary vertices")?;
+    for hf in hfs {
+        for x in face_cycle(&chf.v, hf) {
+            on[x as usize] = true;
+        }
+    }
+    Ok(on)
+}
+
 /// The first violation, as an error naming the structure.
 fn broken(what: String) -> Result<()> {
     Err(Error::invalid(format!("invalid CHF: {what}")))
@@ -329,12 +341,7 @@ impl Chf {
         let Some(b) = &self.boundary else {
             return Ok(Vec::new());
         };
-        let mut on = try_vec(self.n_vertices, false, "the boundary vertices")?;
-        for &hf in unpaired {
-            for x in face_cycle(&self.v, hf) {
-                on[x as usize] = true;
-            }
-        }
+        let on = vertices_on(self, unpaired.iter().copied())?;
         let vertices = (0..self.n_vertices as u32).filter(|&v| on[v as usize]);
         let vertices = try_collect(vertices, "the boundary vertices")?;
         ensure_same(&b.vertices, &vertices, |b, v| {

@@ -164,6 +164,12 @@ impl Che {
         broken(what.unwrap_or_else(|| "the rotations from VH do not cover the half-edges".into()))
     }
 
+    /// Whether the rotations from `vh` over `o` meet `live` live outgoing half-edges, each
+    /// vertex's all of them from its boundary one (the `VH` rules), `o` checked before.
+    pub(crate) fn rotations_cover(&self, o: &[u32], vh: &[u32], live: usize) -> bool {
+        vh.len() == self.n_vertices && sweep::rotations_cover(&self.v, o, vh, live)
+    }
+
     fn validate_edges(&self) -> Result<()> {
         let o = &self.o;
         if self.eh.len() != self.num_edges || self.edge_bits.ones() != self.num_edges {

@@ -692,28 +692,25 @@ fn every_surface_edit_allocation_can_fail() {
             let options = topomesh::BuildOptions::level(level);
             Che::from_triangles(&s.triangles, s.positions.len(), &s.positions, options).unwrap()
         };
-        // Below level 2 an edit computes `O` or `VH` for itself (O(T), several large
-        // requests each): fewer edits there keep the test short.
-        let sparse = if level < 2 { 8 } else { 1 };
         let edits = |che: &mut Che| -> Result<(), topomesh::Error> {
             let (ne, nt) = (che.num_edges() as u32, che.num_triangles() as u32);
-            for e in (0..ne).step_by(7 * sparse) {
+            for e in (0..ne).step_by(7) {
                 if che.is_flip_ok(e)? {
                     che.flip_edge(e)?;
                 }
             }
-            for t in (0..nt).step_by(11 * sparse) {
+            for t in (0..nt).step_by(11) {
                 unless_refused(che.split_triangle(t, None))?;
             }
-            for e in (3..ne).step_by(13 * sparse) {
+            for e in (3..ne).step_by(13) {
                 unless_refused(che.split_edge(e, None))?;
             }
-            for h in (5..3 * nt).step_by(97 * sparse) {
+            for h in (5..3 * nt).step_by(97) {
                 if che.is_collapse_ok(h)? {
                     che.collapse_edge(h)?;
                 }
             }
-            for t in (1..nt).step_by(17 * sparse) {
+            for t in (1..nt).step_by(17) {
                 unless_refused(che.remove_triangle(t))?;
             }
             let x = che.add_vertex(Some(glam::DVec3::new(2.0, 2.0, 0.0)))?;
@@ -777,4 +774,70 @@ fn every_volume_edit_allocation_can_fail() {
         let refused = refuse_each_edit(&format!("level {level}"), make, edits, Chf::validate);
         assert!(refused > 10, "level {level}: only {refused} large requests");
     }
+}
+
+/// [`refuse_each_edit`] at each of `levels`, the mesh from `make(level)`: at least one
+/// large request each.
+fn refuse_each_edit_at<M>(
+    what: &str, levels: &[u8], make: impl Fn(u8) -> M,
+    edits: impl Fn(&mut M) -> Result<(), topomesh::Error>,
+    validate: impl Fn(&M) -> Result<(), topomesh::Error>,
+) {
+    for &level in levels {
+        let what = format!("{what}, level {level}");
+        let refused = refuse_each_edit(&what, || make(level), &edits, &validate);
+        assert!(refused > 0, "{what}: no large request");
+    }
+}
+
+/// Edits at a vertex of high degree, where the working lists outgrow the stack and the
+/// large-request limit: the ring of a surface hub a collapse check gathers. Each refusal
+/// is an error that leaves the mesh valid.
+#[test]
+fn edits_at_a_surface_hub_can_fail() {
+    use topomesh::Che;
+    // The north pole (vertex 0) of a sphere of 1500 meridians has 1500 neighbours.
+    let s = topomesh::generate::sphere(1500, 4);
+    let make = |level| {
+        let options = topomesh::BuildOptions::level(level);
+        Che::from_triangles(&s.triangles, s.positions.len(), &s.positions, options).unwrap()
+    };
+    let edits = |che: &mut Che| -> Result<(), topomesh::Error> {
+        // Half-edge 3i runs from the pole to its i-th neighbour.
+        for h in (0..1500 * 3).step_by(3 * 211) {
+            if che.is_collapse_ok(h)? {
+                che.collapse_edge(h)?;
+            }
+        }
+        Ok(())
+    };
+    refuse_each_edit_at("surface", &[0, 2], make, edits, Che::validate);
+}
+
+/// The same for a volume: the stars a volume edit's check reads and its commit walks.
+#[test]
+fn edits_at_a_volume_hub_can_fail() {
+    use topomesh::Chf;
+    // A cone over a sphere of 2320 triangles: its apex has 2320 tetrahedra.
+    let sphere = topomesh::generate::sphere(40, 30);
+    let apex = sphere.positions.len() as u32;
+    let mut positions = sphere.positions.clone();
+    positions.push(glam::DVec3::ZERO);
+    let cone = sphere.triangles.iter().map(|&[a, b, c]| [a, b, c, apex]);
+    let tets: Vec<[u32; 4]> = cone.collect();
+    let make = |level| {
+        let options = topomesh::BuildOptions::level(level);
+        Chf::from_tetrahedra(&tets, positions.len(), &positions, options).unwrap()
+    };
+    let edits = |chf: &mut Chf| -> Result<(), topomesh::Error> {
+        let nt = chf.num_tetrahedra() as u64;
+        for he in (5..12 * nt).step_by(1201) {
+            unless_refused(chf.collapse_edge(he))?;
+        }
+        unless_refused(chf.remove_vertex(300))?;
+        unless_refused(chf.remove_tetrahedron(17))?;
+        unless_refused(chf.add_tetrahedron(tets[17]))?;
+        Ok(())
+    };
+    refuse_each_edit_at("volume", &[0, 2, 3], make, edits, Chf::validate);
 }

@@ -5,6 +5,7 @@ use crate::NONE;
 use crate::che::Che;
 use crate::che::ids::{first, next, prev, tri};
 use crate::error::{Error, Result};
+use crate::util::alloc::try_push;
 use crate::util::live_ranks::BLOCK;
 use crate::util::small_ids::Ids;
 
@@ -203,29 +204,29 @@ impl Che {
     /// the link condition (the common neighbours of the two ends are the third vertices of
     /// its triangles, and no edge between them is in both links), no edge between two
     /// boundary vertices unless on the boundary, no triangle left with two boundary edges.
-    pub(super) fn collapse_refusal(&self, h: u32) -> Option<String> {
+    pub(super) fn collapse_refusal(&self, h: u32) -> Result<Option<String>> {
         let (a, b, wings) = self.collapse_wings(h);
         let interior = wings.len() == 2;
         for &w in wings.iter() {
             if [w, next(w), prev(w)].iter().any(|&x| self.is_flagged(x)) {
-                return Some(format!(
+                return Ok(Some(format!(
                     "half-edge {h}: triangle {} is on a non-manifold edge or seam",
                     tri(w)
-                ));
+                )));
             }
             let (p, q) = (self.o[next(w) as usize], self.o[prev(w) as usize]);
             if p == NONE && q == NONE {
-                return Some(format!(
+                return Ok(Some(format!(
                     "half-edge {h}: triangle {} would fold onto its boundary",
                     tri(w)
-                ));
+                )));
             }
         }
         let boundary = |x: u32| self.o[self.vh[x as usize] as usize] == NONE;
         if interior && boundary(a) && boundary(b) {
-            return Some(format!(
+            return Ok(Some(format!(
                 "half-edge {h}: interior edge {a}-{b} joins two boundary vertices"
-            ));
+            )));
         }
         let mut thirds = Ids::<2>::new();
         wings
@@ -234,36 +235,36 @@ impl Che {
         if let [c, d] = thirds[..]
             && c == d
         {
-            return Some(format!(
+            return Ok(Some(format!(
                 "half-edge {h}: both triangles have the same third vertex {c}"
-            ));
+            )));
         }
-        if let Some(y) = self.shared_neighbour(a, b, &thirds) {
-            return Some(format!(
+        if let Some(y) = self.shared_neighbour(a, b, &thirds)? {
+            return Ok(Some(format!(
                 "half-edge {h}: the link condition fails ({a} and {b} share neighbour {y})"
-            ));
+            )));
         }
         if let [c, d] = thirds[..]
             && self.has_triangle_on(a, c, d)
             && self.has_triangle_on(b, c, d)
         {
-            return Some(format!(
+            return Ok(Some(format!(
                 "half-edge {h}: the link condition fails (edge {c}-{d} is in both links)"
-            ));
+            )));
         }
-        None
+        Ok(None)
     }
 
     /// A neighbour of both `a` and `b` other than `a` and the `thirds`, if there is one.
     /// The ring of `a` is gathered on the stack when it is small, as it nearly always is.
-    fn shared_neighbour(&self, a: u32, b: u32, thirds: &[u32]) -> Option<u32> {
+    fn shared_neighbour(&self, a: u32, b: u32, thirds: &[u32]) -> Result<Option<u32>> {
         self.shared_neighbour_in::<32>(a, b, thirds)
     }
 
     /// `shared_neighbour` with a stack ring of `SMALL` vertices.
     fn shared_neighbour_in<const SMALL: usize>(
         &self, a: u32, b: u32, thirds: &[u32],
-    ) -> Option<u32> {
+    ) -> Result<Option<u32>> {
         let (mut ring, mut n) = ([NONE; SMALL], 0);
         let fits = !self.any_neighbour(a, |y| {
             if n == SMALL {
@@ -276,10 +277,12 @@ impl Che {
         // Past `SMALL` neighbours (a rare hub), the ring goes to a sorted vector instead.
         let mut large = Vec::new();
         if !fits {
+            let mut grown = Ok(());
             self.any_neighbour(a, |y| {
-                large.push(y);
-                false
+                grown = try_push(&mut large, y, "the ring of a collapsed edge's end");
+                grown.is_err()
             });
+            grown?;
             large.sort_unstable();
         }
         let around_a = |y: u32| {
@@ -295,7 +298,7 @@ impl Che {
             shared = found.then_some(y);
             found
         });
-        shared
+        Ok(shared)
     }
 
     /// Calls `f` on the vertices around `x` (each once, in rotation order) until it returns
@@ -338,7 +341,7 @@ impl Che {
     pub fn is_collapse_ok(&mut self, h: u32) -> Result<bool> {
         self.check_with(|c| {
             c.live_half_edge(h)?;
-            Ok(c.collapse_refusal(h).is_none())
+            Ok(c.collapse_refusal(h)?.is_none())
         })
     }
 }
@@ -388,13 +391,11 @@ mod tests {
             for h in 0..v.len() as u32 {
                 let (a, b) = (v[h as usize], v[crate::che::ids::next(h) as usize]);
                 let thirds = [v[crate::che::ids::prev(h) as usize]];
-                let stack = che.shared_neighbour_in::<64>(a, b, &thirds);
-                assert_eq!(
-                    che.shared_neighbour_in::<1>(a, b, &thirds),
-                    stack,
-                    "half-edge {h}"
-                );
-                assert_eq!(che.shared_neighbour(a, b, &thirds), stack, "half-edge {h}");
+                let stack = che.shared_neighbour_in::<64>(a, b, &thirds).unwrap();
+                let heap = che.shared_neighbour_in::<1>(a, b, &thirds).unwrap();
+                assert_eq!(heap, stack, "half-edge {h}");
+                let chosen = che.shared_neighbour(a, b, &thirds).unwrap();
+                assert_eq!(chosen, stack, "half-edge {h}");
             }
         }
     }

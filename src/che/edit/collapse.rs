@@ -17,7 +17,7 @@ impl Che {
     pub fn collapse_edge(&mut self, h: u32) -> Result<u32> {
         self.edit_with(|m| {
             m.live_half_edge(h)?;
-            if let Some(why) = m.collapse_refusal(h) {
+            if let Some(why) = m.collapse_refusal(h)? {
                 return refuse(format!("collapse_edge: {why}"));
             }
             Ok(m.collapse_live(h))

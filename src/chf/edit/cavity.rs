@@ -189,7 +189,7 @@ impl Chf {
                     continue;
                 }
                 edges.push((a, b));
-                if self.star_holds(view, plan, a, &[b]) {
+                if self.star_holds(view, plan, a, &[b])? {
                     return Err(refuse_as(
                         ErrorKind::NonManifold,
                         format_args!("edge ({a}, {b}) exists already"),
@@ -244,15 +244,16 @@ impl Chf {
 
     /// Does a tetrahedron of the star of `x` outside the cavity hold every vertex of
     /// `others`?
-    fn star_holds(&self, view: &View, plan: &Plan, x: u32, others: &[u32]) -> bool {
+    fn star_holds(&self, view: &View, plan: &Plan, x: u32, others: &[u32]) -> Result<bool> {
         let mut star = Star::new(x, view.start_half_face(x));
         while let Some((t, _)) = star.next(view, |_| 0) {
             let q = self.tetrahedron_vertices(t);
             if !plan.remove.contains(&t) && others.iter().all(|y| q.contains(y)) {
-                return true;
+                return Ok(true);
             }
         }
-        false
+        star.complete()?;
+        Ok(false)
     }
 }
 

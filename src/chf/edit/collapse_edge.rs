@@ -6,6 +6,8 @@ use super::refusal::{Named, context, yes_or_no};
 use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::HalfEdge;
+use crate::chf::query::star::star_tetrahedra;
+use crate::chf::query::view::{Need, View};
 use crate::error::{Error, Result};
 use crate::util::alloc::{try_push, try_with_capacity};
 
@@ -55,16 +57,16 @@ fn rest(q: &[u32], keep: &[u32], extra: Option<u32>) -> Simplex {
 impl Chf {
     /// The link of the simplex `keep` (one or two vertices): the rest of each tetrahedron
     /// holding it, and the rest of each boundary face holding it coned to [`INF`].
-    fn link(&self, keep: &[u32]) -> Result<Vec<Simplex>> {
+    fn link(&self, view: &View, keep: &[u32]) -> Result<Vec<Simplex>> {
         let mut tops: Vec<Simplex> = Vec::new();
-        for t in self.vertex_tetrahedra(keep[0]) {
+        for t in star_tetrahedra(view, keep[0])? {
             let q = self.tetrahedron_vertices(t);
             if keep.iter().all(|x| q.contains(x)) {
                 try_push(&mut tops, rest(&q, keep, None), LINK)?;
                 for i in 0..4 {
                     let hf = 4 * t + i;
                     let tri = self.half_face_vertices_of(hf);
-                    if self.opposite(hf) == NONE && keep.iter().all(|x| tri.contains(x)) {
+                    if view.o[hf as usize] == NONE && keep.iter().all(|x| tri.contains(x)) {
                         try_push(&mut tops, rest(&tri, keep, Some(INF)), LINK)?;
                     }
                 }
@@ -76,8 +78,11 @@ impl Chf {
     fn plan_collapse_edge(&self, he: HalfEdge) -> Result<Plan> {
         self.check_live_half_edge(he)?;
         let [a, b] = self.half_edge_vertices(he);
-        let (la, lb) = (self.link(&[a])?, self.link(&[b])?);
-        let lab = self.link(&[a, b])?;
+        // One view for the three links and the plan (below level 1 on a mesh never
+        // edited, it computes `O`).
+        let view = self.try_view(Need::NOTHING)?;
+        let (la, lb) = (self.link(&view, &[a])?, self.link(&view, &[b])?);
+        let lab = self.link(&view, &[a, b])?;
         let mut common = la.iter().filter(|s| lb.binary_search(s).is_ok());
         if let Some(s) = common.find(|s| lab.binary_search(s).is_err()) {
             let named: Vec<String> = s
@@ -100,7 +105,7 @@ impl Chf {
             retire: vec![a],
             ..Plan::default()
         };
-        for t in self.vertex_tetrahedra(a) {
+        for t in star_tetrahedra(&view, a)? {
             let q = self.tetrahedron_vertices(t);
             try_push(&mut plan.remove, t, "a collapse's tetrahedra")?;
             if !q.contains(&b) {

@@ -13,6 +13,7 @@ use crate::chf::ids::{EDGE, FACE, edge_index, first, slot_half_edges, tet};
 use crate::chf::query::star::Star;
 use crate::chf::query::view::{Need, View};
 use crate::error::{Error, ErrorKind, Result};
+use crate::util::alloc::{try_collect, try_extend, try_push, try_vec, try_with_capacity};
 use glam::DVec3;
 
 /// What an operation does, before it is checked.
@@ -52,6 +53,12 @@ pub(crate) struct Verified {
 /// Touched vertices, each with its tetrahedra after an edit.
 type Stars = Vec<(u32, Vec<u32>)>;
 
+/// Each touched vertex pair with its edge id before the edit (`NONE`: a new pair).
+type EdgeIdsBefore = Vec<((u32, u32), u32)>;
+
+/// What a plan's check and commit call their working lists when they do not fit in memory.
+const STAR: &str = "the stars an edit touches";
+
 /// The mesh as the plan would leave it, read without writing.
 struct After<'a> {
     chf: &'a Chf,
@@ -71,30 +78,30 @@ impl After<'_> {
     }
 
     /// The tetrahedra around `x` after the edit.
-    fn star(&self, x: u32) -> Vec<u32> {
+    fn star(&self, x: u32) -> Result<Vec<u32>> {
         let mut out = Vec::new();
         if (x as usize) < self.chf.n_vertices {
             let mut star = Star::new(x, self.view.start_half_face(x));
             while let Some((t, _)) = star.next(&self.view, |_| 0) {
                 if !self.plan.remove.contains(&t) {
-                    out.push(t);
+                    try_push(&mut out, t, STAR)?;
                 }
             }
+            star.complete()?;
         }
         for (k, q) in self.plan.add.iter().enumerate() {
             if q.contains(&x) {
-                out.push(self.bound + k as u32);
+                try_push(&mut out, self.bound + k as u32, STAR)?;
             }
         }
-        out
+        Ok(out)
     }
 
     /// The tetrahedra other than `t` holding every vertex of `key` after the edit.
-    fn holders(&self, t: u32, key: [u32; 3]) -> Vec<u32> {
-        self.star(key[0])
-            .into_iter()
-            .filter(|&s| s != t && key.iter().all(|x| self.verts(s).contains(x)))
-            .collect()
+    fn holders(&self, t: u32, key: [u32; 3]) -> Result<Vec<u32>> {
+        let star = self.star(key[0])?.into_iter();
+        let holders = star.filter(|&s| s != t && key.iter().all(|x| self.verts(s).contains(x)));
+        try_collect(holders, STAR)
     }
 }
 
@@ -139,17 +146,17 @@ impl Chf {
             view: self.try_view(Need::NOTHING)?,
         };
         let new_o = self.pair_new_faces(&after)?;
-        let mut touched: Vec<u32> = plan
+        let removed = plan
             .remove
             .iter()
-            .flat_map(|&t| self.tetrahedron_vertices(t))
-            .collect();
-        touched.extend(plan.add.iter().flatten());
+            .flat_map(|&t| self.tetrahedron_vertices(t));
+        let mut touched = try_collect(removed, STAR)?;
+        try_extend(&mut touched, plan.add.iter().flatten().copied(), STAR)?;
         touched.sort_unstable();
         touched.dedup();
-        let mut stars = Vec::with_capacity(touched.len());
+        let mut stars = try_with_capacity(touched.len(), STAR)?;
         for &x in &touched {
-            let star = after.star(x);
+            let star = after.star(x)?;
             self.one_piece(&after, &new_o, &star, &[x], || {
                 format!("vertex {x} would be non-manifold (its star in pieces)")
             })?;
@@ -210,13 +217,13 @@ impl Chf {
     /// The twin of every new half-face: the one other tetrahedron holding its triple after
     /// the edit, running the other way.
     fn pair_new_faces(&self, after: &After) -> Result<Vec<u32>> {
-        let mut new_o = vec![NONE; 4 * after.plan.add.len()];
+        let mut new_o = try_vec(4 * after.plan.add.len(), NONE, STAR)?;
         for (k, &q) in after.plan.add.iter().enumerate() {
             let t = after.bound + k as u32;
             for i in 0..4 {
                 let c = cycle(q, i);
                 let key = sorted3(c);
-                let holders = after.holders(t, key);
+                let holders = after.holders(t, key)?;
                 if holders.len() > 1 {
                     return Err(refuse_as(
                         ErrorKind::NonManifold,
@@ -269,7 +276,7 @@ impl Chf {
         for i in 0..4 {
             let c = cycle(q, i);
             let key = sorted3(c);
-            if let [s] = after.holders(after.bound, key)[..] {
+            if let [s] = after.holders(after.bound, key)?[..] {
                 let sv = after.verts(s);
                 if same_way(c, cycle(sv, fourth(sv, key))) {
                     return Ok(true);
@@ -305,8 +312,10 @@ impl Chf {
         if set.len() <= 1 {
             return Ok(());
         }
-        let mut reached = vec![false; set.len()];
-        let mut stack = vec![0usize];
+        let mut reached = try_vec(set.len(), false, STAR)?;
+        // Each member is pushed once at most: the stack never outgrows `set`.
+        let mut stack = try_with_capacity(set.len(), STAR)?;
+        stack.push(0usize);
         reached[0] = true;
         while let Some(i) = stack.pop() {
             let q = after.verts(set[i]);
@@ -335,11 +344,11 @@ impl Chf {
 
     /// Every touched vertex pair is one fan after the edit, and none carries several now.
     fn check_fans(&self, after: &After, new_o: &[u32], stars: &[(u32, Vec<u32>)]) -> Result<()> {
-        for (a, b) in touched_pairs(self, after.plan) {
+        for (a, b) in touched_pairs(self, after.plan)? {
             if self.multi_fan.iter().any(|m| (m.a, m.b) == (a, b)) {
                 return Err(refuse(format_args!("edge ({a}, {b}) carries several fans")));
             }
-            let fan = fan_of(stars, a, b, |t| after.verts(t));
+            let fan = try_collect(fan_of(stars, a, b, |t| after.verts(t)), STAR)?;
             self.one_piece(after, new_o, &fan, &[a, b], || {
                 format!("edge ({a}, {b}) would be non-manifold (several fans)")
             })?;
@@ -350,34 +359,39 @@ impl Chf {
 
 /// The tetrahedra of the pair `(a, b)`: those of the star of `a` among the touched `stars`
 /// whose vertices (`verts`) hold `b`.
-fn fan_of(stars: &[(u32, Vec<u32>)], a: u32, b: u32, verts: impl Fn(u32) -> [u32; 4]) -> Vec<u32> {
-    let star = &stars.iter().find(|(x, _)| *x == a).expect("touched").1;
-    star.iter()
+fn fan_of<'a>(
+    stars: &'a [(u32, Vec<u32>)], a: u32, b: u32, verts: impl Fn(u32) -> [u32; 4] + 'a,
+) -> impl Iterator<Item = u32> + 'a {
+    star_of(stars, a)
+        .iter()
         .copied()
-        .filter(|&t| verts(t).contains(&b))
-        .collect()
+        .filter(move |&t| verts(t).contains(&b))
+}
+
+/// The tetrahedra of touched vertex `a` after the edit.
+fn star_of(stars: &[(u32, Vec<u32>)], a: u32) -> &[u32] {
+    &stars.iter().find(|(x, _)| *x == a).expect("touched").1
 }
 
 /// The vertex pairs of the removed and added tetrahedra, each once.
-fn touched_pairs(chf: &Chf, plan: &Plan) -> Vec<(u32, u32)> {
+fn touched_pairs(chf: &Chf, plan: &Plan) -> Result<Vec<(u32, u32)>> {
     let quads = plan
         .remove
         .iter()
         .map(|&t| chf.tetrahedron_vertices(t))
         .chain(plan.add.iter().copied());
-    let mut pairs: Vec<(u32, u32)> = quads
-        .flat_map(|q| {
-            EDGE.map(|[p, r]| {
-                (
-                    q[p as usize].min(q[r as usize]),
-                    q[p as usize].max(q[r as usize]),
-                )
-            })
+    let pairs = quads.flat_map(|q| {
+        EDGE.map(|[p, r]| {
+            (
+                q[p as usize].min(q[r as usize]),
+                q[p as usize].max(q[r as usize]),
+            )
         })
-        .collect();
+    });
+    let mut pairs = try_collect(pairs, STAR)?;
     pairs.sort_unstable();
     pairs.dedup();
-    pairs
+    Ok(pairs)
 }
 
 impl Chf {
@@ -387,11 +401,14 @@ impl Chf {
         let Verified { plan, new_o, stars } = verified;
         let bound = self.num_tetrahedra() as u32;
         self.reserve_for(&plan)?;
+        // Every list the writes fill, made first: nothing below allocates.
+        let new_ids = try_collect(bound..bound + plan.add.len() as u32, STAR)?;
+        let mut rep_faces = try_with_capacity(4 * (plan.remove.len() + plan.add.len()), STAR)?;
+        let old_ids = self.old_edge_ids(&plan, &stars)?;
         if let Some(p) = plan.new_vertex {
             self.push_new_vertex(p)?;
         }
-        let old_ids = self.old_edge_ids(&plan, &stars);
-        let rep_faces = self.detach(&plan.remove);
+        self.detach(&plan.remove, &mut rep_faces);
         for &q in &plan.add {
             self.push_new_tetrahedron(q)?;
         }
@@ -419,7 +436,7 @@ impl Chf {
         }
         self.num_faces = self.edit.as_ref().expect("edited").face_hf.len();
         self.num_edges = self.edit.as_ref().expect("edited").edge_he.len();
-        Ok((bound..bound + plan.add.len() as u32).collect())
+        Ok(new_ids)
     }
 
     /// Appends a vertex (live, no half-face yet).
@@ -477,10 +494,10 @@ impl Chf {
         }
     }
 
-    /// Marks `remove` removed and unpairs their neighbours; returns the faces that live on
-    /// through a surviving twin, with that twin.
-    fn detach(&mut self, remove: &[u32]) -> Vec<(u32, u32)> {
-        let mut reps = Vec::new();
+    /// Marks `remove` removed and unpairs their neighbours; adds to `reps` (room made for
+    /// four per tetrahedron) the faces that live on through a surviving twin, with that
+    /// twin.
+    fn detach(&mut self, remove: &[u32], reps: &mut Vec<(u32, u32)>) {
         let s = self.edit.as_mut().expect("edited");
         for &t in remove {
             s.tet_removed.set(t as usize);
@@ -507,7 +524,6 @@ impl Chf {
                 s.slot_edge[6 * t as usize + k] = NONE;
             }
         }
-        reps
     }
 
     /// Face ids of the new half-faces (inherited through an old twin, else new) and the
@@ -536,11 +552,16 @@ impl Chf {
 
     /// Edge ids of the touched vertex pairs: kept while the pair has tetrahedra, new for a
     /// new pair; the canonical half-edge of each by the build's rule.
-    fn renumber_edges(&mut self, old_ids: Vec<((u32, u32), u32)>, stars: &[(u32, Vec<u32>)]) {
+    fn renumber_edges(&mut self, old_ids: EdgeIdsBefore, stars: &[(u32, Vec<u32>)]) {
         for ((a, b), old) in old_ids {
-            let fan = fan_of(stars, a, b, |t| self.tetrahedron_vertices(t));
+            // The fan is read from the star as it is walked: the commit allocates nothing.
+            let holds_b = |c: &Chf, t: u32| c.tetrahedron_vertices(t).contains(&b);
+            let t0 = star_of(stars, a)
+                .iter()
+                .copied()
+                .find(|&t| holds_b(self, t));
             let s = self.edit.as_mut().expect("edited");
-            let Some(&t0) = fan.first() else {
+            let Some(t0) = t0 else {
                 if old != NONE && s.edge_he[old as usize] != crate::chf::NO_HALF_EDGE {
                     s.edge_he[old as usize] = crate::chf::NO_HALF_EDGE;
                     s.live_edges -= 1;
@@ -554,7 +575,10 @@ impl Chf {
                 s.live_edges += 1;
                 s.edge_he.len() as u32 - 1
             };
-            for &t in &fan {
+            for &t in star_of(stars, a) {
+                if !holds_b(self, t) {
+                    continue;
+                }
                 let slot = self.pair_slot(t, a, b);
                 self.edit.as_mut().expect("edited").slot_edge[slot as usize] = id;
             }
@@ -574,14 +598,14 @@ impl Chf {
 
     /// Each touched pair with its edge id before the edit (from a removed tetrahedron or
     /// a surviving one holding the pair), `NONE` for a new pair. Read before `detach`.
-    fn old_edge_ids(&self, plan: &Plan, stars: &[(u32, Vec<u32>)]) -> Vec<((u32, u32), u32)> {
+    fn old_edge_ids(&self, plan: &Plan, stars: &[(u32, Vec<u32>)]) -> Result<EdgeIdsBefore> {
         let s = self.edit.as_ref().expect("edited");
         let bound = self.num_tetrahedra() as u32;
         let id_in = |t: u32, a: u32, b: u32| s.slot_edge[self.pair_slot(t, a, b) as usize];
-        let pairs = touched_pairs(self, plan);
-        let mut out = Vec::with_capacity(pairs.len());
+        let pairs = touched_pairs(self, plan)?;
+        let mut out = try_with_capacity(pairs.len(), STAR)?;
         for (a, b) in pairs {
-            let star = &stars.iter().find(|(x, _)| *x == a).expect("touched").1;
+            let star = star_of(stars, a);
             let holds = |t: &u32| {
                 self.tetrahedron_vertices(*t).contains(&a)
                     && self.tetrahedron_vertices(*t).contains(&b)
@@ -594,7 +618,7 @@ impl Chf {
                 .map_or(NONE, |&t| id_in(t, a, b));
             out.push(((a, b), old));
         }
-        out
+        Ok(out)
     }
 
     /// A half-face of `star` holding `x`, a boundary one if any; `NONE` for no star.

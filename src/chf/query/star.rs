@@ -23,6 +23,9 @@ use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::{edge_index, first, tet};
 use crate::chf::query::view::{Need, View};
+use crate::error::Error;
+use crate::error::Result;
+use crate::util::alloc::{bytes_of, or_panic, try_grow, try_to_vec, try_vec};
 
 /// Stars up to this many tetrahedra are walked without allocation.
 pub const STAR_INLINE: usize = 64;
@@ -33,6 +36,8 @@ struct Ids {
     items: [u32; STAR_INLINE],
     len: usize,
     heap: Vec<u32>,
+    /// The heap could not grow: the ids are incomplete, and no more are taken.
+    failed: bool,
 }
 
 impl Ids {
@@ -41,6 +46,7 @@ impl Ids {
             items: [NONE; STAR_INLINE],
             len: 0,
             heap: Vec::new(),
+            failed: false,
         }
     }
 
@@ -58,13 +64,31 @@ impl Ids {
         if self.len < STAR_INLINE {
             self.items[self.len] = x;
         } else {
+            let room = match self.heap.is_empty() {
+                true => try_grow(&mut self.heap, 4 * STAR_INLINE, STAR_HEAP),
+                false => try_grow(&mut self.heap, 1, STAR_HEAP),
+            };
+            if room.is_err() {
+                self.failed = true;
+                return;
+            }
             if self.heap.is_empty() {
-                self.heap.reserve(4 * STAR_INLINE);
                 self.heap.extend_from_slice(&self.items);
             }
             self.heap.push(x);
         }
         self.len += 1;
+    }
+
+    /// Out of memory an error: the ids are incomplete.
+    fn complete(&self) -> Result<()> {
+        match self.failed {
+            true => Err(Error::out_of_memory(
+                bytes_of::<u32>(2 * self.len),
+                STAR_HEAP,
+            )),
+            false => Ok(()),
+        }
     }
 
     /// The ids, in the order they came (or sorted after [`Ids::sort`]).
@@ -96,6 +120,11 @@ impl Ids {
         }
     }
 }
+
+/// What a star's ids past [`STAR_INLINE`] are called when they do not fit in memory. The
+/// walk then stops taking ids and says so ([`Star::complete`]): an edit returns the
+/// error before it writes, a query panics with it as payload (`or_panic`), never an abort.
+const STAR_HEAP: &str = "the tetrahedra of a vertex star";
 
 /// Slots of the inline hash table: twice [`STAR_INLINE`], so at most half full.
 const TABLE: usize = 2 * STAR_INLINE;
@@ -177,6 +206,9 @@ impl Visited {
     /// [`Visited::add`] past a collision, near the inline capacity or on the heap.
     #[inline(never)]
     fn add_probing(&mut self, x: u32) -> bool {
+        if self.ids.failed {
+            return false;
+        }
         let new = if self.heap_table.is_empty() {
             insert(&mut self.table, x)
         } else {
@@ -195,11 +227,14 @@ impl Visited {
     #[cold]
     fn grow(&mut self) {
         let cap = (2 * self.heap_table.len()).max(2 * TABLE);
-        self.heap_table.clear();
-        self.heap_table.resize(cap, NONE);
+        let Ok(mut table) = try_vec(cap, NONE, STAR_HEAP) else {
+            self.ids.failed = true;
+            return;
+        };
         for &x in self.ids.as_slice() {
-            insert(&mut self.heap_table, x);
+            insert(&mut table, x);
         }
+        self.heap_table = table;
     }
 }
 
@@ -216,6 +251,11 @@ pub(crate) struct Star {
 }
 
 impl Star {
+    /// After the walk: out of memory an error, the walk having stopped short.
+    pub(crate) fn complete(&self) -> Result<()> {
+        self.seen.ids.complete()
+    }
+
     pub(crate) fn new(vertex: u32, start_half_face: u32) -> Self {
         let mut seen = Visited::new();
         if start_half_face != NONE {
@@ -306,12 +346,24 @@ impl Iterator for VertexIds<'_> {
 impl ExactSizeIterator for VertexIds<'_> {}
 impl std::iter::FusedIterator for VertexIds<'_> {}
 
+/// The tetrahedra around `x` on `view`, sorted, out of memory an error: what an edit
+/// plans from, before it writes.
+pub(crate) fn star_tetrahedra(view: &View, x: u32) -> Result<Vec<u32>> {
+    let mut star = Star::new(x, view.start_half_face(x));
+    while star.next(view, |_| 0).is_some() {}
+    star.complete()?;
+    let mut out = try_to_vec(star.seen.ids.as_slice(), STAR_HEAP)?;
+    out.sort_unstable();
+    Ok(out)
+}
+
 /// Walks the star of `x` on `view` and collects the ids of `kind`, sorted.
 /// The answer lands in `into` (empty), sorted: only the ids are copied, not the arrays.
 fn collect(view: &View, x: u32, kind: Kind, into: &mut Ids) {
     let mut star = Star::new(x, view.start_half_face(x));
     if kind == Kind::Tetrahedra {
         while star.next(view, |_| 0).is_some() {}
+        or_panic(star.complete());
         into.copy_sorted(&mut star.seen.ids);
         return;
     }
@@ -349,6 +401,7 @@ fn collect(view: &View, x: u32, kind: Kind, into: &mut Ids) {
         }
         Kind::Tetrahedra => unreachable!(),
     }
+    or_panic(star.complete().and(out.ids.complete()));
     into.copy_sorted(&mut out.ids);
 }
 

@@ -130,12 +130,33 @@ fn check_removed(che: &Che) {
     assert!(che.live_triangles().all(|t| !che.is_triangle_removed(t)));
 }
 
+/// Each vertex's relations one at a time are the rows of the bulk ones, in the same
+/// order, before the collection (below level 2 both start the rotation at the `VH` the
+/// edits keep).
+fn check_stars_against_bulk(che: &Che) {
+    let (vv, ve, vf) = (
+        che.all_vertex_vertices().unwrap(),
+        che.all_vertex_edges().unwrap(),
+        che.all_vertex_triangles().unwrap(),
+    );
+    for v in 0..che.num_vertices() as u32 {
+        let i = v as usize;
+        let one: Vec<u32> = che.vertex_vertices(v).collect();
+        assert_eq!(one, vv.row(i), "VV of vertex {v}");
+        let one: Vec<u32> = che.vertex_edges(v).collect();
+        assert_eq!(one, ve.row(i), "VE of vertex {v}");
+        let one: Vec<u32> = che.vertex_triangles(v).collect();
+        assert_eq!(one, vf.row(i), "VF of vertex {v}");
+    }
+}
+
 /// The live triangles through the collection's maps equal the collected mesh's, which
 /// equals a fresh build of them in every relation; the summary before the collection is
 /// already the fresh build's.
 fn check_against_fresh(che: &Che) {
     che.validate().unwrap();
     check_removed(che);
+    check_stars_against_bulk(che);
     let mut done = che.clone();
     let maps = done.garbage_collect().unwrap();
     done.validate().unwrap();

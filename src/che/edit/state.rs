@@ -199,6 +199,13 @@ impl Che {
             .unwrap_or(&NONE_KEPT)
     }
 
+    /// The `VH` of an edited CHE below level 2 that its last edit kept, when there is one:
+    /// a star's start by level 2's rule, without a scan.
+    pub(crate) fn kept_vertex_half_edges(&self) -> Option<&[u32]> {
+        let working = self.edits()?.working.as_ref()?;
+        (self.level < 2).then_some(&working.vh[..])
+    }
+
     /// The `O` of an edited CHE below level 2 that its last edit kept, when there is one:
     /// the live triangles' `O` by the level-0 rule, without computing it.
     pub(crate) fn kept_opposites(&self) -> Option<&[u32]> {

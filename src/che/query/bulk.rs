@@ -113,7 +113,7 @@ struct Tables<'a> {
 impl Che {
     fn sweep_tables(&self) -> Result<Tables<'_>> {
         let o = self.try_opposites_or_computed()?;
-        let vh = match self.vertex_half_edges() {
+        let vh = match self.vertex_half_edges().or(self.kept_vertex_half_edges()) {
             Some(vh) => Cow::Borrowed(vh),
             None if self.edits().is_some() => Cow::Owned(self.live_vertex_half_edges(&o)?),
             None => Cow::Owned(vertex_half_edges(self.n_vertices, &self.v, &o)?),

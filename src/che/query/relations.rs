@@ -24,11 +24,15 @@ impl Che {
         self.v[next(h) as usize]
     }
 
-    /// The opposite half-edge, `NONE` on the boundary. O(1) from level 1, a scan at level 0.
+    /// The opposite half-edge, `NONE` on the boundary. O(1) from level 1, a scan at level 0
+    /// (O(1) there too once edited: the `O` the edits keep).
     #[inline]
     pub fn opposite(&self, h: u32) -> u32 {
         if self.level >= 1 {
             return self.o[h as usize];
+        }
+        if let Some(o) = self.kept_opposites() {
+            return o[h as usize];
         }
         self.opposite_by_scan(h)
     }
@@ -99,20 +103,28 @@ impl Che {
 
     /// The outgoing half-edge a rotation around `v` starts at: the boundary one on a
     /// boundary vertex, `NONE` for an isolated vertex. O(1) at level 2, O(T) at level 1 (a
-    /// scan of `V`), O(T) time and memory at level 0 (`O` computed, then the scan).
+    /// scan of `V`), O(T) time and memory at level 0 (`O` computed, then the scan); O(1)
+    /// at every level once edited (the `VH` the edits keep).
     #[inline]
     pub fn vertex_half_edge(&self, v: u32) -> u32 {
         if self.level >= 2 {
             return self.vh[v as usize];
         }
+        if let Some(vh) = self.kept_vertex_half_edges() {
+            return vh[v as usize];
+        }
         self.vertex_half_edge_in(&self.opposites_or_computed(), v)
     }
 
     /// [`Che::vertex_half_edge`] with `O` at hand (`o`: the stored or computed opposites):
-    /// below level 2, the first boundary half-edge from `v`, else the first.
+    /// below level 2, the kept `VH`'s once edited, else the first boundary half-edge from
+    /// `v`, else the first.
     pub(crate) fn vertex_half_edge_in(&self, o: &[u32], v: u32) -> u32 {
         if self.level >= 2 {
             return self.vh[v as usize];
+        }
+        if let Some(vh) = self.kept_vertex_half_edges() {
+            return vh[v as usize];
         }
         let mut any = NONE;
         for (h, &x) in self.v.iter().enumerate() {
@@ -142,7 +154,7 @@ impl Che {
 
     /// The star of `v` in rotation order; see [`StarStep`](crate::che::StarStep). O(d) at
     /// level 2, O(T) at level 1 (finding the start), O(T) time and memory at level 0 (`O`
-    /// computed once for the rotation).
+    /// computed once for the rotation); O(d) at every level once edited.
     pub fn vertex_star(&self, v: u32) -> Rotation<'_> {
         let o = self.opposites_or_computed();
         let start = self.vertex_half_edge_in(&o, v);

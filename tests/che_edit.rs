@@ -132,7 +132,7 @@ fn check_removed(che: &Che) {
 
 /// Each vertex's relations one at a time are the rows of the bulk ones, in the same
 /// order, before the collection (below level 2 both start the rotation at the `VH` the
-/// edits keep).
+/// edits keep), and edge ids and their half-edges agree.
 fn check_stars_against_bulk(che: &Che) {
     let (vv, ve, vf) = (
         che.all_vertex_vertices().unwrap(),
@@ -147,6 +147,12 @@ fn check_stars_against_bulk(che: &Che) {
         assert_eq!(one, ve.row(i), "VE of vertex {v}");
         let one: Vec<u32> = che.vertex_triangles(v).collect();
         assert_eq!(one, vf.row(i), "VF of vertex {v}");
+    }
+    // Each live half-edge's edge names its canonical half-edge back.
+    for h in (0..che.num_half_edges() as u32).filter(|&h| !che.is_half_edge_removed(h)) {
+        let e = che.edge_of(h);
+        let canonical = h.min(che.opposite(h));
+        assert_eq!(che.edge_half_edge(e), canonical, "half-edge {h}, edge {e}");
     }
 }
 

@@ -1,6 +1,7 @@
-//! Select over a bit vector that changes a few bits at a time: the count of set bits of
-//! each block of [`BLOCK`] positions, in a Fenwick tree, so that finding the block of the
-//! `e`-th set bit costs O(log n) and so does a block's change. A static
+//! Rank and select over a bit vector that changes a few bits at a time: the count of set
+//! bits of each block of [`BLOCK`] positions, in a Fenwick tree, so that finding the block
+//! of the `e`-th set bit, or counting the set bits before a block, costs O(log n), and so
+//! does a block's change. A static
 //! [`RankDirectory`](crate::util::rank_directory::RankDirectory) answers in O(1) but is
 //! rebuilt whole, O(n), after any change.
 //!
@@ -129,6 +130,12 @@ impl LiveRanks {
         sum
     }
 
+    /// The set bits before position `i`, those of its block counted by `bit`.
+    pub(crate) fn rank(&self, i: usize, bit: impl Fn(usize) -> bool) -> u32 {
+        let k = i / BLOCK;
+        self.prefix(k) + (k * BLOCK..i).filter(|&j| bit(j)).count() as u32
+    }
+
     /// The block holding the `e`-th set bit (from 0) and how many set bits of that block
     /// come before it; `None` when fewer than `e + 1` bits are set.
     pub(crate) fn select(&self, mut e: u32) -> Option<(usize, u32)> {
@@ -155,7 +162,7 @@ mod tests {
     use super::{BLOCK, LiveRanks};
 
     /// After random changes (touched and refreshed, the bit vector growing too), select
-    /// finds the same block and offset as a count of the bits.
+    /// finds the same block and offset as a count of the bits, and rank the same count.
     #[test]
     fn select_agrees_with_a_count_after_changes() {
         let mut rnd = crate::util::test_rng(17);
@@ -182,6 +189,7 @@ mod tests {
                 for (e, &i) in set.iter().enumerate() {
                     let before = set[..e].iter().filter(|&&j| j / BLOCK == i / BLOCK).count();
                     assert_eq!(ranks.select(e as u32), Some((i / BLOCK, before as u32)));
+                    assert_eq!(ranks.rank(i, |j| bits[j]), e as u32);
                 }
                 assert_eq!(ranks.select(set.len() as u32), None);
             }

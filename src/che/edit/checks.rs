@@ -6,7 +6,6 @@ use crate::che::Che;
 use crate::che::ids::{first, next, prev, tri};
 use crate::error::{Error, Result};
 use crate::util::alloc::try_push;
-use crate::util::live_ranks::BLOCK;
 use crate::util::small_ids::Ids;
 
 /// A refused operation: an invalid-input error with the reason.
@@ -134,19 +133,7 @@ impl Che {
             };
         }
         crate::util::structure::check_id(e, self.num_live_edges(), "edge", "edges")?;
-        let o = &self.o;
-        // The block of the `e`-th from the counts an edited CHE keeps, else from the start.
-        let (hs, nth) = match self.edits().and_then(|st| st.edge_ranks.as_ref()) {
-            Some(ranks) => match ranks.select(e) {
-                Some((k, before)) => (k * BLOCK..(k * BLOCK + BLOCK).min(o.len()), before),
-                None => return Ok(NONE),
-            },
-            None => (0..o.len(), e),
-        };
-        Ok(hs
-            .filter(|&h| self.is_live_canonical(o, h))
-            .nth(nth as usize)
-            .map_or(NONE, |h| h as u32))
+        Ok(self.nth_live_canonical(&self.o, e))
     }
 
     /// Is there a half-edge from `a`, the origin of `out` (live), to `b` or from `b` to

@@ -3,10 +3,11 @@
 
 use super::star::{Rotation, vf_item, vv_item};
 use crate::che::ids::{first, next, prev, tri};
-use crate::che::tables::canonical_half_edge;
+use crate::che::tables::{canonical_half_edge, is_canonical};
 use crate::che::{Che, edge_directory, pairs};
 use crate::error::Result;
 use crate::util::alloc::or_panic;
+use crate::util::live_ranks::{BLOCK, LiveRanks};
 use crate::util::rank_directory::RankDirectory;
 use crate::{Ids, NONE};
 use std::borrow::Cow;
@@ -180,7 +181,8 @@ impl Che {
 
     /// The edge id of half-edge `h`. O(1) at level 2; O(1) at level 1 once the level-1
     /// edge-id directory is there (the first request computes it, O(T), and keeps it: see
-    /// [`Che::edge_ranks`]); O(T) time and memory at level 0. `NONE` for a removed
+    /// [`Che::edge_ranks`]); O(T) time and memory at level 0; O(log T) below level 2 once
+    /// edited (the live edges' block counts the edits keep). `NONE` for a removed
     /// half-edge.
     pub fn edge_of(&self, h: u32) -> u32 {
         if self.level >= 2 {
@@ -204,7 +206,9 @@ impl Che {
     /// query that names several edges.
     pub(crate) fn try_edge_names(&self) -> Result<EdgeNames<'_>> {
         let o = self.try_opposites_or_computed()?;
+        let live = self.live_edge_ranks();
         let ranks = match self.level {
+            _ if live.is_some() => Cow::Owned(RankDirectory::default()),
             0 if self.edits().is_some() => Cow::Owned(self.live_edge_directory(&o)?),
             0 => Cow::Owned(edge_directory(&o)?),
             1 => Cow::Borrowed(self.try_level1_edge_bits()?),
@@ -215,7 +219,35 @@ impl Che {
         } else {
             None
         };
-        Ok(EdgeNames { o, ranks, ids })
+        let live = live.map(|ranks| (ranks, &self.v[..]));
+        Ok(EdgeNames {
+            o,
+            ranks,
+            ids,
+            live,
+        })
+    }
+
+    /// Below level 2 on an edited CHE, the live edges' block counts the edits keep.
+    fn live_edge_ranks(&self) -> Option<&LiveRanks> {
+        let st = self.edits().filter(|_| self.level < 2)?;
+        st.edge_ranks.as_ref()
+    }
+
+    /// Below level 2, the `e`-th live canonical half-edge over `o` (`NONE` past the last):
+    /// an edited CHE's block counts find its block, else the half-edges are counted from
+    /// the first.
+    pub(crate) fn nth_live_canonical(&self, o: &[u32], e: u32) -> u32 {
+        let (hs, nth) = match self.live_edge_ranks() {
+            Some(ranks) => match ranks.select(e) {
+                Some((k, before)) => (k * BLOCK..(k * BLOCK + BLOCK).min(o.len()), before),
+                None => return NONE,
+            },
+            None => (0..o.len(), e),
+        };
+        hs.filter(|&h| self.is_live_canonical(o, h))
+            .nth(nth as usize)
+            .map_or(NONE, |h| h as u32)
     }
 
     /// [`Che::try_edge_names`] for the queries without an error to return.
@@ -225,16 +257,12 @@ impl Che {
 
     /// The canonical half-edge of edge `e` (the boundary one on a boundary edge), `NONE`
     /// for a removed edge. O(1) at level 2; O(T) at level 1 (a count of the canonical
-    /// half-edges), and O(T) memory at level 0.
+    /// half-edges), and O(T) memory at level 0; O(log T) below level 2 once edited.
     pub fn edge_half_edge(&self, e: u32) -> u32 {
         if self.level >= 2 {
             return self.eh[e as usize];
         }
-        let o = self.opposites_or_computed();
-        (0..self.v.len() as u32)
-            .filter(|&g| self.v[g as usize] != NONE && canonical_half_edge(&o, g) == g)
-            .nth(e as usize)
-            .unwrap_or(NONE)
+        self.nth_live_canonical(&self.opposites_or_computed(), e)
     }
 
     /// EV: the two ends of edge `e`, in the direction of its canonical half-edge.
@@ -311,6 +339,9 @@ pub(crate) struct EdgeNames<'a> {
     ranks: Cow<'a, RankDirectory>,
     /// An edited CHE's edge ids, from level 2.
     ids: Option<&'a [u32]>,
+    /// Below level 2 on an edited CHE: the live edges' block counts and `V`, which the
+    /// ranks are counted from instead of `ranks`.
+    live: Option<(&'a LiveRanks, &'a [u32])>,
 }
 
 impl EdgeNames<'_> {
@@ -320,6 +351,10 @@ impl EdgeNames<'_> {
         if let Some(ids) = self.ids {
             return ids[h as usize];
         }
-        self.ranks.rank(canonical_half_edge(&self.o, h) as usize) as u32
+        let c = canonical_half_edge(&self.o, h) as usize;
+        if let Some((live, v)) = self.live {
+            return live.rank(c, |g| v[g] != NONE && is_canonical(&self.o, g));
+        }
+        self.ranks.rank(c) as u32
     }
 }

@@ -831,7 +831,7 @@ fn edits_at_a_volume_hub_can_fail() {
     };
     let edits = |chf: &mut Chf| -> Result<(), topomesh::Error> {
         let nt = chf.num_tetrahedra() as u64;
-        for he in (5..12 * nt).step_by(1201) {
+        for he in (5..12 * nt).step_by(12 * nt as usize / 5) {
             unless_refused(chf.collapse_edge(he))?;
         }
         unless_refused(chf.remove_vertex(300))?;
@@ -839,5 +839,6 @@ fn edits_at_a_volume_hub_can_fail() {
         unless_refused(chf.add_tetrahedron(tets[17]))?;
         Ok(())
     };
-    refuse_each_edit_at("volume", &[0, 2, 3], make, edits, Chf::validate);
+    // Level 0 (a view computed for the check) and 3 (stored tables and the boundary).
+    refuse_each_edit_at("volume", &[0, 3], make, edits, Chf::validate);
 }

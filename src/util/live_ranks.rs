@@ -35,9 +35,7 @@ impl LiveRanks {
         let blocks = len.div_ceil(BLOCK);
         let mut counts = try_vec(blocks, 0u8, "the live edge counts")?;
         for (k, c) in counts.iter_mut().enumerate() {
-            *c = (k * BLOCK..(k * BLOCK + BLOCK).min(len))
-                .filter(|&i| bit(i))
-                .count() as u8;
+            *c = count_block(k, len, &bit) as u8;
         }
         let mut tree: Vec<u32> = try_vec(blocks, 0, "the live edge count tree")?;
         for i in 1..=blocks {
@@ -95,9 +93,7 @@ impl LiveRanks {
         // By index, not by taking the list: it keeps the room `reserve` made.
         for j in 0..self.touched.len() {
             let k = self.touched[j] as usize;
-            let now = (k * BLOCK..(k * BLOCK + BLOCK).min(len))
-                .filter(|&i| bit(i))
-                .count();
+            let now = count_block(k, len, &bit);
             let was = usize::from(self.counts[k]);
             self.counts[k] = now as u8;
             self.stale[k] = false;
@@ -151,6 +147,13 @@ impl LiveRanks {
         }
         (pos < n).then_some((pos, e))
     }
+}
+
+/// The set bits of block `k` of `len` positions.
+fn count_block(k: usize, len: usize, bit: impl Fn(usize) -> bool) -> usize {
+    (k * BLOCK..(k * BLOCK + BLOCK).min(len))
+        .filter(|&i| bit(i))
+        .count()
 }
 
 fn lowbit(i: usize) -> usize {

@@ -154,7 +154,7 @@ impl Che {
             0 => self.live_opposites()?,
             _ => Vec::new(),
         };
-        let full_o = if o.is_empty() { &self.o[..] } else { &o[..] };
+        let full_o = if self.level == 0 { &o[..] } else { &self.o[..] };
         let vh = self.live_vertex_half_edges(full_o)?;
         if self.edit.is_some() {
             let ranks = LiveRanks::new(full_o.len(), |h| self.is_live_canonical(full_o, h))?;
@@ -186,17 +186,6 @@ impl Che {
         if let Some(st) = self.edit.as_deref_mut() {
             st.working = Some(WorkingTables { o, vh });
         }
-    }
-
-    /// The working tables the edits keep below level 2 (empty ones when there are none).
-    pub(crate) fn working_tables(&self) -> &WorkingTables {
-        static NONE_KEPT: WorkingTables = WorkingTables {
-            o: Vec::new(),
-            vh: Vec::new(),
-        };
-        self.edits()
-            .and_then(|st| st.working.as_ref())
-            .unwrap_or(&NONE_KEPT)
     }
 
     /// The `VH` of an edited CHE below level 2 that its last edit kept, when there is one:
@@ -357,9 +346,11 @@ impl Che {
     /// [`Che::build_level`] on an edited CHE: the same tables over the live elements.
     pub(crate) fn change_edited_level(&mut self, level: u8) -> Result<()> {
         crate::util::options::check_level(level)?;
+        // The kept tables go with the level change: the kept `O` moves, not copied.
+        let kept = self.st_mut().working.take().filter(|_| self.level == 0);
         let o = match self.level {
-            0 if level >= 1 => match self.kept_opposites() {
-                Some(o) => crate::util::alloc::try_to_vec(o, "the opposites O")?,
+            0 if level >= 1 => match kept {
+                Some(kept) => kept.o,
                 None => self.live_opposites()?,
             },
             _ => std::mem::take(o_mut(self)),

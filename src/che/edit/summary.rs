@@ -159,13 +159,12 @@ impl Che {
 
     /// The `VH` the edits keep below level 2 follows the rules of level 2's.
     fn validate_kept_vh(&self) -> Result<()> {
-        let working = self.working_tables();
-        if self.edits().is_none_or(|st| st.working.is_none()) {
+        let Some(vh) = self.kept_vertex_half_edges() else {
             return Ok(());
-        }
+        };
         let o = self.try_opposites_or_computed()?;
         let live = 3 * self.st().live_triangles;
-        if self.rotations_cover(&o, &working.vh, live) {
+        if self.rotations_cover(&o, vh, live) {
             return Ok(());
         }
         Err(Error::invalid(

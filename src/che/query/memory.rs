@@ -53,11 +53,11 @@ impl Che {
 
     pub fn memory_bytes(&self) -> Memory {
         let ints = |n: usize| 4 * n;
-        let working = self.working_tables();
+        let kept = |t: Option<&[u32]>| t.map_or(0, <[u32]>::len);
         let mut m = Memory {
             half_edge_vertices: ints(self.v.len()),
-            opposites: ints(self.o.len() + working.o.len()),
-            vertex_half_edges: ints(self.vh.len() + working.vh.len()),
+            opposites: ints(self.o.len() + kept(self.kept_opposites())),
+            vertex_half_edges: ints(self.vh.len() + kept(self.kept_vertex_half_edges())),
             edges: ints(self.eh.len())
                 + self.edge_bits.memory_bytes()
                 + self.edits().map_or(0, |s| s.edge_bytes()),

@@ -3,7 +3,7 @@
 
 use super::star::{Rotation, vf_item, vv_item};
 use crate::che::ids::{first, next, prev, tri};
-use crate::che::tables::{canonical_half_edge, is_canonical};
+use crate::che::tables::canonical_half_edge;
 use crate::che::{Che, edge_directory, pairs};
 use crate::error::Result;
 use crate::util::alloc::or_panic;
@@ -111,9 +111,7 @@ impl Che {
         if self.level >= 2 {
             return self.vh[v as usize];
         }
-        if let Some(vh) = self.kept_vertex_half_edges() {
-            return vh[v as usize];
-        }
+        // Once edited, `O` is the kept one and `vertex_half_edge_in` reads the kept `VH`.
         self.vertex_half_edge_in(&self.opposites_or_computed(), v)
     }
 
@@ -219,7 +217,7 @@ impl Che {
         } else {
             None
         };
-        let live = live.map(|ranks| (ranks, &self.v[..]));
+        let live = live.map(|ranks| (ranks, self));
         Ok(EdgeNames {
             o,
             ranks,
@@ -339,9 +337,9 @@ pub(crate) struct EdgeNames<'a> {
     ranks: Cow<'a, RankDirectory>,
     /// An edited CHE's edge ids, from level 2.
     ids: Option<&'a [u32]>,
-    /// Below level 2 on an edited CHE: the live edges' block counts and `V`, which the
-    /// ranks are counted from instead of `ranks`.
-    live: Option<(&'a LiveRanks, &'a [u32])>,
+    /// Below level 2 on an edited CHE: the live edges' block counts and the mesh, which
+    /// the ranks are counted from instead of `ranks`.
+    live: Option<(&'a LiveRanks, &'a Che)>,
 }
 
 impl EdgeNames<'_> {
@@ -352,8 +350,8 @@ impl EdgeNames<'_> {
             return ids[h as usize];
         }
         let c = canonical_half_edge(&self.o, h) as usize;
-        if let Some((live, v)) = self.live {
-            return live.rank(c, |g| v[g] != NONE && is_canonical(&self.o, g));
+        if let Some((live, che)) = self.live {
+            return live.rank(c, |g| che.is_live_canonical(&self.o, g));
         }
         self.ranks.rank(c) as u32
     }

@@ -23,8 +23,7 @@ use crate::NONE;
 use crate::chf::Chf;
 use crate::chf::ids::{edge_index, first, tet};
 use crate::chf::query::view::{Need, View};
-use crate::error::Error;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::util::alloc::{bytes_of, or_panic, try_grow, try_to_vec, try_vec};
 
 /// Stars up to this many tetrahedra are walked without allocation.
@@ -64,11 +63,12 @@ impl Ids {
         if self.len < STAR_INLINE {
             self.items[self.len] = x;
         } else {
-            let room = match self.heap.is_empty() {
-                true => try_grow(&mut self.heap, 4 * STAR_INLINE, STAR_HEAP),
-                false => try_grow(&mut self.heap, 1, STAR_HEAP),
+            let more = if self.heap.is_empty() {
+                4 * STAR_INLINE
+            } else {
+                1
             };
-            if room.is_err() {
+            if try_grow(&mut self.heap, more, STAR_HEAP).is_err() {
                 self.failed = true;
                 return;
             }

@@ -35,16 +35,15 @@ impl Che {
         }
         self.validate_v()?;
         self.validate_maps()?;
-        if self.level >= 1 {
+        if self.level >= 2 {
+            self.validate_o_and_vh()?;
+            self.validate_edges()?;
+        } else if self.level == 1 {
             self.validate_o()?;
         } else {
             // Level 0 stores no `O`, but its edge count must match the rule's pairs, which
             // the edge queries enumerate.
             self.validate_edge_count(&self.try_opposites_or_computed()?)?;
-        }
-        if self.level >= 2 {
-            self.validate_vh()?;
-            self.validate_edges()?;
         }
         if self.level >= 3 {
             self.validate_curves()?;
@@ -106,6 +105,26 @@ impl Che {
             }
         };
         self.validate_flagged()?;
+        self.validate_paired_edges(edges)
+    }
+
+    /// `O` and `VH` of a mesh with no removed triangle, in one walk of the stars
+    /// ([`sweep::stars_hold`]); on a violation the passes of their own name it.
+    fn validate_o_and_vh(&self) -> Result<()> {
+        let (v, o, vh) = (&self.v, &self.o, &self.vh);
+        let sizes_hold = o.len() == v.len() && vh.len() == self.n_vertices;
+        let Some(stars) = sizes_hold.then(|| sweep::stars_hold(v, o, vh)).flatten() else {
+            self.validate_o()?;
+            self.validate_vh()?;
+            return broken("O and VH fail the walk of the stars".into());
+        };
+        self.validate_flagged()?;
+        // Each paired half-edge shares its edge with one other, each unpaired one not.
+        self.validate_paired_edges((v.len() + stars.unpaired) / 2)
+    }
+
+    /// `edges`, the edges `O` pairs, is the count.
+    fn validate_paired_edges(&self, edges: usize) -> Result<()> {
         if edges != self.num_live_edges() {
             return broken(format!(
                 "{edges} edges in O, {} counted",

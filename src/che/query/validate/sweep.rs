@@ -1,5 +1,5 @@
 //! Whole-mesh passes that answer only "valid or not" for the pairs of `O`, the rotations
-//! from `VH` and the edge directory. They are what a full open of a level file pays on a
+//! from `VH` (from level 2 both in one walk of the stars) and the edge directory. They are what a full open of a level file pays on a
 //! valid file, so they are written for the memory system: arrays read in order where the
 //! invariant allows it, each pair checked once, several rotations walked at once so that
 //! their cache misses overlap instead of waiting one after another, and the far reads
@@ -125,6 +125,116 @@ fn rotation_steps(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<
     }
 }
 
+/// What [`stars_hold`] found on a valid mesh: its half-edges without a partner.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Stars {
+    pub unpaired: usize,
+}
+
+/// [`pairs_hold`] and [`rotations_cover`] in one walk, for a mesh with no removed
+/// half-edge: whether every rotation from `VH` is one fan entered at its boundary
+/// half-edge and `O` is an involution on matching edges. Each step from `c` (outgoing
+/// from `x`) reads `g = O[prev(c)]`, and its next step, which reads `g`'s triangle anyway,
+/// checks `O[g] = prev(c)` and `V[g] = x`, so that each pair costs the walk's one line of
+/// `O` and one of `V` instead of a pass of its own. Why that is the whole of both checks:
+/// with every step's pair checked, two steps cannot reach one half-edge (their `prev`s
+/// would both be its partner), so the walks are simple and, one per vertex, disjoint;
+/// meeting all `len(V)` half-edges, they check every paired half-edge once as a `prev`,
+/// and each pair from both of its sides.
+pub(super) fn stars_hold(v: &[u32], o: &[u32], vh: &[u32]) -> Option<Stars> {
+    let walked = run_all(parts(vh.len()), |xs| walk_stars(v, o, vh, xs));
+    let (mut steps, mut unpaired) = (0, 0);
+    for part in walked {
+        let (s, u) = part?;
+        steps += s;
+        unpaired += u;
+    }
+    (steps == v.len()).then_some(Stars { unpaired })
+}
+
+/// One lane of [`walk_stars`]: the rotation's start and vertex, its next outgoing
+/// half-edge (`NONE`: idle), and the half-edge that led there (`NONE`: none to check).
+#[derive(Clone, Copy)]
+struct Lane {
+    start: u32,
+    x: u32,
+    cur: u32,
+    from: u32,
+}
+
+const IDLE: Lane = Lane {
+    start: NONE,
+    x: NONE,
+    cur: NONE,
+    from: NONE,
+};
+
+/// The steps and unpaired half-edges of the rotations of the vertices `xs`, each
+/// pair checked as [`stars_hold`] says; `None` on the first violation.
+fn walk_stars(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<(usize, usize)> {
+    let mut lanes = [IDLE; STAR_LANES];
+    let (mut next_x, mut steps, mut unpaired) = (xs.start, 0usize, 0usize);
+    loop {
+        let mut busy = false;
+        for lane in &mut lanes {
+            if lane.cur == NONE {
+                while next_x < xs.end && vh[next_x] == NONE {
+                    next_x += 1;
+                }
+                if next_x == xs.end {
+                    continue;
+                }
+                let h = vh[next_x];
+                if h as usize >= v.len() || v[h as usize] as usize != next_x {
+                    return None;
+                }
+                *lane = Lane {
+                    start: h,
+                    x: next_x as u32,
+                    cur: h,
+                    from: NONE,
+                };
+                next_x += 1;
+            }
+            busy = true;
+            steps += 1;
+            let c = lane.cur;
+            if steps > v.len()
+                || (lane.from != NONE && (o[c as usize] != lane.from || v[c as usize] != lane.x))
+            {
+                return None;
+            }
+            let p = prev(c);
+            let g = o[p as usize];
+            if g == NONE {
+                unpaired += 1;
+                lane.cur = NONE;
+                continue;
+            }
+            if g as usize >= o.len() {
+                return None;
+            }
+            if g == lane.start {
+                // The fan closes: its last pair is checked now, its lines are in cache.
+                if o[g as usize] != p {
+                    return None;
+                }
+                lane.cur = NONE;
+                continue;
+            }
+            prefetch(o, g as usize);
+            prefetch(v, g as usize);
+            (lane.cur, lane.from) = (g, p);
+        }
+        if !busy {
+            return Some((steps, unpaired));
+        }
+    }
+}
+
+/// Rotations walked at once by [`walk_stars`], whose steps wait on two lines each.
+const STAR_LANES: usize = 64;
+
 /// Whether every triangle of `v` is three distinct vertices below `n`.
 pub(super) fn triangles_hold(v: &[u32], n: usize) -> bool {
     let holds = |c: &[u32]| {
@@ -188,7 +298,7 @@ fn entry_holds(o: &[u32], eh: &[u32], d: u64, base: usize, e: usize) -> Option<u
 
 #[cfg(test)]
 mod tests {
-    use super::{edge_directory_holds, pairs_hold, rotations_cover, triangles_hold};
+    use super::{edge_directory_holds, pairs_hold, rotations_cover, stars_hold, triangles_hold};
     use crate::NONE;
     use crate::che::{BuildOptions, Che};
     use crate::generate;
@@ -294,6 +404,14 @@ mod tests {
                 assert_eq!(triangles_hold(&c.v, nv), c.first_v_violation().is_none());
                 if c.first_v_violation().is_some() {
                     continue;
+                }
+                // The one walk of O and VH says what their passes say together.
+                let o_holds = c.first_o_violation().is_none();
+                let stars_ok = o_holds && c.first_vh_violation().unwrap().is_none();
+                let stars = stars_hold(&c.v, &c.o, &c.vh);
+                assert_eq!(stars.is_some(), stars_ok);
+                if let Some(s) = stars {
+                    assert_eq!(s.unpaired, c.o.iter().filter(|&&g| g == NONE).count());
                 }
                 let pairs = pairs_hold(&c.v, &c.o);
                 assert_eq!(pairs.is_some(), c.first_o_violation().is_none());

@@ -298,8 +298,7 @@ impl Che {
     fn rebuild_levels(&mut self, level: u8) -> Result<()> {
         let st = self.edit.get_or_insert_with(Default::default);
         st.edge_of = Vec::new();
-        st.working = None;
-        st.edge_ranks = None;
+        st.drop_kept_tables();
         st.changed = false;
         st.curves = Default::default();
         st.boundary = Default::default();

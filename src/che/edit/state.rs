@@ -64,6 +64,12 @@ pub(crate) struct Curves {
 }
 
 impl EditState {
+    /// Drops what the edits keep below level 2 (the working tables and the live edges'
+    /// counts, which describe them): a collection or a level change makes them stale.
+    pub(crate) fn drop_kept_tables(&mut self) {
+        self.working = None;
+        self.edge_ranks = None;
+    }
     /// Bytes of the edge ids and the removed-vertex flags (lengths, as [`crate::che::Memory`]).
     pub(crate) fn edge_bytes(&self) -> usize {
         let ranks = self.edge_ranks.as_ref().map_or(0, LiveRanks::memory_bytes);
@@ -388,8 +394,7 @@ impl Che {
         self.lazy_edge_bits = OnceLock::new();
         self.st_mut().curves = OnceLock::new();
         self.st_mut().boundary = Default::default();
-        self.st_mut().working = None;
-        self.st_mut().edge_ranks = None;
+        self.st_mut().drop_kept_tables();
         Ok(())
     }
 }

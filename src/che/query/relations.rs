@@ -204,26 +204,17 @@ impl Che {
     /// query that names several edges.
     pub(crate) fn try_edge_names(&self) -> Result<EdgeNames<'_>> {
         let o = self.try_opposites_or_computed()?;
-        let live = self.live_edge_ranks();
-        let ranks = match self.level {
-            _ if live.is_some() => Cow::Owned(RankDirectory::default()),
-            0 if self.edits().is_some() => Cow::Owned(self.live_edge_directory(&o)?),
-            0 => Cow::Owned(edge_directory(&o)?),
-            1 => Cow::Borrowed(self.try_level1_edge_bits()?),
-            _ => Cow::Borrowed(&self.edge_bits),
+        let naming = match (self.level, self.live_edge_ranks(), self.edited_edge_ids()) {
+            (2.., _, Some(ids)) => Naming::Ids(ids),
+            (_, Some(live), _) => Naming::Live(live, self),
+            (0, ..) if self.edits().is_some() => {
+                Naming::Ranks(Cow::Owned(self.live_edge_directory(&o)?))
+            }
+            (0, ..) => Naming::Ranks(Cow::Owned(edge_directory(&o)?)),
+            (1, ..) => Naming::Ranks(Cow::Borrowed(self.try_level1_edge_bits()?)),
+            _ => Naming::Ranks(Cow::Borrowed(&self.edge_bits)),
         };
-        let ids = if self.level >= 2 {
-            self.edited_edge_ids()
-        } else {
-            None
-        };
-        let live = live.map(|ranks| (ranks, self));
-        Ok(EdgeNames {
-            o,
-            ranks,
-            ids,
-            live,
-        })
+        Ok(EdgeNames { o, naming })
     }
 
     /// Below level 2 on an edited CHE, the live edges' block counts the edits keep.
@@ -334,25 +325,31 @@ impl Che {
 /// The tables that name edges (see [`Che::edge_names`]).
 pub(crate) struct EdgeNames<'a> {
     o: Cow<'a, [u32]>,
-    ranks: Cow<'a, RankDirectory>,
-    /// An edited CHE's edge ids, from level 2.
-    ids: Option<&'a [u32]>,
-    /// Below level 2 on an edited CHE: the live edges' block counts and the mesh, which
-    /// the ranks are counted from instead of `ranks`.
-    live: Option<(&'a LiveRanks, &'a Che)>,
+    naming: Naming<'a>,
+}
+
+/// Where an edge id comes from.
+enum Naming<'a> {
+    /// The rank of the canonical half-edge in the edge-id directory.
+    Ranks(Cow<'a, RankDirectory>),
+    /// An edited CHE's edge ids, from level 2, by half-edge.
+    Ids(&'a [u32]),
+    /// Below level 2 on an edited CHE: the rank of the canonical half-edge among the live
+    /// ones, counted over the edits' block counts.
+    Live(&'a LiveRanks, &'a Che),
 }
 
 impl EdgeNames<'_> {
     /// The edge id of half-edge `h`: the rank of its canonical half-edge.
     #[inline]
     pub(crate) fn of(&self, h: u32) -> u32 {
-        if let Some(ids) = self.ids {
-            return ids[h as usize];
+        match &self.naming {
+            Naming::Ids(ids) => ids[h as usize],
+            Naming::Live(live, che) => {
+                let c = canonical_half_edge(&self.o, h) as usize;
+                live.rank(c, |g| che.is_live_canonical(&self.o, g))
+            }
+            Naming::Ranks(ranks) => ranks.rank(canonical_half_edge(&self.o, h) as usize) as u32,
         }
-        let c = canonical_half_edge(&self.o, h) as usize;
-        if let Some((live, che)) = self.live {
-            return live.rank(c, |g| che.is_live_canonical(&self.o, g));
-        }
-        self.ranks.rank(c) as u32
     }
 }

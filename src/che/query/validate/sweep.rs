@@ -97,17 +97,10 @@ fn rotation_steps(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<
         for lane in 0..LANES {
             if cur[lane] == NONE {
                 // Refill the lane with the next vertex that has a star.
-                while next_x < xs.end && vh[next_x] == NONE {
-                    next_x += 1;
-                }
-                if next_x == xs.end {
+                let Some((_, h)) = next_star(v, vh, &mut next_x, xs.end).ok()? else {
                     continue;
-                }
-                let h = vh[next_x];
-                if h as usize >= v.len() || v[h as usize] as usize != next_x {
-                    return None;
-                }
-                (start[lane], cur[lane], next_x) = (h, h, next_x + 1);
+                };
+                (start[lane], cur[lane]) = (h, h);
             }
             busy = true;
             steps += 1;
@@ -178,23 +171,15 @@ fn walk_stars(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<(usi
         let mut busy = false;
         for lane in &mut lanes {
             if lane.cur == NONE {
-                while next_x < xs.end && vh[next_x] == NONE {
-                    next_x += 1;
-                }
-                if next_x == xs.end {
+                let Some((x, h)) = next_star(v, vh, &mut next_x, xs.end).ok()? else {
                     continue;
-                }
-                let h = vh[next_x];
-                if h as usize >= v.len() || v[h as usize] as usize != next_x {
-                    return None;
-                }
+                };
                 *lane = Lane {
                     start: h,
-                    x: next_x as u32,
+                    x,
                     cur: h,
                     from: NONE,
                 };
-                next_x += 1;
             }
             busy = true;
             steps += 1;
@@ -234,6 +219,27 @@ fn walk_stars(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<(usi
 
 /// Rotations walked at once by [`walk_stars`], whose steps wait on two lines each.
 const STAR_LANES: usize = 64;
+
+/// The next vertex from `*next_x` on (below `end`) that has a star, and its `VH`,
+/// `*next_x` moved past it: `Ok(None)` when none is left, `Err` when its `VH` is out of
+/// range or does not start at it.
+#[inline]
+fn next_star(
+    v: &[u32], vh: &[u32], next_x: &mut usize, end: usize,
+) -> Result<Option<(u32, u32)>, ()> {
+    while *next_x < end && vh[*next_x] == NONE {
+        *next_x += 1;
+    }
+    if *next_x == end {
+        return Ok(None);
+    }
+    let (x, h) = (*next_x, vh[*next_x]);
+    if h as usize >= v.len() || v[h as usize] as usize != x {
+        return Err(());
+    }
+    *next_x += 1;
+    Ok(Some((x as u32, h)))
+}
 
 /// Whether every triangle of `v` is three distinct vertices below `n`.
 pub(super) fn triangles_hold(v: &[u32], n: usize) -> bool {

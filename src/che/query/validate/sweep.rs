@@ -97,7 +97,7 @@ fn rotation_steps(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<
         for lane in 0..LANES {
             if cur[lane] == NONE {
                 // Refill the lane with the next vertex that has a star.
-                let Some((_, h)) = next_star(v, vh, &mut next_x, xs.end).ok()? else {
+                let Some((_, h)) = next_star(v, o, vh, &mut next_x, xs.end).ok()? else {
                     continue;
                 };
                 (start[lane], cur[lane]) = (h, h);
@@ -171,7 +171,7 @@ fn walk_stars(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<(usi
         let mut busy = false;
         for lane in &mut lanes {
             if lane.cur == NONE {
-                let Some((x, h)) = next_star(v, vh, &mut next_x, xs.end).ok()? else {
+                let Some((x, h)) = next_star(v, o, vh, &mut next_x, xs.end).ok()? else {
                     continue;
                 };
                 *lane = Lane {
@@ -220,12 +220,15 @@ fn walk_stars(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<(usi
 /// Rotations walked at once by [`walk_stars`], whose steps wait on two lines each.
 const STAR_LANES: usize = 64;
 
+/// How many vertices ahead of a refill [`next_star`] prefetches a star's start.
+const STARTS_AHEAD: usize = 16;
+
 /// The next vertex from `*next_x` on (below `end`) that has a star, and its `VH`,
 /// `*next_x` moved past it: `Ok(None)` when none is left, `Err` when its `VH` is out of
-/// range or does not start at it.
+/// range or does not start at it. `o` is only prefetched from.
 #[inline]
 fn next_star(
-    v: &[u32], vh: &[u32], next_x: &mut usize, end: usize,
+    v: &[u32], o: &[u32], vh: &[u32], next_x: &mut usize, end: usize,
 ) -> Result<Option<(u32, u32)>, ()> {
     while *next_x < end && vh[*next_x] == NONE {
         *next_x += 1;
@@ -234,6 +237,12 @@ fn next_star(
         return Ok(None);
     }
     let (x, h) = (*next_x, vh[*next_x]);
+    // What this check and the first step read of a star a few vertices on: the starts
+    // lie far apart, and a refill that waits on them holds up every lane.
+    if let Some(&ahead) = vh.get(x + STARTS_AHEAD) {
+        prefetch(v, ahead as usize);
+        prefetch(o, prev(ahead) as usize);
+    }
     if h as usize >= v.len() || v[h as usize] as usize != x {
         return Err(());
     }

@@ -218,7 +218,7 @@ fn walk_stars(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<(usi
 }
 
 /// Rotations walked at once by [`walk_stars`], whose steps wait on two lines each.
-const STAR_LANES: usize = 64;
+const STAR_LANES: usize = 128;
 
 /// How many vertices ahead of a refill [`next_star`] prefetches a star's start.
 const STARTS_AHEAD: usize = 16;

@@ -239,7 +239,10 @@ fn next_star(
     let (x, h) = (*next_x, vh[*next_x]);
     // What this check and the first step read of a star a few vertices on: the starts
     // lie far apart, and a refill that waits on them holds up every lane.
-    if let Some(&ahead) = vh.get(x + STARTS_AHEAD) {
+    // (Only a half-edge: `prev` of `NONE` or of a corrupted id past `V` would overflow.)
+    if let Some(&ahead) = vh.get(x + STARTS_AHEAD)
+        && (ahead as usize) < v.len()
+    {
         prefetch(v, ahead as usize);
         prefetch(o, prev(ahead) as usize);
     }

@@ -113,14 +113,14 @@ impl Che {
     fn validate_o_and_vh(&self) -> Result<()> {
         let (v, o, vh) = (&self.v, &self.o, &self.vh);
         let sizes_hold = o.len() == v.len() && vh.len() == self.n_vertices;
-        let Some(stars) = sizes_hold.then(|| sweep::stars_hold(v, o, vh)).flatten() else {
+        let Some(unpaired) = sizes_hold.then(|| sweep::stars_hold(v, o, vh)).flatten() else {
             self.validate_o()?;
             self.validate_vh()?;
             return broken("O and VH fail the walk of the stars".into());
         };
         self.validate_flagged()?;
         // Each paired half-edge shares its edge with one other, each unpaired one not.
-        self.validate_paired_edges((v.len() + stars.unpaired) / 2)
+        self.validate_paired_edges((v.len() + unpaired) / 2)
     }
 
     /// `edges`, the edges `O` pairs, is the count.

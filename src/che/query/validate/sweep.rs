@@ -1,8 +1,9 @@
 //! Whole-mesh passes that answer only "valid or not" for the pairs of `O`, the rotations
-//! from `VH` (from level 2 both in one walk of the stars) and the edge directory. They are what a full open of a level file pays on a
-//! valid file, so they are written for the memory system: arrays read in order where the
-//! invariant allows it, each pair checked once, several rotations walked at once so that
-//! their cache misses overlap instead of waiting one after another, and the far reads
+//! from `VH` (from level 2 both in one walk of the stars) and the edge directory. They are
+//! what a full open of a level file pays on a valid file, so they are written for the
+//! memory system: arrays read in order where the invariant allows it, each pair checked
+//! once, several rotations walked at once so that their cache misses overlap instead of
+//! waiting one after another, and the far reads
 //! (a partner, a rotation's next triangle) prefetched: a prefetch retires at once, where a
 //! load that misses holds up every instruction behind it. They name no element: on a
 //! failure the per-element checks of `validate` run and name the first.
@@ -118,23 +119,17 @@ fn rotation_steps(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<
     }
 }
 
-/// What [`stars_hold`] found on a valid mesh: its half-edges without a partner.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) struct Stars {
-    pub unpaired: usize,
-}
-
 /// [`pairs_hold`] and [`rotations_cover`] in one walk, for a mesh with no removed
-/// half-edge: whether every rotation from `VH` is one fan entered at its boundary
-/// half-edge and `O` is an involution on matching edges. Each step from `c` (outgoing
-/// from `x`) reads `g = O[prev(c)]`, and its next step, which reads `g`'s triangle anyway,
-/// checks `O[g] = prev(c)` and `V[g] = x`, so that each pair costs the walk's one line of
+/// half-edge: how many half-edges have no partner when every rotation from `VH` is one fan
+/// entered at its boundary half-edge and `O` is an involution on matching edges, else
+/// `None`. Each step from `c` (outgoing from `x`) reads `g = O[prev(c)]`, and its next
+/// step, which reads `g`'s triangle anyway, checks `O[g] = prev(c)` and `V[g] = x`, so that each pair costs the walk's one line of
 /// `O` and one of `V` instead of a pass of its own. Why that is the whole of both checks:
 /// with every step's pair checked, two steps cannot reach one half-edge (their `prev`s
 /// would both be its partner), so the walks are simple and, one per vertex, disjoint;
 /// meeting all `len(V)` half-edges, they check every paired half-edge once as a `prev`,
 /// and each pair from both of its sides.
-pub(super) fn stars_hold(v: &[u32], o: &[u32], vh: &[u32]) -> Option<Stars> {
+pub(super) fn stars_hold(v: &[u32], o: &[u32], vh: &[u32]) -> Option<usize> {
     let walked = run_all(parts(vh.len()), |xs| walk_stars(v, o, vh, xs));
     let (mut steps, mut unpaired) = (0, 0);
     for part in walked {
@@ -142,7 +137,7 @@ pub(super) fn stars_hold(v: &[u32], o: &[u32], vh: &[u32]) -> Option<Stars> {
         steps += s;
         unpaired += u;
     }
-    (steps == v.len()).then_some(Stars { unpaired })
+    (steps == v.len()).then_some(unpaired)
 }
 
 /// One lane of [`walk_stars`]: the rotation's start and vertex, its next outgoing
@@ -428,8 +423,8 @@ mod tests {
                 let stars_ok = o_holds && c.first_vh_violation().unwrap().is_none();
                 let stars = stars_hold(&c.v, &c.o, &c.vh);
                 assert_eq!(stars.is_some(), stars_ok);
-                if let Some(s) = stars {
-                    assert_eq!(s.unpaired, c.o.iter().filter(|&&g| g == NONE).count());
+                if let Some(unpaired) = stars {
+                    assert_eq!(unpaired, c.o.iter().filter(|&&g| g == NONE).count());
                 }
                 let pairs = pairs_hold(&c.v, &c.o);
                 assert_eq!(pairs.is_some(), c.first_o_violation().is_none());

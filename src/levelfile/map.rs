@@ -24,6 +24,11 @@ pub(crate) fn map_file(path: &Path) -> Result<Arc<Mmap>> {
     // atomic rename (which leaves this mapping on the old file), and then only read; the
     // contract is stated on `Mode::Mapped` and `TOPOMESH_OPEN_MAPPED`.
     let map = unsafe { Mmap::map(&file) }.map_err(io)?;
+    // A file read from disk through this mapping then comes into the page cache in huge
+    // folios, each mapped by one entry (the file system willing); best effort: a kernel
+    // without transparent huge pages refuses, and the mapping works as it is.
+    #[cfg(target_os = "linux")]
+    let _ = map.advise(memmap2::Advice::HugePage);
     Ok(Arc::new(map))
 }
 

@@ -14,6 +14,7 @@
 
 pub(crate) mod atomic;
 mod built;
+mod chunked;
 mod gmsh;
 mod medit;
 mod obj;

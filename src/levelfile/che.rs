@@ -80,14 +80,16 @@ pub(crate) fn open_che(path: &Path, options: OpenOptions) -> Result<Che> {
     let file = LevelFile::open(path, Kind::Che, options)?;
     let level = file.header.level;
     let positions = file.header.flags & FLAG_POSITIONS != 0;
-    let mut che = read_che(&file, "", level, positions)
-        .map_err(|e| Error::new(e.kind, format!("{}: {}", path.display(), e.message)))?;
-    che.strict = file.header.flags & FLAG_STRICT != 0;
-    if options.verify == Verify::Full {
-        che.validate()
-            .map_err(|e| Error::new(e.kind, format!("{}: {}", path.display(), e.message)))?;
-    }
-    Ok(che)
+    let strict = file.header.flags & FLAG_STRICT != 0;
+    file.alongside_sums(|file| {
+        let mut che = read_che(file, "", level, positions)?;
+        che.strict = strict;
+        if options.verify == Verify::Full {
+            che.validate()?;
+        }
+        Ok(che)
+    })
+    .map_err(|e| Error::new(e.kind, format!("{}: {}", path.display(), e.message)))
 }
 
 /// A count that must fit a `u32` id space (ids are `u32`).

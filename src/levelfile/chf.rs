@@ -104,11 +104,14 @@ pub(crate) fn save_chf(chf: &Chf, path: &Path) -> Result<()> {
 pub(crate) fn open_chf(path: &Path, options: OpenOptions) -> Result<Chf> {
     let named = |e: Error| Error::new(e.kind, format!("{}: {}", path.display(), e.message));
     let file = LevelFile::open(path, Kind::Chf, options)?;
-    let chf = read_chf(&file).map_err(named)?;
-    if options.verify == Verify::Full {
-        chf.validate().map_err(named)?;
-    }
-    Ok(chf)
+    file.alongside_sums(|file| {
+        let chf = read_chf(file)?;
+        if options.verify == Verify::Full {
+            chf.validate()?;
+        }
+        Ok(chf)
+    })
+    .map_err(named)
 }
 
 /// A count that must fit a `u32` id space.

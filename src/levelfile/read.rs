@@ -13,6 +13,7 @@ use crate::util::pages;
 use crate::util::store::Store;
 use bytemuck::Pod;
 use memmap2::Mmap;
+use std::cell::Cell;
 use std::fs::File;
 use std::io::{Read, Seek, SeekFrom};
 use std::ops::Deref;
@@ -52,7 +53,11 @@ pub(crate) struct LevelFile {
     bytes: Bytes,
     pub header: Header,
     entries: Vec<Entry>,
-    checksums: bool,
+    /// Whether each section is checked against its checksum when it is taken (turned on
+    /// for the second run of [`LevelFile::alongside_sums`]).
+    checksums: Cell<bool>,
+    /// Whether the checksums are left to [`LevelFile::alongside_sums`] instead.
+    deferred: bool,
     pub verify: Verify,
 }
 
@@ -112,11 +117,13 @@ impl LevelFile {
             }
             entries.push(e);
         }
+        let deferred = options.verify == Verify::Full && matches!(bytes, Bytes::Mapped(_));
         Ok(LevelFile {
             bytes,
             header,
             entries,
-            checksums,
+            checksums: Cell::new(checksums && !deferred),
+            deferred,
             verify: options.verify,
         })
     }
@@ -214,18 +221,47 @@ impl LevelFile {
         Ok(e)
     }
 
+    /// `work` on this file, with every section's checksum computed meanwhile on a thread
+    /// of its own when they were left to it (a mapped open with full verification: the
+    /// checksums stream the file while the structural checks wait on scattered reads, so
+    /// that each runs in the other's gaps). The answer is the one an open that checks
+    /// each section as it is taken gives: when a checksum fails, `work` runs again so,
+    /// and its error names the first damaged section it takes (as a loaded open does).
+    pub(crate) fn alongside_sums<T>(&self, work: impl Fn(&LevelFile) -> Result<T>) -> Result<T> {
+        if !self.deferred {
+            return work(self);
+        }
+        // On one thread: `work` has the others.
+        let (entries, bytes) = (&self.entries, &self.bytes);
+        let sums_hold = || {
+            entries
+                .iter()
+                .all(|e| mapped_bytes(bytes, e).is_ok_and(|b| crc32fast::hash(b) == e.crc))
+        };
+        std::thread::scope(|s| {
+            let on_thread = std::thread::Builder::new().spawn_scoped(s, sums_hold).ok();
+            let done = work(self);
+            let held = match on_thread {
+                Some(h) => h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)),
+                None => sums_hold(),
+            };
+            if held {
+                return done;
+            }
+            self.checksums.set(true);
+            work(self)
+        })
+    }
+
     fn checksum_failed(e: &Entry) -> Error {
         format::bad(e.offset, format!("section {} fails its checksum", e.name))
     }
 
-    /// The bytes of section `e` of a mapped file, checked against its checksum.
+    /// The bytes of section `e` of a mapped file, checked against its checksum unless
+    /// checksums are off or deferred to [`LevelFile::alongside_sums`].
     fn in_memory(&self, e: &Entry) -> Result<&[u8]> {
-        let bytes = usize::try_from(e.offset)
-            .ok()
-            .zip(usize::try_from(e.offset + e.byte_len()).ok())
-            .and_then(|(a, b)| self.bytes.get(a..b))
-            .ok_or_else(|| format::bad(e.offset, format!("section {} is not in memory", e.name)))?;
-        if self.checksums && format::section_crc(bytes) != e.crc {
+        let bytes = mapped_bytes(&self.bytes, e)?;
+        if self.checksums.get() && format::section_crc(bytes) != e.crc {
             return Err(Self::checksum_failed(e));
         }
         Ok(bytes)
@@ -248,13 +284,13 @@ impl LevelFile {
         while left > 0 {
             let n = left.min(CHUNK as u64) as usize;
             file.read_exact(&mut buf[..n]).map_err(io)?;
-            if self.checksums {
+            if self.checksums.get() {
                 crc.update(&buf[..n]);
             }
             take(&buf[..n]);
             left -= n as u64;
         }
-        if self.checksums && crc.finalize() != e.crc {
+        if self.checksums.get() && crc.finalize() != e.crc {
             return Err(Self::checksum_failed(e));
         }
         Ok(())
@@ -281,6 +317,15 @@ impl LevelFile {
         }
         Ok(out)
     }
+}
+
+/// The bytes of section `e` of a mapped file.
+fn mapped_bytes<'a>(bytes: &'a Bytes, e: &Entry) -> Result<&'a [u8]> {
+    usize::try_from(e.offset)
+        .ok()
+        .zip(usize::try_from(e.offset + e.byte_len()).ok())
+        .and_then(|(a, b)| bytes.get(a..b))
+        .ok_or_else(|| format::bad(e.offset, format!("section {} is not in memory", e.name)))
 }
 
 /// One `T` from its little-endian bytes, `word` bytes per file element.

@@ -177,11 +177,20 @@ fn walk_stars(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<(usi
                 };
             }
             busy = true;
-            steps += 1;
             let c = lane.cur;
-            if steps > v.len()
-                || (lane.from != NONE && (o[c as usize] != lane.from || v[c as usize] != lane.x))
-            {
+            if lane.from != NONE {
+                if o[c as usize] != lane.from || v[c as usize] != lane.x {
+                    return None;
+                }
+                if c == lane.start {
+                    // The fan closed, its last pair checked here like any other step's
+                    // (on lines prefetched a round of the lanes ago, not on the spot).
+                    lane.cur = NONE;
+                    continue;
+                }
+            }
+            steps += 1;
+            if steps > v.len() {
                 return None;
             }
             let p = prev(c);
@@ -194,15 +203,11 @@ fn walk_stars(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<(usi
             if g as usize >= o.len() {
                 return None;
             }
-            if g == lane.start {
-                // The fan closes: its last pair is checked now, its lines are in cache.
-                if o[g as usize] != p {
-                    return None;
-                }
-                lane.cur = NONE;
-                continue;
-            }
+            // What the lane's next visit reads: `O[g]` and `V[g]` (the check), `O[prev(g)]`
+            // (the step). A triangle's entries of `O` straddle two lines in 2 triangles of
+            // 16, and a step that waits on the second line holds up every lane behind it.
             prefetch(o, g as usize);
+            prefetch(o, prev(g) as usize);
             prefetch(v, g as usize);
             (lane.cur, lane.from) = (g, p);
         }

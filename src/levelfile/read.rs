@@ -117,7 +117,11 @@ impl LevelFile {
             }
             entries.push(e);
         }
-        let deferred = options.verify == Verify::Full && matches!(bytes, Bytes::Mapped(_));
+        // Only where a second thread pays: a machine with one, or a small file, would
+        // only wait for the thread to start.
+        let deferred = options.verify == Verify::Full
+            && matches!(bytes, Bytes::Mapped(_))
+            && crate::util::par::planned_threads(0, bytes.len() / 16) > 1;
         Ok(LevelFile {
             bytes,
             header,

@@ -46,6 +46,11 @@ pub(super) fn pairs_hold(v: &[u32], o: &[u32]) -> Option<usize> {
                 let g = o[h + PAIRS_AHEAD] as usize;
                 prefetch(o, g);
                 prefetch(v, g);
+                // `V[next(g)]` too, on another line in 2 triangles of 16 (and `next` only
+                // of a half-edge: of `NONE` it would overflow).
+                if g < v.len() {
+                    prefetch(v, next(g as u32) as usize);
+                }
             }
             let (g, live) = (o[h], v[h] != NONE);
             if g == NONE {

@@ -128,8 +128,9 @@ fn rotation_steps(v: &[u32], o: &[u32], vh: &[u32], xs: Range<usize>) -> Option<
 /// half-edge: how many half-edges have no partner when every rotation from `VH` is one fan
 /// entered at its boundary half-edge and `O` is an involution on matching edges, else
 /// `None`. Each step from `c` (outgoing from `x`) reads `g = O[prev(c)]`, and its next
-/// step, which reads `g`'s triangle anyway, checks `O[g] = prev(c)` and `V[g] = x`, so that each pair costs the walk's one line of
-/// `O` and one of `V` instead of a pass of its own. Why that is the whole of both checks:
+/// step, which reads `g`'s triangle anyway, checks `O[g] = prev(c)` and `V[g] = x`, so
+/// that each pair costs the walk's one line of `O` and one of `V` instead of a pass of its
+/// own. Why that is the whole of both checks:
 /// with every step's pair checked, two steps cannot reach one half-edge (their `prev`s
 /// would both be its partner), so the walks are simple and, one per vertex, disjoint;
 /// meeting all `len(V)` half-edges, they check every paired half-edge once as a `prev`,

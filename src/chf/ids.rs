@@ -202,6 +202,9 @@ pub fn radial(v: &[u32], o: &[u32], he: HalfEdge) -> HalfEdge {
     if g == NONE {
         return NO_HALF_EDGE;
     }
+    // The next step reads `O` of the same tetrahedron: its line is fetched alongside
+    // its corners rather than after them.
+    crate::util::prefetch::prefetch(o, first(tet(g)) as usize);
     let y = he_target(v, he);
     let cycle = face_cycle(v, g);
     let j = if cycle[0] == y {

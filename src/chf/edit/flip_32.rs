@@ -12,14 +12,19 @@ impl Chf {
         if self.is_boundary_edge(e) {
             return Err(refuse(format_args!("edge {e} is on the boundary")));
         }
-        // Most edges have more than three: the walk stops at the fourth.
+        // Most edges have more than three: the walk stops at the fourth, and a refusal
+        // allocates nothing (most checks of a flip storm are refusals).
         let mut around = self.edge_tetrahedra(e);
-        let ring: Vec<u32> = around.by_ref().take(3).collect();
-        if ring.len() != 3 || around.next().is_some() {
-            let more = if ring.len() == 3 { "more than " } else { "" };
+        let mut ring = [0; 3];
+        let n = ring
+            .iter_mut()
+            .zip(around.by_ref())
+            .map(|(r, t)| *r = t)
+            .count();
+        if n != 3 || around.next().is_some() {
+            let more = if n == 3 { "more than " } else { "" };
             return Err(refuse(format_args!(
-                "edge {e} has {more}{} tetrahedra around it, not 3",
-                ring.len()
+                "edge {e} has {more}{n} tetrahedra around it, not 3"
             )));
         }
         let [a, b] = self.edge_vertices(e);
@@ -32,7 +37,7 @@ impl Chf {
         // The ring triangle separates `a` from `b` exactly when both new tetrahedra are
         // positive (with positions), which is what makes the union convex.
         Ok(Plan {
-            remove: ring,
+            remove: ring.to_vec(),
             add: vec![replaced(q, b, far), replaced(q, a, far)],
             ..Plan::default()
         })

@@ -179,6 +179,7 @@ impl Che {
         if c == d {
             return Some(FlipRefusal::SameThird(c));
         }
+        self.touch_flip(h, g);
         // From `c -> a`, in the triangle just read, rather than from `VH[c]`: a cache miss
         // less on the walk that is most of a flip's cost.
         if self.adjacent(prev(h), d) {

@@ -5,6 +5,7 @@ use super::checks::refuse;
 use crate::che::Che;
 use crate::che::ids::{next, prev};
 use crate::error::Result;
+use crate::util::prefetch::prefetch;
 
 impl Che {
     /// Flips edge `e` between triangles `(a, b, c)` and `(b, a, d)` into `c-d`; the edge
@@ -23,6 +24,26 @@ impl Che {
             m.flip_live(h);
             Ok(())
         })
+    }
+
+    /// Starts fetching what flipping the edge of `h` and `g` writes, besides the two
+    /// triangles: `VH` of the four corners, `O` of the two outer neighbours it relinks and
+    /// the edge ids of both triangles. Called by the check, whose walk around `c` takes a
+    /// few memory latencies of its own: on a large mesh these lines are scattered, and a
+    /// flip that follows its check (a storm, `is_flip_ok` then `flip_edge`) finds them in
+    /// the cache rather than waiting for them after the walk.
+    pub(super) fn touch_flip(&self, h: u32, g: u32) {
+        let (v, o) = (&*self.v, &*self.o);
+        for x in [h, next(h), prev(h), prev(g)] {
+            prefetch(&self.vh, v[x as usize] as usize);
+        }
+        for x in [o[prev(h) as usize], o[prev(g) as usize]] {
+            prefetch(o, x as usize);
+        }
+        if let Some(st) = self.edits() {
+            prefetch(&st.edge_of, h as usize);
+            prefetch(&st.edge_of, g as usize);
+        }
     }
 
     /// Triangle `(a, b, c)` on slots `h, h1, h2` becomes `(d, b, c)`, `(b, a, d)` on

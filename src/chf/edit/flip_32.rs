@@ -15,12 +15,11 @@ impl Chf {
         // Most edges have more than three: the walk stops at the fourth, and a refusal
         // allocates nothing (most checks of a flip storm are refusals).
         let mut around = self.edge_tetrahedra(e);
-        let mut ring = [0; 3];
-        let n = ring
-            .iter_mut()
-            .zip(around.by_ref())
-            .map(|(r, t)| *r = t)
-            .count();
+        let (mut ring, mut n) = ([0; 3], 0);
+        for (r, t) in ring.iter_mut().zip(around.by_ref()) {
+            *r = t;
+            n += 1;
+        }
         if n != 3 || around.next().is_some() {
             let more = if n == 3 { "more than " } else { "" };
             return Err(refuse(format_args!(

@@ -767,6 +767,39 @@ fn a_flip_checks_again_after_any_other_call() {
     }
 }
 
+/// A collapse right after its check skips repeating it; anything in between makes it check
+/// again: here a triangle at each end of the edge, neither on it, is removed, which puts both
+/// ends on the boundary and the edge between them inside.
+#[test]
+fn a_collapse_checks_again_after_any_other_call() {
+    for level in 0..=3 {
+        let mut che = built(&torus(6, 5), level);
+        let h = (0..che.num_half_edges() as u32)
+            .find(|&h| che.is_collapse_ok(h).unwrap())
+            .unwrap();
+        let (a, b) = (che.origin(h), che.target(h));
+        let off_the_edge = |che: &Che, x: u32| {
+            che.vertex_triangles(x)
+                .find(|&t| {
+                    !che.triangle_vertices(t).contains(&a) || !che.triangle_vertices(t).contains(&b)
+                })
+                .unwrap()
+        };
+        let ta = off_the_edge(&che, a);
+        assert!(che.is_collapse_ok(h).unwrap(), "level {level}");
+        che.remove_triangle(ta).unwrap();
+        let tb = off_the_edge(&che, b);
+        che.remove_triangle(tb).unwrap();
+        let err = che.collapse_edge(h).unwrap_err();
+        assert!(
+            err.to_string().contains("two boundary vertices"),
+            "level {level}: {err}"
+        );
+        assert!(che.is_collapse_ok(h).is_ok_and(|ok| !ok), "level {level}");
+        che.validate().unwrap();
+    }
+}
+
 /// At level 3 an edit notes the half-edges it unpairs, for the next curve computation: the
 /// notes stay within the boundary plus a constant however many edits run without a curve
 /// query, so level 3 costs no more memory while editing than level 2.

@@ -89,9 +89,22 @@ pub struct Che {
     pub(crate) strict: bool,
     /// What the first edit materialises (see `edit/`); `None` on a CHE never edited.
     pub(crate) edit: Option<Box<edit::EditState>>,
-    /// The edge `is_flip_ok` last found flippable (`NONE`: none), until anything else
-    /// runs: the flip that usually follows the check skips repeating it.
-    pub(crate) flip_checked: u32,
+    /// What a check (`is_flip_ok`, `is_collapse_ok`) last said yes to, until the next
+    /// check, edit, change of level or collection: the edit that usually follows its check
+    /// skips repeating it.
+    pub(crate) checked: Checked,
+}
+
+/// The element a check last allowed an edit of (see [`Che::checked`]); none would be
+/// refused now, since nothing has changed the mesh since.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) enum Checked {
+    #[default]
+    Nothing,
+    /// `is_flip_ok(e)` said yes.
+    Flip(u32),
+    /// `is_collapse_ok(h)` said yes.
+    Collapse(u32),
 }
 
 impl Che {
@@ -115,7 +128,7 @@ impl Che {
 
     /// Raises (or lowers) the level in place. Ids do not change.
     pub fn build_level(&mut self, level: u8) -> Result<()> {
-        self.flip_checked = NONE;
+        self.checked = Checked::Nothing;
         if self.edit.is_some() {
             return self.change_edited_level(level);
         }

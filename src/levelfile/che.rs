@@ -173,7 +173,7 @@ pub(crate) fn read_che(file: &LevelFile, prefix: &str, level: u8, positions: boo
         report: read_report(file, prefix)?,
         strict: false,
         edit: None,
-        flip_checked: crate::NONE,
+        checked: Default::default(),
     };
     if positions {
         che.positions = read_positions(file, &n("positions"), n_vertices)?;

@@ -21,7 +21,6 @@ pub(crate) use split::walk_fan;
 pub use stream::SweepLimits;
 
 use super::Che;
-use crate::NONE;
 use crate::error::{Error, Result};
 use crate::util::input::{Input, positions_with_copies};
 use crate::util::options::check_input;
@@ -216,7 +215,7 @@ fn assemble(
         report,
         strict: false,
         edit: None,
-        flip_checked: NONE,
+        checked: Default::default(),
     })
 }
 

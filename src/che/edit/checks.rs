@@ -2,8 +2,8 @@
 //! the Euler operators ([`Che::is_flip_ok`], [`Che::is_collapse_ok`]), which never modify.
 
 use crate::NONE;
-use crate::che::Che;
 use crate::che::ids::{first, next, prev, tri};
+use crate::che::{Che, Checked};
 use crate::error::{Error, Result};
 use crate::util::alloc::try_push;
 use crate::util::small_ids::Ids;
@@ -321,16 +321,24 @@ impl Che {
             let h = c.live_edge(e)?;
             Ok(c.flip_refusal(h).is_none())
         });
-        self.flip_checked = if matches!(ok, Ok(true)) { e } else { NONE };
+        self.checked = match ok {
+            Ok(true) => Checked::Flip(e),
+            _ => Checked::Nothing,
+        };
         ok
     }
 
     /// Can half-edge `h` be collapsed? Never modifies; see [`Che::collapse_edge`].
     pub fn is_collapse_ok(&mut self, h: u32) -> Result<bool> {
-        self.check_with(|c| {
+        let ok = self.check_with(|c| {
             c.live_half_edge(h)?;
             Ok(c.collapse_refusal(h)?.is_none())
-        })
+        });
+        self.checked = match ok {
+            Ok(true) => Checked::Collapse(h),
+            _ => Checked::Nothing,
+        };
+        ok
     }
 }
 

@@ -2,8 +2,8 @@
 
 use super::arrays::{replace_vh, set_v};
 use super::checks::refuse;
-use crate::che::Che;
 use crate::che::ids::{next, prev};
+use crate::che::{Che, Checked};
 use crate::error::Result;
 use crate::util::prefetch::prefetch;
 
@@ -15,8 +15,8 @@ impl Che {
         self.edit_with(|m| {
             let h = m.live_edge(e)?;
             // Right after `is_flip_ok(e)` said yes, nothing has changed since (every other
-            // call clears the mark).
-            let checked = m.flip_checked == e;
+            // check and every edit clears the mark).
+            let checked = m.checked == Checked::Flip(e);
             debug_assert!(!checked || m.flip_refusal(h).is_none());
             if !checked && let Some(why) = m.flip_refusal(h) {
                 return refuse(format!("flip_edge: {}", why.words(e)));

@@ -6,9 +6,9 @@ use super::arrays::{
     triangle_origin_mut, v_mut, vertex_origin_mut, vh_mut,
 };
 use crate::NONE;
-use crate::che::Che;
 use crate::che::build::level2::{self, Spare};
 use crate::che::tables::is_canonical;
+use crate::che::{Che, Checked};
 use crate::error::Result;
 use crate::util::alloc::{try_vec, try_with_capacity};
 use crate::util::origin::OriginMap;
@@ -172,7 +172,7 @@ impl Che {
     /// no map of its own to allocate and copy out. A buffer of another length than its
     /// count is an invalid-input error before anything changes.
     pub fn garbage_collect_into(&mut self, out: GarbageMapsOut<'_>) -> Result<()> {
-        self.flip_checked = NONE;
+        self.checked = Checked::Nothing;
         let level = self.level;
         let nv = self.n_vertices;
         let mut vmap = MapMemory::of(out.vertices, nv, "the vertex map")?;

@@ -3,9 +3,9 @@
 
 use super::arrays::{o_mut, vh_mut};
 use crate::NONE;
-use crate::che::Che;
 use crate::che::ids::next;
 use crate::che::tables::edge_ids;
+use crate::che::{Che, Checked};
 use crate::error::Result;
 use crate::util::alloc::{or_panic, try_push, try_vec};
 use crate::util::live_ranks::LiveRanks;
@@ -103,7 +103,7 @@ impl Che {
     pub(super) fn edit_with<T>(&mut self, op: impl FnOnce(&mut Che) -> Result<T>) -> Result<T> {
         self.begin_edit()?;
         let r = op(self);
-        self.flip_checked = NONE;
+        self.checked = Checked::Nothing;
         self.end_edit();
         if r.is_ok() {
             self.st_mut().changed = true;

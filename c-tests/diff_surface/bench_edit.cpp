@@ -90,6 +90,25 @@ std::string vs_peer(double tm, const EditRow &om, const EditRow &cg, EditResult 
   return fmt_ratio2(tm, best);
 }
 
+// The simplification split in two: the policy's queue (each library's own sequence of
+// queue operations replayed alone), which no library can save, and the rest (the library's
+// calls, and the policy's reads of positions through them).
+void report_queue_share(Out &out, const std::vector<EditRow> &tm, const EditRow &om, const EditRow &cg) {
+  out("\nThe simplification's queue alone: each library's sequence of queue operations (recorded in one more "
+      "run) replayed on an empty queue, median of the same repetitions; the rest is the library's calls and "
+      "the policy's work through them. Ratio of the rest: topomesh ÷ the faster peer's rest.\n\n");
+  out("| library | simplification | queue operations | queue alone | rest | rest ÷ faster peer's |\n"
+      "|---|---:|---:|---:|---:|---:|\n");
+  auto rest = [](const EditRow &r) { return r.simplify.ms - r.simplify_queue_ms; };
+  const double best = std::min(rest(om), rest(cg));
+  std::vector<const EditRow *> all = {&om, &cg};
+  for (const EditRow &r : tm) all.push_back(&r);
+  for (const EditRow *r : all)
+    out("| %s | %s | %zu | %s | %s | %s |\n", r->lib.c_str(), fmt_ms(r->simplify.ms).c_str(),
+        r->simplify_queue_ops, fmt_ms(r->simplify_queue_ms).c_str(), fmt_ms(rest(*r)).c_str(),
+        r == &om || r == &cg ? "" : fmt_ratio2(rest(*r), best).c_str());
+}
+
 void report_times(Out &out, const std::vector<EditRow> &tm, const EditRow &om, const EditRow &cg) {
   struct Op {
     const char *name;
@@ -111,6 +130,7 @@ void report_times(Out &out, const std::vector<EditRow> &tm, const EditRow &om, c
     for (const EditRow &r : tm) out(" %s |", vs_peer((r.*o.op).ms, om, cg, o.op).c_str());
     out("\n");
   }
+  report_queue_share(out, tm, om, cg);
   out("\nWhat each did (attempts: flips tried, edges looked at over the split passes, collapse candidates "
       "checked, triangles removed; accepted: flips, splits, collapses, triangles removed), and the live "
       "triangles after:\n\n");

@@ -48,6 +48,8 @@ struct EditResult {
 struct EditRow {
   std::string lib;
   EditResult flips, splits, simplify, gc;
+  double simplify_queue_ms = -1; // the simplification's queue operations replayed alone
+  size_t simplify_queue_ops = 0;
   size_t bytes_built = 0;        // structure size right after the build
   long rss_build = -1;           // resident-set growth over the build
   long rss_edited = -1;          // ... over the build and the flip storm
@@ -140,12 +142,23 @@ template <class E> EditResult split_refine(E &ed, double threshold) {
 // the half-edge to collapse.
 using EdgeKey = std::pair<uint64_t, uint32_t>;
 
+// The queue operations of one simplification in order (a pop is e == ~0u), so that the
+// queue's share of the run can be timed alone (replay_ms).
+struct QueueOp {
+  EdgeKey key;
+  uint32_t e;
+};
+using QueueLog = std::vector<QueueOp>;
+
 // A binary min-heap of edge ids whose keys can change in place (`slot[e]`: where edge e sits
-// in `heap`, or none): cli/src/simplify.rs's EdgeQueue.
+// in `heap`, or none): cli/src/simplify.rs's EdgeQueue. With a log, it appends each operation.
 class EdgeQueue {
 public:
-  explicit EdgeQueue(size_t edges) : slot_(edges, kNone) { heap_.reserve(edges); }
+  explicit EdgeQueue(size_t edges, QueueLog *log = nullptr) : slot_(edges, kNone), log_(log) {
+    heap_.reserve(edges);
+  }
   void set(uint32_t e, EdgeKey key) {
+    if (log_) log_->push_back({key, e});
     size_t i;
     if (slot_[e] == kNone) {
       heap_.push_back({key, e});
@@ -157,6 +170,7 @@ public:
     down(up(i));
   }
   bool pop(EdgeKey &key, uint32_t &e) {
+    if (log_) log_->push_back({{}, kNone});
     if (heap_.empty()) return false;
     std::swap(heap_[0], heap_.back());
     key = heap_.back().first;
@@ -172,6 +186,7 @@ private:
   using Item = std::pair<EdgeKey, uint32_t>;
   std::vector<Item> heap_;
   std::vector<uint32_t> slot_;
+  QueueLog *log_;
   void place(size_t i, const Item &it) {
     slot_[it.second] = uint32_t(i);
     heap_[i] = it;
@@ -234,12 +249,13 @@ template <class E> bool flips_a_normal(E &ed, uint32_t h, const P3 &mid) {
 }
 
 // Shortest-edge-first collapses until at most ratio x the live triangles remain, or no
-// edge can go. attempts: candidates checked; accepted: collapses.
-template <class E> EditResult simplify(E &ed, double ratio) {
+// edge can go. attempts: candidates checked; accepted: collapses. With `log`, the queue's
+// operations are recorded (a run for replay_ms, not a timed one).
+template <class E> EditResult simplify(E &ed, double ratio, QueueLog *log = nullptr) {
   EditResult r;
   const size_t target = size_t(double(ed.live_triangles()) * ratio);
   double t0 = cpu_ms();
-  EdgeQueue queue(ed.n_edges());
+  EdgeQueue queue(ed.n_edges(), log);
   for (uint32_t e = 0; e < ed.n_edges(); ++e) {
     if (ed.edge_removed(e)) continue;
     uint32_t h = ed.edge_half_edge(e);
@@ -267,6 +283,28 @@ template <class E> EditResult simplify(E &ed, double ratio) {
   r.triangles_after = ed.live_triangles();
   r.bytes_after = ed.structure_bytes();
   return r;
+}
+
+// The CPU time of `log`'s operations on an empty queue for `edges` edges: the policy's own
+// work in a simplification that made them, which every library pays alike (the part of its
+// time no library can save).
+inline double replay_ms(const QueueLog &log, size_t edges) {
+  EdgeQueue queue(edges);
+  EdgeKey key;
+  uint32_t e;
+  uint64_t sink = 0;
+  double t0 = cpu_ms();
+  for (const QueueOp &op : log) {
+    if (op.e != ~0u) {
+      queue.set(op.e, op.key);
+    } else if (queue.pop(key, e)) {
+      sink += e;
+    }
+  }
+  double ms = cpu_ms() - t0;
+  volatile uint64_t keep = sink;
+  (void)keep;
+  return ms;
 }
 
 // Removes every other triangle id (untimed), then times the garbage collection alone.
@@ -312,6 +350,17 @@ template <class Make> EditRow run_edits(const std::string &lib, Make make, const
   if (reps > 1) median_of(row.flips, [&](auto &ed) { return flip_storm(ed, p); });
   median_of(row.splits, [&](auto &ed) { return split_refine(ed, threshold); });
   median_of(row.simplify, [&](auto &ed) { return simplify(ed, p.simplify_ratio); });
+  {
+    // One more simplification records its queue operations, replayed alone `reps` times.
+    QueueLog log;
+    auto ed = make();
+    const size_t edges = ed->n_edges();
+    simplify(*ed, p.simplify_ratio, &log);
+    std::vector<double> ms;
+    for (int i = 0; i < reps; ++i) ms.push_back(replay_ms(log, edges));
+    row.simplify_queue_ms = median(ms);
+    row.simplify_queue_ops = log.size();
+  }
   median_of(row.gc, [&](auto &ed) { return remove_half_and_collect(ed); });
   return row;
 }

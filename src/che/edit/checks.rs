@@ -39,6 +39,15 @@ impl FlipRefusal {
     }
 }
 
+/// What the link condition of a collapse of `a -> b` reads of the stars of `a` and `b`.
+struct Links {
+    /// A neighbour of both other than `a` and the thirds (the first met around `b`).
+    shared: Option<u32>,
+    /// Both stars hold a triangle on the two thirds `c, d` (edge `c-d` is in both links).
+    /// Read to the end of `b`'s star only when `shared` is `None`.
+    both_on_thirds: bool,
+}
+
 impl Che {
     /// Is vertex `x` removed (until [`Che::garbage_collect`])? `false` out of range.
     pub fn is_vertex_removed(&self, x: u32) -> bool {
@@ -227,14 +236,14 @@ impl Che {
                 "half-edge {h}: both triangles have the same third vertex {c}"
             )));
         }
-        if let Some(y) = self.shared_neighbour(a, b, &thirds)? {
+        let links = self.links(a, b, &thirds)?;
+        if let Some(y) = links.shared {
             return Ok(Some(format!(
                 "half-edge {h}: the link condition fails ({a} and {b} share neighbour {y})"
             )));
         }
         if let [c, d] = thirds[..]
-            && self.has_triangle_on(a, c, d)
-            && self.has_triangle_on(b, c, d)
+            && links.both_on_thirds
         {
             return Ok(Some(format!(
                 "half-edge {h}: the link condition fails (edge {c}-{d} is in both links)"
@@ -243,18 +252,21 @@ impl Che {
         Ok(None)
     }
 
-    /// A neighbour of both `a` and `b` other than `a` and the `thirds`, if there is one.
-    /// The ring of `a` is gathered on the stack when it is small, as it nearly always is.
-    fn shared_neighbour(&self, a: u32, b: u32, thirds: &[u32]) -> Result<Option<u32>> {
-        self.shared_neighbour_in::<32>(a, b, thirds)
+    /// What the link condition of a collapse of `a -> b` reads of the two stars, in one
+    /// walk of each. The ring of `a` is gathered on the stack when it is small, as it
+    /// nearly always is.
+    fn links(&self, a: u32, b: u32, thirds: &[u32]) -> Result<Links> {
+        self.links_in::<32>(a, b, thirds)
     }
 
-    /// `shared_neighbour` with a stack ring of `SMALL` vertices.
-    fn shared_neighbour_in<const SMALL: usize>(
-        &self, a: u32, b: u32, thirds: &[u32],
-    ) -> Result<Option<u32>> {
-        let (mut ring, mut n) = ([NONE; SMALL], 0);
-        let fits = !self.any_neighbour(a, |y| {
+    /// `links` with a stack ring of `SMALL` vertices.
+    fn links_in<const SMALL: usize>(&self, a: u32, b: u32, thirds: &[u32]) -> Result<Links> {
+        // A triangle of the star on the two thirds `c, d`: `c-d` is in that vertex's link.
+        let on_thirds =
+            |p: u32, q: u32| matches!(thirds, &[c, d] if (p, q) == (c, d) || (p, q) == (d, c));
+        let (mut ring, mut n, mut a_on) = ([NONE; SMALL], 0, false);
+        let fits = !self.any_neighbour(a, |y, q| {
+            a_on |= on_thirds(y, q);
             if n == SMALL {
                 return true;
             }
@@ -266,7 +278,8 @@ impl Che {
         let mut large = Vec::new();
         if !fits {
             let mut grown = Ok(());
-            self.any_neighbour(a, |y| {
+            self.any_neighbour(a, |y, q| {
+                a_on |= on_thirds(y, q);
                 grown = try_push(&mut large, y, "the ring of a collapsed edge's end");
                 grown.is_err()
             });
@@ -280,22 +293,29 @@ impl Che {
                 large.binary_search(&y).is_ok()
             }
         };
-        let mut shared = None;
-        self.any_neighbour(b, |y| {
+        let (mut shared, mut b_on) = (None, false);
+        self.any_neighbour(b, |y, q| {
+            b_on |= on_thirds(y, q);
             let found = y != a && !thirds.contains(&y) && around_a(y);
             shared = found.then_some(y);
             found
         });
-        Ok(shared)
+        Ok(Links {
+            shared,
+            both_on_thirds: a_on && b_on,
+        })
     }
 
-    /// Calls `f` on the vertices around `x` (each once, in rotation order) until it returns
-    /// true; true if it did. Allocation-free: the checks run once per flip or collapse.
-    fn any_neighbour(&self, x: u32, mut f: impl FnMut(u32) -> bool) -> bool {
+    /// Calls `f(y, q)` on the vertices `y` around `x` (each once, in rotation order), with
+    /// `q` the third vertex of the triangle `(x, y, q)` of the outgoing half-edge `x -> y`
+    /// (`NONE` for the tail of a boundary vertex's incoming boundary half-edge), until it
+    /// returns true; true if it did. Allocation-free: the checks run once per flip or
+    /// collapse.
+    fn any_neighbour(&self, x: u32, mut f: impl FnMut(u32, u32) -> bool) -> bool {
         let mut last = NONE;
         let stopped = self.any_outgoing(x, |h| {
             last = h;
-            f(self.v[next(h) as usize])
+            f(self.v[next(h) as usize], self.v[prev(h) as usize])
         });
         if stopped || last == NONE {
             return stopped;
@@ -303,15 +323,7 @@ impl Che {
         // On the boundary the rotation ends at the last outgoing half-edge; the vertex
         // behind it (the tail of the incoming boundary half-edge) is a neighbour too.
         let p = prev(last);
-        self.o[p as usize] == NONE && f(self.v[p as usize])
-    }
-
-    /// Is there a triangle on vertices `x`, `c`, `d`?
-    fn has_triangle_on(&self, x: u32, c: u32, d: u32) -> bool {
-        self.any_outgoing(x, |h| {
-            let (p, q) = (self.v[next(h) as usize], self.v[prev(h) as usize]);
-            (p == c && q == d) || (p == d && q == c)
-        })
+        self.o[p as usize] == NONE && f(self.v[p as usize], NONE)
     }
 
     /// Can edge `e` be flipped? Never modifies. `Err` for a bad or removed id, `Ok(false)`
@@ -376,23 +388,64 @@ mod tests {
     }
 
     /// The shared neighbour found through the stack ring and through the sorted vector of
-    /// a hub is the same, for every half-edge of meshes with vertices of degree 3 to 40.
+    /// a hub is the same, for every half-edge of meshes with vertices of degree 3 to 40;
+    /// whether both stars hold a triangle on the thirds is what a scan of every triangle
+    /// says (where no shared neighbour stopped the walk of `b`).
     #[test]
-    fn shared_neighbour_on_the_stack_or_in_a_vector_agree() {
-        for s in [sphere(40, 4), torus(6, 5), grid(4, 3), sphere(5, 4)] {
+    fn links_on_the_stack_or_in_a_vector_agree_with_a_scan() {
+        // The surface of a tetrahedron: every edge's thirds span a triangle on both ends.
+        let tetrahedron = crate::generate::Surface {
+            positions: vec![glam::DVec3::ZERO; 4],
+            triangles: vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+        };
+        let build = |s: crate::generate::Surface| {
             let n = s.positions.len();
-            let che =
-                Che::from_triangles(&s.triangles, n, &s.positions, BuildOptions::level(2)).unwrap();
+            Che::from_triangles(&s.triangles, n, &s.positions, BuildOptions::level(2)).unwrap()
+        };
+        // A triangle split: its new vertex has degree 3, its corners more.
+        let mut split = build(torus(6, 5));
+        split.split_triangle(0, None).unwrap();
+        let meshes = [
+            sphere(40, 4),
+            torus(6, 5),
+            grid(4, 3),
+            sphere(5, 4),
+            tetrahedron,
+        ];
+        let mut both = 0;
+        for che in meshes.into_iter().map(build).chain([split]) {
             let v = che.half_edge_vertices();
-            for h in 0..v.len() as u32 {
+            let on = |x: u32, c: u32, d: u32| {
+                che.live_triangles().any(|t| {
+                    let q = che.triangle_vertices(t);
+                    [x, c, d].iter().all(|y| q.contains(y))
+                })
+            };
+            for h in (0..v.len() as u32).filter(|&h| !che.is_half_edge_removed(h)) {
                 let (a, b) = (v[h as usize], v[crate::che::ids::next(h) as usize]);
-                let thirds = [v[crate::che::ids::prev(h) as usize]];
-                let stack = che.shared_neighbour_in::<64>(a, b, &thirds).unwrap();
-                let heap = che.shared_neighbour_in::<1>(a, b, &thirds).unwrap();
-                assert_eq!(heap, stack, "half-edge {h}");
-                let chosen = che.shared_neighbour(a, b, &thirds).unwrap();
-                assert_eq!(chosen, stack, "half-edge {h}");
+                let (c, g) = (v[crate::che::ids::prev(h) as usize], che.opposite(h));
+                let mut thirds = vec![c];
+                if g != crate::NONE {
+                    thirds.push(v[crate::che::ids::prev(g) as usize]);
+                }
+                let stack = che.links_in::<64>(a, b, &thirds).unwrap();
+                let heap = che.links_in::<1>(a, b, &thirds).unwrap();
+                let chosen = che.links(a, b, &thirds).unwrap();
+                for l in [&heap, &chosen] {
+                    assert_eq!(l.shared, stack.shared, "half-edge {h}");
+                    assert_eq!(l.both_on_thirds, stack.both_on_thirds, "half-edge {h}");
+                }
+                if let (&[c, d], None) = (&thirds[..], stack.shared) {
+                    assert_eq!(
+                        stack.both_on_thirds,
+                        on(a, c, d) && on(b, c, d),
+                        "half-edge {h}"
+                    );
+                    both += stack.both_on_thirds as usize;
+                }
             }
         }
+        // The tetrahedron says yes for each of its 12 half-edges: the comparison can fail.
+        assert!(both >= 12, "{both}");
     }
 }

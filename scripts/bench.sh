@@ -162,7 +162,7 @@ editing() {
     echo "The targets: each operation at least 2× faster than the faster peer (ratio at most 0.50×), memory"
     echo "while editing at most 0.6× OpenMesh's. Ratios from one run on a shared machine. The simplification"
     echo "spends much of its time in the policy's own queue, the same for every library; a second table gives"
-    echo "that share, timed alone (the queue operations of one more run replayed), and what is left.
+    echo "that share, timed alone (the queue operations of one more run replayed), and what is left."
     echo
     echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty); $edit_reps repetition(s); load"
     echo "average before: $load0; after: $(cut -d' ' -f1-3 /proc/loadavg). Machine and compilers as above."

@@ -15,6 +15,9 @@ bash scripts/install-deps.sh
 step "links in the pages resolve inside a clone (docs/check-links.py)"
 python3 docs/check-links.py
 
+step "every shell script parses (bash -n): the benchmark scripts run nowhere else"
+for script in scripts/*.sh .ci/run; do bash -n "$script"; done
+
 step "cargo fmt and clippy"
 cargo fmt --check
 # The fuzz crate is its own workspace (cargo-fuzz), outside the one above.

@@ -162,7 +162,9 @@ editing() {
     echo "The targets: each operation at least 2× faster than the faster peer (ratio at most 0.50×), memory"
     echo "while editing at most 0.6× OpenMesh's. Ratios from one run on a shared machine. The simplification"
     echo "spends much of its time in the policy's own queue, the same for every library; a second table gives"
-    echo "that share, timed alone (the queue operations of one more run replayed), and what is left."
+    echo "that share, timed alone (the queue operations of one more run replayed), and what is left. A third"
+    echo "gives the floor of the flip storm: the same draws on copies of CHE's arrays alone (\`floor_che.hpp\`),"
+    echo "what a library built on these arrays cannot beat; a target below it cannot be met on them."
     echo
     echo "Command: \`$cmdline\` ($(date -u +%Y-%m-%d), commit $commit$dirty); $edit_reps repetition(s); load"
     echo "average before: $load0; after: $(cut -d' ' -f1-3 /proc/loadavg). Machine and compilers as above."

@@ -13,6 +13,7 @@
 // structure size (positions excluded) after the build and after the edits, and the
 // resident-set growth over the build and over the build and the flip storm.
 #include "bench_edit_peers.hpp"
+#include "floor_che.hpp"
 #include "off_reader.hpp"
 
 #include <topomesh/topomesh.hpp>
@@ -66,6 +67,7 @@ public:
   void remove_triangle(uint32_t t) { s_.remove(topomesh::TriangleId{t}); }
   void garbage_collect() { s_.garbage_collect(); }
   size_t structure_bytes() const { return size_t(s_.memory().topology); }
+  FloorChe floor() const { return FloorChe(s_); }
 
 private:
   topomesh::Surface s_;
@@ -171,6 +173,41 @@ void report_memory(Out &out, const std::vector<EditRow> &tm, const EditRow &om, 
   out(" (the edit state exists only from the first edit).\n");
 }
 
+// The flip storm on CHE's arrays alone (floor_che.hpp), the same draws: the least any
+// library built on CHE can take, against the faster peer and the target.
+EditResult floor_flips(const Soup &s, const EditParams &p, int reps) {
+  std::vector<double> ms;
+  EditResult r;
+  for (int i = 0; i < reps; ++i) {
+    FloorChe f = TmEdit(s, 2).floor();
+    r = flip_storm(f, p);
+    ms.push_back(r.ms);
+    if (!f.valid()) {
+      std::fprintf(stderr, "bench_edit: the CHE floor broke its arrays\n");
+      std::exit(1);
+    }
+  }
+  r.ms = median(ms);
+  return r;
+}
+
+void report_floor(Out &out, const EditResult &floor, const EditRow &tm, const EditRow &om, const EditRow &cg) {
+  // The same draws and the same rule: the same flips, or the floor is not doing the work.
+  if (floor.accepted != tm.flips.accepted) {
+    std::fprintf(stderr, "bench_edit: the CHE floor flipped %llu edges, %s %llu\n", (unsigned long long)floor.accepted,
+                 tm.lib.c_str(), (unsigned long long)tm.flips.accepted);
+    std::exit(1);
+  }
+  const EditResult &fast = om.flips.ms < cg.flips.ms ? om.flips : cg.flips;
+  out("\nThe floor of the flip storm: the same draws on copies of CHE's V, O and edge ids alone "
+      "(`floor_che.hpp`: the check walks round one end, the flip rewrites two triangles, re-points four "
+      "neighbours and moves four edge ids; no VH, no marks, no details): what a library built on these arrays "
+      "cannot beat. The target over it: below 1, the target cannot be met on them.\n\n");
+  out("| | ms | accepted | ÷ faster peer | target ÷ this |\n|---|---:|---:|---:|---:|\n");
+  out("| CHE floor | %s | %llu | %s | %s |\n", fmt_ms(floor.ms).c_str(), (unsigned long long)floor.accepted,
+      fmt_ratio2(floor.ms, fast.ms).c_str(), fmt_ratio2(0.5 * fast.ms, floor.ms).c_str());
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -204,6 +241,7 @@ int main(int argc, char **argv) {
         s.name.c_str(), s.n_vertices, s.n_triangles(), reps, params.flips, (unsigned long long)params.seed,
         params.split_factor, mean, params.simplify_ratio * 100);
     report_times(out, tm, om, cg);
+    report_floor(out, floor_flips(s, params, reps), tm[0], om, cg);
     report_memory(out, tm, om, cg, never_edited);
   });
 }

@@ -1,0 +1,101 @@
+// The floor of a CHE flip storm: the least a checked flip costs in CHE's arrays, whatever
+// the library around them. Copies of a level-2 build's V, O and EH, and each half-edge's
+// edge id; a flip rewrites the two triangles' V and O, re-points the four outer neighbours
+// and moves the four outer edges' ids, as the level-2 contract (edge ids stable) asks. Its
+// check walks the rotation round one end, as the policy's check must without an edge index.
+// Nothing else: no VH, no removed marks, no positions, no refusal details. Only the flip
+// storm runs on it (the policy's flip_storm, the same draws, so the same flips: the accepted
+// counts say so).
+#pragma once
+
+#include <topomesh/topomesh.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace diffmesh {
+
+class FloorChe {
+public:
+  explicit FloorChe(const topomesh::Surface &s) {
+    const auto V = s.half_edge_vertices(), O = s.opposites(), EH = s.edge_half_edges();
+    v_.assign(V.begin(), V.end());
+    o_.assign(O.begin(), O.end());
+    eh_.assign(EH.begin(), EH.end());
+    e_.assign(v_.size(), kNone);
+    for (uint32_t e = 0; e < eh_.size(); ++e) {
+      const uint32_t h = eh_[e];
+      e_[h] = e;
+      if (o_[h] != kNone) e_[o_[h]] = e;
+    }
+  }
+  uint32_t n_edges() const { return uint32_t(eh_.size()); }
+  bool edge_removed(uint32_t) const { return false; }
+  size_t live_triangles() const { return v_.size() / 3; }
+  size_t structure_bytes() const { return 4 * (v_.size() + o_.size() + e_.size() + eh_.size()); }
+
+  // Interior, and the flipped edge (c, d) not there yet (c != d).
+  bool flip_ok(uint32_t e) const {
+    const uint32_t h = eh_[e], g = o_[h];
+    if (g == kNone) return false;
+    const uint32_t c = v_[prev(h)], d = v_[prev(g)];
+    return c != d && !joined(prev(h), d);
+  }
+  // Triangle (a b c) and (b a d) become (d c a) and (c d b), in the same slots.
+  void flip(uint32_t e) {
+    const uint32_t h = eh_[e], g = o_[h];
+    const uint32_t h1 = next(h), h2 = prev(h), g1 = next(g), g2 = prev(g);
+    const uint32_t a = v_[h], b = v_[g], c = v_[h2], d = v_[g2];
+    v_[h] = d, v_[h1] = c, v_[h2] = a;
+    v_[g] = c, v_[g1] = d, v_[g2] = b;
+    // Each slot on the left takes the outer edge that was in the slot on the right.
+    const uint32_t to[4] = {h1, h2, g1, g2}, from[4] = {h2, g1, g2, h1};
+    uint32_t twin[4], edge[4];
+    for (int k = 0; k < 4; ++k) twin[k] = o_[from[k]], edge[k] = e_[from[k]];
+    for (int k = 0; k < 4; ++k) {
+      o_[to[k]] = twin[k];
+      if (twin[k] != kNone) o_[twin[k]] = to[k];
+      e_[to[k]] = edge[k];
+      eh_[edge[k]] = to[k];
+    }
+  }
+
+  // The arrays still describe a surface: O pairs opposite half-edges of one edge id, and
+  // each edge's half-edge carries its id.
+  bool valid() const {
+    for (uint32_t h = 0; h < o_.size(); ++h) {
+      const uint32_t g = o_[h];
+      if (g != kNone && (o_[g] != h || v_[next(h)] != v_[g] || v_[h] != v_[next(g)] || e_[g] != e_[h])) return false;
+    }
+    for (uint32_t e = 0; e < eh_.size(); ++e)
+      if (e_[eh_[e]] != e) return false;
+    return true;
+  }
+
+private:
+  static constexpr uint32_t kNone = ~0u;
+  std::vector<uint32_t> v_, o_, e_, eh_;
+  static uint32_t next(uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
+  static uint32_t prev(uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
+  // Does an edge join the origin of k to d? The rotation round that origin, both ways; each
+  // triangle names both its other corners (on a boundary the last neighbour is only a prev).
+  bool joined(uint32_t k, uint32_t d) const {
+    auto hit = [&](uint32_t x) { return v_[next(x)] == d || v_[prev(x)] == d; };
+    for (uint32_t x = k;;) {
+      if (hit(x)) return true;
+      const uint32_t y = o_[prev(x)];
+      if (y == kNone) break;
+      if (y == k) return false;
+      x = y;
+    }
+    for (uint32_t x = k;;) {
+      const uint32_t t = o_[x];
+      if (t == kNone) return false;
+      x = next(t);
+      if (hit(x)) return true;
+    }
+  }
+};
+
+} // namespace diffmesh

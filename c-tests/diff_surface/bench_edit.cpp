@@ -86,6 +86,13 @@ std::string fmt_mb(double bytes) {
   return b;
 }
 
+// The peers' rows, then topomesh's, in the order of every table.
+std::vector<const EditRow *> all_rows(const std::vector<EditRow> &tm, const EditRow &om, const EditRow &cg) {
+  std::vector<const EditRow *> all = {&om, &cg};
+  for (const EditRow &r : tm) all.push_back(&r);
+  return all;
+}
+
 // topomesh's time over the faster peer's (below 1: topomesh faster; the target is 0.50).
 std::string vs_peer(double tm, const EditRow &om, const EditRow &cg, EditResult EditRow::*op) {
   double best = std::min((om.*op).ms, (cg.*op).ms);
@@ -103,8 +110,7 @@ void report_queue_share(Out &out, const std::vector<EditRow> &tm, const EditRow 
       "|---|---:|---:|---:|---:|---:|\n");
   auto rest = [](const EditRow &r) { return r.simplify.ms - r.simplify_queue_ms; };
   const double best = std::min(rest(om), rest(cg));
-  std::vector<const EditRow *> all = {&om, &cg};
-  for (const EditRow &r : tm) all.push_back(&r);
+  const std::vector<const EditRow *> all = all_rows(tm, om, cg);
   for (const EditRow *r : all)
     out("| %s | %s | %zu | %s | %s | %s |\n", r->lib.c_str(), fmt_ms(r->simplify.ms).c_str(),
         r->simplify_queue_ops, fmt_ms(r->simplify_queue_ms).c_str(), fmt_ms(rest(*r)).c_str(),
@@ -137,8 +143,7 @@ void report_times(Out &out, const std::vector<EditRow> &tm, const EditRow &om, c
       "checked, triangles removed; accepted: flips, splits, collapses, triangles removed), and the live "
       "triangles after:\n\n");
   out("| operation | library | attempts | accepted | triangles after |\n|---|---|---:|---:|---:|\n");
-  std::vector<const EditRow *> all = {&om, &cg};
-  for (const EditRow &r : tm) all.push_back(&r);
+  const std::vector<const EditRow *> all = all_rows(tm, om, cg);
   for (const Op &o : ops)
     for (const EditRow *r : all) {
       const EditResult &x = r->*o.op;
@@ -157,8 +162,7 @@ void report_memory(Out &out, const std::vector<EditRow> &tm, const EditRow &om, 
       "slack included). Ratio: over OpenMesh's (the target is 0.60).\n\n");
   out("| library | built | after flips | ÷ OpenMesh | after splits | ÷ OpenMesh | RSS: build | RSS: build + flips | ÷ "
       "OpenMesh |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  std::vector<const EditRow *> all = {&om, &cg};
-  for (const EditRow &r : tm) all.push_back(&r);
+  const std::vector<const EditRow *> all = all_rows(tm, om, cg);
   for (const EditRow *r : all)
     out("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r->lib.c_str(), fmt_mb(double(r->bytes_built)).c_str(),
         fmt_mb(double(r->flips.bytes_after)).c_str(),

@@ -61,13 +61,23 @@ std::string us_per(double ms, uint64_t n) {
   return n ? ratio(1000.0 * ms, double(n)) : "-";
 }
 
+// A split storm with its memory: `storm(done)` runs it, fills the row and `mem`, and calls
+// done() while its structure is still alive; the resident set is read then, and its growth
+// kept once the structure is gone.
+template <class Storm> Row probed(MemRow &mem, Storm storm) {
+  MemProbe p;
+  p.begin();
+  Row row = storm([&p] { p.end(); });
+  mem.retained = p.retained();
+  malloc_trim(0);
+  return row;
+}
+
 // N splits through the wrapper; the live list is updated as CGAL's is (the split
 // tetrahedron keeps its slot, the three new ones go to the back).
 Row tm_splits(const TetSoup &s, uint32_t level, uint64_t n, uint64_t seed, MemRow &mem) {
-  Row row{"1-4 split", "topomesh L" + std::to_string(level), "Volume::split(TetrahedronId)", {}, 0};
-  MemProbe p;
-  p.begin();
-  {
+  return probed(mem, [&](auto done) {
+    Row row{"1-4 split", "topomesh L" + std::to_string(level), "Volume::split(TetrahedronId)", {}, 0};
     Volume vol = tm_volume(s, level);
     std::vector<uint32_t> live(vol.num_tetrahedra());
     std::iota(live.begin(), live.end(), 0u);
@@ -95,20 +105,16 @@ Row tm_splits(const TetSoup &s, uint32_t level, uint64_t n, uint64_t seed, MemRo
     mem.structure = double(m.topology);
     mem.geometry = mem.structure + double(m.positions + m.maps);
     mem.note = "edit state included: faces " + mib(double(m.faces)) + ", edges " + mib(double(m.edges));
-    p.end();
-  }
-  mem.retained = p.retained();
-  malloc_trim(0);
-  return row;
+    done();
+    return row;
+  });
 }
 
 // The same storm on CHF's arrays alone (floor_chf.hpp): the least a split costs there, and
 // the least memory it needs.
 Row floor_splits(const TetSoup &s, uint64_t n, uint64_t seed, MemRow &mem) {
-  Row row{"1-4 split", "CHF floor", "V, O and positions only (floor_chf.hpp)", {}, 0};
-  MemProbe p;
-  p.begin();
-  {
+  return probed(mem, [&](auto done) {
+    Row row{"1-4 split", "CHF floor", "V, O and positions only (floor_chf.hpp)", {}, 0};
     FloorChf floor(tm_volume(s, 1));
     row.run = floor.split_storm(n, seed);
     if (!floor.valid()) {
@@ -116,18 +122,14 @@ Row floor_splits(const TetSoup &s, uint64_t n, uint64_t seed, MemRow &mem) {
       std::exit(1);
     }
     mem = {row.lib, double(floor.structure_bytes()), double(floor.bytes()), -1, "V and O only"};
-    p.end();
-  }
-  mem.retained = p.retained();
-  malloc_trim(0);
-  return row;
+    done();
+    return row;
+  });
 }
 
 Row cgal_splits(const TetSoup &s, uint64_t n, uint64_t seed, MemRow &mem) {
-  Row row{"1-4 split", "CGAL", "Triangulation_3::insert_in_cell", {}, 0};
-  MemProbe p;
-  p.begin();
-  {
+  return probed(mem, [&](auto done) {
+    Row row{"1-4 split", "CGAL", "Triangulation_3::insert_in_cell", {}, 0};
     CgalStats st;
     auto c = CgalVol::build(s, st);
     row.run = c->split_storm(n, seed);
@@ -136,11 +138,9 @@ Row cgal_splits(const TetSoup &s, uint64_t n, uint64_t seed, MemRow &mem) {
     mem.structure = double(st.cells * st.sizeof_cell + st.vertices * (st.sizeof_vertex - st.sizeof_point));
     mem.geometry = double(st.cells * st.sizeof_cell + st.vertices * st.sizeof_vertex);
     mem.note = std::to_string(st.cells) + " cells, " + std::to_string(st.vertices) + " vertices";
-    p.end();
-  }
-  mem.retained = p.retained();
-  malloc_trim(0);
-  return row;
+    done();
+    return row;
+  });
 }
 
 // A live tetrahedron for the flip storm: the live list keeps removed ids until they are

@@ -2,10 +2,10 @@
 // the library around them. Copies of a level-2 build's V, O and EH, and each half-edge's
 // edge id; a flip rewrites the two triangles' V and O, re-points the four outer neighbours
 // and moves the four outer edges' ids, as the level-2 contract (edge ids stable) asks. Its
-// check walks the rotation round one end, as the policy's check must without an edge index.
-// Nothing else: no VH, no removed marks, no positions, no refusal details. Only the flip
-// storm runs on it (the policy's flip_storm, the same draws, so the same flips: the accepted
-// counts say so).
+// check walks the rotation round one end, both ways at once as topomesh's does: without an
+// edge index, the policy's check can do no less. Nothing else: no VH, no removed marks, no
+// positions, no refusal details. Only the flip storm runs on it (the policy's flip_storm,
+// the same draws, so the same flips: the accepted counts say so).
 #pragma once
 
 #include <topomesh/topomesh.hpp>
@@ -78,23 +78,23 @@ private:
   std::vector<uint32_t> v_, o_, e_, eh_;
   static uint32_t next(uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
   static uint32_t prev(uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
-  // Does an edge join the origin of k to d? The rotation round that origin, both ways; each
-  // triangle names both its other corners (on a boundary the last neighbour is only a prev).
+  // Does an edge join the origin of k to d? The rotation round that origin, both ways at once
+  // (a walk reaches d in half the steps), each triangle naming both its other corners (on a
+  // boundary the last neighbour is only a prev); the two ways stop where they meet.
   bool joined(uint32_t k, uint32_t d) const {
     auto hit = [&](uint32_t x) { return v_[next(x)] == d || v_[prev(x)] == d; };
-    for (uint32_t x = k;;) {
-      if (hit(x)) return true;
-      const uint32_t y = o_[prev(x)];
-      if (y == kNone) break;
-      if (y == k) return false;
-      x = y;
+    if (hit(k)) return true;
+    for (uint32_t ccw = k, cw = k; ccw != kNone || cw != kNone;) {
+      if (ccw != kNone) {
+        ccw = o_[prev(ccw)];
+        if (ccw != kNone && (ccw == cw || hit(ccw))) return ccw != cw;
+      }
+      if (cw != kNone) {
+        cw = o_[cw] == kNone ? kNone : next(o_[cw]);
+        if (cw != kNone && (cw == ccw || hit(cw))) return cw != ccw;
+      }
     }
-    for (uint32_t x = k;;) {
-      const uint32_t t = o_[x];
-      if (t == kNone) return false;
-      x = next(t);
-      if (hit(x)) return true;
-    }
+    return false;
   }
 };
 

@@ -114,14 +114,14 @@ Row tm_splits(const TetSoup &s, uint32_t level, uint64_t n, uint64_t seed, MemRo
 // the least memory it needs.
 Row floor_splits(const TetSoup &s, uint64_t n, uint64_t seed, MemRow &mem) {
   return probed(mem, [&](auto done) {
-    Row row{"1-4 split", "CHF floor", "V, O and positions only (floor_chf.hpp)", {}, 0};
+    Row row{"1-4 split", "CHF floor", "V and O only (floor_chf.hpp)", {}, 0};
     FloorChf floor(tm_volume(s, 1));
     row.run = floor.split_storm(n, seed);
     if (!floor.valid()) {
       std::fprintf(stderr, "bench_vol_edit: the CHF floor broke its arrays\n");
       std::exit(1);
     }
-    mem = {row.lib, double(floor.structure_bytes()), double(floor.bytes()), -1, "V and O only"};
+    mem = {row.lib, double(floor.structure_bytes()), double(floor.structure_bytes()), -1, "V and O only, no positions"};
     done();
     return row;
   });
@@ -349,7 +349,8 @@ void bench(const std::string &base, uint64_t ops, int reps, uint64_t seed, bool 
   double l1_first = level1 ? splits[2].run.first_ms : first_split_ms(s, 1);
   std::printf("%llu random 1-4 splits at the centroid (one run; the first operation alone, which makes "
               "topomesh's edit state: CGAL %s ms, topomesh L2 %s ms, L1 %s ms). The CHF floor: the same draws "
-              "on copies of V, O and the positions alone (`floor_chf.hpp`: no check, no VH, no face or edge ids), "
+              "on copies of V and O alone (`floor_chf.hpp`: no check, no position for the new vertex, no VH, no face or "
+              "edge ids), "
               "what a library built on these arrays cannot beat:\n\n",
               (unsigned long long)ops, ms(splits[0].run.first_ms).c_str(), ms(splits[1].run.first_ms).c_str(),
               ms(l1_first).c_str());

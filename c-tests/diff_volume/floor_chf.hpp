@@ -1,9 +1,11 @@
 // The floor of a 1-4 split storm: the least a split costs in CHF's arrays, whatever the
-// library around them. Copies of a build's V, O and positions; a split reads the drawn
-// tetrahedron's corners and twins, appends its centroid and three tetrahedra, and re-points
-// the three neighbours whose faces move to the new ones. Nothing else: no check (CGAL's
-// insert_in_cell makes none either), no VH, no face or edge ids, no removed marks. The same
-// draws as the storms of bench_vol_edit.cpp (the live list, the split one kept in its slot).
+// library around them. Copies of a build's V and O; a split reads the drawn tetrahedron's
+// corners and twins, appends three tetrahedra on a new vertex, and re-points the three
+// neighbours whose faces move to the new ones. Nothing else: no check (CGAL's
+// insert_in_cell makes none either), no position for the new vertex (a centroid costs four
+// more loads, which a faster layout of the positions might save), no VH, no face or edge
+// ids, no removed marks. The same draws as the storms of bench_vol_edit.cpp (the live list,
+// the split one kept in its slot).
 #pragma once
 
 #include "edit_policy.hpp"
@@ -15,7 +17,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
-#include <stdexcept>
 #include <vector>
 
 namespace diffvol {
@@ -24,22 +25,19 @@ class FloorChf {
 public:
   explicit FloorChf(const topomesh::Volume &vol) {
     const auto V = vol.half_face_vertices(), O = vol.opposites();
-    const auto P = vol.positions();
-    if (P.empty()) throw std::runtime_error("the floor needs positions");
     v_.assign(V.begin(), V.end());
     o_.assign(O.begin(), O.end());
-    p_.assign(P.begin(), P.end());
+    nv_ = uint32_t(vol.num_vertices());
   }
 
-  // V and O; with the positions.
+  // V and O.
   size_t structure_bytes() const { return 4 * (v_.size() + o_.size()); }
-  size_t bytes() const { return structure_bytes() + 8 * p_.size(); }
 
   EditRun split_storm(uint64_t n, uint64_t seed) {
     std::vector<uint32_t> live(v_.size() / 4);
     std::iota(live.begin(), live.end(), 0u);
     live.reserve(live.size() + 3 * n);
-    v_.reserve(v_.size() + 12 * n), o_.reserve(o_.size() + 12 * n), p_.reserve(p_.size() + 3 * n);
+    v_.reserve(v_.size() + 12 * n), o_.reserve(o_.size() + 12 * n);
     EditRng rng(seed);
     EditRun run;
     double t0 = cpu_ms();
@@ -74,17 +72,15 @@ private:
     return f;
   }
   std::vector<uint32_t> v_, o_;
-  std::vector<double> p_;
+  uint32_t nv_ = 0;
 
-  // t keeps its face 3 with the centroid x for corner 3; tetrahedron b + i (i < 3) takes
+  // t keeps its face 3 with the new vertex x for corner 3; tetrahedron b + i (i < 3) takes
   // face i of t, with x for corner i.
   void split(uint32_t t) {
     const size_t f = 4 * size_t(t), b = v_.size() / 4;
     uint32_t q[4], nb[4];
     for (int i = 0; i < 4; ++i) q[i] = v_[f + i], nb[i] = o_[f + i];
-    const uint32_t x = uint32_t(p_.size() / 3);
-    for (int k = 0; k < 3; ++k)
-      p_.push_back((p_[3 * q[0] + k] + p_[3 * q[1] + k] + p_[3 * q[2] + k] + p_[3 * q[3] + k]) / 4);
+    const uint32_t x = nv_++;
     v_[f + 3] = x;
     v_.resize(v_.size() + 12), o_.resize(o_.size() + 12);
     for (uint32_t i = 0; i < 3; ++i) {

@@ -638,9 +638,7 @@ fn edit_ids_replace_the_edge_directory() {
     for level in [2, 3] {
         let mut che = built(&sphere(8, 6), level);
         let built_edges = che.memory_bytes().edges;
-        let e = (0..che.num_edges() as u32)
-            .find(|&e| che.is_flip_ok(e).unwrap())
-            .unwrap();
+        let e = first_allowed(che.num_edges(), |e| che.is_flip_ok(e).unwrap());
         che.flip_edge(e).unwrap();
         let flags = 8 * che.num_vertices().div_ceil(64);
         let explicit = 4 * (che.num_edges() + 3 * che.num_triangles()) + flags;
@@ -749,6 +747,13 @@ fn checks_leave_the_mesh_as_it_was() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The first id below `n` that `allowed` accepts (the mark tests start from one).
+fn first_allowed(n: usize, mut allowed: impl FnMut(u32) -> bool) -> u32 {
+    (0..n as u32)
+        .find(|&x| allowed(x))
+        .expect("an id the check allows")
+}
+
 /// A flip right after its check skips repeating it; anything in between (here the removal
 /// of one of the edge's triangles, which puts it on the boundary) makes it check again.
 #[test]
@@ -774,9 +779,7 @@ fn a_flip_checks_again_after_any_other_call() {
 fn a_collapse_checks_again_after_any_other_call() {
     for level in 0..=3 {
         let mut che = built(&torus(6, 5), level);
-        let h = (0..che.num_half_edges() as u32)
-            .find(|&h| che.is_collapse_ok(h).unwrap())
-            .unwrap();
+        let h = first_allowed(che.num_half_edges(), |h| che.is_collapse_ok(h).unwrap());
         let (a, b) = (che.origin(h), che.target(h));
         let off_the_edge = |che: &Che, x: u32| {
             che.vertex_triangles(x)

@@ -204,8 +204,8 @@ void report_floor(Out &out, const EditResult &floor, const EditRow &tm, const Ed
   }
   const EditResult &fast = om.flips.ms < cg.flips.ms ? om.flips : cg.flips;
   out("\nThe floor of the flip storm: the same draws on copies of CHE's V, O and edge ids alone "
-      "(`floor_che.hpp`: the check walks round one end, the flip rewrites two triangles, re-points four "
-      "neighbours and moves four edge ids; no VH, no marks, no details): what a library built on these arrays "
+      "(`floor_che.hpp`: the check walks round one end, the flip rewrites two corners, re-points two "
+      "neighbours and moves two edge ids, as topomesh's does; no VH, no marks, no details): what a library built on these arrays "
       "cannot beat. The target over it: below 1, the target cannot be met on them.\n\n");
   out("| | ms | accepted | ÷ faster peer | target ÷ this |\n|---|---:|---:|---:|---:|\n");
   out("| CHE floor | %s | %llu | %s | %s |\n", fmt_ms(floor.ms).c_str(), (unsigned long long)floor.accepted,

@@ -1,11 +1,11 @@
 // The floor of a CHE flip storm: the least a checked flip costs in CHE's arrays, whatever
 // the library around them. Copies of a level-2 build's V, O and EH, and each half-edge's
-// edge id; a flip rewrites the two triangles' V and O, re-points the four outer neighbours
-// and moves the four outer edges' ids, as the level-2 contract (edge ids stable) asks. Its
-// check walks the rotation round one end, both ways at once as topomesh's does: without an
-// edge index, the policy's check can do no less. Nothing else: no VH, no removed marks, no
-// positions, no refusal details. Only the flip storm runs on it (the policy's flip_storm,
-// the same draws, so the same flips: the accepted counts say so).
+// edge id. A flip lays the two triangles out as topomesh's does: two corners rewritten, two
+// outer neighbours re-pointed, two outer edges' ids moved (level 2 keeps edge ids stable).
+// Its check walks the rotation round one end, both ways at once as topomesh's does: without
+// an edge index, the policy's check can do no less. Nothing else: no VH, no removed marks,
+// no positions, no refusal details. Only the flip storm runs on it (the policy's
+// flip_storm, the same draws, so the same flips: the accepted counts say so).
 #pragma once
 
 #include <topomesh/topomesh.hpp>
@@ -42,25 +42,20 @@ public:
     const uint32_t c = v_[prev(h)], d = v_[prev(g)];
     return c != d && !joined(prev(h), d);
   }
-  // Triangle (a b c) and (b a d) become (d c a) and (c d b), in the same slots.
+  // Triangles (a b c) and (b a d) become (d b c) and (c a d), as topomesh's flip lays them
+  // out: two corners change, the outer edges b-c and a-d keep their slots, c-a and d-b move
+  // to h's and g's slots, and the new edge c-d takes h2 and g2.
   void flip(uint32_t e) {
-    const uint32_t h = eh_[e], g = o_[h];
-    const uint32_t h1 = next(h), h2 = prev(h), g1 = next(g), g2 = prev(g);
-    const uint32_t a = v_[h], b = v_[g], c = v_[h2], d = v_[g2];
-    v_[h] = d, v_[h1] = c, v_[h2] = a;
-    v_[g] = c, v_[g1] = d, v_[g2] = b;
-    // Each slot on the left takes the outer edge that was in the slot on the right.
-    const uint32_t to[4] = {h1, h2, g1, g2}, from[4] = {h2, g1, g2, h1};
-    uint32_t twin[4], edge[4];
-    for (int k = 0; k < 4; ++k) twin[k] = o_[from[k]], edge[k] = e_[from[k]];
-    for (int k = 0; k < 4; ++k) {
-      o_[to[k]] = twin[k];
-      if (twin[k] != kNone) o_[twin[k]] = to[k];
-      e_[to[k]] = edge[k];
-      eh_[edge[k]] = to[k];
-    }
+    const uint32_t h = eh_[e], g = o_[h], h2 = prev(h), g2 = prev(g);
+    const uint32_t c = v_[h2], d = v_[g2], oh2 = o_[h2], og2 = o_[g2];
+    const uint32_t e_ca = e_[h2], e_db = e_[g2];
+    v_[h] = d, v_[g] = c;
+    link(g, oh2), link(h, og2), link(h2, g2);
+    e_[g] = e_ca, e_[h] = e_db, e_[h2] = e_[g2] = e;
+    if (eh_[e_ca] == h2) eh_[e_ca] = g;
+    if (eh_[e_db] == g2) eh_[e_db] = h;
+    eh_[e] = h2;
   }
-
   // The arrays still describe a surface: O pairs opposite half-edges of one edge id, and
   // each edge's half-edge carries its id.
   bool valid() const {
@@ -78,6 +73,10 @@ private:
   std::vector<uint32_t> v_, o_, e_, eh_;
   static uint32_t next(uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
   static uint32_t prev(uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
+  void link(uint32_t x, uint32_t y) {
+    o_[x] = y;
+    if (y != kNone) o_[y] = x;
+  }
   // Does an edge join the origin of k to d? The rotation round that origin, both ways at once
   // (a walk reaches d in half the steps), each triangle naming both its other corners (on a
   // boundary the last neighbour is only a prev); the two ways stop where they meet.

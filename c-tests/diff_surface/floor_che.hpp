@@ -71,8 +71,9 @@ public:
 private:
   static constexpr uint32_t kNone = ~0u;
   std::vector<uint32_t> v_, o_, e_, eh_;
-  static uint32_t next(uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
-  static uint32_t prev(uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
+  // The header's rotation arithmetic (topomesh_inline.h), under the names of the spec.
+  static uint32_t next(uint32_t h) { return che_next(h); }
+  static uint32_t prev(uint32_t h) { return che_prev(h); }
   void link(uint32_t x, uint32_t y) {
     o_[x] = y;
     if (y != kNone) o_[y] = x;

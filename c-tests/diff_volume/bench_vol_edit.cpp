@@ -350,8 +350,7 @@ void bench(const std::string &base, uint64_t ops, int reps, uint64_t seed, bool 
   std::printf("%llu random 1-4 splits at the centroid (one run; the first operation alone, which makes "
               "topomesh's edit state: CGAL %s ms, topomesh L2 %s ms, L1 %s ms). The CHF floor: the same draws "
               "on copies of V and O alone (`floor_chf.hpp`: no check, no position for the new vertex, no VH, no face or "
-              "edge ids), "
-              "what a library built on these arrays cannot beat:\n\n",
+              "edge ids), what a library built on these arrays cannot beat:\n\n",
               (unsigned long long)ops, ms(splits[0].run.first_ms).c_str(), ms(splits[1].run.first_ms).c_str(),
               ms(l1_first).c_str());
   print_rows(splits, false);

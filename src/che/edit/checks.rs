@@ -333,11 +333,7 @@ impl Che {
             let h = c.live_edge(e)?;
             Ok(c.flip_refusal(h).is_none())
         });
-        self.checked = match ok {
-            Ok(true) => Checked::Flip(e),
-            _ => Checked::Nothing,
-        };
-        ok
+        self.mark_if_allowed(ok, Checked::Flip(e))
     }
 
     /// Can half-edge `h` be collapsed? Never modifies; see [`Che::collapse_edge`].
@@ -346,9 +342,16 @@ impl Che {
             c.live_half_edge(h)?;
             Ok(c.collapse_refusal(h)?.is_none())
         });
-        self.checked = match ok {
-            Ok(true) => Checked::Collapse(h),
-            _ => Checked::Nothing,
+        self.mark_if_allowed(ok, Checked::Collapse(h))
+    }
+
+    /// A check's answer, with `mark` kept as [`Che::checked`] when it is yes (and no mark
+    /// otherwise): the edit that follows may then skip the check.
+    fn mark_if_allowed(&mut self, ok: Result<bool>, mark: Checked) -> Result<bool> {
+        self.checked = if matches!(ok, Ok(true)) {
+            mark
+        } else {
+            Checked::Nothing
         };
         ok
     }
